@@ -1,0 +1,2 @@
+//! criterion: K/E per method × precision, beside the `ellip` crate.
+fn main() {}

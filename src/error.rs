@@ -1,0 +1,64 @@
+//! The crate's one error type.
+//!
+//! Errors happen only at construction (validating inputs into the types the hot path takes).
+//! The per-step calls are total: they take validated types and return plain values.
+
+use core::fmt;
+
+/// Why an input was rejected. Every variant names the input that triggers it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum Error {
+    /// An input that must be a finite number was NaN or ±∞. Carries the input's name.
+    NonFinite(&'static str),
+    /// Elliptic parameter m outside the supported domain `[0, 1 − m₁_min]`
+    /// (`m₁_min` = 1e-12 for `f64`, 2⁻²⁴ for `f32`), or m₁ = 1 − m outside `[m₁_min, 1]`.
+    EllipticParameterOutOfDomain,
+    /// A sum of principal curvatures (P + Q, or P or Q itself) that must be positive is ≤ 0:
+    /// the bodies are not locally convex towards each other (no Hertz contact).
+    CurvatureNotPositive,
+    /// Curvature ratio g = P/Q outside the supported range of the eccentricity solver.
+    CurvatureRatioOutOfRange,
+    /// A Young's modulus or effective modulus that must be positive is ≤ 0.
+    ModulusNotPositive,
+    /// Poisson's ratio ν outside (−1, 0.5].
+    PoissonRatioOutOfRange,
+    /// Friction coefficient f < 0.
+    FrictionCoefficientNegative,
+    /// A length (radius, semi-axis, regularization width) that must be positive is ≤ 0.
+    LengthNotPositive,
+    /// A damping coefficient is negative.
+    DampingNegative,
+}
+
+impl fmt::Display for Error {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Error::NonFinite(what) => write!(f, "{what} must be finite"),
+            Error::EllipticParameterOutOfDomain => {
+                f.write_str("elliptic parameter m outside [0, 1 - m1_min]")
+            }
+            Error::CurvatureNotPositive => f.write_str("curvature sum must be positive"),
+            Error::CurvatureRatioOutOfRange => {
+                f.write_str("curvature ratio P/Q outside the solver's range")
+            }
+            Error::ModulusNotPositive => f.write_str("elastic modulus must be positive"),
+            Error::PoissonRatioOutOfRange => f.write_str("Poisson's ratio outside (-1, 0.5]"),
+            Error::FrictionCoefficientNegative => f.write_str("friction coefficient is negative"),
+            Error::LengthNotPositive => f.write_str("length must be positive"),
+            Error::DampingNegative => f.write_str("damping coefficient is negative"),
+        }
+    }
+}
+
+impl core::error::Error for Error {}
+
+/// `Err(Error::NonFinite(name))` unless `x` is finite.
+#[inline]
+pub(crate) fn finite<T: crate::Real>(x: T, name: &'static str) -> Result<T, Error> {
+    if x.is_finite() {
+        Ok(x)
+    } else {
+        Err(Error::NonFinite(name))
+    }
+}

@@ -1,0 +1,48 @@
+//! # contensou
+//!
+//! The contact wrench between two elastic bodies, in real time: the Hertz normal force on an
+//! elliptic contact patch plus Contensou–Erismann dry friction — the sliding force *and* the
+//! drilling torque, integrated over that patch. `no_std`, allocation-free, generic over
+//! `f32`/`f64`, fixed cost per call.
+//!
+//! The design follows I. I. Kosenko & E. B. Aleksandrov (2009), *Implementation of the
+//! Contensou–Erismann model for tangent forces in the Hertz contact problem*.
+//!
+//! # Conventions
+//!
+//! These hold in every module; doc comments refer back here.
+//!
+//! - **Units**: SI throughout (m, N, Pa, s, rad).
+//! - **Bodies**: body A is "below", body B "above"; every force and torque is the one
+//!   **on B from A**.
+//! - **Contact frame** P x y z: origin at the patch centre P; z the common normal, pointing
+//!   from A into B; x along the **major** semi-axis a of the contact ellipse; y along the minor
+//!   semi-axis b = a√(1 − e²).
+//! - **Relative surface**: z = P x² + Q y² with 0 < P ≤ Q (the major axis lies along the
+//!   direction of the smaller coefficient P).
+//! - **Elliptic integrals** take the **parameter** m = e² = 1 − b²/a² (never the modulus k).
+//!   [`elliptic::Parameter`] carries m and m₁ = 1 − m separately.
+//! - **Slip**: v_P is the velocity of B relative to A at P, in the contact plane; ω the relative
+//!   spin about z. A point M(x, y) of the patch slips with v_M = (v_Px − ωy, v_Py + ωx).
+//! - **Dimensionless friction**: v_P = v(cos ψ, sin ψ), u = v/(aω); forces scale with fN,
+//!   the drilling torque with fNa (f the friction coefficient).
+//!
+//! # Errors and panics
+//!
+//! Constructors validate and return [`Result`] with [`Error`]; per-step calls take validated
+//! types and are total: no panic, no NaN or ∞ for finite valid input.
+#![no_std]
+#![deny(unsafe_code)]
+#![warn(missing_docs, missing_debug_implementations, rust_2018_idioms)]
+#![cfg_attr(
+    not(test),
+    warn(clippy::unwrap_used, clippy::expect_used, clippy::panic)
+)]
+
+pub mod elliptic;
+pub mod error;
+mod hw_sqrt;
+pub mod real;
+
+pub use error::Error;
+pub use real::Real;

@@ -1,0 +1,305 @@
+//! The float core: one sealed [`Real`] trait for `f32` and `f64`.
+//!
+//! Every numerical routine in the crate is generic over `T: Real`. The trait is sealed (only
+//! `f32` and `f64` implement it) and backed by [`libm`] directly, not by `num-traits`' `Float`,
+//! whose implementation silently changes with feature unification.
+//!
+//! # Square root on Cortex-M4F
+//!
+//! `libm::sqrtf` is a software routine on `thumbv7em-none-eabihf` (≈50 instructions). On every
+//! `eabihf` ARM target `f32::sqrt` goes through [`crate::hw_sqrt`], which executes the FPU's
+//! `vsqrt.f32` (one instruction plus call/return). Elsewhere libm is used (on x86-64 libm itself
+//! compiles to `sqrtss`/`sqrtsd`). `f64` is always libm: the M4F has a single-precision FPU only.
+//!
+//! # Hot-path budget
+//!
+//! `sqrt`, `abs`, `min`, `max`, `copysign` and the arithmetic operators are cheap everywhere.
+//! `ln`, `exp`, `sin`, `cos`, `atan2` cost 100–300 instructions in f32 on the M4F; `cbrt` ≈1,600
+//! (libm runs it in f64). Keep them off per-step paths: precompute, or use the fixed-cost
+//! approximations in the relevant module.
+
+use core::fmt::{Debug, Display};
+use core::ops::{Add, AddAssign, Div, DivAssign, Mul, MulAssign, Neg, Sub, SubAssign};
+use core::str::FromStr;
+
+mod sealed {
+    pub trait Sealed {}
+    impl Sealed for f32 {}
+    impl Sealed for f64 {}
+}
+
+/// A floating-point scalar: `f32` or `f64`.
+///
+/// Sealed: the crate's accuracy statements are measured for these two types only.
+pub trait Real:
+    sealed::Sealed
+    + Copy
+    + Clone
+    + Default
+    + Debug
+    + Display
+    + FromStr
+    + PartialEq
+    + PartialOrd
+    + Send
+    + Sync
+    + 'static
+    + Add<Output = Self>
+    + Sub<Output = Self>
+    + Mul<Output = Self>
+    + Div<Output = Self>
+    + Neg<Output = Self>
+    + AddAssign
+    + SubAssign
+    + MulAssign
+    + DivAssign
+{
+    /// `"f32"` or `"f64"`, for reports and benchmark labels.
+    const NAME: &'static str;
+    /// Significand bits including the implicit one: 24 or 53. Use it to pick fixed iteration
+    /// counts per precision (`if T::MANTISSA_DIGITS > 24 { .. }` folds at compile time).
+    const MANTISSA_DIGITS: u32;
+    /// 0
+    const ZERO: Self;
+    /// 1
+    const ONE: Self;
+    /// 2
+    const TWO: Self;
+    /// ½
+    const HALF: Self;
+    /// π
+    const PI: Self;
+    /// π/2
+    const FRAC_PI_2: Self;
+    /// π/4
+    const FRAC_PI_4: Self;
+    /// Machine epsilon (2⁻²³ or 2⁻⁵²).
+    const EPSILON: Self;
+    /// Largest finite value.
+    const MAX: Self;
+    /// Smallest positive normal value.
+    const MIN_POSITIVE: Self;
+
+    /// Nearest value of `Self` to `x` (exact for `f64`). Constant-folds for literal `x`.
+    fn from_f64(x: f64) -> Self;
+    /// Exact widening to `f64`.
+    fn to_f64(self) -> f64;
+    /// `i as Self` (exact for |i| < 2²⁴).
+    fn from_usize(i: usize) -> Self;
+    /// Truncate towards zero into `usize`; saturating: NaN and negatives give 0, never panics.
+    fn trunc_usize(self) -> usize;
+
+    /// √x; `vsqrt.f32` for `f32` on ARM eabihf. NaN for x < 0.
+    fn sqrt(self) -> Self;
+    /// |x|
+    fn abs(self) -> Self;
+    /// Smaller of two values; if one is NaN, the other.
+    fn min(self, other: Self) -> Self;
+    /// Larger of two values; if one is NaN, the other.
+    fn max(self, other: Self) -> Self;
+    /// Magnitude of `self` with the sign of `sign`.
+    fn copysign(self, sign: Self) -> Self;
+    /// Natural logarithm.
+    fn ln(self) -> Self;
+    /// eˣ
+    fn exp(self) -> Self;
+    /// sin x
+    fn sin(self) -> Self;
+    /// cos x
+    fn cos(self) -> Self;
+    /// (sin x, cos x)
+    fn sin_cos(self) -> (Self, Self);
+    /// Four-quadrant arctangent of `self / x`.
+    fn atan2(self, x: Self) -> Self;
+    /// ∛x. Costly on the M4F (≈1,600 instructions for `f32`): not for hot paths.
+    fn cbrt(self) -> Self;
+    /// √(x² + y²) without undue overflow.
+    fn hypot(self, other: Self) -> Self;
+    /// Largest integer value ≤ x.
+    fn floor(self) -> Self;
+    /// Neither infinite nor NaN.
+    fn is_finite(self) -> bool;
+
+    /// x², for readability.
+    #[inline(always)]
+    fn sq(self) -> Self {
+        self * self
+    }
+    /// `self` limited to `[lo, hi]`; NaN maps to `lo`.
+    #[inline(always)]
+    fn clamp_to(self, lo: Self, hi: Self) -> Self {
+        if self >= lo {
+            if self <= hi { self } else { hi }
+        } else {
+            lo
+        }
+    }
+}
+
+macro_rules! impl_real {
+    ($t:ident, $bits:ident, $name:literal, $sqrt:path,
+     $abs:ident, $fmin:ident, $fmax:ident, $copysign:ident, $ln:ident, $exp:ident, $sin:ident,
+     $cos:ident, $sincos:ident, $atan2:ident, $cbrt:ident, $hypot:ident, $floor:ident) => {
+        impl Real for $t {
+            const NAME: &'static str = $name;
+            const MANTISSA_DIGITS: u32 = $t::MANTISSA_DIGITS;
+            const ZERO: Self = 0.0;
+            const ONE: Self = 1.0;
+            const TWO: Self = 2.0;
+            const HALF: Self = 0.5;
+            const PI: Self = core::$bits::consts::PI;
+            const FRAC_PI_2: Self = core::$bits::consts::FRAC_PI_2;
+            const FRAC_PI_4: Self = core::$bits::consts::FRAC_PI_4;
+            const EPSILON: Self = $t::EPSILON;
+            const MAX: Self = $t::MAX;
+            const MIN_POSITIVE: Self = $t::MIN_POSITIVE;
+
+            #[inline(always)]
+            fn from_f64(x: f64) -> Self {
+                x as $t
+            }
+            #[inline(always)]
+            fn to_f64(self) -> f64 {
+                self as f64
+            }
+            #[inline(always)]
+            fn from_usize(i: usize) -> Self {
+                i as $t
+            }
+            #[inline(always)]
+            fn trunc_usize(self) -> usize {
+                self as usize
+            }
+            #[inline(always)]
+            fn sqrt(self) -> Self {
+                $sqrt(self)
+            }
+            #[inline(always)]
+            fn abs(self) -> Self {
+                libm::$abs(self)
+            }
+            #[inline(always)]
+            fn min(self, other: Self) -> Self {
+                // Branch form: on the M4F a compare + select, cheaper than libm's fminf call.
+                if other < self || self != self {
+                    other
+                } else {
+                    self
+                }
+            }
+            #[inline(always)]
+            fn max(self, other: Self) -> Self {
+                if other > self || self != self {
+                    other
+                } else {
+                    self
+                }
+            }
+            #[inline(always)]
+            fn copysign(self, sign: Self) -> Self {
+                libm::$copysign(self, sign)
+            }
+            #[inline(always)]
+            fn ln(self) -> Self {
+                libm::$ln(self)
+            }
+            #[inline(always)]
+            fn exp(self) -> Self {
+                libm::$exp(self)
+            }
+            #[inline(always)]
+            fn sin(self) -> Self {
+                libm::$sin(self)
+            }
+            #[inline(always)]
+            fn cos(self) -> Self {
+                libm::$cos(self)
+            }
+            #[inline(always)]
+            fn sin_cos(self) -> (Self, Self) {
+                libm::$sincos(self)
+            }
+            #[inline(always)]
+            fn atan2(self, x: Self) -> Self {
+                libm::$atan2(self, x)
+            }
+            #[inline(always)]
+            fn cbrt(self) -> Self {
+                libm::$cbrt(self)
+            }
+            #[inline(always)]
+            fn hypot(self, other: Self) -> Self {
+                libm::$hypot(self, other)
+            }
+            #[inline(always)]
+            fn floor(self) -> Self {
+                libm::$floor(self)
+            }
+            #[inline(always)]
+            fn is_finite(self) -> bool {
+                $t::is_finite(self)
+            }
+        }
+    };
+}
+
+impl_real!(
+    f32,
+    f32,
+    "f32",
+    crate::hw_sqrt::sqrtf,
+    fabsf,
+    fminf,
+    fmaxf,
+    copysignf,
+    logf,
+    expf,
+    sinf,
+    cosf,
+    sincosf,
+    atan2f,
+    cbrtf,
+    hypotf,
+    floorf
+);
+impl_real!(
+    f64,
+    f64,
+    "f64",
+    libm::sqrt,
+    fabs,
+    fmin,
+    fmax,
+    copysign,
+    log,
+    exp,
+    sin,
+    cos,
+    sincos,
+    atan2,
+    cbrt,
+    hypot,
+    floor
+);
+
+#[cfg(test)]
+mod tests {
+    use super::Real;
+
+    #[test]
+    fn sqrt_is_correctly_rounded_on_samples() {
+        for &x in &[0.0f32, 1.0, 2.0, 1e-30, 3.5e30, 0.1] {
+            assert_eq!(Real::sqrt(x), libm::sqrtf(x));
+        }
+        assert_eq!(Real::sqrt(2.0f64), core::f64::consts::SQRT_2);
+    }
+
+    #[test]
+    fn min_max_ignore_nan() {
+        assert_eq!(Real::min(f32::NAN, 1.0), 1.0);
+        assert_eq!(Real::max(1.0f64, f64::NAN), 1.0);
+        assert_eq!(Real::clamp_to(f64::NAN, 0.0, 1.0), 0.0);
+        assert_eq!(Real::trunc_usize(-3.0f32), 0);
+        assert_eq!(Real::trunc_usize(f64::NAN), 0);
+    }
+}
