@@ -1,4 +1,5 @@
 //! Complete elliptic integrals against mpmath references (tools/data/elliptic_ref.csv).
+#![allow(clippy::excessive_precision)]
 use contensou::elliptic::{Agm, Method, Parameter};
 
 #[test]
