@@ -41,6 +41,7 @@
 
 pub mod elliptic;
 pub mod error;
+pub mod friction;
 mod hw_sqrt;
 pub mod real;
 
