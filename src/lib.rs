@@ -42,8 +42,11 @@
 pub mod elliptic;
 pub mod error;
 pub mod friction;
+pub mod geometry;
 mod hw_sqrt;
+pub mod normal;
 pub mod real;
+pub mod shape;
 
 pub use error::Error;
 pub use real::Real;

@@ -1,0 +1,382 @@
+//! Normal contact: approach h (and its rate ḣ) → contact patch (a, b, N, p0) for a fixed
+//! geometry, by exact Hertz or by the eccentricity-free volumetric law, with optional damping.
+//!
+//! # Hertz (model.md §1)
+//!
+//! With the shape (c, K, E, B, D) from [`crate::shape`] and the effective modulus E*:
+//!
+//! ```text
+//! a² = h·D/(P·K),   b² = (1 − c)·a² = h·B/(Q·K),   N = k_H·h^{3/2},
+//! k_H = (2π/3)·E*·√(D/P)/K^{3/2}   (so N = (2π/3)·E*·h·a/K),
+//! p0 = 3N/(2πab) = E*·h/(K·b),     U = (2/5)·N·h   (elastic energy)
+//! ```
+//!
+//! Everything but h is folded into four constants when the law is built, so the per-step call
+//! [`NormalLaw::patch`] costs one square root and four multiplies: a = a′√h, b = b′√h,
+//! N = k_H·h·√h, p0 = p0′√h.
+//!
+//! # Contact loss
+//!
+//! h ≤ 0 (or NaN) → [`Patch::empty`]: zero force and a zero-size patch. Not an error.
+
+use crate::error::finite;
+use crate::geometry::{Curvatures, positive};
+use crate::shape::{Eccentricity, Ratio, Shape};
+use crate::{Error, Real};
+
+/// One body's elastic material: Young's modulus E (Pa) and Poisson's ratio ν, validated.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Material<T> {
+    young: T,
+    poisson: T,
+}
+
+impl<T: Real> Material<T> {
+    /// E > 0, ν ∈ (−1, 0.5]. Errors: [`Error::ModulusNotPositive`],
+    /// [`Error::PoissonRatioOutOfRange`], [`Error::NonFinite`].
+    pub fn new(young: T, poisson: T) -> Result<Self, Error> {
+        let young = finite(young, "Young's modulus")?;
+        let poisson = finite(poisson, "Poisson's ratio")?;
+        if !positive(young) {
+            return Err(Error::ModulusNotPositive);
+        }
+        if !(poisson > -T::ONE && poisson <= T::HALF) {
+            return Err(Error::PoissonRatioOutOfRange);
+        }
+        Ok(Material { young, poisson })
+    }
+
+    /// Young's modulus E (Pa).
+    pub fn young(&self) -> T {
+        self.young
+    }
+    /// Poisson's ratio ν.
+    pub fn poisson(&self) -> T {
+        self.poisson
+    }
+}
+
+/// The effective (contact) modulus E* (Pa), validated: finite and > 0.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Modulus<T>(T);
+
+impl<T: Real> Modulus<T> {
+    /// From E* directly. Errors: [`Error::ModulusNotPositive`], [`Error::NonFinite`].
+    pub fn new(estar: T) -> Result<Self, Error> {
+        let estar = finite(estar, "E*")?;
+        if estar > T::ZERO {
+            Ok(Modulus(estar))
+        } else {
+            Err(Error::ModulusNotPositive)
+        }
+    }
+
+    /// 1/E* = (1 − ν₁²)/E₁ + (1 − ν₂²)/E₂. Errors: [`Error::ModulusNotPositive`] if the result
+    /// under- or overflows (e.g. E below ≈1e-38 Pa in `f32`).
+    pub fn of(a: Material<T>, b: Material<T>) -> Result<Self, Error> {
+        let compliance = (T::ONE - a.poisson.sq()) / a.young + (T::ONE - b.poisson.sq()) / b.young;
+        let estar = T::ONE / compliance;
+        if estar.is_finite() && estar > T::ZERO {
+            Ok(Modulus(estar))
+        } else {
+            Err(Error::ModulusNotPositive)
+        }
+    }
+
+    /// E* (Pa)
+    #[inline(always)]
+    pub fn get(self) -> T {
+        self.0
+    }
+}
+
+/// The contact patch at one step: what the friction law and the wrench consume.
+///
+/// Contact frame per the crate conventions: x along the major semi-axis `a`, y along the minor
+/// semi-axis `b`. Pressure σ(x, y) = p0·√(1 − x²/a² − y²/b²), whose integral is the elastic
+/// normal force. On contact loss every length and force is 0 (see [`Patch::empty`]); `e2`, `m1`
+/// still describe the geometry.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Patch<T> {
+    /// Approach h (m): penetration of distant points; > 0 in contact.
+    pub h: T,
+    /// Major semi-axis a (m), along x.
+    pub a: T,
+    /// Minor semi-axis b = a√(1 − e²) (m), along y.
+    pub b: T,
+    /// Normal force N ≥ 0 (N) on body B from body A along +z, including damping if any.
+    pub n: T,
+    /// Peak pressure p0 = 3N_el/(2πab) (Pa) of the elastic (Hertz) pressure distribution.
+    pub p0: T,
+    /// e² = c = 1 − b²/a²: the elliptic parameter m of the friction integrals.
+    pub e2: T,
+    /// m₁ = 1 − e² = (b/a)², kept to full relative precision for elongated patches.
+    pub m1: T,
+}
+
+impl<T: Real> Patch<T> {
+    /// Contact loss: h = a = b = N = p0 = 0, with the geometry's e², m₁.
+    #[inline(always)]
+    pub fn empty(e2: T, m1: T) -> Self {
+        Patch {
+            h: T::ZERO,
+            a: T::ZERO,
+            b: T::ZERO,
+            n: T::ZERO,
+            p0: T::ZERO,
+            e2,
+            m1,
+        }
+    }
+
+    /// No contact (N = 0 and a = 0).
+    #[inline(always)]
+    pub fn is_empty(&self) -> bool {
+        self.a == T::ZERO
+    }
+}
+
+/// A damping law: the total normal force from the elastic force and (h, ḣ). ḣ > 0 is
+/// compression (approach growing). The result is clamped to ≥ 0 by the caller (no adhesion).
+pub trait Damping<T> {
+    /// Total normal force before clamping, given the elastic force `elastic` = k_H h^{3/2}.
+    fn force(&self, elastic: T, h: T, hdot: T) -> T;
+}
+
+/// No damping: N = N_el.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Undamped;
+
+impl<T: Real> Damping<T> for Undamped {
+    #[inline(always)]
+    fn force(&self, elastic: T, _h: T, _hdot: T) -> T {
+        elastic
+    }
+}
+
+/// Hunt–Crossley: N = k_H h^{3/2}·(1 + (3/2)·c_d·ḣ), clamped ≥ 0. c_d (s/m) ≥ 0.
+/// Cost: 2 multiplies and an add.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct HuntCrossley<T> {
+    three_halves_cd: T,
+}
+
+impl<T: Real> HuntCrossley<T> {
+    /// Errors: [`Error::DampingNegative`] if c_d < 0, [`Error::NonFinite`].
+    pub fn new(cd: T) -> Result<Self, Error> {
+        let cd = non_negative_damping(cd)?;
+        Ok(HuntCrossley {
+            three_halves_cd: T::from_f64(1.5) * cd,
+        })
+    }
+}
+
+impl<T: Real> Damping<T> for HuntCrossley<T> {
+    #[inline(always)]
+    fn force(&self, elastic: T, _h: T, hdot: T) -> T {
+        elastic * (T::ONE + self.three_halves_cd * hdot)
+    }
+}
+
+/// Compression-only viscous term (Kosenko's Modelica contact library):
+/// N = k_H h^{3/2} + d·h·ḣ while ḣ > 0, N = k_H h^{3/2} during restitution. d (N·s/m²) ≥ 0.
+/// Cost: 2 multiplies, a compare and an add.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct CompressionDamping<T> {
+    d: T,
+}
+
+impl<T: Real> CompressionDamping<T> {
+    /// Errors: [`Error::DampingNegative`] if d < 0, [`Error::NonFinite`].
+    pub fn new(d: T) -> Result<Self, Error> {
+        Ok(CompressionDamping {
+            d: non_negative_damping(d)?,
+        })
+    }
+}
+
+impl<T: Real> Damping<T> for CompressionDamping<T> {
+    #[inline(always)]
+    fn force(&self, elastic: T, h: T, hdot: T) -> T {
+        elastic + self.d * h * hdot.max(T::ZERO)
+    }
+}
+
+fn non_negative_damping<T: Real>(x: T) -> Result<T, Error> {
+    let x = finite(x, "damping coefficient")?;
+    if x >= T::ZERO {
+        Ok(x)
+    } else {
+        Err(Error::DampingNegative)
+    }
+}
+
+/// A normal-force law with its per-geometry constants folded in. All methods are total.
+pub trait NormalLaw<T: Real> {
+    /// The patch at approach h: a square root and four multiplies. h ≤ 0 → [`Patch::empty`].
+    fn patch(&self, h: T) -> Patch<T>;
+
+    /// k_H in N = k_H·h^{3/2} (N/m^{3/2}).
+    fn stiffness(&self) -> T;
+
+    /// Inverse: the approach h = (N/k_H)^{2/3} (m) that carries the normal force N ≥ 0;
+    /// N ≤ 0 → 0. Uses `cbrt`: construction/host use only (≈1,600 instructions in `f32` on
+    /// the M4F).
+    fn approach(&self, n: T) -> T {
+        if n > T::ZERO {
+            (n / self.stiffness()).sq().cbrt()
+        } else {
+            T::ZERO
+        }
+    }
+
+    /// Elastic energy U = (2/5)·k_H·h^{5/2} (J); 0 for h ≤ 0.
+    fn energy(&self, h: T) -> T {
+        if h > T::ZERO {
+            T::from_f64(0.4) * self.stiffness() * h * h * h.sqrt()
+        } else {
+            T::ZERO
+        }
+    }
+
+    /// The patch with a damping law: N = max(0, damping(N_el, h, ḣ)); a, b, p0 stay the
+    /// elastic ones. h ≤ 0 → [`Patch::empty`].
+    #[inline]
+    fn damped_patch<D: Damping<T>>(&self, h: T, hdot: T, damping: &D) -> Patch<T> {
+        let mut patch = self.patch(h);
+        if !patch.is_empty() {
+            patch.n = damping.force(patch.n, h, hdot).max(T::ZERO);
+        }
+        patch
+    }
+}
+
+/// Exact Hertz with the per-geometry constants precomputed (see the module docs).
+///
+/// Error: that of the shape it is built from (exact with [`crate::shape::Newton`]; measured
+/// figures per method in `bench-results/hertz.md`). Cost per [`NormalLaw::patch`]: one
+/// `sqrt`, four multiplies, one compare; instructions on the M4F: not yet measured.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Hertz<T> {
+    a_coef: T,
+    b_coef: T,
+    k_h: T,
+    p0_coef: T,
+    e2: T,
+    m1: T,
+}
+
+impl<T: Real> Hertz<T> {
+    /// Build with the eccentricity method `M`. A circle (P = Q) takes the circular fast path.
+    ///
+    /// Errors: [`Error::CurvatureRatioOutOfRange`] if P/Q < 1e-4.
+    pub fn new<M: Eccentricity>(
+        curvatures: &Curvatures<T>,
+        estar: Modulus<T>,
+    ) -> Result<Self, Error> {
+        if curvatures.p() == curvatures.q() {
+            return Ok(Self::circular(curvatures.p(), estar));
+        }
+        let g = Ratio::of(curvatures)?;
+        Ok(Self::from_shape(curvatures.p(), &M::shape(g), estar))
+    }
+
+    /// From P (validated upstream: P > 0, e.g. [`Curvatures::p`]) and a shape already known —
+    /// e.g. from [`crate::shape::Table`] each step. Total.
+    ///
+    /// a′ = √(D/(P·K)), b′ = √(m₁)·a′, k_H = (2π/3)·E*·a′/K, p0′ = E*/(K·b′) (with b = b′√h this
+    /// is E*·h/(K·b)). Cost: 3 divisions, 2 `sqrt`, 6 multiplies.
+    #[inline]
+    pub fn from_shape(p: T, shape: &Shape<T>, estar: Modulus<T>) -> Self {
+        let i = shape.integrals();
+        let inv_k = T::ONE / i.k;
+        let a2 = i.d * inv_k / p;
+        let a_coef = a2.sqrt();
+        let b_coef = (shape.m1() * a2).sqrt();
+        let estar_over_k = estar.get() * inv_k;
+        Hertz {
+            a_coef,
+            b_coef,
+            k_h: T::from_f64(2.0 * core::f64::consts::PI / 3.0) * estar_over_k * a_coef,
+            p0_coef: estar_over_k / b_coef,
+            e2: shape.e2(),
+            m1: shape.m1(),
+        }
+    }
+
+    /// The circular fast path, P = Q = 1/(2R) (sphere on plane with R = 1/(2P)): a = b = √(Rh),
+    /// N = (4/3)E*√R·h^{3/2}, p0 = (2E*/π)·√(h/R). Evaluates no elliptic integral. `p` must be
+    /// > 0 (from [`Curvatures::p`]).
+    pub fn circular(p: T, estar: Modulus<T>) -> Self {
+        Self::circle_of_radius(T::HALF / p, estar)
+    }
+
+    fn circle_of_radius(r: T, estar: Modulus<T>) -> Self {
+        let sqrt_r = r.sqrt();
+        let e = estar.get();
+        Hertz {
+            a_coef: sqrt_r,
+            b_coef: sqrt_r,
+            k_h: T::from_f64(4.0 / 3.0) * e * sqrt_r,
+            p0_coef: T::TWO * e / (T::PI * sqrt_r),
+            e2: T::ZERO,
+            m1: T::ONE,
+        }
+    }
+}
+
+impl<T: Real> NormalLaw<T> for Hertz<T> {
+    #[inline]
+    fn patch(&self, h: T) -> Patch<T> {
+        if !positive(h) {
+            return Patch::empty(self.e2, self.m1);
+        }
+        let sh = h.sqrt();
+        Patch {
+            h,
+            a: self.a_coef * sh,
+            b: self.b_coef * sh,
+            n: self.k_h * h * sh,
+            p0: self.p0_coef * sh,
+            e2: self.e2,
+            m1: self.m1,
+        }
+    }
+
+    #[inline(always)]
+    fn stiffness(&self) -> T {
+        self.k_h
+    }
+}
+
+/// The volumetric (eccentricity-free) law — **not** Hertz for P ≠ Q: the Hertz circle with
+/// the Gaussian radius R_e = 1/(2√(PQ)) (a law built only from the overlap volume
+/// V = πh²/(2√(PQ)), area S = πh/√(PQ) and h reduces to it). A stand-in for "V. G. Vilke's
+/// formula" of the paper (§4), which is not published there.
+///
+/// # Formula, domain, error, cost
+///
+/// N = (4/3)E*√R_e·h^{3/2}, a = b = √(R_e h), e² = 0. Exact for P = Q. Measured force error
+/// vs exact Hertz at equal h (`bench-results/hertz.md`): −0.5% at g = P/Q = 0.5, −3.6% at
+/// 0.2, −8.4% at 0.1, −27% at 0.01, −50% at 1e-3 (always low). Cost per step: as
+/// [`Hertz::patch`]; construction: one `sqrt` and one division, no elliptic integral.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Volumetric<T>(Hertz<T>);
+
+impl<T: Real> Volumetric<T> {
+    /// From validated curvatures and modulus. Total.
+    pub fn new(curvatures: &Curvatures<T>, estar: Modulus<T>) -> Self {
+        Volumetric(Hertz::circle_of_radius(curvatures.gaussian_radius(), estar))
+    }
+}
+
+impl<T: Real> NormalLaw<T> for Volumetric<T> {
+    #[inline]
+    fn patch(&self, h: T) -> Patch<T> {
+        self.0.patch(h)
+    }
+    #[inline(always)]
+    fn stiffness(&self) -> T {
+        self.0.k_h
+    }
+}
