@@ -4,7 +4,8 @@
 
 use contensou::geometry::{Curvatures, Principal, Race};
 use contensou::normal::{
-    CompressionDamping, Hertz, HuntCrossley, Material, Modulus, NormalLaw, Patch, Volumetric,
+    CompressionDamping, Fitted, Hertz, HuntCrossley, Material, Modulus, NormalLaw, Patch,
+    Volumetric,
 };
 use contensou::shape::{Eccentricity, HamrockDowson, Linear, Newton, Ratio, Shape, Table};
 use contensou::{Error, Real};
@@ -473,4 +474,37 @@ fn bad_inputs_are_typed_errors() {
     assert_eq!(HuntCrossley::new(-0.1), Err(DampingNegative));
     assert_eq!(CompressionDamping::new(-1.0), Err(DampingNegative));
     assert!(matches!(HuntCrossley::new(nan), Err(NonFinite(_))));
+}
+
+fn fitted_errors<T: Real>() -> [f64; 3] {
+    let mut worst = [0.0f64; 3];
+    for r in rows() {
+        let [p, q, estar, h] = r.input.map(T::from_f64);
+        let law = Fitted::new(
+            &Curvatures::new(p, q).unwrap(),
+            Modulus::new(estar).unwrap(),
+        )
+        .unwrap();
+        let patch = law.patch(h);
+        for (k, (got, want)) in [
+            (patch.a, r.want[6]),
+            (patch.b, r.want[7]),
+            (patch.n, r.want[8]),
+        ]
+        .into_iter()
+        .enumerate()
+        {
+            worst[k] = worst[k].max(rel(got.to_f64(), want));
+        }
+        assert!(patch.e2 >= T::ZERO && patch.m1 <= T::ONE);
+    }
+    worst
+}
+
+#[test]
+fn fitted_law_stated_errors() {
+    for w in [fitted_errors::<f64>(), fitted_errors::<f32>()] {
+        println!("fitted: a {:.2e}, b {:.2e}, N {:.2e}", w[0], w[1], w[2]);
+        assert!(w[0] <= 4e-5 && w[1] <= 6e-5 && w[2] <= 1.5e-5, "{w:?}");
+    }
 }
