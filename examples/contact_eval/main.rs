@@ -18,8 +18,11 @@
 //! | subcommand | input | output columns added | `--method` |
 //! |---|---|---|---|
 //! | `elliptic` | `m` | `K,E` | `agm` (default), `theta`, `table` |
+//! | `eccentricity` | `g` | `c` | `newton` (default), `table`, `linear`, `hamrock-dowson` |
+//! | `hertz` | `P,Q,Estar,h` | `c,a,b,N` | `newton` (default), `table`, `linear`, `volumetric`, `fitted` |
 
 mod elliptic;
+mod hertz;
 
 use std::io::{BufRead, Write};
 use std::process::ExitCode;
@@ -142,6 +145,8 @@ fn main() -> ExitCode {
     }
     let result = match subcommand.as_str() {
         "elliptic" => elliptic::run(&options),
+        "eccentricity" => hertz::run_eccentricity(&options),
+        "hertz" => hertz::run_hertz(&options),
         other => Err(format!("unknown subcommand `{other}`")),
     };
     result.unwrap_or_else(|message| usage(&message))
