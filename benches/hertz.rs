@@ -1,1 +1,84 @@
-fn main() {}
+//! criterion: Hertz normal contact per step (geometry precomputed), per step with the
+//! eccentricity from g every step (table; fitted law), and construction (Newton, linear,
+//! Hamrock–Dowson) — f32 and f64. Short runs; figures go to bench-results/hertz.md via
+//! `cargo run --release --example hertz_report`.
+use std::hint::black_box;
+use std::time::Duration;
+
+use contensou::Real;
+use contensou::geometry::Curvatures;
+use contensou::normal::{Fitted, Hertz, Modulus, NormalLaw};
+use contensou::shape::{Eccentricity, HamrockDowson, Linear, Newton, Ratio, Table};
+use criterion::{Criterion, criterion_group, criterion_main};
+
+/// The 209 bearing's inner-race contact (P, Q in 1/m), steel E*, a few approaches.
+fn inputs<T: Real>() -> (T, T, Modulus<T>, [T; 4]) {
+    (
+        T::from_f64(2.982581722739203),
+        T::from_f64(97.86061637132834),
+        Modulus::new(T::from_f64(1.1428571e11)).unwrap(),
+        [1e-6, 3e-6, 7e-6, 2e-5].map(T::from_f64),
+    )
+}
+
+fn per_step<T: Real>(c: &mut Criterion) {
+    let (p, q, estar, hs) = inputs::<T>();
+    let curv = Curvatures::new(p, q).unwrap();
+    let law = Hertz::new::<Newton>(&curv, estar).unwrap();
+    let mut i = 0;
+    c.bench_function(&format!("hertz/per_step/{}", T::NAME), |b| {
+        b.iter(|| {
+            i = (i + 1) & 3;
+            black_box(law.patch(black_box(hs[i])))
+        })
+    });
+    let gs = [0.0305, 0.045, 0.2, 0.7].map(T::from_f64);
+    c.bench_function(&format!("hertz/table_each_step/{}", T::NAME), |b| {
+        b.iter(|| {
+            i = (i + 1) & 3;
+            let shape = Table::shape(Ratio::clamped(black_box(gs[i])));
+            black_box(Hertz::from_shape(black_box(p), &shape, estar).patch(black_box(hs[i])))
+        })
+    });
+    c.bench_function(&format!("hertz/fitted_each_step/{}", T::NAME), |b| {
+        b.iter(|| {
+            i = (i + 1) & 3;
+            let law = Fitted::from_ratio(black_box(p), Ratio::clamped(black_box(gs[i])), estar);
+            black_box(law.patch(black_box(hs[i])))
+        })
+    });
+}
+
+fn construct<T: Real, M: Eccentricity>(c: &mut Criterion) {
+    let gs = [0.0305, 0.045, 0.2, 0.7].map(|g| Ratio::new(T::from_f64(g)).unwrap());
+    let mut i = 0;
+    c.bench_function(&format!("hertz/shape_{}/{}", M::NAME, T::NAME), |b| {
+        b.iter(|| {
+            i = (i + 1) & 3;
+            black_box(M::shape(black_box(gs[i])))
+        })
+    });
+}
+
+fn benches(c: &mut Criterion) {
+    per_step::<f32>(c);
+    per_step::<f64>(c);
+    construct::<f32, Newton>(c);
+    construct::<f64, Newton>(c);
+    construct::<f32, Table>(c);
+    construct::<f64, Table>(c);
+    construct::<f32, Linear>(c);
+    construct::<f64, Linear>(c);
+    construct::<f32, HamrockDowson>(c);
+    construct::<f64, HamrockDowson>(c);
+}
+
+criterion_group! {
+    name = hertz;
+    config = Criterion::default()
+        .warm_up_time(Duration::from_millis(300))
+        .measurement_time(Duration::from_secs(1))
+        .sample_size(20);
+    targets = benches
+}
+criterion_main!(hertz);

@@ -18,6 +18,26 @@
 //! # Contact loss
 //!
 //! h ≤ 0 (or NaN) → [`Patch::empty`]: zero force and a zero-size patch. Not an error.
+//!
+//! # Example
+//!
+//! ```
+//! use contensou::geometry::{Curvatures, Race};
+//! use contensou::normal::{Hertz, Material, Modulus, NormalLaw, HuntCrossley};
+//! use contensou::shape::Newton;
+//!
+//! // 209 bearing, ball on the inner race: built once.
+//! let curv = Curvatures::ball_race(0.0127, 0.0066, 0.065, 0.0, Race::Inner)?;
+//! let steel = Material::new(2.08e11, 0.3)?;
+//! let law = Hertz::new::<Newton>(&curv, Modulus::of(steel, steel)?)?;
+//! // Per step: a square root and a few multiplies.
+//! let patch = law.patch(5e-6);
+//! assert!(patch.a > patch.b && patch.n > 0.0);
+//! let damped = law.damped_patch(5e-6, 0.01, &HuntCrossley::new(0.3)?);
+//! assert!(damped.n > patch.n);
+//! assert!(law.patch(-1e-6).is_empty()); // contact loss is not an error
+//! # Ok::<(), contensou::Error>(())
+//! ```
 
 mod fit_data;
 

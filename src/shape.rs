@@ -15,15 +15,17 @@
 //!
 //! # Methods (zero-sized types implementing [`Eccentricity`])
 //!
-//! | method | per call | max error on c (g ∈ [1e-4, 1]) |
-//! |---|---|---|
-//! | [`Newton`] | construction: ≤ 7 AGM + `ln`/`exp` | f64 ≈ 1e-15, f32 ≈ 2e-7 relative |
-//! | [`Table`] | per step: 3 `sqrt`, 3 quintics, 1 division | f64 ≈ 5e-12, f32 ≈ 3e-7 relative |
-//! | [`Linear`] | the paper's two-segment G*, 1 division + AGM | 9.4e-2 absolute |
-//! | [`HamrockDowson`] | c = 1 − g^{4/π}: `ln`, `exp` + AGM | 5.8e-2 absolute |
+//! | method | per call | max error on c | max error on a, b, N (relative) |
+//! |---|---|---|---|
+//! | [`Newton`] | construction: 6 (f64) / 4 (f32) Newton steps + AGM | f64 1.0e-15, f32 5.3e-7 rel. | f64 1.5e-15, f32 7.6e-7 |
+//! | [`Table`] | per step: 3 `sqrt`, 3 quintics, 1 division | f64 6.0e-13, f32 1.3e-7 rel. | f64 3.6e-12, f32 3.0e-7 |
+//! | [`Linear`] | the paper's two-segment G*, a multiply + AGM | 5.5e-2 abs. | a 2.2e-2, b 1.22, N 0.12 |
+//! | [`HamrockDowson`] | c = 1 − g^{4/π}: `ln`, `exp` + AGM | 1.6e-2 abs. | a 4.4e-3, b 0.31, N 4.7e-2 |
 //!
-//! (Errors measured against `tools/data/hertz_ref.csv`, see `host-tests/hertz.rs` and
-//! `bench-results/hertz.md`, which also list the resulting errors on a, b, N.)
+//! Measured over g ∈ [1e-4, 1] against `tools/data/hertz_ref.csv` (mpmath; 204 rows), asserted
+//! by `host-tests/hertz.rs`, tabulated in `bench-results/hertz.md`. The large b errors of the
+//! approximate methods come from m₁ = (b/a)² at small g: Linear's m₁ is off by up to 4×,
+//! Hamrock–Dowson's by 53%.
 
 mod table_data;
 
@@ -172,9 +174,10 @@ pub trait Eccentricity {
 ///
 /// # Domain, error, cost
 ///
-/// g ∈ [1e-4, 1]; g = 1 is the circle exactly. Measured max relative error on c, m₁ (and on
-/// a, b, N through [`crate::normal::Hertz`]) vs mpmath: f64 ≤ 2e-15, f32 ≤ 3e-7
-/// (`bench-results/hertz.md`). Cost: construction only — per iteration one AGM, `ln`, `exp`
+/// g ∈ [1e-4, 1]; g = 1 is the circle exactly. Measured max relative error vs mpmath
+/// (`bench-results/hertz.md`): f64 — c 1.0e-15, m₁ 3.4e-15, K/E/B/D ≤ 2.1e-15, and through
+/// [`crate::normal::Hertz`] a, b, N ≤ 1.5e-15; f32 — c 5.3e-7, m₁ 1.6e-6, K/E/B/D ≤ 1.1e-6,
+/// a, b, N ≤ 7.6e-7. Cost: construction only — per iteration one AGM, `ln`, `exp`
 /// (large-c branch) or a 40-term series (small-c branch). Not for per-step use: see [`Table`].
 #[derive(Clone, Copy, Debug, Default)]
 pub struct Newton;
@@ -283,8 +286,9 @@ impl Eccentricity for Newton {
 /// # Domain, error, cost
 ///
 /// g ∈ [1e-4, 1]. Reproduces the paper: P/Q = 0.41721 (exact c = 0.687) → c = 0.642391.
-/// Measured max error on c: 9.4e-2 absolute (near g ≈ 0.7, the knee); the resulting a, b, N
-/// errors are in `bench-results/hertz.md`. Cost: one multiply + one AGM (no `ln`/`exp`).
+/// Measured max error (f32 and f64 alike): c 5.5e-2 absolute; m₁ up to 4× too large at small
+/// g; K 12%, E 3.4%; a 2.2%, b 122%, N 12% relative (`bench-results/hertz.md`).
+/// Cost: one multiply + one AGM (no `ln`/`exp`); host ≈ 50 ns.
 #[derive(Clone, Copy, Debug, Default)]
 pub struct Linear;
 
@@ -318,9 +322,10 @@ impl Eccentricity for Linear {
 ///
 /// # Domain, error, cost
 ///
-/// g ∈ [1e-4, 1]; exact at g = 1. Measured max error on c: 5.8e-2 absolute (relative
-/// error → 1 − 3/π ≈ 4.5% as g → 1); a, b, N errors in `bench-results/hertz.md`.
-/// Cost: `ln` + `exp` + one AGM: construction-time, since `pow` is not for the hot path.
+/// g ∈ [1e-4, 1]; exact at g = 1. Measured max error (f32 and f64 alike): c 1.6e-2 absolute
+/// (relative → 1 − 3/π ≈ 4.5% as g → 1); m₁ 53%, K 5.4%, E 0.74%; a 0.44%, b 31%, N 4.7%
+/// relative (`bench-results/hertz.md`). Cost: `ln` + `exp` + one AGM (host ≈ 110–140 ns):
+/// construction-time, since `pow` is not for the hot path.
 #[derive(Clone, Copy, Debug, Default)]
 pub struct HamrockDowson;
 
@@ -359,9 +364,10 @@ impl Eccentricity for HamrockDowson {
 /// # Domain, error, cost, size
 ///
 /// g ∈ [1e-4, 1] (the [`Ratio`] domain). Measured max relative error vs mpmath
-/// (`bench-results/hertz.md`): f64 ≈ 5e-12 on c, m₁, K, E, B, D; f32 ≈ 3e-7 (rounding of the
-/// `f32` coefficients and arithmetic). Cost: 3 `sqrt`, 3 Horner quintics, 1 division;
-/// instructions on the M4F: not yet measured. Size: 32 × 18 coefficients = 2,304 bytes
+/// (`bench-results/hertz.md`): f64 — c 6.0e-13, m₁ 4.6e-12, K/E/B/D ≤ 4.6e-12, and a, b, N
+/// through [`crate::normal::Hertz::from_shape`] ≤ 3.6e-12; f32 — c 1.3e-7, m₁ 3.7e-7,
+/// K/E/B/D ≤ 4.0e-7, a, b, N ≤ 3.0e-7. Cost: 3 `sqrt`, 3 Horner quintics, 1 division (host
+/// ≈ 35–60 ns); instructions on the M4F: not yet measured. Size: 32 × 18 coefficients = 2,304 bytes
 /// (`f32`) or 4,608 bytes (`f64`); only the table of the precision used is linked.
 #[derive(Clone, Copy, Debug, Default)]
 pub struct Table;
