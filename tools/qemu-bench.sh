@@ -7,7 +7,7 @@
 #   bench-results/firmware-size.txt   .text size (arm-none-eabi-size) and the toolchain used
 #   bench-results/vsqrt-disasm.txt    disassembly proving f32 sqrt executes vsqrt.f32
 # Fails if a run fails, the two runs differ, no BENCH line is printed, or vsqrt.f32 is absent.
-# Needs: rustup, qemu-system-arm, binutils-arm-none-eabi (arm-none-eabi-objdump/-size).
+# Needs: rustup, qemu-system-arm, binutils-arm-none-eabi (arm-none-eabi-objdump/-size/-nm).
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 out="$root/bench-results"
@@ -51,7 +51,17 @@ text="$(arm-none-eabi-size -A "$elf" | awk '$1 == ".text" { print $2 }')"
     rustc --version
     qemu-system-arm --version | head -n 1
     echo
-    arm-none-eabi-size -A "$elf" | sed "s|$elf|contensou-firmware|"
+    echo "Allocated sections (arm-none-eabi-size -A; debug sections omitted):"
+    arm-none-eabi-size -A "$elf" | awk 'NR > 1 && $1 ~ /^\./ && $1 !~ /^\.(debug|comment|ARM)/'
+    echo
+    echo "arm-none-eabi-size -B:"
+    arm-none-eabi-size -B "$elf" | sed "s|$elf|contensou-firmware|"
+    echo
+    echo "Code size of the benchmarked functions and the crate's own symbols (bytes; the rest"
+    echo "of .text is mostly semihosting formatting and soft-float/libm support routines):"
+    arm-none-eabi-nm -S -C --size-sort "$elf" |
+        grep -E ' [[:alpha:]] (contensou_firmware::bench_|contensou::)' |
+        while read -r _ size _ name; do printf '%6d  %s\n' "$((16#$size))" "$name"; done
 } >"$out/firmware-size.txt"
 
 # vsqrt proof: the shim executes vsqrt.f32, the sqrt benchmark reaches it, and the f32 AGM
