@@ -15,12 +15,14 @@ pub struct Runner {
 ///
 /// `f` reaches the call site through `black_box`, so the compiler sees an indirect call to an
 /// unknown function: it can neither drop the call, nor inline it, nor move it across the
-/// (volatile) counter reads.
+/// (volatile) counter reads. Each input also goes through `black_box` (before the first read),
+/// so nothing is constant-folded.
 #[inline(never)]
 fn measure<I: Copy, O>(f: fn(I) -> O, inputs: &[I], overhead: u32) -> (u64, u32, u32) {
     let f = black_box(f);
     let (mut total, mut min, mut max) = (0u64, u32::MAX, 0u32);
     for &x in inputs {
+        let x = black_box(x);
         let t0 = counter::now();
         let y = f(x);
         let t1 = counter::now();
