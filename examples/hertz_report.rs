@@ -2,6 +2,7 @@
 //! references (`tools/data/hertz_ref.csv`) and host ns per call from criterion.
 //!
 //! ```text
+//! tools/qemu-bench.sh          # optional: refreshes bench-results/qemu.csv (M4F counts)
 //! cargo bench --bench hertz
 //! cargo run --release --example hertz_report > bench-results/hertz.md
 //! ```
@@ -162,7 +163,8 @@ fn main() {
     let refs = references();
     println!("# Hertz normal contact: accuracy and host cost\n");
     println!(
-        "Regenerate: `cargo bench --bench hertz && cargo run --release --example hertz_report > bench-results/hertz.md`.\n"
+        "Regenerate: `cargo bench --bench hertz && cargo run --release --example hertz_report > bench-results/hertz.md` \
+         (the M4F table reads `bench-results/qemu.csv`, written by `tools/qemu-bench.sh`).\n"
     );
     println!(
         "## Accuracy\n\nMax error over the {} reference rows of `tools/data/hertz_ref.csv` (mpmath, dps 40; \
@@ -227,5 +229,19 @@ fn main() {
             criterion_ns(&format!("{id}/f32")),
             criterion_ns(&format!("{id}/f64"))
         );
+    }
+
+    println!("\n## M4F instructions per call (QEMU, `tools/qemu-bench.sh`)\n");
+    println!(
+        "Stage `hertz` of `bench-results/qemu.csv` (includes the rig's 8-instruction call floor):\n"
+    );
+    println!("| method | precision | instructions |");
+    println!("|---|---|---|");
+    let csv = std::fs::read_to_string("bench-results/qemu.csv").unwrap_or_default();
+    for line in csv.lines().filter(|l| l.starts_with("hertz,")) {
+        let f: Vec<&str> = line.split(',').collect();
+        if let [_, method, precision, insns] = f[..] {
+            println!("| `{method}` | {precision} | {insns} |");
+        }
     }
 }

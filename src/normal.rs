@@ -277,7 +277,8 @@ pub trait NormalLaw<T: Real> {
 ///
 /// Error: that of the shape it is built from (exact with [`crate::shape::Newton`]; measured
 /// figures per method in `bench-results/hertz.md`). Cost per [`NormalLaw::patch`]: one
-/// `sqrt`, four multiplies, one compare; instructions on the M4F: not yet measured.
+/// `sqrt`, four multiplies, one compare; M4F 36 instructions in f32 (incl. the rig's 8-instruction
+/// call floor), 685 in f64 (soft float); host ≈ 9–15 ns.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Hertz<T> {
     a_coef: T,
@@ -422,7 +423,8 @@ impl<T: Real> NormalLaw<T> for Volumetric<T> {
 /// N 1.3e-5, a 3.6e-5, b 5.5e-5 (f64 and f32); e² = 1 − m₁ inherits the a, b errors
 /// (≈ 1e-4 absolute, exact-ish only as g → 0). Roughly 2,000× better than [`Volumetric`] at
 /// g = 0.1. Construction: 3 `sqrt` (g^{1/8}), 3 Horner sextics, 1 `sqrt`, 2 divisions —
-/// cheap enough per step when the geometry changes. Per step: as [`Hertz::patch`].
+/// cheap enough per step when the geometry changes: construction + `patch` = 123 M4F
+/// instructions (f32), 6,777 (f64). Per step: as [`Hertz::patch`].
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Fitted<T>(Hertz<T>);
 
