@@ -32,18 +32,19 @@ fn per_step<T: Real>(c: &mut Criterion) {
             black_box(law.patch(black_box(hs[i])))
         })
     });
-    let gs = [0.0305, 0.045, 0.2, 0.7].map(T::from_f64);
+    let curvs = [0.0305, 0.045, 0.2, 0.7].map(|g| Curvatures::new(p, p / T::from_f64(g)).unwrap());
     c.bench_function(&format!("hertz/table_each_step/{}", T::NAME), |b| {
         b.iter(|| {
             i = (i + 1) & 3;
-            let shape = Table::shape(Ratio::clamped(black_box(gs[i])));
-            black_box(Hertz::from_shape(black_box(p), &shape, estar).patch(black_box(hs[i])))
+            let curv = black_box(curvs[i]);
+            let shape = Table::shape(Ratio::clamped(curv.ratio()));
+            black_box(Hertz::from_shape(&curv, &shape, estar).patch(black_box(hs[i])))
         })
     });
     c.bench_function(&format!("hertz/fitted_each_step/{}", T::NAME), |b| {
         b.iter(|| {
             i = (i + 1) & 3;
-            let law = Fitted::from_ratio(black_box(p), Ratio::clamped(black_box(gs[i])), estar);
+            let law = Fitted::clamped(&black_box(curvs[i]), estar);
             black_box(law.patch(black_box(hs[i])))
         })
     });

@@ -206,7 +206,7 @@ fn main() {
         Table::bytes::<f64>()
     );
 
-    println!("## Host cost (criterion, mean ns per call; shared 2-core machine, ±10%)\n");
+    println!("## Host cost (criterion, mean ns per call; loaded shared 2-core machine, ±30%)\n");
     println!("| benchmark | what | f32 | f64 |");
     println!("|---|---|---|---|");
     for (id, what) in [

@@ -366,7 +366,14 @@ fn materials_and_laws() {
     assert!(rel(p.b * p.b, p.m1 * p.a * p.a) < 1e-14 && p.e2 + p.m1 == 1.0);
     // Table per step agrees with the law built by Newton.
     let g = Ratio::of(&curv).unwrap();
-    let t = Hertz::from_shape(curv.p(), &Table::shape(g), estar).patch(h);
+    let t = Hertz::from_shape(&curv, &Table::shape(g), estar).patch(h);
+    let f = Fitted::clamped(&curv, estar).patch(h);
+    assert!(rel(f.n, p.n) < 1.5e-5);
+    let clamped = Fitted::clamped(&Curvatures::new(1e-6, 1.0).unwrap(), estar).patch(h);
+    let edge = Fitted::new(&Curvatures::new(1e-4, 1.0).unwrap(), estar)
+        .unwrap()
+        .patch(h);
+    assert_eq!((clamped.e2, clamped.m1), (edge.e2, edge.m1));
     assert!(rel(t.n, p.n) < 1e-11 && rel(t.a, p.a) < 1e-11 && rel(t.b, p.b) < 1e-11);
     assert_eq!(Ratio::<f32>::clamped(0.0).get(), 1e-4);
     assert_eq!(Ratio::<f32>::clamped(f32::NAN).get(), 1e-4);

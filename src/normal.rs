@@ -301,16 +301,18 @@ impl<T: Real> Hertz<T> {
             return Ok(Self::circular(curvatures.p(), estar));
         }
         let g = Ratio::of(curvatures)?;
-        Ok(Self::from_shape(curvatures.p(), &M::shape(g), estar))
+        Ok(Self::from_shape(curvatures, &M::shape(g), estar))
     }
 
-    /// From P (validated upstream: P > 0, e.g. [`Curvatures::p`]) and a shape already known —
-    /// e.g. from [`crate::shape::Table`] each step. Total.
+    /// From validated curvatures (only P is used) and a shape already known — e.g. from
+    /// [`crate::shape::Table`] each step:
+    /// `Hertz::from_shape(&curv, &Table::shape(Ratio::clamped(curv.ratio())), estar)`. Total.
     ///
     /// a′ = √(D/(P·K)), b′ = √(m₁)·a′, k_H = (2π/3)·E*·a′/K, p0′ = E*/(K·b′) (with b = b′√h this
     /// is E*·h/(K·b)). Cost: 3 divisions, 2 `sqrt`, 6 multiplies.
     #[inline]
-    pub fn from_shape(p: T, shape: &Shape<T>, estar: Modulus<T>) -> Self {
+    pub fn from_shape(curvatures: &Curvatures<T>, shape: &Shape<T>, estar: Modulus<T>) -> Self {
+        let p = curvatures.p();
         let i = shape.integrals();
         let inv_k = T::ONE / i.k;
         let a2 = i.d * inv_k / p;
@@ -423,24 +425,24 @@ impl<T: Real> NormalLaw<T> for Volumetric<T> {
 /// N 1.3e-5, a 3.6e-5, b 5.5e-5 (f64 and f32); e² = 1 − m₁ inherits the a, b errors
 /// (≈ 1e-4 absolute, exact-ish only as g → 0). Roughly 2,000× better than [`Volumetric`] at
 /// g = 0.1. Construction: 3 `sqrt` (g^{1/8}), 3 Horner sextics, 1 `sqrt`, 2 divisions —
-/// cheap enough per step when the geometry changes: construction + `patch` = 123 M4F
-/// instructions (f32), 6,777 (f64). Per step: as [`Hertz::patch`].
+/// cheap enough per step when the geometry changes: [`Fitted::clamped`] + `patch` = 134 M4F
+/// instructions (f32), 6,995 (f64). Per step: as [`Hertz::patch`].
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Fitted<T>(Hertz<T>);
 
 impl<T: Real> Fitted<T> {
     /// From validated curvatures. Errors: [`Error::CurvatureRatioOutOfRange`] if P/Q < 1e-4.
     pub fn new(curvatures: &Curvatures<T>, estar: Modulus<T>) -> Result<Self, Error> {
-        Ok(Self::from_ratio(
-            curvatures.p(),
-            Ratio::of(curvatures)?,
-            estar,
-        ))
+        Ratio::of(curvatures)?;
+        Ok(Self::clamped(curvatures, estar))
     }
 
-    /// From P > 0 (validated upstream) and g = P/Q. Total.
+    /// Total, for per-step use when the geometry changes: g = P/Q is clamped into
+    /// [1e-4, 1] ([`Ratio::clamped`]) instead of rejected. Cost includes the division P/Q.
     #[inline]
-    pub fn from_ratio(p: T, g: Ratio<T>, estar: Modulus<T>) -> Self {
+    pub fn clamped(curvatures: &Curvatures<T>, estar: Modulus<T>) -> Self {
+        let p = curvatures.p();
+        let g = Ratio::clamped(curvatures.ratio());
         let root4 = g.get().sqrt().sqrt();
         let y = T::ONE - root4.sqrt();
         let poly = |c: &[f64; 7]| {

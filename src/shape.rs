@@ -171,14 +171,15 @@ pub trait Eccentricity {
 ///   [`Agm`]; start at Hamrock–Dowson m₁ = g^{4/π}.
 ///
 /// Iterations: 6 (f64) / 4 (f32) in both branches; then K, E, B, D by [`Agm`]. M4F: 907
-/// instructions (f32), 94,736 (f64); host ≈ 0.6 / 1.1 µs.
+/// instructions (f32), 94,719 (f64); host ≈ 0.6 / 1.1 µs.
 ///
 /// # Domain, error, cost
 ///
 /// g ∈ [1e-4, 1]; g = 1 is the circle exactly. Measured max relative error vs mpmath
 /// (`bench-results/hertz.md`): f64 — c 1.0e-15, m₁ 3.4e-15, K/E/B/D ≤ 2.1e-15, and through
 /// [`crate::normal::Hertz`] a, b, N ≤ 1.5e-15; f32 — c 5.3e-7, m₁ 1.6e-6, K/E/B/D ≤ 1.1e-6,
-/// a, b, N ≤ 7.6e-7. Cost: construction only — per iteration one AGM, `ln`, `exp`
+/// a, b, N ≤ 7.6e-7. A denser check (900 g incl. 150 within 1e-12…0.1 of 1, via `contact_eval`)
+/// found c ≤ 2.0e-15 (f64) and ≤ 1.2e-6 (f32, near g ≈ 0.78, where c = 1 − m₁ ≈ 0.3 is formed). Cost: construction only — per iteration one AGM, `ln`, `exp`
 /// (large-c branch) or a 40-term series (small-c branch). Not for per-step use: see [`Table`].
 #[derive(Clone, Copy, Debug, Default)]
 pub struct Newton;
@@ -289,8 +290,8 @@ impl Eccentricity for Newton {
 /// g ∈ [1e-4, 1]. Reproduces the paper: P/Q = 0.41721 (exact c = 0.687) → c = 0.642391.
 /// Measured max error (f32 and f64 alike): c 5.5e-2 absolute; m₁ up to 4× too large at small
 /// g; K 12%, E 3.4%; a 2.2%, b 122%, N 12% relative (`bench-results/hertz.md`).
-/// Cost: one multiply + one AGM (no `ln`/`exp`); host ≈ 50 ns; M4F 126 instructions (f32),
-/// 9,319 (f64).
+/// Cost: one multiply + one AGM (no `ln`/`exp`); host ≈ 60 ns; M4F 126 instructions (f32),
+/// 9,318 (f64).
 #[derive(Clone, Copy, Debug, Default)]
 pub struct Linear;
 
@@ -326,7 +327,7 @@ impl Eccentricity for Linear {
 ///
 /// g ∈ [1e-4, 1]; exact at g = 1. Measured max error (f32 and f64 alike): c 1.6e-2 absolute
 /// (relative → 1 − 3/π ≈ 4.5% as g → 1); m₁ 53%, K 5.4%, E 0.74%; a 0.44%, b 31%, N 4.7%
-/// relative (`bench-results/hertz.md`). Cost: `ln` + `exp` + one AGM (host ≈ 110–140 ns; M4F 229
+/// relative (`bench-results/hertz.md`). Cost: `ln` + `exp` + one AGM (host ≈ 140–190 ns; M4F 229
 /// instructions f32, 14,494 f64):
 /// construction-time, since `pow` is not for the hot path.
 #[derive(Clone, Copy, Debug, Default)]
@@ -370,7 +371,7 @@ impl Eccentricity for HamrockDowson {
 /// (`bench-results/hertz.md`): f64 — c 6.0e-13, m₁ 4.6e-12, K/E/B/D ≤ 4.6e-12, and a, b, N
 /// through [`crate::normal::Hertz::from_shape`] ≤ 3.6e-12; f32 — c 1.3e-7, m₁ 3.7e-7,
 /// K/E/B/D ≤ 4.0e-7, a, b, N ≤ 3.0e-7. Cost: 3 `sqrt`, 3 Horner quintics, 1 division (host
-/// ≈ 35–60 ns); M4F 94 instructions (f32), 4,791 (f64), and 132 / 6,653 together with a, b, N, p0
+/// ≈ 35–70 ns); M4F 94 instructions (f32), 4,791 (f64), and 143 / 6,875 with g = P/Q and a, b, N, p0
 /// (`Hertz::from_shape(..).patch(h)`) — within the 150-instruction f32 budget. Size: 32 × 18 coefficients = 2,304 bytes
 /// (`f32`) or 4,608 bytes (`f64`); only the table of the precision used is linked.
 #[derive(Clone, Copy, Debug, Default)]

@@ -30,11 +30,11 @@ def solve_c(g):
     if g > mp.mpf("0.5"):
         # small c: solve in c directly from the series start c ~ 4(1-g)/3
         c0 = 4 * (1 - g) / 3
-        return mp.findroot(lambda c: big_g(c) - g, c0, tol=mp.mpf(10) ** (-2 * mp.mp.dps + 10))
+        return mp.findroot(lambda c: big_g(c) - g, c0, tol=mp.mpf(10) ** (-2 * mp.mp.dps + 20))
     k0 = (1 / g) ** (2 / mp.pi)
     s0 = mp.log(1 / k0**2)
     s = mp.findroot(lambda s: mp.log(big_g(1 - mp.exp(s))) - mp.log(g), s0,
-                    tol=mp.mpf(10) ** (-2 * mp.mp.dps + 10))
+                    tol=mp.mpf(10) ** (-2 * mp.mp.dps + 20))
     return 1 - mp.exp(s)
 
 

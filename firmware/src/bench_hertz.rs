@@ -3,7 +3,7 @@
 //! - `per_step`: `Hertz::patch(h)` with the geometry precomputed (a, b, N, p0 from h: one
 //!   square root and four multiplies).
 //! - `table_each_step`: the eccentricity from g every step — `Table::shape` (c, m₁, K, E, B, D)
-//!   then `Hertz::from_shape(P, …).patch(h)` (a, b, N, p0).
+//!   then `Hertz::from_shape(&curvatures, …).patch(h)` (a, b, N, p0); includes g = P/Q.
 //! - `fitted_each_step`: the eccentricity-free fitted law from g every step, then `patch(h)`.
 //! - `shape_<method>`: the shape alone from g (construction-time methods: newton, linear,
 //!   hamrock-dowson; table for comparison).
@@ -19,12 +19,11 @@ use contensou::shape::{Eccentricity, HamrockDowson, Linear, Newton, Ratio, Shape
 
 const N: usize = 16;
 
-/// (P, g, E*, h) for input k.
-fn case<T: Real>(k: usize) -> (T, Ratio<T>, Modulus<T>, T) {
+/// (curvatures, E*, h) for input k.
+fn case<T: Real>(k: usize) -> (Curvatures<T>, Modulus<T>, T) {
     let g = libm::pow(10.0, -(k as f64) / 4.0);
     (
-        T::from_f64(3.0),
-        Ratio::new(T::from_f64(g)).expect("g in the domain"),
+        Curvatures::new(T::from_f64(3.0), T::from_f64(3.0 / g)).expect("valid curvatures"),
         Modulus::new(T::from_f64(1.142857e11)).expect("positive modulus"),
         T::from_f64((1 + k) as f64 * 1e-6),
     )
@@ -36,15 +35,16 @@ fn per_step<T: Real>(x: (Hertz<T>, T)) -> Patch<T> {
 }
 
 #[inline(never)]
-fn table_each_step<T: Real>(x: (T, Ratio<T>, Modulus<T>, T)) -> Patch<T> {
-    let (p, g, estar, h) = x;
-    Hertz::from_shape(p, &Table::shape(g), estar).patch(h)
+fn table_each_step<T: Real>(x: (Curvatures<T>, Modulus<T>, T)) -> Patch<T> {
+    let (curv, estar, h) = x;
+    let shape = Table::shape(Ratio::clamped(curv.ratio()));
+    Hertz::from_shape(&curv, &shape, estar).patch(h)
 }
 
 #[inline(never)]
-fn fitted_each_step<T: Real>(x: (T, Ratio<T>, Modulus<T>, T)) -> Patch<T> {
-    let (p, g, estar, h) = x;
-    Fitted::from_ratio(p, g, estar).patch(h)
+fn fitted_each_step<T: Real>(x: (Curvatures<T>, Modulus<T>, T)) -> Patch<T> {
+    let (curv, estar, h) = x;
+    Fitted::clamped(&curv, estar).patch(h)
 }
 
 #[inline(never)]
@@ -53,13 +53,13 @@ fn shape<M: Eccentricity, T: Real>(g: Ratio<T>) -> Shape<T> {
 }
 
 fn precision<T: Real>(r: &Runner) {
-    let cases: [(T, Ratio<T>, Modulus<T>, T); N] = core::array::from_fn(case::<T>);
+    let cases: [(Curvatures<T>, Modulus<T>, T); N] = core::array::from_fn(case::<T>);
     let laws: [(Hertz<T>, T); N] = core::array::from_fn(|k| {
-        let (p, g, estar, h) = cases[k];
-        let curv = Curvatures::new(p, p / g.get()).expect("valid curvatures");
+        let (curv, estar, h) = cases[k];
         (Hertz::new::<Newton>(&curv, estar).expect("g in the domain"), h)
     });
-    let gs: [Ratio<T>; N] = core::array::from_fn(|k| cases[k].1);
+    let gs: [Ratio<T>; N] =
+        core::array::from_fn(|k| Ratio::of(&cases[k].0).expect("g in the domain"));
     r.bench("hertz", "per_step", T::NAME, &laws, per_step::<T>);
     r.bench("hertz", "table_each_step", T::NAME, &cases, table_each_step::<T>);
     r.bench("hertz", "fitted_each_step", T::NAME, &cases, fitted_each_step::<T>);
