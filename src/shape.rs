@@ -101,8 +101,8 @@ impl<T: Real> Shape<T> {
         }
     }
 
-    /// The shape at c by the AGM, given whichever of c, m₁ is known accurately: `c_small`
-    /// selects Parameter::new(c) (accurate c) over from_complement(m₁) (accurate m₁).
+    /// The shape at c by the AGM. Both c and m₁ = 1 − c are passed; the one that is small
+    /// (and so known to full relative precision) builds the [`Parameter`]: c if c < ½, else m₁.
     /// Inputs are clamped into the elliptic domain, so this is total.
     fn by_agm(c: T, m1: T) -> Self {
         let min = Parameter::<T>::min_complement();
