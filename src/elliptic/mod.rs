@@ -16,8 +16,13 @@
 //! [`Method`]: [`Agm`]. Inputs are validated once into a [`Parameter`].
 
 mod agm;
+mod table;
+mod table_data;
+mod theta;
 
 pub use agm::Agm;
+pub use table::Table;
+pub use theta::{Theta, ThetaTerms, paper_k_e};
 
 use crate::{Error, Real};
 
