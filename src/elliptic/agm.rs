@@ -3,7 +3,8 @@
 //! # Formula
 //!
 //! a₀ = 1, b₀ = √m₁, c₀² = m;  a_{n+1} = (a_n + b_n)/2, b_{n+1} = √(a_n b_n),
-//! c_{n+1} = (a_n − b_n)/2 = c_n²/(4a_{n+1})  (the right-hand form never cancels).
+//! c_{n+1} = (a_n − b_n)/2 = c_n²/(4a_{n+1})  (the right-hand form never cancels relative to
+//! c_{n+1}; the left-hand form has the smaller absolute error).
 //!
 //! K = π/(2a_{N+1}) = π/(a_N + b_N),  K − E = K·Σ_{n≥0} 2^{n−1} c_n²,  so with s_n = c_n²/m (s₀ = 1,
 //! s_{n+1} = s_n·c_n²/(16a²_{n+1})):  D = (K − E)/m = K·Σ 2^{n−1} s_n — no division by m.
@@ -18,13 +19,21 @@
 //! # Domain and cost
 //!
 //! Every valid [`Parameter`]: m ∈ [0, 1 − m₁_min]. Fixed count N = 7 (`f64`) or 5 (`f32`),
-//! enough for the whole domain (the slowest case, m₁ = m₁_min, needs them all). Each iteration
-//! costs one square root and one division.
+//! enough for the whole domain: the slowest case is m₁ = m₁_min, where a_N alone would still be
+//! 3.4e-7 (`f32`, N = 5) resp. 3.6e-18 (`f64`, N = 7) off the mean; the free half-step
+//! (a_N + b_N)/2 brings that to 3e-14 resp. below 1e-30. Each iteration costs one square root
+//! and one division (plus one of each to start and to finish).
 
 use super::{Integrals, Method, Parameter};
 use crate::Real;
 
 /// Arithmetic–geometric mean with a fixed iteration count (7 for `f64`, 5 for `f32`).
+///
+/// Domain: every valid [`Parameter`]; m = 0 gives K = E = π/2, B = D = π/4 (rounded).
+/// Measured max relative error of K, E, B, D against mpmath (404 reference points, m = 0 …
+/// 1 − 1e-12; `f32` 310 points down to m₁ = 2⁻²⁴): `f64` 1.0e-15, `f32` 4.2e-7 (E and D near
+/// m₁ = 3e-7). Cost: N + 1 square roots, N + 1 divisions, ≈12N adds/multiplies; host ≈45 ns
+/// (`f64`) / ≈18 ns (`f32`) for K and E; MCU instructions: see bench-results/qemu.csv.
 #[derive(Clone, Copy, Debug, Default)]
 pub struct Agm;
 
@@ -54,9 +63,9 @@ impl Method for Agm {
         for _ in 1..Self::iterations::<T>() {
             let a_next = (a + b) * T::HALF;
             let b_next = (a * b).sqrt();
-            let denom = T::from_f64(16.0) * a_next * a_next;
-            s = s * c2 / denom;
-            c2 = c2 * c2 / denom;
+            let inv = T::ONE / (T::from_f64(16.0) * a_next * a_next);
+            s = s * c2 * inv;
+            c2 = c2 * c2 * inv;
             weight *= T::TWO;
             sum += weight * s;
             // c_{n+1} by the difference, not the recurrence: the recurrence doubles the relative
