@@ -132,7 +132,7 @@ fn summary(rows: &[Row]) {
         let worst = |keep: &dyn Fn(&Row) -> bool| {
             rows.iter()
                 .filter(|r| keep(r))
-                .filter_map(|r| eval(r))
+                .filter_map(&eval)
                 .fold(0.0f64, |a, [k, e]| a.max(k).max(e))
         };
         println!(
