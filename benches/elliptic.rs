@@ -118,7 +118,7 @@ criterion_group! {
     config = Criterion::default()
         .warm_up_time(Duration::from_millis(300))
         .measurement_time(Duration::from_millis(1500))
-        .sample_size(20);
+        .sample_size(60);
     targets = all
 }
 criterion_main!(benches);

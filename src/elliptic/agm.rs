@@ -11,12 +11,13 @@
 //!
 //! E is not formed as K − m·D: near m = 1 that difference cancels by a factor K/E ≈ 9 (the
 //! `f32` error reached 1.7e-6). Since 1 − c₀²/2 − c₁² = a₁²,
-//! E = K·(a₁² − Σ_{n≥2} 2^{n−1} c_n²), and for m₁ < 0.004, since a₁² − 2c₂² = 2a₂² − b₁² with
+//! E = K·(a₁² − Σ_{n≥2} 2^{n−1} c_n²), and (`f32` only; `f64` is accurate enough without
+//! it and saves a branch and a division) for m₁ < 0.004, since a₁² − 2c₂² = 2a₂² − b₁² with
 //! b₁² = √m₁, E = K·(2a₂² − √m₁ − Σ_{n≥3} 2^{n−1} c_n²), which subtracts only ≈ 20 %.
 //! Here c_n = (a_{n−1} − b_{n−1})/2 by the difference: its absolute error is what matters, and
 //! the recurrence c_n² = c_{n−1}⁴/(16a_n²) doubles the relative error at every step. For the
-//! same reason, for m > ½, D = K·(½ + s₁ + Σ_{n≥2} 2^{n−1}c_n²/m) with the differences; for
-//! m ≤ ½ the recurrence for s_n is the accurate one.
+//! same reason (`f32` only), for m > ½, D = K·(½ + s₁ + Σ_{n≥2} 2^{n−1}c_n²/m) with the
+//! differences; for m ≤ ½ the recurrence for s_n is the accurate one.
 //! Then B = E − m₁·D (at small m the subtracted term is ≈ E/2, near m = 1 it vanishes).
 //!
 //! # Domain and cost
@@ -92,13 +93,18 @@ impl Method for Agm {
         // For m > ½ the difference-based tail e_sum/m is the accurate one; for small m only the
         // recurrence keeps relative accuracy (c_n by difference is then pure rounding noise).
         let e_sum = T::TWO * c2d * c2d + e_rest; // Σ_{n≥2} 2^{n−1} c_n²
-        let near_one = m > T::HALF;
-        let tail = if near_one { e_sum / m } else { s_sum };
+        // f32 only (compile-time): the f64 rounding is small enough for the plain forms.
+        let narrow = T::MANTISSA_DIGITS <= 24;
+        let tail = if narrow && m > T::HALF {
+            e_sum / m
+        } else {
+            s_sum
+        };
         let d = k * (T::HALF + s1 + tail);
         // E/K = a₁² − Σ_{n≥2} 2^{n−1}c_n² = 2a₂² − b₁² − Σ_{n≥3} 2^{n−1}c_n² (b₁² = √m₁): for
         // m₁ < 0.004 the second form subtracts less (≈ 20 % instead of up to 55 % at m₁ → 0),
         // above it the first does (nothing at m = 0, 10 % at m₁ = 0.01).
-        let e_over_k = if m1 < T::from_f64(0.004) {
+        let e_over_k = if narrow && m1 < T::from_f64(0.004) {
             T::TWO * a2 * a2 - b0 - e_rest
         } else {
             a1_sq - e_sum
