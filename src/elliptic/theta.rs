@@ -31,7 +31,7 @@
 //! evaluated as K = θ₃'²L/2, E = (1 + m₁Lδ'/6)/θ₃'², B = (1 − m₁Lβ'/6)/(mθ₃'²) with
 //! L = ln(1/q'), β' = 6θ₃'²B'/π, δ' = 6θ₃'²D'/π (fewer roundings; π cancels).
 //!
-//! The subtraction in B cancels by at most a factor 1.6 (at m = ½), the one in D by at most 1.9
+//! The subtraction in B cancels by at most a factor 2 (at m = ½), the one in D by at most 1.9
 //! (at m = ½; near m = 1, D ≈ K ≫ B).
 //!
 //! Fixed term counts ([`Theta::terms`]): `f64` 4 nome terms, 3 θ₃ terms, 6 S terms; `f32`
