@@ -1,8 +1,8 @@
-//! `elliptic`: m → K, E.
+//! `elliptic`: m → K, E, by `--method agm|theta|table` (default agm) in `--precision f32|f64`.
 use std::process::ExitCode;
 
 use contensou::Real;
-use contensou::elliptic::{Agm, Method, Parameter};
+use contensou::elliptic::{Agm, Method, Parameter, Table, Theta};
 
 use crate::{Options, run_csv};
 
@@ -11,7 +11,13 @@ pub fn run(options: &Options) -> Result<ExitCode, String> {
     match (options.method.as_deref().unwrap_or("agm"), options.f32) {
         ("agm", false) => Ok(eval::<f64, Agm>()),
         ("agm", true) => Ok(eval::<f32, Agm>()),
-        (other, _) => Err(format!("unknown method `{other}` for elliptic (agm)")),
+        ("theta", false) => Ok(eval::<f64, Theta>()),
+        ("theta", true) => Ok(eval::<f32, Theta>()),
+        ("table", false) => Ok(eval::<f64, Table>()),
+        ("table", true) => Ok(eval::<f32, Table>()),
+        (other, _) => Err(format!(
+            "unknown method `{other}` for elliptic (agm, theta, table)"
+        )),
     }
 }
 

@@ -117,6 +117,7 @@ fn usage(message: &str) -> ExitCode {
     eprintln!(
         "usage: contact_eval <elliptic> [--method M] [--precision f32|f64] < in.csv > out.csv"
     );
+    eprintln!("  elliptic: m -> K,E; --method agm (default) | theta | table");
     ExitCode::from(2)
 }
 

@@ -37,4 +37,6 @@ fn method<M: Method>(r: &Runner) {
 /// One line per method (each measures f32 and f64), e.g. `method::<Theta>(r);`.
 pub fn run(r: &Runner) {
     method::<Agm>(r);
+    method::<Theta>(r);
+    method::<Table>(r);
 }

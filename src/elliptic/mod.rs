@@ -13,11 +13,48 @@
 //! four, each computed without cancellation.
 //!
 //! Methods (all fixed-cost, no data-dependent loops) are zero-sized types implementing
-//! [`Method`]: [`Agm`]. Inputs are validated once into a [`Parameter`].
+//! [`Method`], generic over `f32`/`f64`: [`Agm`], [`Theta`], [`Table`]. Inputs are validated
+//! once into a [`Parameter`]; near m = 1 build it from m₁ = 1 − m
+//! ([`Parameter::from_complement`], e.g. m₁ = (b/a)²), which every method uses directly.
+//!
+//! ```
+//! use contensou::elliptic::{Method, Parameter, Table, Theta};
+//!
+//! // b/a = 1e-3: m₁ = 1e-6 exactly, m = 1 − 1e-6
+//! let p = Parameter::from_complement(1e-6f32)?;
+//! let i = Table::integrals(p);
+//! assert!((i.k / 8.294051463601063 - 1.0).abs() < 5e-7);
+//! assert!((i.d / Theta::integrals(p).d - 1.0).abs() < 1e-6);
+//! # Ok::<(), contensou::Error>(())
+//! ```
+//!
+//! # Accuracy and cost
+//!
+//! Max relative error of K, E, B and D (worst of the four) against mpmath at 60 digits
+//! (tools/gen_elliptic_ref.py → tools/data/elliptic_ref.csv: 404 points, m = 0, m from 1e-12,
+//! uniform, m₁ down to 1e-12; `f32`: the 310 points exact in `f32`, m₁ down to 2⁻²⁴), asserted
+//! by host-tests/elliptic.rs. Host time per call for K and E on x86-64 (criterion, fastest
+//! sample, 64 fixed m incl. near 1, shared machine: ±20 %), beside the `ellip` crate in the
+//! same run (ratio ours/ellip in brackets); bench-results/host-elliptic.md has the full table (`tools/host-bench.sh`).
+//!
+//! | method | `f64` error | `f32` error | host ns `f64` | host ns `f32` | M4F instructions |
+//! |---|---|---|---|---|---|
+//! | [`Agm`] (7 / 5 iterations) | 1.0e-15 | 3.3e-7 | 29 (0.72×) | 15 (0.47×) | see bench-results/qemu.csv |
+//! | [`Theta`] (complementary nome for m > ½) | 7.0e-16 | 3.3e-7 | 49 (1.20×) | 27 (0.87×) | see bench-results/qemu.csv |
+//! | [`Table`] (12,320 B `f32`, 20,608 B `f64`) | 1.2e-11 | 1.1e-7 | 8.2 (0.20×) | 4.2 (0.13×) | see bench-results/qemu.csv |
+//! | `ellip` 1.2 (peer; no B, taken as K − D; its K, E, D: 5.2e-15, 2.6e-7) | 1.4e-14 | 1.6e-6 | 40 (1×) | 31 (1×) | — |
+//!
+//! [`paper_k_e`] keeps the paper's unfixed theta form for comparison only: its `f64` error is
+//! 4.4e-15 up to m = 0.87, 3.2e-8 at m = 0.99 and 0.32 at m = 1 − 1e-12.
 
 mod agm;
+mod table;
+mod table_data;
+mod theta;
 
 pub use agm::Agm;
+pub use table::Table;
+pub use theta::{Theta, ThetaTerms, paper_k_e};
 
 use crate::{Error, Real};
 
