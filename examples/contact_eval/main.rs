@@ -18,8 +18,10 @@
 //! | subcommand | input | output columns added | `--method` |
 //! |---|---|---|---|
 //! | `elliptic` | `m` | `K,E` | `agm` (default), `theta`, `table` |
+//! | `friction` | `e2,psi,u` | `Fx,Fy,Tz` (F/(fN), T_z/(fNa); u = v/(aω), ω > 0, δ → 0; `u = inf` allowed) | `--model` `simplified` (default), `pade`, `ellipsoid`, `coulomb` |
 
 mod elliptic;
+mod friction;
 
 use std::io::{BufRead, Write};
 use std::process::ExitCode;
@@ -142,6 +144,7 @@ fn main() -> ExitCode {
     }
     let result = match subcommand.as_str() {
         "elliptic" => elliptic::run(&options),
+        "friction" => friction::run(&options),
         other => Err(format!("unknown subcommand `{other}`")),
     };
     result.unwrap_or_else(|message| usage(&message))

@@ -1,0 +1,121 @@
+//! The friction-law interface: a dimensionless core chosen by generics, and the dimensional
+//! wrapper that scales it by fN and fNa.
+
+use core::fmt::Debug;
+use core::marker::PhantomData;
+
+use super::{Constants, Slip, SlipState, Traction};
+use crate::error::finite;
+use crate::{Error, Real};
+
+/// A friction law over the Hertz ellipse: a zero-sized type, chosen by generics so that only the
+/// laws a program uses are linked.
+///
+/// Every law is passive by construction (F·v_P + T_z·ω ≤ 0), bounded (|F| ≤ fN) and continuous
+/// across its own branch switches; see each law's docs for its formula, error and cost.
+pub trait FrictionLaw {
+    /// Short name used by the evaluator CLI and the benchmark labels (`"simplified"`, …).
+    const NAME: &'static str;
+    /// Which formula piece produced a traction (for diagnostics, tests and plots).
+    type Branch: Copy + Debug + PartialEq;
+    /// The branch reported at rest (no slip), where every law returns zero traction.
+    const REST: Self::Branch;
+
+    /// The dimensionless core: the slip state (homogeneous form, see [`SlipState`]) →
+    /// F/(fN), T_z/(fNa) on body B from body A, and the branch. Total: finite output for every
+    /// state.
+    fn traction<T: Real>(k: &Constants<T>, s: &SlipState<T>) -> (Traction<T>, Self::Branch);
+}
+
+/// Friction force and drilling torque on body B from body A, in the contact frame.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Tangential<T, B> {
+    /// F_x (N), along the major axis.
+    pub fx: T,
+    /// F_y (N), along the minor axis.
+    pub fy: T,
+    /// T_z (N·m), about the common normal.
+    pub tz: T,
+    /// The law's branch that produced it.
+    pub branch: B,
+}
+
+/// A friction law with its dimensional parameters: the friction coefficient f and the
+/// regularization speed δ (m/s; 0 disables regularization). Validated at construction; the
+/// per-step [`Friction::tangential`] is total.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Friction<T, L> {
+    f: T,
+    delta: T,
+    law: PhantomData<L>,
+}
+
+impl<T: Real, L: FrictionLaw> Friction<T, L> {
+    /// From the friction coefficient `f` ≥ 0 and the regularization speed `delta` ≥ 0 (m/s).
+    /// Errors: [`Error::NonFinite`] (`"f"`, `"delta"`) for NaN or ±∞,
+    /// [`Error::FrictionCoefficientNegative`] for f < 0, [`Error::LengthNotPositive`] for
+    /// δ < 0 (δ = 0 is allowed and means no regularization).
+    pub fn new(f: T, delta: T) -> Result<Self, Error> {
+        let f = finite(f, "f")?;
+        let delta = finite(delta, "delta")?;
+        if f < T::ZERO {
+            return Err(Error::FrictionCoefficientNegative);
+        }
+        if delta < T::ZERO {
+            return Err(Error::LengthNotPositive);
+        }
+        Ok(Friction {
+            f,
+            delta,
+            law: PhantomData,
+        })
+    }
+
+    /// The friction coefficient f.
+    #[inline(always)]
+    pub fn coefficient(&self) -> T {
+        self.f
+    }
+
+    /// The regularization speed δ (m/s).
+    #[inline(always)]
+    pub fn delta(&self) -> T {
+        self.delta
+    }
+
+    /// One per-step call: patch constants `k`, major semi-axis `a` (m), normal force `n` (N) and
+    /// the slip → force (N) and drilling torque (N·m) on body B from body A.
+    ///
+    /// N ≤ 0 (or NaN) gives the zero wrench (no contact, no adhesion); `a` ≤ 0 (or NaN) is a
+    /// point contact (no spin effect, no torque). Total: finite output for finite `a` and `n`.
+    /// Cost: the law's core plus a normalisation (one division, three multiplications) and
+    /// four multiplications.
+    #[inline]
+    pub fn tangential(
+        &self,
+        k: &Constants<T>,
+        a: T,
+        n: T,
+        slip: Slip<T>,
+    ) -> Tangential<T, L::Branch> {
+        let a = a.max(T::ZERO);
+        let fn_ = self.f * n.max(T::ZERO);
+        let (t, branch) = L::traction(k, &SlipState::from_slip(slip, a, self.delta));
+        Tangential {
+            fx: fn_ * t.fx,
+            fy: fn_ * t.fy,
+            tz: fn_ * a * t.tz,
+            branch,
+        }
+    }
+}
+
+/// The branch of the laws with one smooth formula ([`crate::friction::Pade`],
+/// [`crate::friction::Ellipsoid`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Smooth {
+    /// No slip: zero traction.
+    Rest,
+    /// Slipping: the law's single formula.
+    Slip,
+}

@@ -1,0 +1,157 @@
+//! The paper's simplified anisotropic Contensou model (Kosenko & Aleksandrov 2009, §3), with the
+//! switch to the regularized Coulomb law g_δ made continuous.
+//!
+//! # Formula
+//!
+//! With u = v/(a|ω|), α = cos ψ, β = sin ψ (crate conventions) and the patch [`Constants`]
+//! A, B, C:
+//!
+//! ```text
+//! X = −α·min(A u, 1)        Y = −β·min(B u, 1)
+//! T = −sgn(ω)·min(C, |T₁|/u),   T₁ = −(1 − e²β²)/5      (plateau −C up to u_z* = |T₁|/C)
+//! ```
+//!
+//! in units of fN and fNa. In dimensional speeds the force pieces are −α·v/max(v, aω·u_x*, δ)
+//! and −β·v/max(v, aω·u_y*, δ) (u_x* = 1/A, u_y* = 1/B): each axis follows the spin-induced
+//! linear law while its width aω·u* exceeds δ and the regularized Coulomb law g_δ(v) = min(v/δ, 1)
+//! below it. The torque is multiplied by min(1, aω·u_T/δ) with u_T = 1/(5C), the largest u_z*.
+//!
+//! The paper switches all three components to plain g_δ Coulomb (with no torque) at once when
+//! aω·u_x*, aω·u_y*, aω·u_z* are all below δ; that jumps (by up to C·fNa in torque and up to
+//! |1 − v/δ| in force). Switching each component on its own width, as here, equals the paper's
+//! Coulomb law for the force wherever all widths are below δ, is continuous everywhere, and
+//! fades the spin torque out linearly as aω → 0. With δ = 0 it is exactly the paper's model.
+//!
+//! # Domain and special cases
+//!
+//! Every [`SlipState`]. Pure translation (ω = 0): F = −fN·g_δ(v)·v_P/v, T = 0 (exact Coulomb
+//! for δ → 0). Pure spin (v = 0): F = 0, T = −C·fNa·sgn ω (exact for δ → 0). Rest: zero.
+//! Passive by construction (each component opposes its own velocity), |F| ≤ fN, continuous
+//! (kinked at the switches). Symmetries: ψ → −ψ maps (F_x, F_y, T_z) to (F_x, −F_y, T_z),
+//! ψ → ψ + π to (−F_x, −F_y, T_z), ω → −ω to (F_x, F_y, −T_z), all bit-exact.
+//!
+//! # Error
+//!
+//! Max over e² ∈ [0, 0.99], ψ, u ∈ [0, ∞) against the exact integrals (δ = 0): see
+//! [`ERROR`](Simplified::ERROR) (force fN, torque fNa), worst at the knees u ≈ 1/A, 1/B.
+//!
+//! # Cost
+//!
+//! One square root, three or four divisions, no transcendental functions. Instructions on the
+//! Cortex-M4F: see the README's accuracy-and-cost table.
+
+use super::{Constants, FrictionLaw, SlipState, Traction};
+use crate::Real;
+
+/// The paper's simplified anisotropic model (see the [module docs](self)).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Simplified;
+
+/// Which piece of an axis' force law is active.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Zone {
+    /// v ≥ aω·u* and v ≥ δ: saturated, −α (resp. −β), Coulomb's value.
+    Sliding,
+    /// aω·u* > v and aω·u* ≥ δ: the spin-induced linear law −αAu (resp. −βBu).
+    Spin,
+    /// δ > v and δ > aω·u*: the regularized Coulomb slope −α·v/δ (resp. −β·v/δ).
+    Regularized,
+}
+
+/// Which piece of the torque law is active.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum TorqueZone {
+    /// u ≤ u_z*: the pure-spin plateau −C.
+    Plateau,
+    /// u > u_z*: the hyperbola T₁/u.
+    Hyperbola,
+}
+
+/// The branch of [`Simplified`]: the piece used for each component.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Branch {
+    /// F_x piece (slope A).
+    pub x: Zone,
+    /// F_y piece (slope B).
+    pub y: Zone,
+    /// T_z piece.
+    pub tz: TorqueZone,
+    /// T_z is scaled by aω·u_T/δ < 1 (spin slower than the regularization speed).
+    pub tz_regularized: bool,
+}
+
+impl Simplified {
+    /// Measured max error against the exact integrals over e² ∈ [0, 0.99], all ψ, u ∈ [0, ∞]
+    /// (δ = 0, `f64`): (|F − F_exact|/(fN), |T_z − T_exact|/(fNa)).
+    pub const ERROR: (f64, f64) = (f64::NAN, f64::NAN);
+}
+
+/// Denominator max(v, width, d) of one axis and its zone; ties resolve towards `Sliding`
+/// (the pieces agree there).
+#[inline(always)]
+fn axis<T: Real>(v: T, width: T, d: T) -> (T, Zone) {
+    if v >= width && v >= d {
+        (v, Zone::Sliding)
+    } else if width >= d {
+        (width, Zone::Spin)
+    } else {
+        (d, Zone::Regularized)
+    }
+}
+
+impl FrictionLaw for Simplified {
+    const NAME: &'static str = "simplified";
+    type Branch = Branch;
+    const REST: Branch = Branch {
+        x: Zone::Sliding,
+        y: Zone::Sliding,
+        tz: TorqueZone::Plateau,
+        tz_regularized: false,
+    };
+
+    #[inline]
+    fn traction<T: Real>(k: &Constants<T>, s: &SlipState<T>) -> (Traction<T>, Branch) {
+        let (x, y, w, d) = (s.x(), s.y(), s.w(), s.d());
+        let aw = w.abs();
+        let v2 = x * x + y * y;
+        if aw == T::ZERO && v2 == T::ZERO {
+            // Rest (with |w| = 0 a non-rest state has v ≥ 1).
+            return (Traction::default(), Self::REST);
+        }
+        let v = v2.sqrt();
+        // Forces: −x/max(v, |w|/A, d) = −α·min(Au, v/d, 1). The denominator is ≥ 1/A or ≥ 1
+        // (max(|x|, |y|, |w|) = 1), never 0 here.
+        let (dx, zx) = axis(v, aw * k.knee_x(), d);
+        let (dy, zy) = axis(v, aw * k.knee_y(), d);
+        // Torque: with q = x² + m₁y² = 5v²|T₁|, |T₁|/u = q|w|/(5v³); plateau while that is ≥ C.
+        // Compared without dividing, so v = 0 (pure spin) and underflowing v³ land on the plateau.
+        let p = (x * x + k.m1() * y * y) * aw;
+        let den = T::from_f64(5.0) * v2 * v;
+        let c = k.spin_torque();
+        let (mut t, tz) = if p >= c * den {
+            (c, TorqueZone::Plateau)
+        } else {
+            // den > 0 here, and p/den < C.
+            (p / den, TorqueZone::Hyperbola)
+        };
+        // Spin regularization: × min(1, |w|·u_T/d). d may be +∞ (gives 0), d = 0 never scales.
+        let spin = aw * k.knee_z_max();
+        let tz_regularized = spin < d;
+        if tz_regularized {
+            t *= spin / d;
+        }
+        (
+            Traction {
+                fx: -x / dx,
+                fy: -y / dy,
+                tz: -t.copysign(w),
+            },
+            Branch {
+                x: zx,
+                y: zy,
+                tz,
+                tz_regularized,
+            },
+        )
+    }
+}

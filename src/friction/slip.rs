@@ -1,0 +1,179 @@
+//! The slip state: the validated dimensional input and the friction core's homogeneous form.
+//!
+//! Every law here is homogeneous of degree 0 in (v_Px, v_Py, aω) — only the direction of that
+//! triple matters — except for the regularization speed δ, which is measured in the same unit.
+//! The core therefore takes the triple divided by its largest component,
+//!
+//! ```text
+//! (x, y, w) = (v_Px, v_Py, aω)/s,   d = δ/s,   s = max(|v_Px|, |v_Py|, a|ω|),
+//! ```
+//!
+//! so that max(|x|, |y|, |w|) = 1 (or everything is 0: no slip). This never overflows or
+//! underflows where it matters, unlike u = v/(aω) (∞ at ω = 0, 0/0 at rest, denormal at tiny
+//! speeds). In the core's terms u = √(x² + y²)/|w|, cos ψ = x/√(x² + y²), sin ψ = y/√(x² + y²).
+
+use crate::error::finite;
+use crate::{Error, Real};
+
+/// A validated slip: v_P = (`vx`, `vy`) (m/s), the velocity of body B relative to body A at the
+/// patch centre in the contact frame, and `omega` (rad/s), the relative spin about the normal z.
+///
+/// [`Slip::new`] is the only constructor: it rejects NaN and ±∞, so every `Slip` is finite and
+/// the per-step friction call that takes it is total.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Slip<T> {
+    vx: T,
+    vy: T,
+    omega: T,
+}
+
+impl<T: Real> Slip<T> {
+    /// From v_P = (vx, vy) in m/s and ω in rad/s. Errors: [`Error::NonFinite`] naming `"v_Px"`,
+    /// `"v_Py"` or `"omega"` if that input is NaN or ±∞. Any finite values are accepted,
+    /// including zero and subnormal ones.
+    #[inline]
+    pub fn new(vx: T, vy: T, omega: T) -> Result<Self, Error> {
+        Ok(Slip {
+            vx: finite(vx, "v_Px")?,
+            vy: finite(vy, "v_Py")?,
+            omega: finite(omega, "omega")?,
+        })
+    }
+    /// v_Px (m/s)
+    #[inline(always)]
+    pub fn vx(&self) -> T {
+        self.vx
+    }
+    /// v_Py (m/s)
+    #[inline(always)]
+    pub fn vy(&self) -> T {
+        self.vy
+    }
+    /// ω (rad/s)
+    #[inline(always)]
+    pub fn omega(&self) -> T {
+        self.omega
+    }
+}
+
+/// The slip in the friction core's homogeneous form (see the [module docs](self)):
+/// (x, y, w) = (v_Px, v_Py, aω)/s and d = δ/s with s = max(|v_Px|, |v_Py|, a|ω|).
+///
+/// Invariants: x, y, w are finite with max(|x|, |y|, |w|) = 1 (up to one rounding), or all
+/// three are 0 (no slip); d ≥ 0, possibly +∞ (δ > 0 at a vanishing slip speed).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct SlipState<T> {
+    x: T,
+    y: T,
+    w: T,
+    d: T,
+}
+
+impl<T: Real> SlipState<T> {
+    /// From a validated slip, the major semi-axis `a` (m) and the regularization speed `delta`
+    /// (m/s). `a` is read as 0 (point contact) unless it is > 0, `delta` as 0 (no
+    /// regularization) unless it is > 0; a·ω overflowing to ±∞ is read as pure spin. Total.
+    #[inline]
+    pub fn from_slip(slip: Slip<T>, a: T, delta: T) -> Self {
+        let a = a.max(T::ZERO);
+        let delta = delta.max(T::ZERO);
+        let aw = a * slip.omega;
+        if !aw.is_finite() {
+            // a finite, ω finite: only an overflow gets here (|aω| ≫ |v_P|).
+            return SlipState {
+                x: T::ZERO,
+                y: T::ZERO,
+                w: T::ONE.copysign(aw),
+                d: T::ZERO,
+            };
+        }
+        Self::normalised(slip.vx, slip.vy, aw, delta)
+    }
+
+    /// The dimensionless state of the paper's figures: v_P = u·aω·(cos ψ, sin ψ) with ω > 0 and
+    /// δ → 0 (no regularization). `u = +∞` is pure translation; a negative `u` means the
+    /// direction ψ + π. Errors: [`Error::NonFinite`] (`"psi"` or `"u"`) if ψ is not finite or u
+    /// is NaN. Costs a sine and a cosine: for tests, tools and the evaluator, not for the hot path.
+    pub fn from_polar(psi: T, u: T) -> Result<Self, Error> {
+        let psi = finite(psi, "psi")?;
+        if !(u.is_finite() || u.abs() > T::ONE) {
+            return Err(Error::NonFinite("u"));
+        }
+        let (s, c) = psi.sin_cos();
+        Ok(if u.abs() <= T::ONE {
+            Self::normalised(u * c, u * s, T::ONE, T::ZERO)
+        } else {
+            // 1/u is 0 for u = ±∞: pure translation.
+            let sign = T::ONE.copysign(u);
+            Self::normalised(sign * c, sign * s, T::ONE / u.abs(), T::ZERO)
+        })
+    }
+
+    /// From raw components in any common velocity unit: v_P = (vx, vy), the spin speed aω and
+    /// δ. Errors: [`Error::NonFinite`] (`"v_Px"`, `"v_Py"`, `"a_omega"` or `"delta"`) for NaN or
+    /// ±∞; a negative δ is read as 0.
+    pub fn new(vx: T, vy: T, a_omega: T, delta: T) -> Result<Self, Error> {
+        let vx = finite(vx, "v_Px")?;
+        let vy = finite(vy, "v_Py")?;
+        let aw = finite(a_omega, "a_omega")?;
+        let delta = finite(delta, "delta")?;
+        Ok(Self::normalised(vx, vy, aw, delta.max(T::ZERO)))
+    }
+
+    /// Divide by s = max(|vx|, |vy|, |aw|). Finite inputs, δ ≥ 0.
+    #[inline(always)]
+    fn normalised(vx: T, vy: T, aw: T, delta: T) -> Self {
+        let s = vx.abs().max(vy.abs()).max(aw.abs());
+        if s >= T::MIN_POSITIVE {
+            // 1/s is finite for every normal s.
+            let inv = T::ONE / s;
+            SlipState {
+                x: vx * inv,
+                y: vy * inv,
+                w: aw * inv,
+                d: delta * inv,
+            }
+        } else if s > T::ZERO {
+            // Subnormal s: 1/s may overflow, divide instead.
+            SlipState {
+                x: vx / s,
+                y: vy / s,
+                w: aw / s,
+                d: delta / s,
+            }
+        } else {
+            SlipState {
+                x: T::ZERO,
+                y: T::ZERO,
+                w: T::ZERO,
+                d: T::ZERO,
+            }
+        }
+    }
+
+    /// v_Px/s
+    #[inline(always)]
+    pub fn x(&self) -> T {
+        self.x
+    }
+    /// v_Py/s
+    #[inline(always)]
+    pub fn y(&self) -> T {
+        self.y
+    }
+    /// aω/s (carries the sign of ω)
+    #[inline(always)]
+    pub fn w(&self) -> T {
+        self.w
+    }
+    /// δ/s (≥ 0, may be +∞)
+    #[inline(always)]
+    pub fn d(&self) -> T {
+        self.d
+    }
+    /// No slip at all: v_P = 0 and ω = 0.
+    #[inline(always)]
+    pub fn is_rest(&self) -> bool {
+        self.x == T::ZERO && self.y == T::ZERO && self.w == T::ZERO
+    }
+}
