@@ -1,5 +1,5 @@
 //! criterion: the friction laws' dimensionless core, per law × precision, on a fixed mixed input
-//! set (u log-uniform in [0.01, 100], ψ uniform, e² = 0.5, ω > 0, δ = 0), with the patch
+//! set (64 states: u log-uniform in [0.01, 100], ψ uniform, e² = 0.5, ω > 0, δ = 0; the same set as the QEMU stage `friction`), with the patch
 //! constants given. Afterwards measures each law's max error against the exact integrals on a
 //! dense grid and writes both into `bench-results/friction.csv`:
 //!
@@ -18,23 +18,12 @@ use contensou::friction::{
 };
 use criterion::Criterion;
 
-/// States per timed iteration.
-const SET: usize = 256;
+include!("friction_set.rs");
 
 fn inputs<T: Real>() -> Vec<SlipState<T>> {
-    let mut seed = 0x2545_F491_4F6C_DD1Du64;
-    let mut unit = move || {
-        seed ^= seed << 13;
-        seed ^= seed >> 7;
-        seed ^= seed << 17;
-        (seed >> 11) as f64 / (1u64 << 53) as f64
-    };
-    (0..SET)
-        .map(|_| {
-            let u = 10f64.powf(-2.0 + 4.0 * unit());
-            let psi = 2.0 * std::f64::consts::PI * unit();
-            SlipState::from_polar(T::from_f64(psi), T::from_f64(u)).unwrap()
-        })
+    mixed_set()
+        .iter()
+        .map(|&(u, psi)| SlipState::from_polar(T::from_f64(psi), T::from_f64(u)).unwrap())
         .collect()
 }
 

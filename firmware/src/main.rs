@@ -26,6 +26,7 @@ macro_rules! stages {
 stages! {
     bench_core,
     bench_elliptic,
+    bench_friction,
 }
 
 #[entry]

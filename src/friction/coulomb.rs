@@ -20,7 +20,7 @@
 //! One square root, three or four divisions (the direction is renormalised by max(|v_Px|,
 //! |v_Py|) so that tiny speeds keep full precision).
 
-use super::{Constants, FrictionLaw, SlipState, Traction};
+use super::{Constants, FrictionLaw, SlipState, Traction, larger};
 use crate::Real;
 
 /// Regularized Coulomb point contact (see the [module docs](self)).
@@ -47,12 +47,11 @@ impl Coulomb {
 impl FrictionLaw for Coulomb {
     const NAME: &'static str = "coulomb";
     type Branch = Branch;
-    const REST: Branch = Branch::Rest;
 
     #[inline]
     fn traction<T: Real>(_k: &Constants<T>, s: &SlipState<T>) -> (Traction<T>, Branch) {
         let (x, y, d) = (s.x(), s.y(), s.d());
-        let mx = x.abs().max(y.abs());
+        let mx = larger(x.abs(), y.abs());
         if mx == T::ZERO {
             return (Traction::default(), Branch::Rest);
         }

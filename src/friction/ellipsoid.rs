@@ -46,7 +46,6 @@ impl Ellipsoid {
 impl FrictionLaw for Ellipsoid {
     const NAME: &'static str = "ellipsoid";
     type Branch = Smooth;
-    const REST: Smooth = Smooth::Rest;
 
     #[inline]
     fn traction<T: Real>(k: &Constants<T>, s: &SlipState<T>) -> (Traction<T>, Smooth) {

@@ -18,8 +18,6 @@ pub trait FrictionLaw {
     const NAME: &'static str;
     /// Which formula piece produced a traction (for diagnostics, tests and plots).
     type Branch: Copy + Debug + PartialEq;
-    /// The branch reported at rest (no slip), where every law returns zero traction.
-    const REST: Self::Branch;
 
     /// The dimensionless core: the slip state (homogeneous form, see [`SlipState`]) →
     /// F/(fN), T_z/(fNa) on body B from body A, and the branch. Total: finite output for every
@@ -100,7 +98,7 @@ impl<T: Real, L: FrictionLaw> Friction<T, L> {
     ) -> Tangential<T, L::Branch> {
         let a = a.max(T::ZERO);
         let fn_ = self.f * n.max(T::ZERO);
-        let (t, branch) = L::traction(k, &SlipState::from_slip(slip, a, self.delta));
+        let (t, branch) = L::traction(k, &SlipState::from_clamped(slip, a, self.delta));
         Tangential {
             fx: fn_ * t.fx,
             fy: fn_ * t.fy,

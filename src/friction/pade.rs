@@ -47,7 +47,6 @@ impl Pade {
 impl FrictionLaw for Pade {
     const NAME: &'static str = "pade";
     type Branch = Smooth;
-    const REST: Smooth = Smooth::Rest;
 
     #[inline]
     fn traction<T: Real>(k: &Constants<T>, s: &SlipState<T>) -> (Traction<T>, Smooth) {

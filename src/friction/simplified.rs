@@ -40,7 +40,7 @@
 //! One square root, three or four divisions, no transcendental functions. Instructions on the
 //! Cortex-M4F: see the README's accuracy-and-cost table.
 
-use super::{Constants, FrictionLaw, SlipState, Traction};
+use super::{Constants, FrictionLaw, SlipState, Traction, larger as max};
 use crate::Real;
 
 /// The paper's simplified anisotropic model (see the [module docs](self)).
@@ -86,70 +86,75 @@ impl Simplified {
     pub const ERROR: (f64, f64) = (f64::NAN, f64::NAN);
 }
 
-/// Denominator max(v, width, d) of one axis and its zone; ties resolve towards `Sliding`
-/// (the pieces agree there).
-#[inline(always)]
-fn axis<T: Real>(v: T, width: T, d: T) -> (T, Zone) {
-    if v >= width && v >= d {
-        (v, Zone::Sliding)
-    } else if width >= d {
-        (width, Zone::Spin)
+/// t·spin/d (0 when spin = 0, where t may be NaN from 0·∞ at rest), out of line: keeps the
+/// common path free of the division.
+#[cold]
+#[inline(never)]
+fn regularize<T: Real>(t: T, spin: T, d: T) -> T {
+    if spin > T::ZERO {
+        t * (spin / d)
     } else {
-        (d, Zone::Regularized)
+        T::ZERO
+    }
+}
+
+/// The zone of one axis, from the same comparisons as its denominator
+/// max(max(v, d), width).
+#[inline(always)]
+fn zone<T: Real>(v: T, width: T, d: T) -> Zone {
+    if width > max(v, d) {
+        Zone::Spin
+    } else if d > v {
+        Zone::Regularized
+    } else {
+        Zone::Sliding
     }
 }
 
 impl FrictionLaw for Simplified {
     const NAME: &'static str = "simplified";
     type Branch = Branch;
-    const REST: Branch = Branch {
-        x: Zone::Sliding,
-        y: Zone::Sliding,
-        tz: TorqueZone::Plateau,
-        tz_regularized: false,
-    };
 
     #[inline]
     fn traction<T: Real>(k: &Constants<T>, s: &SlipState<T>) -> (Traction<T>, Branch) {
         let (x, y, w, d) = (s.x(), s.y(), s.w(), s.d());
         let aw = w.abs();
-        let v2 = x * x + y * y;
-        if aw == T::ZERO && v2 == T::ZERO {
-            // Rest (with |w| = 0 a non-rest state has v ≥ 1).
-            return (Traction::default(), Self::REST);
-        }
+        let xx = x * x;
+        let v2 = xx + y * y;
         let v = v2.sqrt();
-        // Forces: −x/max(v, |w|/A, d) = −α·min(Au, v/d, 1). The denominator is ≥ 1/A or ≥ 1
-        // (max(|x|, |y|, |w|) = 1), never 0 here.
-        let (dx, zx) = axis(v, aw * k.knee_x(), d);
-        let (dy, zy) = axis(v, aw * k.knee_y(), d);
-        // Torque: with q = x² + m₁y² = 5v²|T₁|, |T₁|/u = q|w|/(5v³); plateau while that is ≥ C.
-        // Compared without dividing, so v = 0 (pure spin) and underflowing v³ land on the plateau.
-        let p = (x * x + k.m1() * y * y) * aw;
-        let den = T::from_f64(5.0) * v2 * v;
-        let c = k.spin_torque();
-        let (mut t, tz) = if p >= c * den {
-            (c, TorqueZone::Plateau)
-        } else {
-            // den > 0 here, and p/den < C.
-            (p / den, TorqueZone::Hyperbola)
-        };
-        // Spin regularization: × min(1, |w|·u_T/d). d may be +∞ (gives 0), d = 0 never scales.
+        // Forces: −x/max(v, d, |w|/A) = −α·min(Au, v/d, 1). d > 0, so no 0/0 even at rest.
+        let vd = max(v, d);
+        let (wx, wy) = (aw * k.knee_x(), aw * k.knee_y());
+        // Torque: T = −w·min(C/|w|, q/(5v³)) with q = x² + m₁y² = 5v²|T₁|: the plateau
+        // −C·sgn ω, or the hyperbola −w·q/(5v³) = T₁/u (sign of ω included). At v = 0 the
+        // quotient is 0/0 or +∞ and fails `<`: plateau. At ω = 0, C/|w| = +∞: hyperbola (= 0).
+        let plateau = k.spin_torque() / aw;
+        let hyperbola = (xx + k.m1() * y * y) / (T::from_f64(5.0) * v2 * v);
+        let hyperbolic = hyperbola < plateau;
+        let tz = -w * if hyperbolic { hyperbola } else { plateau };
+        // Spin regularization: × min(1, |w|·u_T/d); d > 0. Rare: divide only when it applies
+        // (this also covers rest, where the line above is 0·∞).
         let spin = aw * k.knee_z_max();
         let tz_regularized = spin < d;
-        if tz_regularized {
-            t *= spin / d;
-        }
+        let tz = if tz_regularized {
+            regularize(tz, spin, d)
+        } else {
+            tz
+        };
         (
             Traction {
-                fx: -x / dx,
-                fy: -y / dy,
-                tz: -t.copysign(w),
+                fx: -x / max(vd, wx),
+                fy: -y / max(vd, wy),
+                tz,
             },
             Branch {
-                x: zx,
-                y: zy,
-                tz,
+                x: zone(v, wx, d),
+                y: zone(v, wy, d),
+                tz: if hyperbolic {
+                    TorqueZone::Hyperbola
+                } else {
+                    TorqueZone::Plateau
+                },
                 tz_regularized,
             },
         )

@@ -12,6 +12,7 @@
 //! underflows where it matters, unlike u = v/(aω) (∞ at ω = 0, 0/0 at rest, denormal at tiny
 //! speeds). In the core's terms u = √(x² + y²)/|w|, cos ψ = x/√(x² + y²), sin ψ = y/√(x² + y²).
 
+use super::larger;
 use crate::error::finite;
 use crate::{Error, Real};
 
@@ -60,7 +61,10 @@ impl<T: Real> Slip<T> {
 /// (x, y, w) = (v_Px, v_Py, aω)/s and d = δ/s with s = max(|v_Px|, |v_Py|, a|ω|).
 ///
 /// Invariants: x, y, w are finite with max(|x|, |y|, |w|) = 1 (up to one rounding), or all
-/// three are 0 (no slip); d ≥ 0, possibly +∞ (δ > 0 at a vanishing slip speed).
+/// three are 0 (no slip); d ≥ `T::MIN_POSITIVE` (the smallest normal number), possibly +∞
+/// (δ > 0 at a vanishing slip speed). The floor means δ = 0 acts as a regularization width of
+/// 1e-38·s (`f32`) or 2e-308·s (`f64`), far below rounding; it spares the laws a test for
+/// 0/0 at rest.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct SlipState<T> {
     x: T,
@@ -75,8 +79,12 @@ impl<T: Real> SlipState<T> {
     /// regularization) unless it is > 0; a·ω overflowing to ±∞ is read as pure spin. Total.
     #[inline]
     pub fn from_slip(slip: Slip<T>, a: T, delta: T) -> Self {
-        let a = a.max(T::ZERO);
-        let delta = delta.max(T::ZERO);
+        Self::from_clamped(slip, a.max(T::ZERO), delta.max(T::ZERO))
+    }
+
+    /// [`SlipState::from_slip`] for a ≥ 0 and δ ≥ 0 already checked (the per-step path).
+    #[inline(always)]
+    pub(crate) fn from_clamped(slip: Slip<T>, a: T, delta: T) -> Self {
         let aw = a * slip.omega;
         if !aw.is_finite() {
             // a finite, ω finite: only an overflow gets here (|aω| ≫ |v_P|).
@@ -84,7 +92,7 @@ impl<T: Real> SlipState<T> {
                 x: T::ZERO,
                 y: T::ZERO,
                 w: T::ONE.copysign(aw),
-                d: T::ZERO,
+                d: T::MIN_POSITIVE,
             };
         }
         Self::normalised(slip.vx, slip.vy, aw, delta)
@@ -123,7 +131,7 @@ impl<T: Real> SlipState<T> {
     /// Divide by s = max(|vx|, |vy|, |aw|). Finite inputs, δ ≥ 0.
     #[inline(always)]
     fn normalised(vx: T, vy: T, aw: T, delta: T) -> Self {
-        let s = vx.abs().max(vy.abs()).max(aw.abs());
+        let s = larger(larger(vx.abs(), vy.abs()), aw.abs());
         if s >= T::MIN_POSITIVE {
             // 1/s is finite for every normal s.
             let inv = T::ONE / s;
@@ -131,22 +139,30 @@ impl<T: Real> SlipState<T> {
                 x: vx * inv,
                 y: vy * inv,
                 w: aw * inv,
-                d: delta * inv,
+                d: larger(delta * inv, T::MIN_POSITIVE),
             }
-        } else if s > T::ZERO {
-            // Subnormal s: 1/s may overflow, divide instead.
+        } else {
+            Self::tiny(vx, vy, aw, delta, s)
+        }
+    }
+
+    /// s subnormal or 0: 1/s may overflow, divide instead.
+    #[cold]
+    #[inline(never)]
+    fn tiny(vx: T, vy: T, aw: T, delta: T, s: T) -> Self {
+        if s > T::ZERO {
             SlipState {
                 x: vx / s,
                 y: vy / s,
                 w: aw / s,
-                d: delta / s,
+                d: larger(delta / s, T::MIN_POSITIVE),
             }
         } else {
             SlipState {
                 x: T::ZERO,
                 y: T::ZERO,
                 w: T::ZERO,
-                d: T::ZERO,
+                d: T::MIN_POSITIVE,
             }
         }
     }
@@ -166,7 +182,7 @@ impl<T: Real> SlipState<T> {
     pub fn w(&self) -> T {
         self.w
     }
-    /// δ/s (≥ 0, may be +∞)
+    /// max(δ/s, `T::MIN_POSITIVE`) (> 0, may be +∞)
     #[inline(always)]
     pub fn d(&self) -> T {
         self.d
