@@ -623,3 +623,158 @@ fn extreme_inputs_stay_finite_passive_and_bounded() {
     extremes::<f64, Coulomb>();
     extremes::<f32, Coulomb>();
 }
+
+/// The exact integrals as a law: passive (to rounding), |F| ≤ 1, symmetric, on random states
+/// (fewer than for the fast laws: µs per call, tens of µs in the debug profile).
+#[test]
+fn exact_is_passive_bounded_and_symmetric() {
+    use contensou::friction::Exact;
+    let mut rng = Rng(41);
+    let ks = table::<f64>();
+    for _ in 0..20_000 {
+        let k = &ks[rng.below(ks.len() as u64) as usize];
+        let s = random_slip(&mut rng, 1e-30, 1e30);
+        let st = state::<f64>(s);
+        let t = Exact::traction(k, &st).0;
+        let ctx = format!("s = {s:?} m = {} → {t:?}", k.m());
+        assert!(
+            t.fx.is_finite() && t.fy.is_finite() && t.tz.is_finite(),
+            "{ctx}"
+        );
+        let power = t.fx * st.x() + t.fy * st.y() + t.tz * st.w();
+        assert!(power <= 1e-15, "power {power}: {ctx}");
+        assert!(t.fx.hypot(t.fy) <= 1.0 + 1e-14, "{ctx}");
+        let [vx, vy, aw, d] = s;
+        let close = |a: Traction<f64>, b: Traction<f64>, what: &str| {
+            assert!(diff(a, b) <= 1e-14, "{what}: {a:?} vs {b:?}: {ctx}");
+        };
+        let t2 = |fx: f64, fy: f64, tz: f64| Traction { fx, fy, tz };
+        close(
+            eval::<f64, Exact>(k, [vx, -vy, aw, d]),
+            t2(t.fx, -t.fy, t.tz),
+            "psi -> -psi",
+        );
+        close(
+            eval::<f64, Exact>(k, [-vx, -vy, aw, d]),
+            t2(-t.fx, -t.fy, t.tz),
+            "psi -> psi + pi",
+        );
+        close(
+            eval::<f64, Exact>(k, [vx, vy, -aw, d]),
+            t2(t.fx, t.fy, -t.tz),
+            "omega -> -omega",
+        );
+    }
+}
+
+/// Max (|ΔF|, |ΔT_z|) of law `L` in precision `T` against `reference` (exact, f64) on `grid`.
+fn max_error<T: Real, L: FrictionLaw>(grid: &[(f64, f64, f64, Traction<f64>)]) -> (f64, f64) {
+    let (mut ef, mut et) = (0.0f64, 0.0f64);
+    let mut k: Option<(f64, Constants<T>)> = None;
+    for &(m, psi, u, r) in grid {
+        let kk = match k {
+            Some((km, kk)) if km == m => kk,
+            _ => Constants::from_parameter(Parameter::new(T::from_f64(m)).unwrap()),
+        };
+        k = Some((m, kk));
+        let s = SlipState::from_polar(T::from_f64(psi), T::from_f64(u)).unwrap();
+        let t = L::traction(&kk, &s).0;
+        ef = ef.max((t.fx.to_f64() - r.fx).hypot(t.fy.to_f64() - r.fy));
+        et = et.max((t.tz.to_f64() - r.tz).abs());
+    }
+    (ef, et)
+}
+
+/// Each law's max error against the exact integrals stays within its documented figure
+/// (measured by `cargo bench --bench friction` on a denser grid, e² ∈ [0, 0.99]; here a
+/// sparser grid through the same worst points, so a regression fails).
+#[test]
+fn max_error_against_exact_within_documented_bounds() {
+    use contensou::friction::Exact;
+    let mut grid = Vec::new();
+    for m in [0.0, 0.5, 0.9, 0.99] {
+        let k = Constants::<f64>::from_parameter(Parameter::new(m).unwrap());
+        for j in 0..=16 {
+            let psi = std::f64::consts::FRAC_PI_2 * j as f64 / 16.0;
+            let (s, c) = psi.sin_cos();
+            let mut us = vec![0.0, f64::INFINITY];
+            us.extend((0..=320).map(|n| 10f64.powf(-4.0 + n as f64 / 40.0)));
+            us.extend([
+                k.knee_x(),
+                k.knee_y(),
+                (1.0 - m * s * s) / (5.0 * k.spin_torque()),
+                1.0 / (s * s + c * c / k.m1()).sqrt(),
+            ]);
+            for u in us {
+                let st = SlipState::from_polar(psi, u).unwrap();
+                grid.push((m, psi, u, Exact::traction(&k, &st).0));
+            }
+        }
+    }
+    // (law, measured (force fN, torque fNa), bound asserted)
+    let check = |name: &str, got: (f64, f64), doc: (f64, f64), bound: (f64, f64)| {
+        eprintln!(
+            "{name}: max error {:.4} fN, {:.4} fNa (documented {doc:?})",
+            got.0, got.1
+        );
+        assert!(
+            got.0 <= bound.0 && got.1 <= bound.1,
+            "{name}: {got:?} > {bound:?}"
+        );
+        assert!(
+            got.0 <= doc.0 + 1e-4 && got.1 <= doc.1 + 1e-4,
+            "{name}: {got:?} > {doc:?}"
+        );
+    };
+    check(
+        "simplified f64",
+        max_error::<f64, Simplified>(&grid),
+        Simplified::ERROR,
+        (0.393, 0.355),
+    );
+    check(
+        "simplified f32",
+        max_error::<f32, Simplified>(&grid),
+        Simplified::ERROR,
+        (0.393, 0.355),
+    );
+    check(
+        "pade f64",
+        max_error::<f64, Pade>(&grid),
+        Pade::ERROR,
+        (0.410, 0.355),
+    );
+    check(
+        "pade f32",
+        max_error::<f32, Pade>(&grid),
+        Pade::ERROR,
+        (0.410, 0.355),
+    );
+    check(
+        "ellipsoid f64",
+        max_error::<f64, Ellipsoid>(&grid),
+        Ellipsoid::ERROR,
+        (0.228, 0.134),
+    );
+    check(
+        "ellipsoid f32",
+        max_error::<f32, Ellipsoid>(&grid),
+        Ellipsoid::ERROR,
+        (0.228, 0.134),
+    );
+    check(
+        "coulomb f64",
+        max_error::<f64, Coulomb>(&grid),
+        Coulomb::ERROR,
+        (1.0, 0.590),
+    );
+    check(
+        "coulomb f32",
+        max_error::<f32, Coulomb>(&grid),
+        Coulomb::ERROR,
+        (1.0, 0.590),
+    );
+    // The exact law in f32 is the rounded f64 one.
+    let (ef, et) = max_error::<f32, Exact>(&grid);
+    assert!(ef <= 2e-7 && et <= 2e-7, "exact f32: {ef:e} {et:e}");
+}

@@ -18,7 +18,7 @@
 //! | subcommand | input | output columns added | `--method` |
 //! |---|---|---|---|
 //! | `elliptic` | `m` | `K,E` | `agm` (default), `theta`, `table` |
-//! | `friction` | `e2,psi,u` | `Fx,Fy,Tz` (F/(fN), T_z/(fNa); u = v/(aω), ω > 0, δ → 0; `u = inf` allowed) | `--model` `simplified` (default), `pade`, `ellipsoid`, `coulomb` |
+//! | `friction` | `e2,psi,u` | `Fx,Fy,Tz` (F/(fN), T_z/(fNa); u = v/(aω), ω > 0, δ → 0; `u = inf` allowed) | `--model` `simplified` (default), `pade`, `ellipsoid`, `coulomb`, `exact` |
 
 mod elliptic;
 mod friction;

@@ -12,13 +12,14 @@
 //!
 //! Every [`SlipState`]; ignores ω and the patch. Passive, |F| ≤ fN, continuous for δ > 0
 //! (kink at v = δ). Against the exact integrals it is right only for u → ∞ (pure
-//! translation); its error is the whole spin effect: up to 1 fN in force (small u) and C fNa in
-//! torque — see [`ERROR`](Coulomb::ERROR).
+//! translation); its error is the whole spin effect: 0.9999 fN in force (→ 1 as u → 0) and
+//! C = 0.589 fNa in torque (at e² = 0, pure spin), measured over e² ∈ [0, 0.99], all ψ, u.
 //!
 //! # Cost
 //!
-//! One square root, three or four divisions (the direction is renormalised by max(|v_Px|,
-//! |v_Py|) so that tiny speeds keep full precision).
+//! One square root, three divisions (the direction is renormalised by max(|v_Px|, |v_Py|) so
+//! that tiny speeds keep full precision). Cortex-M4F `f32`: 42 instructions per call (incl.
+//! the 8-instruction call floor); `f64` ≈1,300. Host: ≈8–11 ns.
 
 use super::{Constants, FrictionLaw, SlipState, Traction, larger};
 use crate::Real;
@@ -41,7 +42,7 @@ pub enum Branch {
 impl Coulomb {
     /// Measured max error against the exact integrals over e² ∈ [0, 0.99], all ψ, u ∈ [0, ∞]
     /// (δ = 0, `f64`): (|F − F_exact|/(fN), |T_z − T_exact|/(fNa)).
-    pub const ERROR: (f64, f64) = (f64::NAN, f64::NAN);
+    pub const ERROR: (f64, f64) = (0.99988, 0.58905);
 }
 
 impl FrictionLaw for Coulomb {

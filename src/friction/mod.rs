@@ -12,7 +12,8 @@
 //! - [`FrictionLaw`]: a zero-sized law type with a dimensionless core
 //!   `(Constants, SlipState) → (Traction, Branch)`; [`Friction`]`<T, L>` adds the friction
 //!   coefficient and the regularization speed δ and scales by fN, fNa.
-//! - Laws: [`Simplified`] (the paper's model), [`Pade`], [`Ellipsoid`], [`Coulomb`].
+//! - Laws: [`Simplified`] (the paper's model), [`Pade`], [`Ellipsoid`], [`Coulomb`], and the
+//!   reference [`Exact`] (the integrals of [`exact`], µs per call).
 //!
 //! ```
 //! use contensou::elliptic::Parameter;
@@ -27,20 +28,22 @@
 //! # Ok::<(), contensou::Error>(())
 //! ```
 
-mod constants;
+pub mod constants;
 pub mod coulomb;
 pub mod ellipsoid;
 pub mod exact;
 pub mod law;
 pub mod pade;
+pub mod reference;
 pub mod simplified;
-mod slip;
+pub mod slip;
 
 pub use constants::Constants;
 pub use coulomb::Coulomb;
 pub use ellipsoid::Ellipsoid;
 pub use law::{Friction, FrictionLaw, Tangential};
 pub use pade::Pade;
+pub use reference::Exact;
 pub use simplified::Simplified;
 pub use slip::{Slip, SlipState};
 
