@@ -19,15 +19,12 @@ fn core<T: Real, L: FrictionLaw>(input: (&Constants<T>, SlipState<T>)) -> Tracti
     L::traction(input.0, &input.1).0
 }
 
-/// One per-step call's inputs: the law with f and δ, the patch constants, the slip.
-type StepInput<'a, T, L> = (&'a Friction<T, L>, &'a Constants<T>, Slip<T>);
+/// One per-step call's inputs: the law with f and δ, the patch constants, a, N, the slip.
+type StepInput<'a, T, L> = (&'a Friction<T, L>, &'a Constants<T>, T, T, Slip<T>);
 
 #[inline(never)]
 fn dimensional<T: Real, L: FrictionLaw>(input: StepInput<'_, T, L>) -> Tangential<T, L::Branch> {
-    // a = 50 µm, N = 2 N: a typical small Hertz patch.
-    input
-        .0
-        .tangential(input.1, T::from_f64(50e-6), T::from_f64(2.0), input.2)
+    input.0.tangential(input.1, input.2, input.3, input.4)
 }
 
 fn law<T: Real, L: FrictionLaw>(r: &Runner) {
@@ -59,7 +56,8 @@ fn full<T: Real, L: FrictionLaw>(r: &Runner) {
             T::from_f64(100.0),
         )
         .expect("finite input");
-        (&f, &k, slip)
+        // a = 50 µm, N = 2 N: a typical small Hertz patch.
+        (&f, &k, T::from_f64(50e-6), T::from_f64(2.0), slip)
     });
     let name = if L::NAME == "simplified" { "simplified-dimensional" } else { L::NAME };
     r.bench("friction", name, T::NAME, &slips, dimensional::<T, L>);

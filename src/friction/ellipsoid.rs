@@ -59,7 +59,7 @@ impl FrictionLaw for Ellipsoid {
         let rw = r * w;
         let n2 = x * x + y * y + rw * rw;
         if n2 == T::ZERO {
-            // Off rest n2 ≥ min(1, r²) > 0.
+            // Off rest n2 ≥ min(1, r²)/9 > 0 (max(|x|, |y|, |w|) ≥ 1/3).
             return (Traction::default(), Smooth::Rest);
         }
         let inv = T::ONE / n2.sqrt();

@@ -2,15 +2,16 @@
 //!
 //! Every law here is homogeneous of degree 0 in (v_Px, v_Py, aω) — only the direction of that
 //! triple matters — except for the regularization speed δ, which is measured in the same unit.
-//! The core therefore takes the triple divided by its largest component,
+//! The core therefore takes the triple divided by its size,
 //!
 //! ```text
-//! (x, y, w) = (v_Px, v_Py, aω)/s,   d = δ/s,   s = max(|v_Px|, |v_Py|, a|ω|),
+//! (x, y, w) = (v_Px, v_Py, aω)/s,   d = δ/s,   s = |v_Px| + |v_Py| + a|ω|
 //! ```
 //!
-//! so that max(|x|, |y|, |w|) = 1 (or everything is 0: no slip). This never overflows or
-//! underflows where it matters, unlike u = v/(aω) (∞ at ω = 0, 0/0 at rest, denormal at tiny
-//! speeds). In the core's terms u = √(x² + y²)/|w|, cos ψ = x/√(x² + y²), sin ψ = y/√(x² + y²).
+//! (the ℓ¹ norm: two additions instead of two compare-and-selects; where s would be subnormal
+//! or overflow, the largest magnitude instead), so that every component lies in [−1, 1] and
+//! max(|x|, |y|, |w|) ≥ 1/3 (or everything is 0: no slip). This never overflows or underflows
+//! where it matters, unlike u = v/(aω) (∞ at ω = 0, 0/0 at rest, denormal at tiny speeds). In the core's terms u = √(x² + y²)/|w|, cos ψ = x/√(x² + y²), sin ψ = y/√(x² + y²).
 
 use super::larger;
 use crate::error::finite;
@@ -58,10 +59,10 @@ impl<T: Real> Slip<T> {
 }
 
 /// The slip in the friction core's homogeneous form (see the [module docs](self)):
-/// (x, y, w) = (v_Px, v_Py, aω)/s and d = δ/s with s = max(|v_Px|, |v_Py|, a|ω|).
+/// (x, y, w) = (v_Px, v_Py, aω)/s and d = δ/s with s = |v_Px| + |v_Py| + a|ω|.
 ///
-/// Invariants: x, y, w are finite with max(|x|, |y|, |w|) = 1 (up to one rounding), or all
-/// three are 0 (no slip); d ≥ `T::MIN_POSITIVE` (the smallest normal number), possibly +∞
+/// Invariants: x, y, w lie in [−1, 1] with max(|x|, |y|, |w|) ≥ 1/3, or all three are 0 (no
+/// slip); d ≥ `T::MIN_POSITIVE` (the smallest normal number), possibly +∞
 /// (δ > 0 at a vanishing slip speed). The floor means δ = 0 acts as a regularization width of
 /// 1e-38·s (`f32`) or 2e-308·s (`f64`), far below rounding; it spares the laws a test for
 /// 0/0 at rest.
@@ -85,17 +86,7 @@ impl<T: Real> SlipState<T> {
     /// [`SlipState::from_slip`] for a ≥ 0 and δ ≥ 0 already checked (the per-step path).
     #[inline(always)]
     pub(crate) fn from_clamped(slip: Slip<T>, a: T, delta: T) -> Self {
-        let aw = a * slip.omega;
-        if !aw.is_finite() {
-            // a finite, ω finite: only an overflow gets here (|aω| ≫ |v_P|).
-            return SlipState {
-                x: T::ZERO,
-                y: T::ZERO,
-                w: T::ONE.copysign(aw),
-                d: T::MIN_POSITIVE,
-            };
-        }
-        Self::normalised(slip.vx, slip.vy, aw, delta)
+        Self::normalised(slip.vx, slip.vy, a * slip.omega, delta)
     }
 
     /// The dimensionless state of the paper's figures: v_P = u·aω·(cos ψ, sin ψ) with ω > 0 and
@@ -128,11 +119,12 @@ impl<T: Real> SlipState<T> {
         Ok(Self::normalised(vx, vy, aw, delta.max(T::ZERO)))
     }
 
-    /// Divide by s = max(|vx|, |vy|, |aw|). Finite inputs, δ ≥ 0.
+    /// Divide by s = |vx| + |vy| + |aw|. vx, vy finite, aw finite or ±∞ (an overflowed
+    /// product of finite a and ω), δ ≥ 0 finite.
     #[inline(always)]
     fn normalised(vx: T, vy: T, aw: T, delta: T) -> Self {
-        let s = larger(larger(vx.abs(), vy.abs()), aw.abs());
-        if s >= T::MIN_POSITIVE {
+        let s = vx.abs() + vy.abs() + aw.abs();
+        if s >= T::MIN_POSITIVE && s <= T::MAX {
             // 1/s is finite for every normal s.
             let inv = T::ONE / s;
             SlipState {
@@ -142,20 +134,29 @@ impl<T: Real> SlipState<T> {
                 d: larger(delta * inv, T::MIN_POSITIVE),
             }
         } else {
-            Self::tiny(vx, vy, aw, delta, s)
+            Self::unusual(vx, vy, aw, delta)
         }
     }
 
-    /// s subnormal or 0: 1/s may overflow, divide instead.
+    /// s subnormal, zero or overflowing: divide by the largest magnitude instead.
     #[cold]
     #[inline(never)]
-    fn tiny(vx: T, vy: T, aw: T, delta: T, s: T) -> Self {
-        if s > T::ZERO {
+    fn unusual(vx: T, vy: T, aw: T, delta: T) -> Self {
+        let m = larger(larger(vx.abs(), vy.abs()), aw.abs());
+        if !aw.is_finite() {
+            // Only |aω| overflowing gets here: pure spin.
             SlipState {
-                x: vx / s,
-                y: vy / s,
-                w: aw / s,
-                d: larger(delta / s, T::MIN_POSITIVE),
+                x: T::ZERO,
+                y: T::ZERO,
+                w: T::ONE.copysign(aw),
+                d: T::MIN_POSITIVE,
+            }
+        } else if m > T::ZERO {
+            SlipState {
+                x: vx / m,
+                y: vy / m,
+                w: aw / m,
+                d: larger(delta / m, T::MIN_POSITIVE),
             }
         } else {
             SlipState {
