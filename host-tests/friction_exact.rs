@@ -264,6 +264,12 @@ fn passive_and_bounded() {
         assert!(t.fx * vx + t.fy * vy + t.tz * w < 0.0, "{m} {vx} {vy} {w}");
         assert!(t.fx.hypot(t.fy) <= 1.0 + 1e-15);
         assert!(t.tz.abs() <= 0.375 * PI / 2.0 + 1e-15);
+        let (vx, vy, w) = (vx as f32, vy as f32, w as f32);
+        let t = traction(Parameter::new(m as f32).unwrap(), vx, vy, w);
+        assert!(
+            t.fx * vx + t.fy * vy + t.tz * w < 0.0,
+            "f32 {m} {vx} {vy} {w}"
+        );
     }
 }
 
