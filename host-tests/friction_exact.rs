@@ -335,6 +335,16 @@ fn cost_per_call() {
         let ns = t0.elapsed().as_nanos() as f64 / n as f64;
         println!("{name} u = {u}: {ns:.0} ns/call");
     }
+    let thin = Parameter::from_complement(1e-8f64).unwrap();
+    let t0 = std::time::Instant::now();
+    for k in 0..20_000 {
+        let psi = k as f64 * 1e-4;
+        sink += traction(thin, 1.5 * psi.cos(), 1.5 * psi.sin(), 1.0).fx;
+    }
+    println!(
+        "m1 = 1e-8 outside u = 1.5: {:.0} ns/call",
+        t0.elapsed().as_nanos() as f64 / 2e4
+    );
     let p32 = Parameter::new(0.687f32).unwrap();
     let t0 = std::time::Instant::now();
     for k in 0..20_000 {

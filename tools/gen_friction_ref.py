@@ -26,7 +26,7 @@ F in units of fN, T_z in units of fNa, u = v/(aω) with ω > 0; u = inf means pu
 (aω = 0). x is along the major axis. Convention: on body B from body A, slip v_M = (v_x − ωy,
 v_y + ωx).
 
-Usage: python3 tools/gen_friction_ref.py [--mpmath-check N]
+Usage (from the crate root): python3 tools/gen_friction_ref.py [--mpmath-check N]
 """
 
 import math

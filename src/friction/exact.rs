@@ -61,7 +61,7 @@ use crate::elliptic::{Agm, Method, Parameter};
 /// centre's slip velocity (vx, vy) and a·ω (all in the same units; the result is homogeneous of
 /// degree 0 in (vx, vy, a_omega); all three zero → zero traction).
 ///
-/// See the [module docs](self) for the method, the measured error (≤ 1e-14 vs the reference)
+/// See the [module docs](self) for the method, the measured error (5e-15 vs the reference)
 /// and the cost (µs: reference path, not for per-step use).
 pub fn traction<T: Real>(p: Parameter<T>, vx: T, vy: T, a_omega: T) -> Traction<T> {
     let (fx, fy, tz) = traction_f64(
