@@ -13,8 +13,9 @@ pressure is an endpoint as well. (Polar coordinates about the patch centre conve
 thin ellipses when the IC is near the major axis: tried, dropped.)
 
 Precision: every point is computed at two step sizes (h and h/2); the difference is the
-recorded error estimate (column `err`). A subset is re-checked with mpmath.quad (tanh-sinh,
-dps = 30, same splitting, independent code path) — see `--mpmath-check`. The closed forms
+recorded error estimate (column `err`). A random subset is re-checked with the paper's
+(3.1)–(3.3) exactly as printed (elliptic-polar coordinates, ε = 1/u), integrated by mpmath.quad
+(tanh-sinh) at dps = 30 — see `--mpmath-check N`. The closed forms
 (circle, pure spin, pure translation, small-u slopes (3.5), large-u terms) and the quartic
 polynomial of the notes (inside the ellipse) are checked at the end and their deviations
 printed.
@@ -25,7 +26,7 @@ F in units of fN, T_z in units of fNa, u = v/(aω) with ω > 0; u = inf means pu
 (aω = 0). x is along the major axis. Convention: on body B from body A, slip v_M = (v_x − ωy,
 v_y + ωx).
 
-Usage: python3 tools/gen_friction_ref.py [--mpmath-check N]
+Usage (from the crate root): python3 tools/gen_friction_ref.py [--mpmath-check N]
 """
 
 import math
@@ -113,36 +114,37 @@ def u_boundary(m, psi):
 
 
 def mp_traction(m, psi, u, dps=30):
-    """Same integrals with mpmath.quad (tanh-sinh) at dps, for the precision check."""
+    """The paper's (3.1)–(3.3) exactly as printed (ε = 1/u, elliptic-polar ρ, φ), integrated
+    with mpmath.quad (tanh-sinh) at dps, split at the IC (φ_IC; ρ_IC if inside): an independent
+    parametrisation and arithmetic for the precision check. u > 0."""
     import mpmath as mp
 
     mp.mp.dps = dps
     m, psi, u = mp.mpf(m), mp.mpf(psi), mp.mpf(u)
     g = mp.sqrt(1 - m)
     al, be = mp.cos(psi), mp.sin(psi)
-    X0, Y0 = -u * be, u * al
-    th0 = mp.atan2(Y0, X0) if u > 0 else mp.mpf(0)
-
-    def rmax(t):
-        return g / mp.sqrt((g * mp.cos(t)) ** 2 + mp.sin(t) ** 2)
-
-    rho0 = u / rmax(th0)
-    ths = [th0] + [k * mp.pi for k in range(-3, 4) if th0 < k * mp.pi < th0 + 2 * mp.pi]
-    ths.append(th0 + 2 * mp.pi)
-    rs = [0, rho0, 1] if 0 < rho0 < 1 else [0, 1]
+    eps = 1 / u
+    xi0, eta0 = -u * be, u * al / g
+    rho0 = mp.sqrt(xi0**2 + eta0**2)
+    phi0 = mp.atan2(eta0, xi0)
+    rs = [0, rho0, 1] if rho0 < 1 else [0, 1]
     out = []
     for comp in range(3):
 
-        def f(rho, t):
-            rm = rmax(t)
-            x, y = rm * rho * mp.cos(t), rm * rho * mp.sin(t)
-            vx, vy = u * al - y, u * be + x
-            nv = mp.sqrt(vx * vx + vy * vy)
-            s = mp.sqrt(1 - rho * rho) * rho * rm * rm / nv
-            return s * (vx, vy, x * vy - y * vx)[comp]
+        def f(r, p):
+            c, s = mp.cos(p), mp.sin(p)
+            zeta = mp.sqrt(abs(1 - 2 * eps * r * (al * g * s - be * c)
+                               + eps**2 * r**2 * (c**2 + g**2 * s**2)))
+            if comp == 0:
+                num = r * (al - eps * g * r * s)
+            elif comp == 1:
+                num = r * (be + eps * r * c)
+            else:
+                num = r**2 * (c * (be + eps * r * c) - g * s * (al - eps * g * r * s))
+            return mp.sqrt(1 - r * r) * num / zeta
 
-        val = mp.quad(f, rs, ths)
-        out.append(-3 / (2 * mp.pi * g) * val)
+        val = mp.quad(f, rs, [phi0, phi0 + 2 * mp.pi])
+        out.append(-3 / (2 * mp.pi) * val)
     return [float(x) for x in out]
 
 
@@ -195,6 +197,11 @@ def points():
         ub = u_boundary(0.9999, psi)
         for u in [0.0, 0.005, 0.3, ub * (1 - 1e-6), ub * (1 + 1e-6), 1.2, 4.0, 50.0]:
             pts.append((0.9999, psi, u))
+    for m in [1 - 1e-8, 1 - 1.5e-12]:  # extreme patches (m₁ = 1 − m is exact in f64)
+        for psi in [0.0, 0.9, math.pi / 2]:
+            ub = u_boundary(m, psi)
+            for u in [0.3 * ub, ub * (1 - 1e-6), ub * (1 + 1e-6), 2 * ub, 0.5, 1.2, 4.0]:
+                pts.append((m, psi, u))
     return pts
 
 
@@ -258,9 +265,8 @@ def main():
         import random
 
         random.seed(5)
-        # mpmath in polar coordinates about the patch centre (a second, different
-        # parametrisation); thin patches are slow there, so e² ≤ 0.9
-        pool = [r for r in rows if not math.isinf(r[2]) and r[0] <= 0.9]
+        # the paper's printed (3.1)–(3.3) in mpmath; thin patches are slow there, so e² ≤ 0.9
+        pool = [r for r in rows if 0 < r[2] < math.inf and r[0] <= 0.9]
         sample = random.sample(pool, nmp)
         dev = 0.0
         t2 = time.time()

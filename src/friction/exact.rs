@@ -11,7 +11,8 @@
 //! - **IC inside** the ellipse (vy² + vx²/m₁ ≤ (aω)²): the quartic polynomial in (X₀, Y₀) of
 //!   `inside` (closed form; K, E, B, D by [`Agm`]).
 //! - **IC outside**: polar coordinates about the IC with closed-form radial integrals and a
-//!   96-node Gauss–Legendre rule over the ray angle (`outside`).
+//!   Gauss–Legendre rule of 64–96 nodes (up to 160 when e² > 0.9999) over the ray angle
+//!   (`outside`).
 //! - **u > 1e5** (aω < 1e-5·|v_P|, including aω = 0): the large-u series
 //!   F = −w + F₂/u², T_z = T₁/u (paper §2: F₂ = −(1/5){−w/2 − e²[((3/2)α² − 1/2)w − α i]},
 //!   T₁ = −(1 − e²β²)/5), whose next terms are O(u⁻⁴) and O(u⁻³) < 1e-15.
@@ -22,7 +23,7 @@
 //!
 //! # Domain and special cases
 //!
-//! Any [`Parameter`] (e² up to 1 − 1e-12; accuracy measured to e² = 0.9999) and any finite
+//! Any [`Parameter`] (e² up to 1 − 1e-12; accuracy measured to m₁ = 1 − e² = 1.5e-12) and any finite
 //! (vx, vy, a_omega); the result is homogeneous of degree 0 (the inputs are scaled by their
 //! largest magnitude first, so no overflow or underflow). All three zero → zero traction.
 //! Non-finite inputs → zero traction (validate before; the dimensional wrapper does).
@@ -32,17 +33,20 @@
 //! # Error
 //!
 //! Measured against the independent brute-force reference `tools/data/friction_ref.csv`
-//! (`tools/gen_friction_ref.py`: 2-D tanh-sinh in 80-bit arithmetic, itself converged to
-//! 2e-15): max abs error ≤ 1e-14 in fN and fNa over e² ∈ {0, 0.3, 0.687, 0.9, 0.99, 0.9999},
-//! ψ in all quadrants, u ∈ {0} ∪ [1e-3, 1e3] ∪ {u_b(1 ± 1e-6), ∞} (`host-tests/friction_exact.rs`).
+//! (`tools/gen_friction_ref.py`: 2-D tanh-sinh over the patch in 80-bit arithmetic, converged
+//! to 1.7e-15; 561 points: e² ∈ {0, 0.3, 0.687, 0.9, 0.99, 0.9999, 1 − 1e-8, 1 − 1.5e-12}, ψ in
+//! all quadrants, u ∈ {0} ∪ [1e-3, 1e3] ∪ {u_b(1 ± 1e-6), ∞}): max abs error 5.0e-15 in fN and
+//! fNa (`f64`), 5.2e-7 (`f32`, with e² rounded to `f32`). Jump across the ellipse boundary
+//! (u_b(1 ± 1e-12)): 1.1e-12, i.e. the slope times the step. Checked in
+//! `host-tests/friction_exact.rs`.
 //!
 //! # Precision and cost
 //!
 //! Computed internally in `f64` for both `f32` and `f64` (reference path; the `f32` result is
-//! the rounded `f64` one). Cost on the host (x86-64, release, e² = 0.687): ≈0.1 µs inside
-//! (mostly the AGM for K, E), ≈5 µs (u = 30) to ≈10 µs (u = 1.5) outside (up to 96 nodes, each
-//! two `sincos`, a square root and a `sinh`/`cosh` pair), 50 ns in the large-u branch; `f32`
-//! the same plus conversions. Not for the per-step hot path; no instruction count measured.
+//! the rounded `f64` one). Cost on the host (x86-64, release, criterion, e² = 0.687): ≈75 ns
+//! inside (mostly the AGM for K, E), ≈5 µs (u = 30) to ≈10 µs (u = 1.5) outside (each node two
+//! `sincos`, a square root and a `sinh`/`cosh` pair), 50 ns in the large-u branch; `f32` the
+//! same plus conversions. Not for the per-step hot path; no instruction count measured.
 
 mod gauss;
 mod inside;
@@ -57,7 +61,7 @@ use crate::elliptic::{Agm, Method, Parameter};
 /// centre's slip velocity (vx, vy) and a·ω (all in the same units; the result is homogeneous of
 /// degree 0 in (vx, vy, a_omega); all three zero → zero traction).
 ///
-/// See the [module docs](self) for the method, the measured error (≤ 1e-14 vs the reference)
+/// See the [module docs](self) for the method, the measured error (5e-15 vs the reference)
 /// and the cost (µs: reference path, not for per-step use).
 pub fn traction<T: Real>(p: Parameter<T>, vx: T, vy: T, a_omega: T) -> Traction<T> {
     let (fx, fy, tz) = traction_f64(
