@@ -18,7 +18,7 @@ use crate::elliptic::{Agm, Integrals, Method, Parameter};
 
 /// The friction constants of one contact shape (see the [module docs](self)).
 ///
-/// Construction costs three multiplications and three divisions given the [`Integrals`]; the
+/// Construction costs four multiplications and three divisions given the [`Integrals`]; the
 /// friction laws only read the stored fields.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Constants<T> {

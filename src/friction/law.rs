@@ -11,8 +11,10 @@ use crate::{Error, Real};
 /// A friction law over the Hertz ellipse: a zero-sized type, chosen by generics so that only the
 /// laws a program uses are linked.
 ///
-/// Every law is passive by construction (F·v_P + T_z·ω ≤ 0), bounded (|F| ≤ fN) and continuous
-/// across its own branch switches; see each law's docs for its formula, error and cost.
+/// Every law here is passive by construction (F·v_P + T_z·ω ≤ 0), bounded (|F| ≤ fN) and
+/// continuous across its own branch switches; the only jump left is dry friction's own, at
+/// v_P = 0 with ω = 0 and δ = 0 (F = 0 there, −fN·v_P/|v_P| beside it). See each law's docs
+/// for its formula, error and cost.
 pub trait FrictionLaw {
     /// Short name used by the evaluator CLI and the benchmark labels (`"simplified"`, …).
     const NAME: &'static str;

@@ -17,8 +17,8 @@
 //! below it. The torque is multiplied by min(1, aω·u_T/δ) with u_T = 1/(5C), the largest u_z*.
 //!
 //! The paper switches all three components to plain g_δ Coulomb (with no torque) at once when
-//! aω·u_x*, aω·u_y*, aω·u_z* are all below δ; that jumps (by up to C·fNa in torque and up to
-//! |1 − v/δ| in force). Switching each component on its own width, as here, equals the paper's
+//! aω·u_x*, aω·u_y*, aω·u_z* are all below δ; that jumps (the torque by up to C·fNa, the
+//! force wherever v < δ). Switching each component on its own width, as here, equals the paper's
 //! Coulomb law for the force wherever all widths are below δ, is continuous everywhere, and
 //! fades the spin torque out linearly as aω → 0. With δ = 0 it is exactly the paper's model.
 //!
@@ -36,8 +36,7 @@
 //! ψ, u ∈ [0, ∞] (`cargo bench --bench friction`, dense grid through every knee):
 //! **0.393 fN** in force (at e² = 0.99, ψ = 0, the knee u = 1/A) and **0.354 fNa** in torque
 //! (e² = 0.99, ψ = π/2, u ≈ 0.11, where |T₁| = (1 − e²)/5 makes the plateau end far too
-//! early); for a circle (e² = 0) 0.180 fN and 0.073 fNa. `f32` adds < 4e-7. It grows with e²
-//! because the exact approach to saturation is slower on the major axis.
+//! early); for a circle (e² = 0) 0.180 fN and 0.073 fNa. `f32` adds < 4e-7.
 //!
 //! # Cost
 //!
