@@ -19,7 +19,7 @@
 //!
 //! One square root, three divisions (the direction is renormalised by max(|v_Px|, |v_Py|) so
 //! that tiny speeds keep full precision). Cortex-M4F `f32`: 42 instructions per call (incl.
-//! the 8-instruction call floor); `f64` ≈1,300. Host: ≈8–11 ns.
+//! the 8-instruction call floor); `f64` ≈1,300. Host: ≈5–12 ns.
 
 use super::{Constants, FrictionLaw, SlipState, Traction, larger};
 use crate::Real;

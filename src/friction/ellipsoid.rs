@@ -32,7 +32,7 @@
 //! # Cost
 //!
 //! One square root, one division. Cortex-M4F `f32`: 34 instructions per call (incl. the
-//! 8-instruction call floor); `f64` ≈1,300. Host: ≈5–7 ns.
+//! 8-instruction call floor); `f64` ≈1,300. Host: ≈3–7 ns.
 
 use super::law::Smooth;
 use super::{Constants, FrictionLaw, SlipState, Traction};

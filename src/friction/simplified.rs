@@ -43,7 +43,7 @@
 //! One square root, four divisions (a fifth only while the spin is regularized), no
 //! transcendental functions. Cortex-M4F, `f32`, patch constants given: **66 instructions** per
 //! call including the 8-instruction call floor of the QEMU rig (stage `friction`); `f64`
-//! (soft float) ≈2,300. Host (x86-64): ≈6–11 ns. The dimensional call
+//! (soft float) ≈2,300. Host (x86-64): ≈6–12 ns. The dimensional call
 //! [`Friction::tangential`](super::Friction::tangential) (normalisation + core + scaling):
 //! 125 instructions (`f32`).
 
