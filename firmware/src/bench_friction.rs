@@ -1,13 +1,14 @@
 //! Stage `friction`: the dimensionless friction core per law × precision, patch constants given
 //! (`FrictionLaw::traction(&Constants, &SlipState)`), plus the full dimensional call
-//! (`Friction::tangential`: normalisation + core + scaling by fN, fNa) for `simplified`.
+//! (`Friction::tangential`: normalisation + core + scaling by fN, fNa) for `simplified`, and
+//! `Constants::from_integrals` (method `constants-from-integrals`).
 //!
 //! Inputs (the same mixed set as the host bench `benches/friction.rs`): 64 states with u
 //! log-uniform in [0.01, 100], ψ uniform in [0, 2π), ω > 0, δ = 0, e² = 0.5.
 
 use crate::harness::Runner;
 use contensou::Real;
-use contensou::elliptic::Parameter;
+use contensou::elliptic::{Agm, Integrals, Method, Parameter};
 use contensou::friction::*;
 
 include!("../../benches/friction_set.rs");
@@ -63,6 +64,21 @@ fn full<T: Real, L: FrictionLaw>(r: &Runner) {
     r.bench("friction", name, T::NAME, &slips, dimensional::<T, L>);
 }
 
+#[inline(never)]
+fn constants<T: Real>(input: (Parameter<T>, Integrals<T>)) -> Constants<T> {
+    Constants::from_integrals(input.0, &input.1)
+}
+
+/// Building the patch constants from given integrals (the per-step cost when the eccentricity
+/// changes every step), over 16 parameters m = i/16.
+fn from_integrals<T: Real>(r: &Runner) {
+    let inputs: [(Parameter<T>, Integrals<T>); 16] = core::array::from_fn(|i| {
+        let p = Parameter::new(T::from_f64(i as f64 / 16.0)).expect("m inside the domain");
+        (p, Agm::integrals(p))
+    });
+    r.bench("friction", "constants-from-integrals", T::NAME, &inputs, constants::<T>);
+}
+
 /// One line per law (each measures f32 and f64).
 pub fn run(r: &Runner) {
     for_both::<Simplified>(r);
@@ -71,6 +87,8 @@ pub fn run(r: &Runner) {
     for_both::<Coulomb>(r);
     full::<f32, Simplified>(r);
     full::<f64, Simplified>(r);
+    from_integrals::<f32>(r);
+    from_integrals::<f64>(r);
 }
 
 fn for_both<L: FrictionLaw>(r: &Runner) {

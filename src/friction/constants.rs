@@ -18,8 +18,9 @@ use crate::elliptic::{Agm, Integrals, Method, Parameter};
 
 /// The friction constants of one contact shape (see the [module docs](self)).
 ///
-/// Construction costs four multiplications and three divisions given the [`Integrals`]; the
-/// friction laws only read the stored fields.
+/// Construction costs four multiplications and three divisions given the [`Integrals`]
+/// ([`Constants::from_integrals`]: 30 instructions in `f32` on the Cortex-M4F, call included);
+/// the friction laws only read the stored fields.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Constants<T> {
     m: T,

@@ -20,7 +20,8 @@
 //! aω·u_x*, aω·u_y*, aω·u_z* are all below δ; that jumps (the torque by up to C·fNa, the
 //! force wherever v < δ). Switching each component on its own width, as here, equals the paper's
 //! Coulomb law for the force wherever all widths are below δ, is continuous everywhere, and
-//! fades the spin torque out linearly as aω → 0. With δ = 0 it is exactly the paper's model.
+//! fades the spin torque out linearly as aω → 0. With δ = 0 it is exactly the paper's model
+//! (up to the 1e-38-relative floor of [`SlipState::d`]).
 //!
 //! # Domain and special cases
 //!
