@@ -20,8 +20,10 @@
 //! | `elliptic` | `m` | `K,E` | `agm` (default), `theta`, `table` |
 //! | `eccentricity` | `g` | `c` | `newton` (default), `table`, `linear`, `hamrock-dowson` |
 //! | `hertz` | `P,Q,Estar,h` | `c,a,b,N` | `newton` (default), `table`, `linear`, `volumetric`, `fitted` |
+//! | `friction` | `e2,psi,u` | `Fx,Fy,Tz` (F/(fN), T_z/(fNa); u = v/(aω), ω > 0, δ → 0; `u = inf` allowed) | `--model` `simplified` (default), `pade`, `ellipsoid`, `coulomb`, `exact` |
 
 mod elliptic;
+mod friction;
 mod hertz;
 
 use std::io::{BufRead, Write};
@@ -115,9 +117,18 @@ fn fail(row: usize, reason: &str) -> ExitCode {
 fn usage(message: &str) -> ExitCode {
     eprintln!("contact_eval: {message}");
     eprintln!(
-        "usage: contact_eval <elliptic> [--method M] [--precision f32|f64] < in.csv > out.csv"
+        "usage: contact_eval <subcommand> [--method M] [--precision f32|f64] < in.csv > out.csv"
     );
     eprintln!("  elliptic: m -> K,E; --method agm (default) | theta | table");
+    eprintln!(
+        "  eccentricity: g -> c; --method newton (default) | table | linear | hamrock-dowson"
+    );
+    eprintln!(
+        "  hertz: P,Q,Estar,h -> c,a,b,N; --method newton (default) | table | linear | volumetric | fitted"
+    );
+    eprintln!(
+        "  friction: e2,psi,u -> Fx,Fy,Tz; --model simplified (default) | pade | ellipsoid | coulomb | exact"
+    );
     ExitCode::from(2)
 }
 
@@ -148,6 +159,7 @@ fn main() -> ExitCode {
         "elliptic" => elliptic::run(&options),
         "eccentricity" => hertz::run_eccentricity(&options),
         "hertz" => hertz::run_hertz(&options),
+        "friction" => friction::run(&options),
         other => Err(format!("unknown subcommand `{other}`")),
     };
     result.unwrap_or_else(|message| usage(&message))

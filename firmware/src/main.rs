@@ -27,6 +27,7 @@ stages! {
     bench_core,
     bench_elliptic,
     bench_hertz,
+    bench_friction,
 }
 
 #[entry]

@@ -1,0 +1,97 @@
+//! Stage `friction`: the dimensionless friction core per law × precision, patch constants given
+//! (`FrictionLaw::traction(&Constants, &SlipState)`), plus the full dimensional call
+//! (`Friction::tangential`: normalisation + core + scaling by fN, fNa) for `simplified`, and
+//! `Constants::from_integrals` (method `constants-from-integrals`).
+//!
+//! Inputs (the same mixed set as the host bench `benches/friction.rs`): 64 states with u
+//! log-uniform in [0.01, 100], ψ uniform in [0, 2π), ω > 0, δ = 0, e² = 0.5.
+
+use crate::harness::Runner;
+use contensou::Real;
+use contensou::elliptic::{Agm, Integrals, Method, Parameter};
+use contensou::friction::*;
+
+include!("../../benches/friction_set.rs");
+
+const N: usize = SET;
+
+#[inline(never)]
+fn core<T: Real, L: FrictionLaw>(input: (&Constants<T>, SlipState<T>)) -> Traction<T> {
+    L::traction(input.0, &input.1).0
+}
+
+/// One per-step call's inputs: the law with f and δ, the patch constants, a, N, the slip.
+type StepInput<'a, T, L> = (&'a Friction<T, L>, &'a Constants<T>, T, T, Slip<T>);
+
+#[inline(never)]
+fn dimensional<T: Real, L: FrictionLaw>(input: StepInput<'_, T, L>) -> Tangential<T, L::Branch> {
+    input.0.tangential(input.1, input.2, input.3, input.4)
+}
+
+fn law<T: Real, L: FrictionLaw>(r: &Runner) {
+    let k = Constants::<T>::from_parameter(
+        Parameter::new(T::from_f64(0.5)).expect("e² = 0.5 is inside the domain"),
+    );
+    let pairs = mixed_set();
+    let states: [(&Constants<T>, SlipState<T>); N] = core::array::from_fn(|i| {
+        let (u, psi) = pairs[i];
+        let s = SlipState::from_polar(T::from_f64(psi), T::from_f64(u)).expect("finite input");
+        (&k, s)
+    });
+    r.bench("friction", L::NAME, T::NAME, &states, core::<T, L>);
+}
+
+fn full<T: Real, L: FrictionLaw>(r: &Runner) {
+    let k = Constants::<T>::from_parameter(
+        Parameter::new(T::from_f64(0.5)).expect("e² = 0.5 is inside the domain"),
+    );
+    let f = Friction::<T, L>::new(T::from_f64(0.3), T::ZERO).expect("valid friction");
+    let pairs = mixed_set();
+    // ω = 100 rad/s, a = 50 µm: v = u·aω.
+    let slips: [StepInput<'_, T, L>; N] = core::array::from_fn(|i| {
+        let (u, psi) = pairs[i];
+        let v = u * 50e-6 * 100.0;
+        let slip = Slip::new(
+            T::from_f64(v * libm::cos(psi)),
+            T::from_f64(v * libm::sin(psi)),
+            T::from_f64(100.0),
+        )
+        .expect("finite input");
+        // a = 50 µm, N = 2 N: a typical small Hertz patch.
+        (&f, &k, T::from_f64(50e-6), T::from_f64(2.0), slip)
+    });
+    let name = if L::NAME == "simplified" { "simplified-dimensional" } else { L::NAME };
+    r.bench("friction", name, T::NAME, &slips, dimensional::<T, L>);
+}
+
+#[inline(never)]
+fn constants<T: Real>(input: (Parameter<T>, Integrals<T>)) -> Constants<T> {
+    Constants::from_integrals(input.0, &input.1)
+}
+
+/// Building the patch constants from given integrals (the per-step cost when the eccentricity
+/// changes every step), over 16 parameters m = i/16.
+fn from_integrals<T: Real>(r: &Runner) {
+    let inputs: [(Parameter<T>, Integrals<T>); 16] = core::array::from_fn(|i| {
+        let p = Parameter::new(T::from_f64(i as f64 / 16.0)).expect("m inside the domain");
+        (p, Agm::integrals(p))
+    });
+    r.bench("friction", "constants-from-integrals", T::NAME, &inputs, constants::<T>);
+}
+
+/// One line per law (each measures f32 and f64).
+pub fn run(r: &Runner) {
+    for_both::<Simplified>(r);
+    for_both::<Pade>(r);
+    for_both::<Ellipsoid>(r);
+    for_both::<Coulomb>(r);
+    full::<f32, Simplified>(r);
+    full::<f64, Simplified>(r);
+    from_integrals::<f32>(r);
+    from_integrals::<f64>(r);
+}
+
+fn for_both<L: FrictionLaw>(r: &Runner) {
+    law::<f32, L>(r);
+    law::<f64, L>(r);
+}

@@ -1,0 +1,124 @@
+//! The friction-law interface: a dimensionless core chosen by generics, and the dimensional
+//! wrapper that scales it by fN and fNa.
+
+use core::fmt::Debug;
+use core::marker::PhantomData;
+
+use super::{Constants, Slip, SlipState, Traction};
+use crate::error::finite;
+use crate::{Error, Real};
+
+/// A friction law over the Hertz ellipse: a zero-sized type, chosen by generics so that only the
+/// laws a program uses are linked.
+///
+/// Every law here is passive by construction (F·v_P + T_z·ω ≤ 0), bounded (|F| ≤ fN) and
+/// continuous across its own branch switches; the only jump left is dry friction's own, at
+/// v_P = 0 with ω = 0 and δ = 0 (F = 0 there, −fN·v_P/|v_P| beside it). See each law's docs
+/// for its formula, error and cost.
+pub trait FrictionLaw {
+    /// Short name used by the evaluator CLI and the benchmark labels (`"simplified"`, …).
+    const NAME: &'static str;
+    /// Which formula piece produced a traction (for diagnostics, tests and plots).
+    type Branch: Copy + Debug + PartialEq;
+
+    /// The dimensionless core: the slip state (homogeneous form, see [`SlipState`]) →
+    /// F/(fN), T_z/(fNa) on body B from body A, and the branch. Total: finite output for every
+    /// state.
+    fn traction<T: Real>(k: &Constants<T>, s: &SlipState<T>) -> (Traction<T>, Self::Branch);
+}
+
+/// Friction force and drilling torque on body B from body A, in the contact frame.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Tangential<T, B> {
+    /// F_x (N), along the major axis.
+    pub fx: T,
+    /// F_y (N), along the minor axis.
+    pub fy: T,
+    /// T_z (N·m), about the common normal.
+    pub tz: T,
+    /// The law's branch that produced it.
+    pub branch: B,
+}
+
+/// A friction law with its dimensional parameters: the friction coefficient f and the
+/// regularization speed δ (m/s; 0 disables regularization). Validated at construction; the
+/// per-step [`Friction::tangential`] is total.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Friction<T, L> {
+    f: T,
+    delta: T,
+    law: PhantomData<L>,
+}
+
+impl<T: Real, L: FrictionLaw> Friction<T, L> {
+    /// From the friction coefficient `f` ≥ 0 and the regularization speed `delta` ≥ 0 (m/s).
+    /// Errors: [`Error::NonFinite`] (`"f"`, `"delta"`) for NaN or ±∞,
+    /// [`Error::FrictionCoefficientNegative`] for f < 0, [`Error::LengthNotPositive`] for
+    /// δ < 0 (δ = 0 is allowed and means no regularization).
+    pub fn new(f: T, delta: T) -> Result<Self, Error> {
+        let f = finite(f, "f")?;
+        let delta = finite(delta, "delta")?;
+        if f < T::ZERO {
+            return Err(Error::FrictionCoefficientNegative);
+        }
+        if delta < T::ZERO {
+            return Err(Error::LengthNotPositive);
+        }
+        Ok(Friction {
+            f,
+            delta,
+            law: PhantomData,
+        })
+    }
+
+    /// The friction coefficient f.
+    #[inline(always)]
+    pub fn coefficient(&self) -> T {
+        self.f
+    }
+
+    /// The regularization speed δ (m/s).
+    #[inline(always)]
+    pub fn delta(&self) -> T {
+        self.delta
+    }
+
+    /// One per-step call: patch constants `k`, major semi-axis `a` (m), normal force `n` (N) and
+    /// the slip → force (N) and drilling torque (N·m) on body B from body A.
+    ///
+    /// N ≤ 0 (or NaN) gives the zero wrench (no contact, no adhesion); `a` ≤ 0 (or NaN) is a
+    /// point contact (no spin effect, no torque). Total: finite output for finite `a` and `n`.
+    /// Cost: the law's core plus a normalisation (two additions, one division, four
+    /// multiplications) and five multiplications: 125 instructions for
+    /// `Friction::<f32, Simplified>` on the Cortex-M4F (QEMU stage `friction`, method
+    /// `simplified-dimensional`, with the branch; the core alone is 66).
+    #[inline]
+    pub fn tangential(
+        &self,
+        k: &Constants<T>,
+        a: T,
+        n: T,
+        slip: Slip<T>,
+    ) -> Tangential<T, L::Branch> {
+        // `x > 0` is false for NaN: both clamps map NaN to 0.
+        let a = if a > T::ZERO { a } else { T::ZERO };
+        let fn_ = if n > T::ZERO { self.f * n } else { T::ZERO };
+        let (t, branch) = L::traction(k, &SlipState::from_clamped(slip, a, self.delta));
+        Tangential {
+            fx: fn_ * t.fx,
+            fy: fn_ * t.fy,
+            tz: fn_ * a * t.tz,
+            branch,
+        }
+    }
+}
+
+/// The branch of the laws with one smooth formula ([`crate::friction::Pade`],
+/// [`crate::friction::Ellipsoid`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Smooth {
+    /// No slip: zero traction.
+    Rest,
+    /// Slipping: the law's single formula.
+    Slip,
+}
