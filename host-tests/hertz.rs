@@ -395,7 +395,8 @@ fn materials_and_laws() {
     .unwrap();
     assert_eq!(law32.damped_patch(1e-6, 3.0, &hc0), law32.patch(1e-6));
     // Friction slopes at the circle: A = B = 3π/8, C = 3π/16.
-    let (a, b, c) = Shape::<f64>::circle().friction_slopes();
+    let k = contensou::friction::Constants::from_shape(&Shape::<f64>::circle());
+    let (a, b, c) = (k.slope_x(), k.slope_y(), k.spin_torque());
     assert!(rel(a, 3.0 * core::f64::consts::PI / 8.0) < 1e-15 && a == b);
     assert!(rel(c, 3.0 * core::f64::consts::PI / 16.0) < 1e-15);
 }

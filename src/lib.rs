@@ -39,6 +39,7 @@
     warn(clippy::unwrap_used, clippy::expect_used, clippy::panic)
 )]
 
+pub mod contact;
 pub mod elliptic;
 pub mod error;
 pub mod friction;

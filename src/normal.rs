@@ -166,7 +166,7 @@ pub trait Damping<T> {
 }
 
 /// No damping: N = N_el.
-#[derive(Clone, Copy, Debug, Default)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Undamped;
 
 impl<T: Real> Damping<T> for Undamped {

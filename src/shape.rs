@@ -78,7 +78,7 @@ impl<T: Real> Ratio<T> {
 /// relative precision) and K, E, B, D at parameter m = c.
 ///
 /// The friction law's small-slip slopes follow directly: A = (3/2)·D, B_f = (3/2)·B,
-/// C = (3/8)·E (see [`Shape::friction_slopes`]).
+/// C = (3/8)·E (see [`crate::friction::Constants::from_shape`]).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Shape<T> {
     c: T,
@@ -135,18 +135,6 @@ impl<T: Real> Shape<T> {
     #[inline(always)]
     pub fn integrals(&self) -> Integrals<T> {
         self.integrals
-    }
-    /// Contensou small-slip slopes (A, B_f, C) = (3/2·D, 3/2·B, 3/8·E): F_x ≈ −αAu on the
-    /// major axis, F_y ≈ −βB_f u, T_z ≈ −C (model.md §3).
-    #[inline(always)]
-    pub fn friction_slopes(&self) -> (T, T, T) {
-        let i = self.integrals;
-        let three_halves = T::from_f64(1.5);
-        (
-            three_halves * i.d,
-            three_halves * i.b,
-            T::from_f64(0.375) * i.e,
-        )
     }
 }
 

@@ -28,6 +28,7 @@ stages! {
     bench_elliptic,
     bench_hertz,
     bench_friction,
+    bench_wrench,
 }
 
 #[entry]

@@ -15,6 +15,7 @@
 
 use crate::Real;
 use crate::elliptic::{Agm, Integrals, Method, Parameter};
+use crate::shape::Shape;
 
 /// The friction constants of one contact shape (see the [module docs](self)).
 ///
@@ -51,6 +52,13 @@ impl<T: Real> Constants<T> {
     #[inline]
     pub fn from_integrals(p: Parameter<T>, i: &Integrals<T>) -> Self {
         Self::from_parts(p.m(), p.m1(), i)
+    }
+
+    /// From a contact [`Shape`] (c, m₁, K, E, B, D), e.g. solved once for a fixed geometry or
+    /// by [`crate::shape::Table`] each step. Total. Cost: 3 divisions, 6 multiplies.
+    #[inline]
+    pub fn from_shape(shape: &Shape<T>) -> Self {
+        Self::from_parts(shape.e2(), shape.m1(), &shape.integrals())
     }
 
     #[inline(always)]

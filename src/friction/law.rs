@@ -92,7 +92,7 @@ impl<T: Real, L: FrictionLaw> Friction<T, L> {
     /// multiplications) and five multiplications: 125 instructions for
     /// `Friction::<f32, Simplified>` on the Cortex-M4F (QEMU stage `friction`, method
     /// `simplified-dimensional`, with the branch; the core alone is 66).
-    #[inline]
+    #[inline(always)]
     pub fn tangential(
         &self,
         k: &Constants<T>,

@@ -1,0 +1,216 @@
+//! The per-step wrench: approach h, its rate ḣ, slip v_P and spin ω → normal force N, friction
+//! force (F_x, F_y) and drilling torque T_z, on body B from body A in the contact frame (crate
+//! conventions).
+//!
+//! This is where the data flow closes: geometry → shape → normal law (+ damping) → friction
+//! law. Two forms, by what changes between steps:
+//!
+//! - [`Contact`]: **fixed geometry** (e.g. a ball on a plane, a ball in a given raceway). The
+//!   shape, the Hertz constants and the friction constants are computed once at construction;
+//!   a step is the normal law's square root plus the friction law.
+//! - [`VaryingContact`]: the curvatures change every step (e.g. a body whose contact point
+//!   wanders over a non-spherical surface). Each step solves the eccentricity with
+//!   [`shape::Table`] (no elliptic integral, fixed cost) and rebuilds the constants.
+//!
+//! Both are total: validated inputs in, finite wrench out. h ≤ 0 (contact loss) and N ≤ 0
+//! (a damped rebound) give the zero wrench.
+//!
+//! # Example
+//!
+//! ```
+//! use contensou::contact::Contact;
+//! use contensou::friction::{Friction, Simplified, Slip};
+//! use contensou::geometry::Curvatures;
+//! use contensou::normal::{Modulus, Undamped};
+//! use contensou::shape::Newton;
+//!
+//! // A 6.35 mm steel ball on a steel plane, f = 0.1.
+//! let contact = Contact::hertz::<Newton>(
+//!     &Curvatures::sphere_plane(6.35e-3)?,
+//!     Modulus::new(1.15e11)?,
+//!     Undamped,
+//!     Friction::<f64, Simplified>::new(0.1, 0.0)?,
+//! )?;
+//! let w = contact.wrench(1e-6, 0.0, Slip::new(0.01, 0.0, 50.0)?);
+//! assert!(w.n > 0.0 && w.fx < 0.0 && w.tz < 0.0);
+//! # Ok::<(), contensou::Error>(())
+//! ```
+
+use crate::friction::{Constants, Friction, FrictionLaw, Slip};
+use crate::geometry::Curvatures;
+use crate::normal::{Damping, Hertz, Modulus, NormalLaw, Patch};
+use crate::shape::{self, Eccentricity, Ratio, Shape};
+use crate::{Error, Real};
+
+/// The contact wrench on body B from body A, in the contact frame (SI).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Wrench<T, B> {
+    /// Normal force N ≥ 0 (N), along +z (from A into B).
+    pub n: T,
+    /// Friction force along x, the major axis (N).
+    pub fx: T,
+    /// Friction force along y, the minor axis (N).
+    pub fy: T,
+    /// Drilling torque about z (N·m).
+    pub tz: T,
+    /// The contact patch the wrench was integrated over (semi-axes, peak pressure, e²).
+    pub patch: Patch<T>,
+    /// Which branch of the friction law produced the tangential part.
+    pub branch: B,
+}
+
+/// Normal law + damping + friction law: the step shared by both contact forms.
+#[inline(always)]
+fn step<T: Real, N: NormalLaw<T>, D: Damping<T>, L: FrictionLaw>(
+    normal: &N,
+    damping: &D,
+    friction: &Friction<T, L>,
+    constants: &Constants<T>,
+    h: T,
+    hdot: T,
+    slip: Slip<T>,
+) -> Wrench<T, L::Branch> {
+    let patch = normal.damped_patch(h, hdot, damping);
+    let t = friction.tangential(constants, patch.a, patch.n, slip);
+    Wrench {
+        n: patch.n,
+        fx: t.fx,
+        fy: t.fy,
+        tz: t.tz,
+        patch,
+        branch: t.branch,
+    }
+}
+
+/// A contact of fixed geometry: everything that depends only on geometry and materials is
+/// precomputed; [`Contact::wrench`] is the per-step call.
+///
+/// Cost per step (f32, Cortex-M4F, Hertz + undamped + [`crate::friction::Simplified`]): see
+/// `bench-results/qemu.csv`, stage `wrench`, method `fixed`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Contact<T, N, D, L> {
+    normal: N,
+    damping: D,
+    friction: Friction<T, L>,
+    constants: Constants<T>,
+}
+
+impl<T: Real, D: Damping<T>, L: FrictionLaw> Contact<T, Hertz<T>, D, L> {
+    /// Exact Hertz on the given curvatures, the eccentricity solved once by method `M`
+    /// ([`shape::Newton`] for the exact shape). A circle (P = Q) takes the circular fast path
+    /// and evaluates no elliptic integral.
+    ///
+    /// Errors: [`Error::CurvatureRatioOutOfRange`] if P/Q is below the solver's range.
+    pub fn hertz<M: Eccentricity>(
+        curvatures: &Curvatures<T>,
+        estar: Modulus<T>,
+        damping: D,
+        friction: Friction<T, L>,
+    ) -> Result<Self, Error> {
+        let (normal, shape) = if curvatures.p() == curvatures.q() {
+            (Hertz::circular(curvatures.p(), estar), Shape::circle())
+        } else {
+            let shape = M::shape(Ratio::of(curvatures)?);
+            (Hertz::from_shape(curvatures, &shape, estar), shape)
+        };
+        Ok(Self::from_parts(
+            normal,
+            damping,
+            friction,
+            Constants::from_shape(&shape),
+        ))
+    }
+}
+
+impl<T: Real, N: NormalLaw<T>, D: Damping<T>, L: FrictionLaw> Contact<T, N, D, L> {
+    /// From parts built separately — e.g. the volumetric or fitted normal law with the friction
+    /// constants of the shape it stands for ([`Constants::circle`] for a circular law). The
+    /// caller is responsible for `constants` describing the same ellipse as `normal`.
+    pub fn from_parts(
+        normal: N,
+        damping: D,
+        friction: Friction<T, L>,
+        constants: Constants<T>,
+    ) -> Self {
+        Contact {
+            normal,
+            damping,
+            friction,
+            constants,
+        }
+    }
+
+    /// One step: approach h (m), its rate ḣ (m/s), slip → the wrench on B from A. Total.
+    #[inline]
+    pub fn wrench(&self, h: T, hdot: T, slip: Slip<T>) -> Wrench<T, L::Branch> {
+        step(
+            &self.normal,
+            &self.damping,
+            &self.friction,
+            &self.constants,
+            h,
+            hdot,
+            slip,
+        )
+    }
+
+    /// The normal law (for its stiffness, energy and inverse).
+    pub fn normal(&self) -> &N {
+        &self.normal
+    }
+
+    /// The friction constants of the patch shape.
+    pub fn constants(&self) -> &Constants<T> {
+        &self.constants
+    }
+}
+
+/// A contact whose curvatures change every step: the eccentricity and every shape constant
+/// come from [`shape::Table`] per step (fixed cost, no elliptic integral, no iteration).
+///
+/// Error: that of the table (relative ≤ 4e-7 in f32, ≤ 5e-12 in f64 on c, a, b, N; see
+/// [`shape::Table`]) plus the friction law's own. Cost per step (f32, Cortex-M4F, undamped +
+/// [`crate::friction::Simplified`]): `bench-results/qemu.csv`, stage `wrench`, method
+/// `table_each_step`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct VaryingContact<T, D, L> {
+    estar: Modulus<T>,
+    damping: D,
+    friction: Friction<T, L>,
+}
+
+impl<T: Real, D: Damping<T>, L: FrictionLaw> VaryingContact<T, D, L> {
+    /// From the effective modulus, a damping law and a friction law. Total (the parts are
+    /// validated types).
+    pub fn new(estar: Modulus<T>, damping: D, friction: Friction<T, L>) -> Self {
+        VaryingContact {
+            estar,
+            damping,
+            friction,
+        }
+    }
+
+    /// One step at this step's curvatures. P/Q below the table's range (1e-4) is clamped to
+    /// it. Total.
+    #[inline]
+    pub fn wrench(
+        &self,
+        curvatures: &Curvatures<T>,
+        h: T,
+        hdot: T,
+        slip: Slip<T>,
+    ) -> Wrench<T, L::Branch> {
+        let shape = shape::Table::shape(Ratio::clamped(curvatures.ratio()));
+        let normal = Hertz::from_shape(curvatures, &shape, self.estar);
+        let constants = Constants::from_shape(&shape);
+        step(
+            &normal,
+            &self.damping,
+            &self.friction,
+            &constants,
+            h,
+            hdot,
+            slip,
+        )
+    }
+}
