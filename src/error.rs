@@ -31,22 +31,28 @@ pub enum Error {
     DampingNegative,
 }
 
+impl Error {
+    /// A short description of the error (for `NonFinite`, without the input's name).
+    pub const fn as_str(&self) -> &'static str {
+        match self {
+            Error::NonFinite(_) => "input must be finite",
+            Error::EllipticParameterOutOfDomain => "elliptic parameter m outside [0, 1 - m1_min]",
+            Error::CurvatureNotPositive => "curvature sum must be positive",
+            Error::CurvatureRatioOutOfRange => "curvature ratio P/Q outside the solver's range",
+            Error::ModulusNotPositive => "elastic modulus must be positive",
+            Error::PoissonRatioOutOfRange => "Poisson's ratio outside (-1, 0.5]",
+            Error::FrictionCoefficientNegative => "friction coefficient is negative",
+            Error::LengthNotPositive => "length must be positive",
+            Error::DampingNegative => "damping coefficient is negative",
+        }
+    }
+}
+
 impl fmt::Display for Error {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             Error::NonFinite(what) => write!(f, "{what} must be finite"),
-            Error::EllipticParameterOutOfDomain => {
-                f.write_str("elliptic parameter m outside [0, 1 - m1_min]")
-            }
-            Error::CurvatureNotPositive => f.write_str("curvature sum must be positive"),
-            Error::CurvatureRatioOutOfRange => {
-                f.write_str("curvature ratio P/Q outside the solver's range")
-            }
-            Error::ModulusNotPositive => f.write_str("elastic modulus must be positive"),
-            Error::PoissonRatioOutOfRange => f.write_str("Poisson's ratio outside (-1, 0.5]"),
-            Error::FrictionCoefficientNegative => f.write_str("friction coefficient is negative"),
-            Error::LengthNotPositive => f.write_str("length must be positive"),
-            Error::DampingNegative => f.write_str("damping coefficient is negative"),
+            other => f.write_str(other.as_str()),
         }
     }
 }

@@ -40,6 +40,8 @@
 )]
 
 pub mod contact;
+#[cfg(feature = "defmt")]
+mod defmt_impls;
 pub mod elliptic;
 pub mod error;
 pub mod friction;
@@ -51,3 +53,8 @@ pub mod shape;
 
 pub use error::Error;
 pub use real::Real;
+
+/// The README's Rust examples compile and run as doctests.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+struct ReadmeDoctests;

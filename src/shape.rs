@@ -158,8 +158,8 @@ pub trait Eccentricity {
 ///   residual r = ln(m₁D/B) − ln g, dr/dt = 3/2 − (B − m₁D)/(2c)·(1/D + 1/B), K/E/B/D by
 ///   [`Agm`]; start at Hamrock–Dowson m₁ = g^{4/π}.
 ///
-/// Iterations: 6 (f64) / 4 (f32) in both branches; then K, E, B, D by [`Agm`]. M4F: 907
-/// instructions (f32), 94,719 (f64); host ≈ 0.6 / 1.1 µs.
+/// Iterations: 6 (f64) / 4 (f32) in both branches; then K, E, B, D by [`Agm`]. M4F: 1,191
+/// instructions (f32), 116,635 (f64); host ≈ 0.6 / 1.1 µs.
 ///
 /// # Domain, error, cost
 ///
@@ -278,8 +278,8 @@ impl Eccentricity for Newton {
 /// g ∈ [1e-4, 1]. Reproduces the paper: P/Q = 0.41721 (exact c = 0.687) → c = 0.642391.
 /// Measured max error (f32 and f64 alike): c 5.5e-2 absolute; m₁ up to 4× too large at small
 /// g; K 12%, E 3.4%; a 2.2%, b 122%, N 12% relative (`bench-results/hertz.md`).
-/// Cost: one multiply + one AGM (no `ln`/`exp`); host ≈ 60 ns; M4F 126 instructions (f32),
-/// 9,318 (f64).
+/// Cost: one multiply + one AGM (no `ln`/`exp`); host ≈ 60 ns; M4F 180 instructions (f32),
+/// 12,582 (f64).
 #[derive(Clone, Copy, Debug, Default)]
 pub struct Linear;
 
@@ -315,8 +315,8 @@ impl Eccentricity for Linear {
 ///
 /// g ∈ [1e-4, 1]; exact at g = 1. Measured max error (f32 and f64 alike): c 1.6e-2 absolute
 /// (relative → 1 − 3/π ≈ 4.5% as g → 1); m₁ 53%, K 5.4%, E 0.74%; a 0.44%, b 31%, N 4.7%
-/// relative (`bench-results/hertz.md`). Cost: `ln` + `exp` + one AGM (host ≈ 140–190 ns; M4F 229
-/// instructions f32, 14,494 f64):
+/// relative (`bench-results/hertz.md`). Cost: `ln` + `exp` + one AGM (host ≈ 140–190 ns; M4F 277
+/// instructions f32, 17,857 f64):
 /// construction-time, since `pow` is not for the hot path.
 #[derive(Clone, Copy, Debug, Default)]
 pub struct HamrockDowson;

@@ -39,9 +39,9 @@
 //!
 //! | method | `f64` error | `f32` error | host ns `f64` | host ns `f32` | M4F instructions |
 //! |---|---|---|---|---|---|
-//! | [`Agm`] (7 / 5 iterations) | 1.0e-15 | 3.3e-7 | 29 (0.72×) | 15 (0.47×) | see bench-results/qemu.csv |
-//! | [`Theta`] (complementary nome for m > ½) | 7.0e-16 | 3.3e-7 | 49 (1.20×) | 27 (0.87×) | see bench-results/qemu.csv |
-//! | [`Table`] (12,320 B `f32`, 20,608 B `f64`) | 1.2e-11 | 1.1e-7 | 8.2 (0.20×) | 4.2 (0.13×) | see bench-results/qemu.csv |
+//! | [`Agm`] (7 / 5 iterations) | 1.0e-15 | 3.3e-7 | 29 (0.72×) | 15 (0.47×) | 141 `f32` / 12,163 `f64` |
+//! | [`Theta`] (complementary nome for m > ½) | 7.0e-16 | 3.3e-7 | 49 (1.20×) | 27 (0.87×) | 122 `f32` / 9,089 `f64` |
+//! | [`Table`] (12,320 B `f32`, 20,608 B `f64`) | 1.2e-11 | 1.1e-7 | 8.2 (0.20×) | 4.2 (0.13×) | 45 `f32` / 2,279 `f64` |
 //! | `ellip` 1.2 (peer; no B, taken as K − D; its K, E, D: 5.2e-15, 2.6e-7) | 1.4e-14 | 1.6e-6 | 40 (1×) | 31 (1×) | — |
 //!
 //! [`paper_k_e`] keeps the paper's unfixed theta form for comparison only: its `f64` error is

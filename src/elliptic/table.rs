@@ -43,8 +43,9 @@ use crate::Real;
 ///
 /// Cost: one shift/mask index computation, two Horner polynomials, two adds and a multiply;
 /// no `ln`, no division, no branch on m. For `f32` on `thumbv7em-none-eabihf` the K+E code is
-/// 38 instructions straight-line including call overhead (read from the disassembly; executed
-/// counts: bench-results/qemu.csv). Host time and ratio to `ellip` in the [module table](super).
+/// 38 instructions straight-line including call overhead (read from the disassembly); executed:
+/// 45 per call in `f32` (K, E, B, D; includes the QEMU rig's 8-instruction call floor), 2,279 in
+/// `f64` (soft float), from bench-results/qemu.csv. Host time and ratio to `ellip` in the [module table](super).
 #[derive(Clone, Copy, Debug, Default)]
 pub struct Table;
 

@@ -1,0 +1,59 @@
+//! `defmt::Format` for the types firmware logs (feature `defmt`): the error, the patch, the
+//! dimensionless traction, the tangential result and the wrench (branches are left out: they
+//! are diagnostics with a `Debug` form on host).
+
+use defmt::{Format, Formatter, write};
+
+use crate::Error;
+use crate::contact::Wrench;
+use crate::friction::{Tangential, Traction};
+use crate::normal::Patch;
+
+impl Format for Error {
+    fn format(&self, f: Formatter<'_>) {
+        match self {
+            Error::NonFinite(what) => write!(f, "{=str} must be finite", what),
+            other => write!(f, "{=str}", other.as_str()),
+        }
+    }
+}
+
+impl<T: Format> Format for Patch<T> {
+    fn format(&self, f: Formatter<'_>) {
+        write!(
+            f,
+            "Patch {{ h: {}, a: {}, b: {}, n: {}, p0: {}, e2: {} }}",
+            self.h, self.a, self.b, self.n, self.p0, self.e2
+        )
+    }
+}
+
+impl<T: Format> Format for Traction<T> {
+    fn format(&self, f: Formatter<'_>) {
+        write!(
+            f,
+            "Traction {{ fx: {}, fy: {}, tz: {} }}",
+            self.fx, self.fy, self.tz
+        )
+    }
+}
+
+impl<T: Format, B> Format for Tangential<T, B> {
+    fn format(&self, f: Formatter<'_>) {
+        write!(
+            f,
+            "Tangential {{ fx: {}, fy: {}, tz: {} }}",
+            self.fx, self.fy, self.tz
+        )
+    }
+}
+
+impl<T: Format, B> Format for Wrench<T, B> {
+    fn format(&self, f: Formatter<'_>) {
+        write!(
+            f,
+            "Wrench {{ n: {}, fx: {}, fy: {}, tz: {}, a: {}, b: {} }}",
+            self.n, self.fx, self.fy, self.tz, self.patch.a, self.patch.b
+        )
+    }
+}
