@@ -26,7 +26,9 @@ F in units of fN, T_z in units of fNa, u = v/(aω) with ω > 0; u = inf means pu
 (aω = 0). x is along the major axis. Convention: on body B from body A, slip v_M = (v_x − ωy,
 v_y + ωx).
 
-Usage (from the crate root): python3 tools/gen_friction_ref.py [--mpmath-check N]
+Usage (from the crate root):
+    python3 tools/gen_friction_ref.py [--mpmath-check N]   # friction_ref.csv
+    python3 tools/gen_friction_ref.py --random N           # friction_ref_random.csv
 """
 
 import math
@@ -205,7 +207,35 @@ def points():
     return pts
 
 
+def random_set(n):
+    """n random states: m₁ = 1 − e² log-uniform in [1e-4, 1] (half) or e² uniform in [0, 1),
+    ψ uniform in (−π, π], u log-uniform in [1e-2, 1e2]. Written to friction_ref_random.csv."""
+    import random
+
+    random.seed(20091)
+    t0 = time.time()
+    worst = 0.0
+    with open("tools/data/friction_ref_random.csv", "w") as fh:
+        fh.write("e2,psi,u,fx,fy,tz,err\n")
+        for _ in range(n):
+            if random.random() < 0.5:
+                m = 1.0 - 10 ** random.uniform(-4, 0)
+            else:
+                m = random.uniform(0, 0.9999)
+            psi = random.uniform(-math.pi, math.pi)
+            u = 10 ** random.uniform(-2, 2)
+            v1 = traction(m, psi, u, 1 / 32)
+            v2 = traction(m, psi, u, 1 / 64)
+            err = float(np.max(np.abs(v1 - v2)))
+            worst = max(worst, err)
+            fh.write(",".join(repr(float(x)) for x in (m, psi, u, *v2, err)) + "\n")
+    print(f"random set: {n} points in {time.time() - t0:.1f} s; max |h − h/2| {worst:.2e}")
+
+
 def main():
+    if "--random" in sys.argv:
+        random_set(int(sys.argv[sys.argv.index("--random") + 1]))
+        return
     nmp = 0
     if "--mpmath-check" in sys.argv:
         nmp = int(sys.argv[sys.argv.index("--mpmath-check") + 1])
