@@ -11,7 +11,7 @@
 //! - **IC inside** the ellipse (vy² + vx²/m₁ ≤ (aω)²): the quartic polynomial in (X₀, Y₀) of
 //!   `inside` (closed form; K, E, B, D by [`Agm`]).
 //! - **IC outside**: polar coordinates about the IC with closed-form radial integrals and a
-//!   Gauss–Legendre rule of 64–96 nodes (up to 160 when e² > 0.9999) over the ray angle
+//!   Gauss–Legendre rule of 64–96 nodes (up to 192 when e² > 0.9999) over the ray angle
 //!   (`outside`).
 //! - **u > 1e5** (aω < 1e-5·|v_P|, including aω = 0): the large-u series
 //!   F = −w + F₂/u², T_z = T₁/u (paper §2: F₂ = −(1/5){−w/2 − e²[((3/2)α² − 1/2)w − α i]},
