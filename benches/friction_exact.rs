@@ -1,4 +1,5 @@
-//! criterion: the exact friction integrals (reference path) per branch and precision.
+//! criterion: the exact friction integrals (reference path) per precision; ψ = 0.7, so u = 0.3
+//! is inside the ellipse at e² = 0.687 and outside at e² = 0.99.
 use contensou::elliptic::Parameter;
 use contensou::friction::exact::traction;
 use criterion::{Criterion, criterion_group, criterion_main};
@@ -10,11 +11,7 @@ fn bench(c: &mut Criterion) {
     let p32 = Parameter::new(0.687f32).unwrap();
     let thin = Parameter::new(0.99f64).unwrap();
     let psi = 0.7f64;
-    for (name, u) in [
-        ("inside_u0.3", 0.3),
-        ("outside_u1.5", 1.5),
-        ("outside_u30", 30.0),
-    ] {
+    for (name, u) in [("u0.3", 0.3), ("u1.5", 1.5), ("u30", 30.0)] {
         let (vx, vy) = (u * psi.cos(), u * psi.sin());
         g.bench_function(format!("f64/{name}"), |b| {
             b.iter(|| traction(black_box(p64), black_box(vx), black_box(vy), black_box(1.0)))

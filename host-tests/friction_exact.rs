@@ -13,8 +13,14 @@ struct Row {
     want: [f64; 3],
 }
 
+/// The structured set (friction_ref.csv) followed by the random one (friction_ref_random.csv).
 fn reference() -> Vec<Row> {
-    let text = include_str!("../tools/data/friction_ref.csv");
+    let mut rows = parse(include_str!("../tools/data/friction_ref.csv"));
+    rows.extend(parse(include_str!("../tools/data/friction_ref_random.csv")));
+    rows
+}
+
+fn parse(text: &str) -> Vec<Row> {
     text.lines()
         .skip(1)
         .map(|l| {
@@ -52,7 +58,7 @@ fn err(t: Traction<f64>, want: [f64; 3]) -> f64 {
 #[test]
 fn matches_reference_f64() {
     let rows = reference();
-    assert!(rows.len() > 400);
+    assert!(rows.len() > 800);
     let mut worst = (0.0, 0.0, 0.0, 0.0);
     for r in &rows {
         let (vx, vy, w) = state(r.psi, r.u);

@@ -11,7 +11,7 @@
 //! - **IC inside** the ellipse (vy² + vx²/m₁ ≤ (aω)²): the quartic polynomial in (X₀, Y₀) of
 //!   `inside` (closed form; K, E, B, D by [`Agm`]).
 //! - **IC outside**: polar coordinates about the IC with closed-form radial integrals and a
-//!   Gauss–Legendre rule of 64–96 nodes (up to 160 when e² > 0.9999) over the ray angle
+//!   Gauss–Legendre rule of 64–96 nodes (up to 192 when e² > 0.9999) over the ray angle
 //!   (`outside`).
 //! - **u > 1e5** (aω < 1e-5·|v_P|, including aω = 0): the large-u series
 //!   F = −w + F₂/u², T_z = T₁/u (paper §2: F₂ = −(1/5){−w/2 − e²[((3/2)α² − 1/2)w − α i]},
@@ -32,12 +32,13 @@
 //!
 //! # Error
 //!
-//! Measured against the independent brute-force reference `tools/data/friction_ref.csv`
-//! (`tools/gen_friction_ref.py`: 2-D tanh-sinh over the patch in 80-bit arithmetic, converged
-//! to 1.7e-15; 561 points: e² ∈ {0, 0.3, 0.687, 0.9, 0.99, 0.9999, 1 − 1e-8, 1 − 1.5e-12}, ψ in
-//! all quadrants, u ∈ {0} ∪ [1e-3, 1e3] ∪ {u_b(1 ± 1e-6), ∞}): max abs error 5.0e-15 in fN and
-//! fNa (`f64`), 5.2e-7 (`f32`, with e² rounded to `f32`). Jump across the ellipse boundary
-//! (u_b(1 ± 1e-12)): 1.1e-12, i.e. the slope times the step. Checked in
+//! Measured against the independent brute-force reference `tools/data/friction_ref.csv` and
+//! `friction_ref_random.csv` (`tools/gen_friction_ref.py`: 2-D tanh-sinh over the patch in
+//! 80-bit arithmetic, converged to 1.7e-15; 561 structured points — e² ∈ {0, 0.3, 0.687, 0.9,
+//! 0.99, 0.9999, 1 − 1e-8, 1 − 1.5e-12}, ψ in all quadrants, u ∈ {0} ∪ [1e-3, 1e3] ∪
+//! {u_b(1 ± 1e-6), ∞} — plus 300 random ones with u ∈ [1e-2, 1e2]): max abs error 5.0e-15 in fN
+//! and fNa (`f64`), 6.6e-7 (`f32`, with e² and the inputs rounded to `f32`). Jump across the
+//! ellipse boundary (u_b(1 ± 1e-12)): 1.1e-12, i.e. the slope times the step. Checked in
 //! `host-tests/friction_exact.rs`.
 //!
 //! # Precision and cost
