@@ -7,6 +7,10 @@
 //! cargo run --release --example tippe_top -- DIR     # … into DIR instead of out/
 //! ```
 //!
+//! The PNG has no text (no font backend): x = t from 0 to 8 s (grid every second), y = θ from 0 to
+//! 3.3 rad, black lines at θ = 0 and π, grey at θ* = arccos(−10/13) (both spheres touch);
+//! red `simplified`, blue `coulomb-steep`, green `coulomb-gentle`.
+//!
 //! Runs (f64, fixed-step RK4, h = 10 µs ≈ 1/68 of the 1.5 kHz contact period, T = 8 s):
 //! `simplified` (the paper's simplified Contensou law, δ = 1e-4 m/s), `coulomb-steep`
 //! (δ = 1e-4 m/s) and `coulomb-gentle` (δ = 1e-2 m/s). Then the cost comparison: Dormand–Prince
@@ -16,15 +20,15 @@ use std::fmt::Write as _;
 use std::time::Instant;
 
 use contensou::friction::{Coulomb, Friction, FrictionLaw, Simplified};
-use contensou::scenes::integrate::{Ode, Tolerance, dopri45, rk4};
-use contensou::scenes::tippe_top::{N, Params, Probe, State, TippeTop};
+use contensou::scenes::integrate::{Tolerance, dopri45, rk4};
+use contensou::scenes::tippe_top::{N, Params, Probe, TippeTop};
 
 const THETA0: f64 = 0.1;
 const SPIN: f64 = 180.0;
 const F: f64 = 0.3;
 const T_END: f64 = 8.0;
 const H: f64 = 1e-5;
-const SAMPLE: f64 = 1e-3;
+const SAMPLE: f64 = 2e-3;
 /// Both spheres touch at θ* = arccos(−10/13).
 fn theta_star() -> f64 {
     (-10.0f64 / 13.0).acos()
@@ -110,5 +114,93 @@ fn main() {
             r.wall
         );
     }
+    plot(&runs, &format!("{dir}/tippe_top.png"));
+
+    println!(
+        "cost to T = {T_COST} s, Dormand–Prince 5(4), rtol = {RTOL:e}, atol = (1e-9 m, 1e-6 m/s, 1e-8, 1e-4 rad/s):"
+    );
+    let base = adaptive::<Simplified>("simplified", 1e-4);
+    for (name, delta) in [("coulomb-steep", 1e-4), ("coulomb-gentle", 1e-2)] {
+        let other = adaptive::<Coulomb>(name, delta);
+        println!(
+            "  {name}/simplified: rhs evaluations ×{:.2}, wall time ×{:.2}",
+            other.0 as f64 / base.0 as f64,
+            other.1 / base.1
+        );
+    }
     println!("total {:.1} s", total.elapsed().as_secs_f64());
+}
+
+const T_COST: f64 = 3.0;
+const RTOL: f64 = 1e-6;
+
+/// Adaptive run to T_COST: (rhs evaluations, wall seconds).
+fn adaptive<L: FrictionLaw>(name: &str, delta: f64) -> (usize, f64) {
+    let top = TippeTop::new(&Params::paper(), Friction::<f64, L>::new(F, delta).unwrap()).unwrap();
+    let y0 = top.initial_state(THETA0, SPIN);
+    let mut atol = [1e-9; N];
+    atol[3..6].fill(1e-6);
+    atol[6..10].fill(1e-8);
+    atol[10..13].fill(1e-4);
+    let tol = Tolerance { rtol: RTOL, atol };
+    let start = Instant::now();
+    let (t, y, s) = dopri45(
+        &top,
+        0.0,
+        y0,
+        T_COST,
+        1e-6,
+        1e-3,
+        &tol,
+        50_000_000,
+        |_, _| {},
+    );
+    let wall = start.elapsed().as_secs_f64();
+    let p = top.probe(&y);
+    println!(
+        "  {name:15} δ = {delta:e}: {} rhs evaluations ({} accepted, {} rejected steps), {wall:.2} s wall; t = {t}, θ = {:.4}",
+        s.rhs_evals, s.accepted, s.rejected, p.theta
+    );
+    (s.rhs_evals, wall)
+}
+
+/// θ(t) of every run, θ* and π dashed, into a PNG (no fonts: axes 0…T_END s, 0…π rad).
+fn plot(runs: &[Run], path: &str) {
+    use plotters::prelude::*;
+    let root = BitMapBackend::new(path, (900, 500)).into_drawing_area();
+    root.fill(&WHITE).unwrap();
+    let area = root.margin(20, 20, 20, 20);
+    let mut chart = ChartBuilder::on(&area)
+        .build_cartesian_2d(0.0..T_END, 0.0..3.3f64)
+        .unwrap();
+    let grid = RGBColor(220, 220, 220);
+    for k in 0..=(T_END as usize) {
+        let t = k as f64;
+        chart
+            .draw_series(LineSeries::new([(t, 0.0), (t, 3.3)], grid))
+            .unwrap();
+    }
+    for (y, c) in [
+        (0.0, BLACK),
+        (theta_star(), RGBColor(150, 150, 150)),
+        (std::f64::consts::PI, BLACK),
+    ] {
+        chart
+            .draw_series(LineSeries::new([(0.0, y), (T_END, y)], c))
+            .unwrap();
+    }
+    let colours = [
+        RGBColor(200, 30, 30),
+        RGBColor(30, 30, 200),
+        RGBColor(30, 150, 30),
+    ];
+    for (r, c) in runs.iter().zip(colours) {
+        chart
+            .draw_series(LineSeries::new(
+                r.rows.iter().map(|(t, p)| (*t, p.theta)),
+                c.stroke_width(2),
+            ))
+            .unwrap();
+    }
+    root.present().unwrap();
 }
