@@ -116,6 +116,37 @@ fn main() {
     }
     plot(&runs, &format!("{dir}/tippe_top.png"));
 
+    // The MCU's configuration: f32, fixed step. How long may the step be?
+    for h in [1e-5f32, 2e-5, 4e-5, 8e-5] {
+        let top = TippeTop::new(
+            &Params::<f32>::paper(),
+            Friction::<f32, Simplified>::new(0.3, 1e-4).unwrap(),
+        )
+        .unwrap();
+        let mut inversion = None;
+        let y = rk4(
+            &top,
+            0.0,
+            top.initial_state(0.1, 180.0),
+            h,
+            (4.0 / h).round() as usize,
+            |i, _, y| {
+                if inversion.is_none() && f64::from(top.probe(y).theta) >= theta_star() {
+                    inversion = Some(i as f32 * h);
+                }
+            },
+        );
+        let p = top.probe(&y);
+        println!(
+            "f32 RK4 h = {:2.0} µs ({:4.1} steps per contact period): inversion at {}, θ(4 s) = {:.3}, spin {:.1} rad/s",
+            h * 1e6,
+            1.0 / (1470.0 * h),
+            inversion.map_or("never".into(), |t| format!("{t:.3} s")),
+            p.theta,
+            p.spin
+        );
+    }
+
     println!(
         "cost to T = {T_COST} s, Dormand–Prince 5(4), rtol = {RTOL:e}, atol = (1e-9 m, 1e-6 m/s, 1e-8, 1e-4 rad/s):"
     );

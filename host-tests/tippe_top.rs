@@ -73,6 +73,33 @@ fn steep_coulomb_does_not_invert_and_keeps_jellett() {
 }
 
 #[test]
+fn f32_rk4_with_a_40us_step_inverts_like_f64() {
+    let top = TippeTop::new(
+        &Params::<f32>::paper(),
+        Friction::<f32, Simplified>::new(0.3, 1e-4).unwrap(),
+    )
+    .unwrap();
+    let mut inversion = None;
+    rk4(
+        &top,
+        0.0,
+        top.initial_state(0.1, 180.0),
+        4e-5,
+        50_000,
+        |i, _, y| {
+            if inversion.is_none() && f64::from(top.probe(y).theta) >= theta_star() {
+                inversion = Some(i as f64 * 4e-5);
+            }
+        },
+    );
+    // f64 with the adaptive integrator and with RK4 at h = 10 µs: 1.848 s.
+    assert!(
+        inversion.is_some_and(|t| (t - 1.848).abs() < 0.02),
+        "{inversion:?}"
+    );
+}
+
+#[test]
 fn f32_rk4_resolves_the_contact_and_stays_finite() {
     let top = TippeTop::new(
         &Params::<f32>::paper(),

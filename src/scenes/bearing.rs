@@ -182,7 +182,7 @@ impl<T: Real, C: RaceLaw<T>> Raceway<T, C> {
         rb: T,
     ) -> RaceContact<T> {
         let rel = p - c;
-        let rho = rel.x.hypot(rel.y);
+        let rho = (rel.x * rel.x + rel.y * rel.y).sqrt();
         if rho <= T::ZERO {
             return RaceContact::default();
         }
