@@ -49,6 +49,8 @@ pub mod geometry;
 mod hw_sqrt;
 pub mod normal;
 pub mod real;
+#[cfg(feature = "scenes")]
+pub mod scenes;
 pub mod shape;
 
 pub use error::Error;

@@ -1,0 +1,212 @@
+//! The paper's ball bearing (§5) on the host: contact loads, eccentricities, the friction force
+//! of one ball at the inner race over time (the paper's Fig. 5.6), the ball's orbital speed
+//! against ω_c = (ω_i/2)(1 − D/d_m), the spin-to-roll ratio, and the run time of exact Hertz
+//! against the G* and volumetric paths.
+//!
+//! ```sh
+//! cargo run --release --features scenes --example bearing          # writes out/bearing_*.csv, out/bearing_fy.png
+//! ```
+//!
+//! f64, RK4 h = 0.5 µs (the ball–race contacts ring at ≈20 kHz), 50 ms simulated, simplified
+//! Contensou friction f = 0.07, δ = 0.05 m/s (steeper needs a smaller step: no spin regularizes
+//! a contact whose normal is perpendicular to the ball's spin axis), Hunt–Crossley c_d = 0.3 s/m,
+//! E* = 1.1429e11 Pa (steel). Loads ramp up over 5 ms.
+
+use std::fmt::Write as _;
+use std::time::Instant;
+
+use contensou::contact::Contact;
+use contensou::friction::{Constants, Friction, Simplified};
+use contensou::geometry::Race;
+use contensou::normal::{HuntCrossley, Modulus, Volumetric};
+use contensou::scenes::bearing::{BALLS, Bearing, Geometry, RaceLaw, State};
+use contensou::scenes::integrate::rk4;
+use contensou::shape::{Linear, Newton};
+
+const H: f64 = 5e-7;
+const T_END: f64 = 0.05;
+const SAMPLE: f64 = 1e-4;
+
+fn parts() -> (Modulus<f64>, HuntCrossley<f64>, Friction<f64, Simplified>) {
+    (
+        Modulus::new(1.142857e11).unwrap(),
+        HuntCrossley::new(0.3).unwrap(),
+        Friction::new(0.07, 0.05).unwrap(),
+    )
+}
+
+/// Orbital angular velocity of ball `i` about the bearing axis.
+fn orbit(y: &State<f64>, i: usize) -> f64 {
+    let b = &y[6 + 9 * i..6 + 9 * i + 6];
+    (b[0] * b[4] - b[1] * b[3]) / (b[0] * b[0] + b[1] * b[1])
+}
+
+/// Smallest angular spacing between neighbouring balls (rad).
+fn min_spacing(y: &State<f64>) -> f64 {
+    let mut a: Vec<f64> = (0..BALLS)
+        .map(|i| y[7 + 9 * i].atan2(y[6 + 9 * i]))
+        .collect();
+    a.sort_by(f64::total_cmp);
+    let mut m = a[0] + std::f64::consts::TAU - a[BALLS - 1];
+    for w in a.windows(2) {
+        m = m.min(w[1] - w[0]);
+    }
+    m
+}
+
+/// Runs the bearing; returns (wall seconds, CSV rows, final state).
+fn run<C: RaceLaw<f64>>(b: &Bearing<f64, C>) -> (f64, String, State<f64>) {
+    let y0 = b.initial_state();
+    let steps = (T_END / H).round() as usize;
+    let every = (SAMPLE / H).round() as usize;
+    let mut csv = String::from(
+        "t,ring_y_um,n_inner,n_outer,e2_inner,e2_outer,fx_inner,fy_inner,tz_inner,orbit,spin_roll_inner,spin_roll_outer,min_spacing\n",
+    );
+    let start = Instant::now();
+    let mut wall_out = 0.0;
+    let y = rk4(b, 0.0, y0, H, steps, |i, t, y| {
+        if i % every == 0 {
+            let t0 = Instant::now();
+            let (ci, co) = b.contacts(y, 0);
+            writeln!(
+                csv,
+                "{t:.5},{:.4},{:.3},{:.3},{:.4},{:.4},{:.5e},{:.5e},{:.5e},{:.4},{:.5},{:.5},{:.4}",
+                y[1] * 1e6,
+                ci.n,
+                co.n,
+                ci.e2,
+                co.e2,
+                ci.fx,
+                ci.fy,
+                ci.tz,
+                orbit(y, 0),
+                ci.spin / ci.roll.max(1e-30),
+                co.spin / co.roll.max(1e-30),
+                min_spacing(y)
+            )
+            .unwrap();
+            wall_out += t0.elapsed().as_secs_f64();
+        }
+    });
+    (start.elapsed().as_secs_f64() - wall_out, csv, y)
+}
+
+fn report<C: RaceLaw<f64>>(label: &str, b: &Bearing<f64, C>, dir: &str) -> f64 {
+    let (wall, csv, y) = run(b);
+    std::fs::write(format!("{dir}/bearing_{label}.csv"), &csv).unwrap();
+    let g = b.geometry();
+    let loads: Vec<String> = (0..BALLS)
+        .map(|i| {
+            let (ci, co) = b.contacts(&y, i);
+            format!("{:.0}/{:.0}", ci.n, co.n)
+        })
+        .collect();
+    let (ci, co) = (0..BALLS)
+        .map(|i| b.contacts(&y, i))
+        .max_by(|a, b| a.0.n.total_cmp(&b.0.n))
+        .unwrap();
+    let orbit_mean: f64 = (0..BALLS).map(|i| orbit(&y, i)).sum::<f64>() / BALLS as f64;
+    println!(
+        "{label}: {wall:.2} s wall for {T_END} s simulated ({} RK4 steps)",
+        (T_END / H) as usize
+    );
+    println!("  loads inner/outer per ball at T (N): {}", loads.join(" "));
+    println!(
+        "  most loaded ball: e² inner {:.4}, outer {:.4}; spin/roll inner {:.2e}, outer {:.2e}",
+        ci.e2,
+        co.e2,
+        ci.spin / ci.roll,
+        co.spin / co.roll
+    );
+    println!(
+        "  orbital speed (mean over balls) {:.3} rad/s vs ω_c = {:.3} rad/s ({:+.2} %); ring displacement y = {:.2} µm, z = {:.2} µm; min ball spacing {:.4} rad (nominal {:.4})",
+        orbit_mean,
+        g.cage_speed(),
+        100.0 * (orbit_mean / g.cage_speed() - 1.0),
+        y[1] * 1e6,
+        y[2] * 1e6,
+        min_spacing(&y),
+        std::f64::consts::TAU / BALLS as f64
+    );
+    wall
+}
+
+fn plot(path: &str, series: &[(Vec<(f64, f64)>, plotters::style::RGBColor)]) {
+    use plotters::prelude::*;
+    let (lo, hi) = series
+        .iter()
+        .flat_map(|s| s.0.iter().map(|p| p.1))
+        .fold((f64::MAX, f64::MIN), |(a, b), v| (a.min(v), b.max(v)));
+    let pad = 0.05 * (hi - lo).max(1e-12);
+    let root = BitMapBackend::new(path, (900, 500)).into_drawing_area();
+    root.fill(&WHITE).unwrap();
+    let mut chart = ChartBuilder::on(&root.margin(20, 20, 20, 20))
+        .build_cartesian_2d(0.0..T_END, (lo - pad)..(hi + pad))
+        .unwrap();
+    chart
+        .draw_series(LineSeries::new([(0.0, 0.0), (T_END, 0.0)], BLACK))
+        .unwrap();
+    for (s, c) in series {
+        chart
+            .draw_series(LineSeries::new(s.iter().copied(), c.stroke_width(2)))
+            .unwrap();
+    }
+    root.present().unwrap();
+}
+
+fn column(csv: &str, k: usize) -> Vec<(f64, f64)> {
+    csv.lines()
+        .skip(1)
+        .map(|l| {
+            let v: Vec<f64> = l.split(',').map(|x| x.parse().unwrap()).collect();
+            (v[0], v[k])
+        })
+        .collect()
+}
+
+fn main() {
+    let dir = std::env::args().nth(1).unwrap_or_else(|| "out".into());
+    std::fs::create_dir_all(&dir).unwrap();
+    let (estar, damping, friction) = parts();
+
+    let g209 = Geometry::<f64>::bearing_209();
+    let hertz = |g: &Geometry<f64>, race| {
+        Contact::hertz::<Newton>(&g.curvatures(race).unwrap(), estar, damping, friction).unwrap()
+    };
+    let b209 = Bearing::new(&g209, hertz(&g209, Race::Inner), hertz(&g209, Race::Outer)).unwrap();
+    report("209", &b209, &dir);
+
+    let gp = Geometry::<f64>::paper_e2();
+    let exact = Bearing::new(&gp, hertz(&gp, Race::Inner), hertz(&gp, Race::Outer)).unwrap();
+    let w_exact = report("paper_exact", &exact, &dir);
+    let linear = |race| {
+        Contact::hertz::<Linear>(&gp.curvatures(race).unwrap(), estar, damping, friction).unwrap()
+    };
+    let gstar = Bearing::new(&gp, linear(Race::Inner), linear(Race::Outer)).unwrap();
+    let w_gstar = report("paper_gstar", &gstar, &dir);
+    let volumetric = |race| {
+        Contact::from_parts(
+            Volumetric::new(&gp.curvatures(race).unwrap(), estar),
+            damping,
+            friction,
+            Constants::circle(),
+        )
+    };
+    let vol = Bearing::new(&gp, volumetric(Race::Inner), volumetric(Race::Outer)).unwrap();
+    let w_vol = report("paper_volumetric", &vol, &dir);
+    println!(
+        "run time relative to exact Hertz: G* ×{:.2}, volumetric ×{:.2}",
+        w_gstar / w_exact,
+        w_vol / w_exact
+    );
+
+    let csv209 = std::fs::read_to_string(format!("{dir}/bearing_209.csv")).unwrap();
+    let csvp = std::fs::read_to_string(format!("{dir}/bearing_paper_exact.csv")).unwrap();
+    plot(
+        &format!("{dir}/bearing_fy.png"),
+        &[
+            (column(&csv209, 7), plotters::style::RGBColor(200, 30, 30)),
+            (column(&csvp, 7), plotters::style::RGBColor(30, 30, 200)),
+        ],
+    );
+}

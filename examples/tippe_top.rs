@@ -1,0 +1,237 @@
+//! The paper's tippe top (§5) on the host: θ(t), both normal forces, energy and Jellett's
+//! quantity as CSV, θ(t) as a PNG, and the cost of Contensou against Coulomb friction with the
+//! adaptive integrator.
+//!
+//! ```sh
+//! cargo run --release --example tippe_top            # writes out/tippe_top_*.csv, out/tippe_top.png
+//! cargo run --release --example tippe_top -- DIR     # … into DIR instead of out/
+//! ```
+//!
+//! The PNG has no text (no font backend): x = t from 0 to 8 s (grid every second), y = θ from 0 to
+//! 3.3 rad, black lines at θ = 0 and π, grey at θ* = arccos(−10/13) (both spheres touch);
+//! red `simplified`, blue `coulomb-steep`, green `coulomb-gentle`.
+//!
+//! Runs (f64, fixed-step RK4, h = 10 µs ≈ 1/68 of the 1.5 kHz contact period, T = 8 s):
+//! `simplified` (the paper's simplified Contensou law, δ = 1e-4 m/s), `coulomb-steep`
+//! (δ = 1e-4 m/s) and `coulomb-gentle` (δ = 1e-2 m/s). Then the cost comparison: Dormand–Prince
+//! 5(4) at a fixed tolerance over the first second, simplified vs steep Coulomb.
+
+use std::fmt::Write as _;
+use std::time::Instant;
+
+use contensou::friction::{Coulomb, Friction, FrictionLaw, Simplified};
+use contensou::scenes::integrate::{Tolerance, dopri45, rk4};
+use contensou::scenes::tippe_top::{N, Params, Probe, TippeTop};
+
+const THETA0: f64 = 0.1;
+const SPIN: f64 = 180.0;
+const F: f64 = 0.3;
+const T_END: f64 = 8.0;
+const H: f64 = 1e-5;
+const SAMPLE: f64 = 2e-3;
+/// Both spheres touch at θ* = arccos(−10/13).
+fn theta_star() -> f64 {
+    (-10.0f64 / 13.0).acos()
+}
+
+struct Run {
+    name: &'static str,
+    rows: Vec<(f64, Probe<f64>)>,
+    wall: f64,
+}
+
+impl Run {
+    /// First time θ reaches θ* (the small sphere touches down).
+    fn inversion(&self) -> Option<f64> {
+        self.rows
+            .iter()
+            .find(|(_, p)| p.theta >= theta_star())
+            .map(|(t, _)| *t)
+    }
+    /// Share of the last second spent with the big sphere off the floor.
+    fn on_head_last_second(&self) -> f64 {
+        let last: Vec<_> = self.rows.iter().filter(|(t, _)| *t > T_END - 1.0).collect();
+        last.iter()
+            .filter(|(_, p)| p.n_big == 0.0 && p.n_small > 0.0)
+            .count() as f64
+            / last.len().max(1) as f64
+    }
+    fn last(&self) -> Probe<f64> {
+        self.rows.last().map(|r| r.1).unwrap_or_default()
+    }
+}
+
+fn fixed<L: FrictionLaw>(name: &'static str, delta: f64) -> Run {
+    let top = TippeTop::new(&Params::paper(), Friction::<f64, L>::new(F, delta).unwrap()).unwrap();
+    let y0 = top.initial_state(THETA0, SPIN);
+    let steps = (T_END / H).round() as usize;
+    let every = (SAMPLE / H).round() as usize;
+    let mut rows = vec![(0.0, top.probe(&y0))];
+    let start = Instant::now();
+    rk4(&top, 0.0, y0, H, steps, |i, t, y| {
+        if i % every == 0 {
+            rows.push((t, top.probe(y)));
+        }
+    });
+    Run {
+        name,
+        rows,
+        wall: start.elapsed().as_secs_f64(),
+    }
+}
+
+fn main() {
+    let dir = std::env::args().nth(1).unwrap_or_else(|| "out".into());
+    std::fs::create_dir_all(&dir).unwrap();
+    let total = Instant::now();
+    let runs = [
+        fixed::<Simplified>("simplified", 1e-4),
+        fixed::<Coulomb>("coulomb-steep", 1e-4),
+        fixed::<Coulomb>("coulomb-gentle", 1e-2),
+    ];
+    for r in &runs {
+        let mut csv = String::from("t,theta,n_big,n_small,energy,jellett,spin\n");
+        for (t, p) in &r.rows {
+            writeln!(
+                csv,
+                "{t:.4},{:.6},{:.6e},{:.6e},{:.9e},{:.9e},{:.5}",
+                p.theta, p.n_big, p.n_small, p.energy, p.jellett, p.spin
+            )
+            .unwrap();
+        }
+        std::fs::write(format!("{dir}/tippe_top_{}.csv", r.name), csv).unwrap();
+        let last = r.last();
+        println!(
+            "{:15} inversion (θ ≥ θ*) at {}, θ(T) = {:.3} rad, spin ω·e₃(T) = {:.1} rad/s, on the head {:.0}% of the last second, energy {:.3e} → {:.3e} J, RK4 h = {H:e} s: {:.2} s wall",
+            r.name,
+            r.inversion()
+                .map_or("never".into(), |t| format!("{t:.3} s")),
+            last.theta,
+            last.spin,
+            100.0 * r.on_head_last_second(),
+            r.rows[0].1.energy,
+            last.energy,
+            r.wall
+        );
+    }
+    plot(&runs, &format!("{dir}/tippe_top.png"));
+
+    // The MCU's configuration: f32, fixed step. How long may the step be?
+    for h in [1e-5f32, 2e-5, 4e-5, 8e-5] {
+        let top = TippeTop::new(
+            &Params::<f32>::paper(),
+            Friction::<f32, Simplified>::new(0.3, 1e-4).unwrap(),
+        )
+        .unwrap();
+        let mut inversion = None;
+        let y = rk4(
+            &top,
+            0.0,
+            top.initial_state(0.1, 180.0),
+            h,
+            (4.0 / h).round() as usize,
+            |i, _, y| {
+                if inversion.is_none() && f64::from(top.probe(y).theta) >= theta_star() {
+                    inversion = Some(i as f32 * h);
+                }
+            },
+        );
+        let p = top.probe(&y);
+        println!(
+            "f32 RK4 h = {:2.0} µs ({:4.1} steps per contact period): inversion at {}, θ(4 s) = {:.3}, spin {:.1} rad/s",
+            h * 1e6,
+            1.0 / (1470.0 * h),
+            inversion.map_or("never".into(), |t| format!("{t:.3} s")),
+            p.theta,
+            p.spin
+        );
+    }
+
+    println!(
+        "cost to T = {T_COST} s, Dormand–Prince 5(4), rtol = {RTOL:e}, atol = (1e-9 m, 1e-6 m/s, 1e-8, 1e-4 rad/s):"
+    );
+    let base = adaptive::<Simplified>("simplified", 1e-4);
+    for (name, delta) in [("coulomb-steep", 1e-4), ("coulomb-gentle", 1e-2)] {
+        let other = adaptive::<Coulomb>(name, delta);
+        println!(
+            "  {name}/simplified: rhs evaluations ×{:.2}, wall time ×{:.2}",
+            other.0 as f64 / base.0 as f64,
+            other.1 / base.1
+        );
+    }
+    println!("total {:.1} s", total.elapsed().as_secs_f64());
+}
+
+const T_COST: f64 = 3.0;
+const RTOL: f64 = 1e-6;
+
+/// Adaptive run to T_COST: (rhs evaluations, wall seconds).
+fn adaptive<L: FrictionLaw>(name: &str, delta: f64) -> (usize, f64) {
+    let top = TippeTop::new(&Params::paper(), Friction::<f64, L>::new(F, delta).unwrap()).unwrap();
+    let y0 = top.initial_state(THETA0, SPIN);
+    let mut atol = [1e-9; N];
+    atol[3..6].fill(1e-6);
+    atol[6..10].fill(1e-8);
+    atol[10..13].fill(1e-4);
+    let tol = Tolerance { rtol: RTOL, atol };
+    let start = Instant::now();
+    let (t, y, s) = dopri45(
+        &top,
+        0.0,
+        y0,
+        T_COST,
+        1e-6,
+        1e-3,
+        &tol,
+        50_000_000,
+        |_, _| {},
+    );
+    let wall = start.elapsed().as_secs_f64();
+    let p = top.probe(&y);
+    println!(
+        "  {name:15} δ = {delta:e}: {} rhs evaluations ({} accepted, {} rejected steps), {wall:.2} s wall; t = {t}, θ = {:.4}",
+        s.rhs_evals, s.accepted, s.rejected, p.theta
+    );
+    (s.rhs_evals, wall)
+}
+
+/// θ(t) of every run, θ* and π dashed, into a PNG (no fonts: axes 0…T_END s, 0…π rad).
+fn plot(runs: &[Run], path: &str) {
+    use plotters::prelude::*;
+    let root = BitMapBackend::new(path, (900, 500)).into_drawing_area();
+    root.fill(&WHITE).unwrap();
+    let area = root.margin(20, 20, 20, 20);
+    let mut chart = ChartBuilder::on(&area)
+        .build_cartesian_2d(0.0..T_END, 0.0..3.3f64)
+        .unwrap();
+    let grid = RGBColor(220, 220, 220);
+    for k in 0..=(T_END as usize) {
+        let t = k as f64;
+        chart
+            .draw_series(LineSeries::new([(t, 0.0), (t, 3.3)], grid))
+            .unwrap();
+    }
+    for (y, c) in [
+        (0.0, BLACK),
+        (theta_star(), RGBColor(150, 150, 150)),
+        (std::f64::consts::PI, BLACK),
+    ] {
+        chart
+            .draw_series(LineSeries::new([(0.0, y), (T_END, y)], c))
+            .unwrap();
+    }
+    let colours = [
+        RGBColor(200, 30, 30),
+        RGBColor(30, 30, 200),
+        RGBColor(30, 150, 30),
+    ];
+    for (r, c) in runs.iter().zip(colours) {
+        chart
+            .draw_series(LineSeries::new(
+                r.rows.iter().map(|(t, p)| (*t, p.theta)),
+                c.stroke_width(2),
+            ))
+            .unwrap();
+    }
+    root.present().unwrap();
+}

@@ -1,0 +1,126 @@
+//! The tippe top scene (feature `scenes`): energy is non-increasing, the top inverts with the
+//! simplified Contensou law and not with a steep Coulomb law, Jellett's quantity is kept by
+//! Coulomb friction on the big sphere, and the f32 RK4 step stays finite.
+
+use contensou::friction::{Coulomb, Friction, FrictionLaw, Simplified};
+use contensou::scenes::integrate::{Tolerance, dopri45, rk4};
+use contensou::scenes::tippe_top::{N, Params, Probe, TippeTop};
+
+/// Adaptive run of the paper's top to `t_end`: the probes after every accepted step.
+fn run<L: FrictionLaw>(delta: f64, t_end: f64) -> Vec<(f64, Probe<f64>)> {
+    let top = TippeTop::new(
+        &Params::paper(),
+        Friction::<f64, L>::new(0.3, delta).unwrap(),
+    )
+    .unwrap();
+    let y0 = top.initial_state(0.1, 180.0);
+    let mut atol = [1e-9; N];
+    atol[3..6].fill(1e-6);
+    atol[6..10].fill(1e-8);
+    atol[10..13].fill(1e-4);
+    let tol = Tolerance { rtol: 1e-6, atol };
+    let mut out = vec![(0.0, top.probe(&y0))];
+    let (t, _, s) = dopri45(&top, 0.0, y0, t_end, 1e-6, 1e-3, &tol, 1_000_000, |t, y| {
+        out.push((t, top.probe(y)))
+    });
+    assert!(s.finished && t == t_end);
+    out
+}
+
+fn theta_star() -> f64 {
+    (-10.0f64 / 13.0).acos()
+}
+
+#[test]
+fn simplified_inverts_and_energy_does_not_grow() {
+    let rows = run::<Simplified>(1e-4, 2.5);
+    let e0 = rows[0].1.energy;
+    // Non-increasing up to integration error: never above any earlier value by > 1e-6·E₀.
+    let mut min_so_far = e0;
+    for (t, p) in &rows {
+        assert!(
+            p.energy <= min_so_far + 1e-6 * e0,
+            "t = {t}: {} > {min_so_far}",
+            p.energy
+        );
+        min_so_far = min_so_far.min(p.energy);
+    }
+    let inversion = rows
+        .iter()
+        .find(|(_, p)| p.theta >= theta_star())
+        .map(|r| r.0);
+    assert!(inversion.is_some_and(|t| t < 2.5), "{inversion:?}");
+    let last = rows.last().unwrap().1;
+    // On the head: the big sphere off the floor, the spin reversed relative to e₃.
+    assert!(last.theta > theta_star() && last.n_big == 0.0 && last.n_small > 0.0);
+    assert!(last.spin < 0.0);
+    // The drilling torque changes Jellett's quantity.
+    assert!((last.jellett - rows[0].1.jellett).abs() > 0.05 * rows[0].1.jellett.abs());
+}
+
+#[test]
+fn steep_coulomb_does_not_invert_and_keeps_jellett() {
+    let rows = run::<Coulomb>(1e-4, 1.0);
+    let j0 = rows[0].1.jellett;
+    for (t, p) in &rows {
+        assert!(p.theta < 0.5, "t = {t}: θ = {}", p.theta);
+        assert!(
+            (p.jellett - j0).abs() < 1e-3 * j0.abs(),
+            "t = {t}: J = {} vs {j0}",
+            p.jellett
+        );
+    }
+}
+
+#[test]
+fn f32_rk4_with_a_40us_step_inverts_like_f64() {
+    let top = TippeTop::new(
+        &Params::<f32>::paper(),
+        Friction::<f32, Simplified>::new(0.3, 1e-4).unwrap(),
+    )
+    .unwrap();
+    let mut inversion = None;
+    rk4(
+        &top,
+        0.0,
+        top.initial_state(0.1, 180.0),
+        4e-5,
+        50_000,
+        |i, _, y| {
+            if inversion.is_none() && f64::from(top.probe(y).theta) >= theta_star() {
+                inversion = Some(i as f64 * 4e-5);
+            }
+        },
+    );
+    // f64 with the adaptive integrator and with RK4 at h = 10 µs: 1.848 s.
+    assert!(
+        inversion.is_some_and(|t| (t - 1.848).abs() < 0.02),
+        "{inversion:?}"
+    );
+}
+
+#[test]
+fn f32_rk4_resolves_the_contact_and_stays_finite() {
+    let top = TippeTop::new(
+        &Params::<f32>::paper(),
+        Friction::<f32, Simplified>::new(0.3, 1e-4).unwrap(),
+    )
+    .unwrap();
+    let y0 = top.initial_state(0.1, 180.0);
+    let e0 = top.probe(&y0).energy;
+    let mut n_max = 0.0f32;
+    let y = rk4(&top, 0.0, y0, 1e-5, 2_000, |_, _, y| {
+        n_max = n_max.max(top.probe(y).n_big);
+    });
+    let p = top.probe(&y);
+    assert!(y.iter().all(|v| v.is_finite()));
+    assert!(
+        p.energy <= e0 * (1.0 + 1e-4) && p.energy > 0.99 * e0,
+        "{} vs {e0}",
+        p.energy
+    );
+    // Dropped from zero penetration, the undamped Hertz spring overshoots to h = 2.5^{2/3}·h_static,
+    // N = 2.5·mg = 0.147 N (energy balance mg·h = (2/5)k h^{5/2}); damping takes a little off.
+    let mg = 6e-3 * 9.81;
+    assert!(n_max > 2.3 * mg && n_max < 2.5 * mg * 1.005, "{n_max}");
+}

@@ -1,0 +1,367 @@
+//! A deep-groove ball bearing (the paper's §5 second scene): the inner ring driven at constant
+//! angular velocity and free to translate under a radial (and optional axial) load, the outer
+//! ring fixed, [`BALLS`] balls as free rigid spheres in Hertz + friction contact with both
+//! raceways. No cage: the balls start equally spaced at the rolling speed and are not checked
+//! for ball–ball contact (the example reports the smallest angular spacing). No gravity.
+//!
+//! # Model
+//!
+//! - World frame: the bearing axis along z, the outer ring's centre at the origin.
+//! - Raceways: tori. A race of groove radius r_g has its groove centre circle at radius
+//!   ρ_c = (d_m − D)/2 + r_g (inner, about the inner ring's centre) or (d_m + D)/2 − r_g
+//!   (outer), zero clearance. For a ball centre at distance d from that circle in the meridian
+//!   plane, the approach is h = d + D/2 − r_g; the unit vector u from the groove centre to the
+//!   ball centre gives the contact normal z = −u (from the ring, body A, into the ball, body B)
+//!   and the patch centre P = ball centre + (D/2)u.
+//! - Contact frame: y the circumferential (rolling) direction, x = y × z across the groove
+//!   (the major axis when the groove conforms closely, [`Curvatures::major_angle`] = π/2;
+//!   swapped otherwise). The curvatures — hence e² and the friction constants — are those of
+//!   the nominal contact angle 0, fixed per race (the contact angle that a load develops in a
+//!   zero-clearance bearing is a few degrees).
+//! - Slip: ball minus ring material velocity at P; spin: (ω_ball − ω_ring)·z.
+//! - State ([`N`] scalars): inner ring centre and velocity (6), then per ball centre, velocity
+//!   and angular velocity (9; a sphere's attitude does not enter).
+
+use super::integrate::Ode;
+use super::rigid::Vec3;
+use crate::contact::{Contact, Wrench};
+use crate::friction::{FrictionLaw, Slip};
+use crate::geometry::{Curvatures, Race};
+use crate::normal::{HuntCrossley, NormalLaw};
+use crate::{Error, Real};
+
+/// Number of balls (the 209 bearing has 9).
+pub const BALLS: usize = 9;
+/// Number of scalars in the state: inner ring (6) + 9 per ball.
+pub const N: usize = 6 + 9 * BALLS;
+/// The state (see the [module docs](self)).
+pub type State<T> = [T; N];
+
+/// The bearing's geometry, loads and masses (SI).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Geometry<T> {
+    /// Ball diameter D (m).
+    pub ball_diameter: T,
+    /// Inner groove radius (m).
+    pub inner_groove: T,
+    /// Outer groove radius (m).
+    pub outer_groove: T,
+    /// Pitch diameter d_m (m).
+    pub pitch_diameter: T,
+    /// Ball mass (kg).
+    pub ball_mass: T,
+    /// Inner ring (+ shaft) mass (kg).
+    pub ring_mass: T,
+    /// Inner ring angular velocity ω_i about +z (rad/s).
+    pub omega_inner: T,
+    /// Radial load on the inner ring along −y (N).
+    pub radial_load: T,
+    /// Axial load on the inner ring along +z (N).
+    pub axial_load: T,
+    /// The loads ramp up linearly over this time (s) (> 0).
+    pub ramp: T,
+}
+
+impl<T: Real> Geometry<T> {
+    /// The 209 deep-groove bearing: D = 12.7 mm, groove radii 6.6 mm (0.52 D), d_m = 65 mm,
+    /// steel balls (7,800 kg/m³, 8.4 g), inner ring + shaft 0.5 kg; ω_i = 200 rad/s,
+    /// 2,000 N radial and 200 N axial over a 5 ms ramp.
+    pub fn bearing_209() -> Self {
+        let c = T::from_f64;
+        let d = 12.7e-3;
+        Geometry {
+            ball_diameter: c(d),
+            inner_groove: c(6.6e-3),
+            outer_groove: c(6.6e-3),
+            pitch_diameter: c(65e-3),
+            ball_mass: c(7800.0 * core::f64::consts::PI / 6.0 * d * d * d),
+            ring_mass: c(0.5),
+            omega_inner: c(200.0),
+            radial_load: c(2000.0),
+            axial_load: c(200.0),
+            ramp: c(5e-3),
+        }
+    }
+
+    /// The 209 bearing with a shallow inner groove (13.18 mm = 1.04 D) such that the inner
+    /// race contact has P/Q = 0.4172, i.e. the paper's e² = 0.687 (exact Hertz); outer groove
+    /// 6.6 mm as in the 209.
+    pub fn paper_e2() -> Self {
+        let d: f64 = 12.7e-3;
+        let dm: f64 = 65e-3;
+        // P/Q = (2/D − 1/r_g)/(2/D + 2/(d_m − D)) = 0.41721.
+        let q = 2.0 / d + 2.0 / (dm - d);
+        let rg = 1.0 / (2.0 / d - 0.41721 * q);
+        Geometry {
+            inner_groove: T::from_f64(rg),
+            ..Self::bearing_209()
+        }
+    }
+
+    /// The curvatures of one race at contact angle 0.
+    ///
+    /// Errors: those of [`Curvatures::ball_race`].
+    pub fn curvatures(&self, race: Race) -> Result<Curvatures<T>, Error> {
+        let rg = match race {
+            Race::Inner => self.inner_groove,
+            Race::Outer => self.outer_groove,
+        };
+        Curvatures::ball_race(self.ball_diameter, rg, self.pitch_diameter, T::ZERO, race)
+    }
+
+    /// Kinematic cage speed ω_c = (ω_i/2)(1 − D/d_m) (contact angle 0, fixed outer ring).
+    pub fn cage_speed(&self) -> T {
+        self.omega_inner * T::HALF * (T::ONE - self.ball_diameter / self.pitch_diameter)
+    }
+}
+
+/// One race with its contact law.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct Raceway<T, C> {
+    /// Radius of the groove centre circle (m).
+    centre_radius: T,
+    groove: T,
+    /// Whether the major axis lies across the groove.
+    across: bool,
+    contact: C,
+}
+
+/// One ball–race contact at a state.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct RaceContact<T> {
+    /// Approach h (m), ≤ 0 when apart.
+    pub h: T,
+    /// Normal force (N).
+    pub n: T,
+    /// e² of the patch.
+    pub e2: T,
+    /// Friction force along the major axis x, across the groove (N).
+    pub fx: T,
+    /// Friction force along the minor axis y, the rolling direction (N).
+    pub fy: T,
+    /// Drilling torque (N·m).
+    pub tz: T,
+    /// Relative spin (ω_ball − ω_ring)·z (rad/s).
+    pub spin: T,
+    /// Relative rolling speed |ω_ball − ω_ring| in the contact plane (rad/s).
+    pub roll: T,
+    /// Force on the ball, world frame (N).
+    pub force: Vec3<T>,
+    /// Torque on the ball about its centre, world frame (N·m).
+    pub torque: Vec3<T>,
+}
+
+/// A per-step contact law for the races: [`Contact`] with any normal law (exact Hertz, the G*
+/// shape, the volumetric law), Hunt–Crossley damping and friction law `L`.
+pub trait RaceLaw<T: Real> {
+    /// The wrench at (h, ḣ, slip).
+    fn wrench_at(&self, h: T, hdot: T, slip: Slip<T>) -> (T, T, T, T, T);
+}
+
+impl<T: Real, Nl: NormalLaw<T>, L: FrictionLaw> RaceLaw<T> for Contact<T, Nl, HuntCrossley<T>, L> {
+    #[inline(always)]
+    fn wrench_at(&self, h: T, hdot: T, slip: Slip<T>) -> (T, T, T, T, T) {
+        let w: Wrench<T, L::Branch> = self.wrench(h, hdot, slip);
+        (w.n, w.fx, w.fy, w.tz, w.patch.e2)
+    }
+}
+
+impl<T: Real, C: RaceLaw<T>> Raceway<T, C> {
+    /// The contact of a ball (centre `p`, velocity `v`, angular velocity `w`, radius `rb`)
+    /// with this race on a ring at `c` moving with `vr`, spinning at `wr` about z.
+    #[inline]
+    #[allow(clippy::too_many_arguments)]
+    fn eval(
+        &self,
+        c: Vec3<T>,
+        vr: Vec3<T>,
+        wr: T,
+        p: Vec3<T>,
+        v: Vec3<T>,
+        w: Vec3<T>,
+        rb: T,
+    ) -> RaceContact<T> {
+        let rel = p - c;
+        let rho = (rel.x * rel.x + rel.y * rel.y).sqrt();
+        if rho <= T::ZERO {
+            return RaceContact::default();
+        }
+        let e_rho = Vec3::new(rel.x / rho, rel.y / rho, T::ZERO);
+        let g = e_rho * (rho - self.centre_radius) + Vec3::new(T::ZERO, T::ZERO, rel.z);
+        let d = g.norm();
+        let h = d + rb - self.groove;
+        if h <= T::ZERO || d <= T::ZERO {
+            return RaceContact {
+                h,
+                ..RaceContact::default()
+            };
+        }
+        let u = g * (T::ONE / d);
+        let z = -u;
+        let e_theta = Vec3::new(-e_rho.y, e_rho.x, T::ZERO);
+        let (x, y) = if self.across {
+            (e_theta.cross(z), e_theta)
+        } else {
+            (e_theta, z.cross(e_theta))
+        };
+        let arm = u * rb;
+        let ring_w = Vec3::new(T::ZERO, T::ZERO, wr);
+        let vp = v + w.cross(arm) - (vr + ring_w.cross(rel + arm));
+        let w_rel = w - ring_w;
+        let spin = w_rel.dot(z);
+        let slip = Slip::new(vp.dot(x), vp.dot(y), spin).unwrap_or_default();
+        let (n, fx, fy, tz, e2) = self.contact.wrench_at(h, -vp.dot(z), slip);
+        let force = x * fx + y * fy + z * n;
+        RaceContact {
+            h,
+            n,
+            e2,
+            fx,
+            fy,
+            tz,
+            spin,
+            roll: (w_rel - z * spin).norm(),
+            force,
+            torque: arm.cross(force) + z * tz,
+        }
+    }
+}
+
+/// The bearing with race contact law `C` (see the [module docs](self)).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Bearing<T, C> {
+    geometry: Geometry<T>,
+    inner: Raceway<T, C>,
+    outer: Raceway<T, C>,
+    ball_inertia: T,
+}
+
+impl<T: Real, C: RaceLaw<T>> Bearing<T, C> {
+    /// The bearing `g` with the given inner- and outer-race contact laws (built by the caller
+    /// from [`Geometry::curvatures`], e.g. `Contact::hertz::<Newton>`).
+    ///
+    /// Errors: those of [`Geometry::curvatures`].
+    pub fn new(g: &Geometry<T>, inner: C, outer: C) -> Result<Self, Error> {
+        let half = T::HALF;
+        let across = |race| -> Result<bool, Error> {
+            Ok(g.curvatures(race)?.major_angle().abs() > T::FRAC_PI_4)
+        };
+        Ok(Bearing {
+            inner: Raceway {
+                centre_radius: (g.pitch_diameter - g.ball_diameter) * half + g.inner_groove,
+                groove: g.inner_groove,
+                across: across(Race::Inner)?,
+                contact: inner,
+            },
+            outer: Raceway {
+                centre_radius: (g.pitch_diameter + g.ball_diameter) * half - g.outer_groove,
+                groove: g.outer_groove,
+                across: across(Race::Outer)?,
+                contact: outer,
+            },
+            ball_inertia: T::from_f64(0.1) * g.ball_mass * g.ball_diameter * g.ball_diameter,
+            geometry: *g,
+        })
+    }
+
+    /// The geometry.
+    pub fn geometry(&self) -> &Geometry<T> {
+        &self.geometry
+    }
+
+    /// The start: inner ring centred and at rest, balls equally spaced on the pitch circle,
+    /// orbiting at the cage speed and rolling without slip (angular velocity −(d_m/D)ω_c about
+    /// z), every contact at zero approach.
+    pub fn initial_state(&self) -> State<T> {
+        let g = &self.geometry;
+        let wc = g.cage_speed();
+        let rp = g.pitch_diameter * T::HALF;
+        let wb = -wc * g.pitch_diameter / g.ball_diameter;
+        let mut y = [T::ZERO; N];
+        for (i, ball) in y[6..].chunks_exact_mut(9).enumerate() {
+            let phi = T::TWO * T::PI * T::from_usize(i) / T::from_usize(BALLS);
+            let (s, c) = phi.sin_cos();
+            ball.copy_from_slice(&[
+                rp * c,
+                rp * s,
+                T::ZERO,
+                -wc * rp * s,
+                wc * rp * c,
+                T::ZERO,
+                T::ZERO,
+                T::ZERO,
+                wb,
+            ]);
+        }
+        y
+    }
+
+    /// Both contacts of ball `i` (< [`BALLS`], else the default) at state `y`: (inner, outer).
+    pub fn contacts(&self, y: &State<T>, i: usize) -> (RaceContact<T>, RaceContact<T>) {
+        match y[6..].chunks_exact(9).nth(i) {
+            Some(b) => self.ball_contacts(ring(y), b),
+            None => Default::default(),
+        }
+    }
+
+    #[inline(always)]
+    fn ball_contacts(
+        &self,
+        (c, vr): (Vec3<T>, Vec3<T>),
+        b: &[T],
+    ) -> (RaceContact<T>, RaceContact<T>) {
+        let (p, v, w) = ball(b);
+        let rb = self.geometry.ball_diameter * T::HALF;
+        (
+            self.inner
+                .eval(c, vr, self.geometry.omega_inner, p, v, w, rb),
+            self.outer
+                .eval(Vec3::zero(), Vec3::zero(), T::ZERO, p, v, w, rb),
+        )
+    }
+}
+
+/// Ring centre and velocity.
+#[inline(always)]
+fn ring<T: Real>(y: &State<T>) -> (Vec3<T>, Vec3<T>) {
+    let [x, yy, z, vx, vy, vz, ..] = *y;
+    (Vec3::new(x, yy, z), Vec3::new(vx, vy, vz))
+}
+
+/// A ball's centre, velocity, angular velocity from its 9 scalars (zeros if fewer).
+#[inline(always)]
+fn ball<T: Real>(b: &[T]) -> (Vec3<T>, Vec3<T>, Vec3<T>) {
+    match *b {
+        [px, py, pz, vx, vy, vz, wx, wy, wz, ..] => (
+            Vec3::new(px, py, pz),
+            Vec3::new(vx, vy, vz),
+            Vec3::new(wx, wy, wz),
+        ),
+        _ => (Vec3::zero(), Vec3::zero(), Vec3::zero()),
+    }
+}
+
+impl<T: Real, C: RaceLaw<T>> Ode<T, N> for Bearing<T, C> {
+    fn rhs(&self, t: T, y: &State<T>) -> State<T> {
+        let g = &self.geometry;
+        let r = ring(y);
+        let mut dy = [T::ZERO; N];
+        let mut ring_force = Vec3::zero();
+        let inv_m = T::ONE / g.ball_mass;
+        let inv_i = T::ONE / self.ball_inertia;
+        for (b, db) in y[6..].chunks_exact(9).zip(dy[6..].chunks_exact_mut(9)) {
+            let (inner, outer) = self.ball_contacts(r, b);
+            let (_, v, _) = ball(b);
+            ring_force = ring_force - inner.force;
+            let a = (inner.force + outer.force) * inv_m;
+            let dw = (inner.torque + outer.torque) * inv_i;
+            db.copy_from_slice(&[v.x, v.y, v.z, a.x, a.y, a.z, dw.x, dw.y, dw.z]);
+        }
+        let ramp = (t / g.ramp).clamp_to(T::ZERO, T::ONE);
+        let load = Vec3::new(T::ZERO, -g.radial_load, g.axial_load) * ramp;
+        let a = (ring_force + load) * (T::ONE / g.ring_mass);
+        let v = r.1;
+        dy[..6].copy_from_slice(&[v.x, v.y, v.z, a.x, a.y, a.z]);
+        dy
+    }
+}

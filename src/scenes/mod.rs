@@ -1,0 +1,14 @@
+//! The paper's validation scenes, built on the library's contact wrench (feature `scenes`,
+//! off by default: firmware that needs only the wrench links only the wrench).
+//!
+//! - [`rigid`]: 3-vectors, quaternion attitude, Euler's equations in the body frame.
+//! - [`integrate`]: fixed-step RK4 (MCU) and adaptive Dormand–Prince 5(4) (host reference).
+//! - [`tippe_top`]: the tippe top of the paper's §5 with Hertz + damping + a friction law.
+//! - [`bearing`]: a deep-groove ball bearing, balls in Hertz + friction contact with both races.
+//!
+//! All `no_std`, allocation-free, generic over [`Real`](crate::Real).
+
+pub mod bearing;
+pub mod integrate;
+pub mod rigid;
+pub mod tippe_top;

@@ -1,0 +1,297 @@
+//! The tippe top of the paper's §5 (parameters of Leine & Glocker 2003 / Friedl 1997): a
+//! rigid body bounded by two spheres on the symmetry axis, on a rigid, fixed floor, with the
+//! unbounded contact problem — at each sphere that touches the floor, Hertz normal force with
+//! Hunt–Crossley damping and a friction law of the library, chosen by the type parameter `L`.
+//!
+//! # Model
+//!
+//! - Body frame: principal axes at the centre of mass G, e₃ the symmetry axis pointing from G
+//!   towards the small sphere ("stem"). The big sphere (radius R) has its centre at
+//!   G + ε_R·e₃, the small one (radius r) at G + ε_r·e₃ (paper: ε_R = 3 mm, ε_r = 16 mm).
+//! - State (13 scalars): G (m), Ġ (m/s), attitude q (body → world), ω in the body frame (rad/s)
+//!   — the order of [`State`].
+//! - Each sphere: penetration h = radius − (centre height); the patch centre P is the point of
+//!   the floor below the centre; the slip is the velocity of the top's material point at P
+//!   (the floor is at rest), the spin the world-vertical component of ω; ḣ = −(vertical
+//!   velocity of P). Contact frame: z the world vertical (floor = body A, top = body B), x, y
+//!   the world x, y (the patch is a circle, so any horizontal x axis is a major axis).
+//!   [`Contact::wrench`] gives N, F_x, F_y, T_z; the force acts at P, the drilling torque about
+//!   the vertical.
+//! - Damping: Hunt–Crossley N = k_H h^{3/2}(1 + (3/2)c_d ḣ), clamped ≥ 0.
+//!
+//! # Diagnostics
+//!
+//! - θ: the angle between e₃ and the world vertical (θ = 0 stem up, θ = π inverted; both spheres
+//!   touch at θ* = arccos((r − R)/(ε_r − ε_R)) = arccos(−10/13) ≈ 2.448 rad).
+//! - Energy: ½m|Ġ|² + ½ωᵀIω + m g G_z + Σ (2/5)k_H h^{5/2}. Friction and damping only dissipate,
+//!   so it is non-increasing (up to integration error).
+//! - Jellett's quantity J = L_G·(ẑ − (ε_R/R)·e₃) (N·m·s), L_G the angular momentum about G.
+//!   For a point contact on the big sphere it is conserved by any friction force (the force's
+//!   moment about G is perpendicular to G − P = Rẑ − ε_R e₃); the Contensou drilling torque and
+//!   contact on the small sphere change it.
+
+use super::integrate::Ode;
+use super::rigid::{Quat, Vec3, euler_rate};
+use crate::contact::Contact;
+use crate::friction::{Friction, FrictionLaw, Slip};
+use crate::geometry::Curvatures;
+use crate::normal::{Hertz, HuntCrossley, Modulus, NormalLaw};
+use crate::shape::Newton;
+use crate::{Error, Real};
+
+/// Number of scalars in the state.
+pub const N: usize = 13;
+
+/// The state [G (3), Ġ (3), q = (w, x, y, z) (4), ω body (3)].
+pub type State<T> = [T; N];
+
+/// The top's physical parameters (SI).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Params<T> {
+    /// Mass m (kg).
+    pub mass: T,
+    /// Equatorial moment of inertia about G (kg·m²).
+    pub inertia_eq: T,
+    /// Polar moment of inertia (kg·m²).
+    pub inertia_polar: T,
+    /// Big sphere radius R (m).
+    pub big_radius: T,
+    /// Small sphere radius r (m).
+    pub small_radius: T,
+    /// Signed distance along e₃ from G to the big sphere's centre (m).
+    pub big_offset: T,
+    /// Signed distance along e₃ from G to the small sphere's centre (m).
+    pub small_offset: T,
+    /// Effective modulus E* (Pa).
+    pub estar: T,
+    /// Hunt–Crossley damping c_d (s/m).
+    pub damping: T,
+    /// Gravity g (m/s²).
+    pub gravity: T,
+}
+
+impl<T: Real> Params<T> {
+    /// The paper's top: m = 6 g, I = 8e-7 / 7e-7 kg·m², R = 15 mm, r = 5 mm, ε_R = 3 mm,
+    /// ε_r = 16 mm, E* = 5e9 Pa (wood, E = 9.1e9 Pa, ν = 0.3); g = 9.81 m/s²; c_d = 5 s/m (our
+    /// choice: restitution ≈ 1 − c_d·v for small impact speeds v, a damping ratio of ≈0.4 % for
+    /// the 1.5 kHz vertical vibration at rest).
+    pub fn paper() -> Self {
+        let c = T::from_f64;
+        Params {
+            mass: c(6e-3),
+            inertia_eq: c(8e-7),
+            inertia_polar: c(7e-7),
+            big_radius: c(15e-3),
+            small_radius: c(5e-3),
+            big_offset: c(3e-3),
+            small_offset: c(16e-3),
+            estar: c(5e9),
+            damping: c(5.0),
+            gravity: c(9.81),
+        }
+    }
+}
+
+/// One sphere of the top with its floor contact.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct Sphere<T, L> {
+    offset: T,
+    radius: T,
+    contact: Contact<T, Hertz<T>, HuntCrossley<T>, L>,
+}
+
+/// What one sphere's contact does at a state.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct SphereContact<T> {
+    /// Penetration h (m), negative when apart.
+    pub h: T,
+    /// Normal force N (N).
+    pub n: T,
+    /// Force on the top, world frame (N).
+    pub force: Vec3<T>,
+    /// Torque on the top about G, world frame (N·m).
+    pub torque: Vec3<T>,
+    /// Elastic energy (J).
+    pub energy: T,
+}
+
+impl<T: Real, L: FrictionLaw> Sphere<T, L> {
+    fn new(offset: T, radius: T, p: &Params<T>, friction: Friction<T, L>) -> Result<Self, Error> {
+        let contact = Contact::hertz::<Newton>(
+            &Curvatures::sphere_plane(radius)?,
+            Modulus::new(p.estar)?,
+            HuntCrossley::new(p.damping)?,
+            friction,
+        )?;
+        Ok(Sphere {
+            offset,
+            radius,
+            contact,
+        })
+    }
+
+    /// The contact at G = `r`, Ġ = `v`, attitude `q`, world angular velocity `w`.
+    #[inline]
+    fn eval(&self, r: Vec3<T>, v: Vec3<T>, q: Quat<T>, w: Vec3<T>) -> SphereContact<T> {
+        let to_centre = q.rotate(Vec3::new(T::ZERO, T::ZERO, self.offset));
+        let h = self.radius - (r.z + to_centre.z);
+        if h <= T::ZERO {
+            return SphereContact {
+                h,
+                ..SphereContact::default()
+            };
+        }
+        // G → P, P the floor point under the centre.
+        let arm = Vec3::new(to_centre.x, to_centre.y, -r.z);
+        let vp = v + w.cross(arm);
+        // Non-finite only if the state is: then no friction (the step is rejected anyway).
+        let slip = Slip::new(vp.x, vp.y, w.z).unwrap_or_default();
+        let wr = self.contact.wrench(h, -vp.z, slip);
+        let force = Vec3::new(wr.fx, wr.fy, wr.n);
+        SphereContact {
+            h,
+            n: wr.n,
+            force,
+            torque: arm.cross(force) + Vec3::new(T::ZERO, T::ZERO, wr.tz),
+            energy: self.contact.normal().energy(h),
+        }
+    }
+}
+
+/// The tippe top with friction law `L` (see the [module docs](self)).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct TippeTop<T, L> {
+    mass: T,
+    gravity: T,
+    inertia: Vec3<T>,
+    big: Sphere<T, L>,
+    small: Sphere<T, L>,
+}
+
+/// Diagnostics of a state (see the [module docs](self)).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Probe<T> {
+    /// Tilt θ of the symmetry axis from the vertical (rad).
+    pub theta: T,
+    /// Normal force at the big sphere (N).
+    pub n_big: T,
+    /// Normal force at the small sphere (N).
+    pub n_small: T,
+    /// Total mechanical energy (J), incl. elastic energy of the contacts.
+    pub energy: T,
+    /// Jellett's quantity L_G·(ẑ − (ε_R/R)e₃) (N·m·s).
+    pub jellett: T,
+    /// Spin about the symmetry axis, ω·e₃ (rad/s).
+    pub spin: T,
+    /// Height of G (m).
+    pub height: T,
+}
+
+impl<T: Real, L: FrictionLaw> TippeTop<T, L> {
+    /// The top `p` with the friction law `friction` at both spheres.
+    ///
+    /// Errors: those of [`Curvatures::sphere_plane`], [`Modulus::new`] and
+    /// [`HuntCrossley::new`] for non-positive radii, modulus or negative damping.
+    pub fn new(p: &Params<T>, friction: Friction<T, L>) -> Result<Self, Error> {
+        Ok(TippeTop {
+            mass: p.mass,
+            gravity: p.gravity,
+            inertia: Vec3::new(p.inertia_eq, p.inertia_eq, p.inertia_polar),
+            small: Sphere::new(
+                p.small_offset,
+                p.small_radius,
+                p,
+                Friction::new(friction.coefficient(), friction.delta())?,
+            )?,
+            big: Sphere::new(p.big_offset, p.big_radius, p, friction)?,
+        })
+    }
+
+    /// The paper's start: tilt θ₀ (rad) about the world x axis, spin ω₃ (rad/s) about the
+    /// symmetry axis, G at rest, the big sphere touching the floor without penetration.
+    pub fn initial_state(&self, theta0: T, spin: T) -> State<T> {
+        let q = Quat::about_x(theta0);
+        let to_centre = q.rotate(Vec3::new(T::ZERO, T::ZERO, self.big.offset));
+        let g = Vec3::new(T::ZERO, T::ZERO, self.big.radius) - to_centre;
+        let z = T::ZERO;
+        [g.x, g.y, g.z, z, z, z, q.w, q.x, q.y, q.z, z, z, spin]
+    }
+
+    /// Both contacts at state `y` (big sphere first).
+    #[inline]
+    pub fn contacts(&self, y: &State<T>) -> [SphereContact<T>; 2] {
+        let (r, v, q, omega) = split(y);
+        self.contacts_at(r, v, q.normalized(), omega)
+    }
+
+    /// Both contacts at G = `r`, Ġ = `v`, unit attitude `q`, body angular velocity `omega`.
+    #[inline(always)]
+    fn contacts_at(
+        &self,
+        r: Vec3<T>,
+        v: Vec3<T>,
+        q: Quat<T>,
+        omega: Vec3<T>,
+    ) -> [SphereContact<T>; 2] {
+        let w = q.rotate(omega);
+        [self.big.eval(r, v, q, w), self.small.eval(r, v, q, w)]
+    }
+
+    /// θ, both normal forces, energy, Jellett's quantity and the spin at state `y`.
+    pub fn probe(&self, y: &State<T>) -> Probe<T> {
+        let [big, small] = self.contacts(y);
+        let (r, v, q, omega) = split(y);
+        let q = q.normalized();
+        let e3 = q.rotate(Vec3::unit_z());
+        let l = q.rotate(self.inertia.mul_elem(omega));
+        let energy = T::HALF * (self.mass * v.dot(v) + omega.dot(self.inertia.mul_elem(omega)))
+            + self.mass * self.gravity * r.z
+            + big.energy
+            + small.energy;
+        Probe {
+            theta: e3.x.hypot(e3.y).atan2(e3.z),
+            n_big: big.n,
+            n_small: small.n,
+            energy,
+            jellett: l.dot(Vec3::unit_z() - e3 * (self.big.offset / self.big.radius)),
+            spin: omega.z,
+            height: r.z,
+        }
+    }
+}
+
+impl<T: Real, L: FrictionLaw> Ode<T, N> for TippeTop<T, L> {
+    #[inline]
+    fn rhs(&self, _t: T, y: &State<T>) -> State<T> {
+        let (r, v, q, omega) = split(y);
+        let qn = q.normalized();
+        let [big, small] = self.contacts_at(r, v, qn, omega);
+        let force = big.force + small.force - Vec3::new(T::ZERO, T::ZERO, self.mass * self.gravity);
+        let torque = qn.rotate_inv(big.torque + small.torque);
+        let a = force * (T::ONE / self.mass);
+        let dq = q.derivative(omega);
+        let dw = euler_rate(self.inertia, omega, torque);
+        [
+            v.x, v.y, v.z, a.x, a.y, a.z, dq.w, dq.x, dq.y, dq.z, dw.x, dw.y, dw.z,
+        ]
+    }
+
+    #[inline]
+    fn project(&self, y: &mut State<T>) {
+        let q = split(y).2.normalized();
+        let [_, _, _, _, _, _, qw, qx, qy, qz, _, _, _] = y;
+        (*qw, *qx, *qy, *qz) = (q.w, q.x, q.y, q.z);
+    }
+}
+
+/// The state's parts: G, Ġ, q (as stored, not normalised), ω (body).
+#[inline(always)]
+fn split<T: Real>(y: &State<T>) -> (Vec3<T>, Vec3<T>, Quat<T>, Vec3<T>) {
+    let [rx, ry, rz, vx, vy, vz, w, x, y, z, wx, wy, wz] = *y;
+    (
+        Vec3::new(rx, ry, rz),
+        Vec3::new(vx, vy, vz),
+        Quat { w, x, y, z },
+        Vec3::new(wx, wy, wz),
+    )
+}
