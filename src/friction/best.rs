@@ -1,0 +1,402 @@
+//! `best`: an exact-grade fast Contensou–Erismann law — the exact quartic while the
+//! instantaneous centre (IC) lies inside the ellipse, and outside the exact confocal structure
+//! with seven fitted one-dimensional coefficients.
+//!
+//! # Formula
+//!
+//! Slip state (x, y, w) (see [`SlipState`]); by the exact law's symmetries (F_x odd in x, F_y
+//! odd in y, T_z odd in w, even otherwise) everything is computed for |x|, |y|, |w| and the
+//! signs are put back. The IC is (X₀, Y₀) = (−y, x)/w.
+//!
+//! - **IC inside** (x² + m₁y² ≤ m₁w²): the exact quartic
+//!   Ψ = C + (B/2)X₀² + (A/2)Y₀² + c₄₀(X₀⁴ + Y₀⁴/m₁) + c₂₂X₀²Y₀²,
+//!   c₄₀ = −[(2−m)E − 2m₁K]/(8m²) = −(B − m₁A)/(12m) (Taylor series in m for m < 0.05),
+//!   c₂₂ = −(A + 12c₄₀)/2: F_x = −∂Ψ/∂Y₀, F_y = ∂Ψ/∂X₀, T_z = −Ψ + X₀Ψ_X + Y₀Ψ_Y.
+//! - **IC outside**: confocal coordinates a_c ≥ 1, ν of the IC (X₀ = −a_c sin ν,
+//!   Y₀ = b_c cos ν, b_c² = a_c² − m), q = sin²ν, τ = (1 + γ)/(a_c + b_c) ∈ (0, 1]:
+//!   F_x = −cos ν·(a_x + b_x q), F_y = −sin ν·(a_y + b_y q), T_z = τ·(a_T + b_T q + c_T q²).
+//!   This structure is exact (re-verified to 2e-14 by `tools/gen_best_table.py`); only the
+//!   seven coefficients, smooth functions of (e², z), z = √(1 − τ) ∈ [0, 1], are fitted:
+//!   tensor Chebyshev series in (ln γ, z) of degree (8, 10) from the exact integrals
+//!   (`best/table.rs`), plus a linear-in-z correction that makes them exact at z = 0 (the ellipse,
+//!   from the quartic) and at z = 1 (u = ∞: F = −v_P/|v_P|, T_z = T₁/u). Each coefficient is
+//!   clamped to its passive sign.
+//!
+//! [`BestContact`] (per contact, e² fixed) interpolates the series once into 8 cubic pieces in z
+//! (Chebyshev–Lobatto nodes), so a call is two or three square roots, four divisions and seven
+//! cubics. [`Best`], the [`FrictionLaw`] (e² may change every call), sums the series per call.
+//!
+//! # Domain and special cases
+//!
+//! Every [`SlipState`] and every e² (fitted for e² ∈ [0, 0.99]; above that the fit uses
+//! e² = 0.99's shape between exact ends). δ is ignored (like [`Exact`](super::Exact)): rest
+//! gives zero, pure translation −v_P/|v_P| exactly, pure spin −C·sgn ω exactly.
+//! Exact (to rounding) inside the ellipse, on its boundary and as u → ∞; continuous across the
+//! boundary and between the cubic pieces (to a few rounding steps); symmetries bit-exact;
+//! passive by construction (each component opposes its own velocity, |F_x| ≤ … ≤ 1 by the fit).
+//!
+//! # Error
+//!
+//! Against [`exact::traction`](super::exact::traction), max over e² ∈ [0, 0.99], all ψ,
+//! u ∈ [0, ∞] (`host-tests/friction_best.rs`, dense independent set including u_b(1 ± 1e-6),
+//! u ≈ 1 and e² = 0.99): see [`Best::ERROR`] and [`BestContact::ERROR`].
+//!
+//! # Cost
+//!
+//! See the README (QEMU stage `friction`, methods `best` and `best-varying`).
+
+mod table;
+
+use super::{Constants, FrictionLaw, SlipState, Traction, larger};
+use crate::Real;
+
+/// Number of cubic pieces in z of [`BestContact`].
+const PIECES: usize = 8;
+
+/// The `best` law with e² read per call (see the [module docs](self)); the per-contact form,
+/// much cheaper per call, is [`BestContact`].
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Best;
+
+/// Where the IC lies.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Branch {
+    /// No slip: zero traction.
+    Rest,
+    /// IC inside or on the ellipse: the exact quartic.
+    Inside,
+    /// IC outside (including pure translation): the confocal form.
+    Outside,
+}
+
+/// The quartic's constants (first quadrant, X = |X₀|, Y = |Y₀|).
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct Quartic<T> {
+    a: T,
+    b: T,
+    c: T,
+    /// 2c₂₂
+    k22: T,
+    /// 4c₄₀
+    k40: T,
+    /// 4c₄₀/m₁
+    k40m: T,
+    /// B/2, A/2
+    hb: T,
+    ha: T,
+    /// 3c₄₀, 3c₂₂, 3c₄₀/m₁
+    t40: T,
+    t22: T,
+    t40m: T,
+    m1: T,
+}
+
+/// c₄₀(m) = −[(2−m)E − 2(1−m)K]/(8m²), Taylor coefficients (m < 0.05: error < 1e-13).
+const C40_SERIES: [f64; 8] = [
+    -0.07363107781851078,
+    -0.018407769454627694,
+    -0.008628641931856732,
+    -0.00503337446024976,
+    -0.003303151989538905,
+    -0.0023358003354596543,
+    -0.001739684624847555,
+    -0.0013461845311320366,
+];
+
+impl<T: Real> Quartic<T> {
+    #[inline(always)]
+    fn new(k: &Constants<T>) -> Self {
+        let (m, m1, a, b) = (k.m(), k.m1(), k.slope_x(), k.slope_y());
+        let c40 = if m < T::from_f64(0.05) {
+            C40_SERIES
+                .iter()
+                .rev()
+                .fold(T::ZERO, |acc, &c| acc * m + T::from_f64(c))
+        } else {
+            // B(m) − m₁D(m) = (2/3)(B − m₁A); c₄₀ = −(B(m) − m₁D(m))/(8m)
+            -(b - m1 * a) / (T::from_f64(12.0) * m)
+        };
+        let c22 = -T::HALF * (a + T::from_f64(12.0) * c40);
+        let k40 = T::from_f64(4.0) * c40;
+        let three = T::from_f64(3.0);
+        let t40 = three * c40;
+        Quartic {
+            a,
+            b,
+            c: k.spin_torque(),
+            k22: T::TWO * c22,
+            k40,
+            k40m: k40 / m1,
+            hb: T::HALF * b,
+            ha: T::HALF * a,
+            t40,
+            t22: three * c22,
+            t40m: t40 / m1,
+            m1,
+        }
+    }
+
+    /// (|F_x|, |F_y|, T_z) for X = y/w, Y = x/w ≥ 0 (T_z for w > 0).
+    #[inline(always)]
+    fn eval(&self, x: T, y: T) -> (T, T, T) {
+        let (x2, y2) = (x * x, y * y);
+        let fx = y * (self.a + self.k22 * x2 + self.k40m * y2);
+        let fy = x * (self.b + self.k40 * x2 + self.k22 * y2);
+        // −Ψ + XΨ_X + YΨ_Y: the quadratic terms once, the quartic ones three times.
+        let tz = -self.c
+            + x2 * (self.hb + self.t40 * x2 + self.t22 * y2)
+            + y2 * (self.ha + self.t40m * y2);
+        (fx, fy, tz)
+    }
+
+    /// The seven outside coefficients on the boundary (a_c = 1, τ = 1), from the quartic at
+    /// (X₀, Y₀) = (−sin ν, γ cos ν).
+    fn boundary(&self, gamma: T) -> [T; 7] {
+        let (a, b, c, m1) = (self.a, self.b, self.c, self.m1);
+        let c40 = T::from_f64(0.25) * self.k40;
+        let c22 = T::HALF * self.k22;
+        let three = T::from_f64(3.0);
+        [
+            gamma * (a + self.k40),
+            gamma * (self.k22 - self.k40),
+            b + self.k22 * m1,
+            self.k40 - self.k22 * m1,
+            -c + T::HALF * a * m1 + three * c40 * m1,
+            T::HALF * (b - a * m1) + three * m1 * (c22 - T::TWO * c40),
+            three * (c40 * (T::ONE + m1) - c22 * m1),
+        ]
+    }
+}
+
+/// The seven outside coefficients as functions of z: `d[j][l]` Chebyshev coefficients in
+/// ẑ = 2z − 1 (e² fixed), corrected to the exact ends.
+struct Series<T> {
+    d: [[T; table::DZ + 1]; 7],
+    /// Exact minus series at z = 0 and at z = 1.
+    end0: [T; 7],
+    end1: [T; 7],
+}
+
+impl<T: Real> Series<T> {
+    fn new(k: &Constants<T>, q: &Quartic<T>, gamma: T) -> Self {
+        // λ = 1 + ln(m₁)/ln 10 ∈ [−1, 1] for e² ∈ [0, 0.99]
+        let lam = (T::ONE + k.m1().ln() * T::from_f64(1.0 / core::f64::consts::LN_10))
+            .max(-T::ONE)
+            .min(T::ONE);
+        let mut tk = [T::ZERO; table::DG + 1];
+        let (mut t0, mut t1) = (T::ONE, lam);
+        for t in tk.iter_mut() {
+            *t = t0;
+            let t2 = T::TWO * lam * t1 - t0;
+            (t0, t1) = (t1, t2);
+        }
+        let mut d = [[T::ZERO; table::DZ + 1]; 7];
+        for (dj, tj) in d.iter_mut().zip(table::TABLE.iter()) {
+            for (row, &t) in tj.iter().zip(tk.iter()) {
+                for (dl, &c) in dj.iter_mut().zip(row.iter()) {
+                    *dl += T::from_f64(c) * t;
+                }
+            }
+        }
+        let g5 = T::from_f64(0.4) / (T::ONE + gamma);
+        let inf = [T::ONE, T::ZERO, T::ONE, T::ZERO, -g5, g5 * k.m(), T::ZERO];
+        let bnd = q.boundary(gamma);
+        let mut end0 = [T::ZERO; 7];
+        let mut end1 = [T::ZERO; 7];
+        for (((dj, e0), e1), (b, i)) in d
+            .iter()
+            .zip(end0.iter_mut())
+            .zip(end1.iter_mut())
+            .zip(bnd.iter().zip(inf.iter()))
+        {
+            let (mut at0, mut at1, mut sign) = (T::ZERO, T::ZERO, T::ONE);
+            for &c in dj.iter() {
+                at0 += sign * c;
+                at1 += c;
+                sign = -sign;
+            }
+            *e0 = *b - at0;
+            *e1 = *i - at1;
+        }
+        Series { d, end0, end1 }
+    }
+
+    /// The seven coefficients at z ∈ [0, 1].
+    fn at(&self, z: T) -> [T; 7] {
+        let zh = T::TWO * z - T::ONE;
+        let mut out = [T::ZERO; 7];
+        for (((o, dj), &e0), &e1) in out
+            .iter_mut()
+            .zip(self.d.iter())
+            .zip(self.end0.iter())
+            .zip(self.end1.iter())
+        {
+            // Clenshaw
+            let (mut b1, mut b2) = (T::ZERO, T::ZERO);
+            for &c in dj.iter().skip(1).rev() {
+                let b0 = T::TWO * zh * b1 - b2 + c;
+                (b1, b2) = (b0, b1);
+            }
+            let d0 = dj.first().copied().unwrap_or(T::ZERO);
+            *o = zh * b1 - b2 + d0 + e0 * (T::ONE - z) + e1 * z;
+        }
+        out
+    }
+}
+
+/// Confocal coordinates of the IC for |x|, |y|, |w| (IC outside or pure translation):
+/// (cos ν, sin ν, τ/(1 + γ), z-argument 1 − τ).
+#[inline(always)]
+fn confocal<T: Real>(m: T, g1: T, x: T, y: T, w: T) -> (T, T, T, T) {
+    let p = x * x + y * y;
+    let w2 = w * w;
+    let mw2 = m * w2;
+    let dlt = p - mw2;
+    let mx2w2 = mw2 * x * x;
+    let r = (dlt * dlt + T::from_f64(4.0) * mx2w2).sqrt();
+    // (a_c w)², (b_c w)² without cancellation
+    let a2 = T::HALF * (p + mw2 + r);
+    let b2 = if dlt >= T::ZERO {
+        T::HALF * (dlt + r)
+    } else {
+        T::TWO * mx2w2 / (r - dlt)
+    };
+    let (ac, bc) = (a2.sqrt(), larger(b2.sqrt(), T::MIN_POSITIVE));
+    let tau = g1 * w / (ac + bc);
+    (x / bc, y / ac, tau, T::ONE - tau)
+}
+
+/// Puts the signs back and clamps the coefficients to their passive signs.
+#[inline(always)]
+fn assemble<T: Real>(s: &SlipState<T>, c: T, sn: T, tau: T, k: &[T; 7]) -> Traction<T> {
+    let q = sn * sn;
+    let fx = c * larger(k[0] + k[1] * q, T::ZERO);
+    let fy = sn * larger(k[2] + k[3] * q, T::ZERO);
+    let tz = tau * larger(-(k[4] + q * (k[5] + k[6] * q)), T::ZERO);
+    signed(s, fx, fy, tz)
+}
+
+/// (−|F_x| sgn x, −|F_y| sgn y, −|T_z| sgn w) from magnitudes ≥ 0.
+#[inline(always)]
+fn signed<T: Real>(s: &SlipState<T>, fx: T, fy: T, tz: T) -> Traction<T> {
+    Traction {
+        fx: -fx.copysign(s.x()),
+        fy: -fy.copysign(s.y()),
+        tz: -tz.copysign(s.w()),
+    }
+}
+
+/// Inside branch or rest: `None` when the IC is outside.
+#[inline(always)]
+fn inside<T: Real>(q: &Quartic<T>, s: &SlipState<T>) -> Option<(Traction<T>, Branch)> {
+    let (x, y, w) = (s.x().abs(), s.y().abs(), s.w().abs());
+    if x * x + q.m1 * y * y > q.m1 * w * w {
+        return None;
+    }
+    if w == T::ZERO {
+        return Some((Traction::default(), Branch::Rest));
+    }
+    let iw = T::ONE / w;
+    let (fx, fy, tz) = q.eval(y * iw, x * iw);
+    let z = T::ZERO;
+    Some((
+        signed(s, larger(fx, z), larger(fy, z), larger(-tz, z)),
+        Branch::Inside,
+    ))
+}
+
+impl Best {
+    /// Measured max error against the exact integrals, e² ∈ [0, 0.99], all ψ, u ∈ [0, ∞]
+    /// (`f64`): (force in fN, torque in fNa). See `host-tests/friction_best.rs`.
+    pub const ERROR: (f64, f64) = (2.0e-6, 2.0e-6);
+}
+
+impl FrictionLaw for Best {
+    const NAME: &'static str = "best";
+    type Branch = Branch;
+
+    fn traction<T: Real>(k: &Constants<T>, s: &SlipState<T>) -> (Traction<T>, Branch) {
+        let q = Quartic::new(k);
+        if let Some(r) = inside(&q, s) {
+            return r;
+        }
+        let gamma = k.m1().sqrt();
+        let g1 = T::ONE + gamma;
+        let (c, sn, tau, one_minus) = confocal(k.m(), g1, s.x().abs(), s.y().abs(), s.w().abs());
+        let z = larger(one_minus, T::ZERO).sqrt();
+        let co = Series::new(k, &q, gamma).at(z);
+        (assemble(s, c, sn, tau, &co), Branch::Outside)
+    }
+}
+
+/// The `best` law for one contact shape (e² fixed): the quartic's constants and the seven
+/// outside coefficients as 8 cubic pieces in z, built once by [`BestContact::new`]
+/// (see the [module docs](self)).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct BestContact<T> {
+    quartic: Quartic<T>,
+    m: T,
+    g1: T,
+    /// `pieces[i][j]`: cubic in r = 8z − i of coefficient j (monomial, r ∈ [0, 1]).
+    pieces: [[[T; 4]; 7]; PIECES],
+}
+
+impl<T: Real> BestContact<T> {
+    /// Measured max error against the exact integrals, e² ∈ [0, 0.99], all ψ, u ∈ [0, ∞]
+    /// (`f64`): (force in fN, torque in fNa). See `host-tests/friction_best.rs`.
+    pub const ERROR: (f64, f64) = (1.8e-5, 1.7e-6);
+
+    /// From the patch constants: sums the fitted series at this e² and interpolates them at
+    /// the Chebyshev–Lobatto nodes r ∈ {0, 1/4, 3/4, 1} of each of 8 pieces. Total.
+    pub fn new(k: &Constants<T>) -> Self {
+        let quartic = Quartic::new(k);
+        let gamma = k.m1().sqrt();
+        let series = Series::new(k, &quartic, gamma);
+        let mut pieces = [[[T::ZERO; 4]; 7]; PIECES];
+        let n = T::from_usize(PIECES);
+        let nodes = [0.0, 0.25, 0.75, 1.0];
+        // Inverse Vandermonde of the nodes: monomial coefficients from node values.
+        let inv: [[f64; 4]; 4] = [
+            [1.0, 0.0, 0.0, 0.0],
+            [-19.0 / 3.0, 8.0, -8.0 / 3.0, 1.0],
+            [32.0 / 3.0, -56.0 / 3.0, 40.0 / 3.0, -16.0 / 3.0],
+            [-16.0 / 3.0, 32.0 / 3.0, -32.0 / 3.0, 16.0 / 3.0],
+        ];
+        for (i, piece) in pieces.iter_mut().enumerate() {
+            let vals = nodes.map(|r| series.at((T::from_usize(i) + T::from_f64(r)) / n));
+            for (j, cubic) in piece.iter_mut().enumerate() {
+                for (cp, row) in cubic.iter_mut().zip(inv.iter()) {
+                    *cp = row
+                        .iter()
+                        .zip(vals.iter())
+                        .fold(T::ZERO, |acc, (&w, v)| acc + T::from_f64(w) * v[j]);
+                }
+                // exact at the left end
+                cubic[0] = vals[0][j];
+            }
+        }
+        BestContact {
+            quartic,
+            m: k.m(),
+            g1: T::ONE + gamma,
+            pieces,
+        }
+    }
+
+    /// The dimensionless traction (F/(fN), T_z/(fNa)) and the branch for a slip state.
+    /// Total: finite output for every state.
+    #[inline]
+    pub fn traction(&self, s: &SlipState<T>) -> (Traction<T>, Branch) {
+        if let Some(r) = inside(&self.quartic, s) {
+            return r;
+        }
+        let (c, sn, tau, one_minus) =
+            confocal(self.m, self.g1, s.x().abs(), s.y().abs(), s.w().abs());
+        let zn = larger(one_minus, T::ZERO).sqrt() * T::from_usize(PIECES);
+        let i = zn.trunc_usize().min(PIECES - 1);
+        let r = zn - T::from_usize(i);
+        let piece = &self.pieces[i];
+        let co = piece.map(|p| p[0] + r * (p[1] + r * (p[2] + r * p[3])));
+        (assemble(s, c, sn, tau, &co), Branch::Outside)
+    }
+}
