@@ -6,6 +6,7 @@
 
 use contensou::Real;
 use contensou::elliptic::Parameter;
+use contensou::friction::best::Branch;
 use contensou::friction::{Best, BestContact, Constants, FrictionLaw, SlipState, Traction, exact};
 
 /// Error bound of issue 5 (fN for the force, fNa for the torque).
@@ -136,4 +137,127 @@ fn per_call_error_against_exact() {
     report("Best f32", &e32);
     assert!(e32.force <= BOUND && e32.torque <= BOUND);
     assert!(e64.force <= Best::ERROR.0 && e64.torque <= Best::ERROR.1);
+}
+
+/// splitmix64
+struct Rng(u64);
+impl Rng {
+    fn unit(&mut self) -> f64 {
+        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        ((z ^ (z >> 31)) >> 11) as f64 / (1u64 << 53) as f64
+    }
+}
+
+/// Passivity (F·v_P + T_z·ω ≤ 0, each component opposing its own velocity), |F| ≤ 1,
+/// finiteness and the exact law's symmetries, bit-exact, over random states of every kind.
+fn properties<T: Real>(seed: u64) {
+    let mut rng = Rng(seed);
+    for i in 0..20_000 {
+        let e2 = if i % 7 == 0 { 0.0 } else { 0.99 * rng.unit() };
+        let k = Constants::from_parameter(Parameter::new(T::from_f64(e2)).unwrap());
+        let b = BestContact::new(&k);
+        let psi = 2.0 * std::f64::consts::PI * rng.unit();
+        let u = match i % 10 {
+            0 => 0.0,
+            1 => f64::INFINITY,
+            _ => (rng.unit() * 12.0 - 6.0).exp(),
+        };
+        let s = SlipState::<T>::from_polar(T::from_f64(psi), T::from_f64(u)).unwrap();
+        let (x, y, w) = (s.x(), s.y(), s.w());
+        let d = T::ZERO;
+        for sign in [T::ONE, -T::ONE] {
+            let st = SlipState::new(x, y, sign * w, d).unwrap();
+            let (t, _) = b.traction(&st);
+            let (t2, _) = Best::traction(&k, &st);
+            for t in [t, t2] {
+                let (fx, fy, tz) = (t.fx.to_f64(), t.fy.to_f64(), t.tz.to_f64());
+                assert!(fx.is_finite() && fy.is_finite() && tz.is_finite());
+                assert!(fx * st.x().to_f64() <= 0.0 && fy * st.y().to_f64() <= 0.0);
+                assert!(tz * st.w().to_f64() <= 0.0);
+                assert!(fx.hypot(fy) <= 1.0 + 1e-6, "{e2} {psi} {u}");
+            }
+            let mirror = |mx: T, my: T, mw: T| {
+                b.traction(&SlipState::new(mx * x, my * y, mw * sign * w, d).unwrap())
+                    .0
+            };
+            let m = mirror(-T::ONE, T::ONE, T::ONE);
+            assert!(m.fx == -t.fx && m.fy == t.fy && m.tz == t.tz);
+            let m = mirror(T::ONE, -T::ONE, T::ONE);
+            assert!(m.fx == t.fx && m.fy == -t.fy && m.tz == t.tz);
+            let m = mirror(T::ONE, T::ONE, -T::ONE);
+            assert!(m.fx == t.fx && m.fy == t.fy && m.tz == -t.tz);
+        }
+    }
+}
+
+#[test]
+fn passive_bounded_finite_and_symmetric() {
+    properties::<f64>(1);
+    properties::<f32>(2);
+}
+
+/// Rest → 0; pure spin → (0, 0, −C sgn ω); pure translation → −v_P/|v_P|, T = 0; the jump
+/// across the ellipse boundary (u_b(1 ± 1e-9)) is below rounding plus slope × step.
+#[test]
+fn limits_and_boundary_continuity() {
+    for e2 in [0.0, 0.3, 0.687, 0.9, 0.99] {
+        let k = Constants::from_parameter(Parameter::new(e2).unwrap());
+        let b = BestContact::new(&k);
+        let (t, br) = b.traction(&SlipState::new(0.0, 0.0, 0.0, 0.0).unwrap());
+        assert_eq!((t, br), (Traction::default(), Branch::Rest));
+        let (t, _) = b.traction(&SlipState::new(0.0, 0.0, -2.0, 0.0).unwrap());
+        assert_eq!((t.fx, t.fy), (0.0, 0.0));
+        assert!((t.tz - k.spin_torque()).abs() < 1e-15);
+        for psi in [0.0, 0.4, 1.3, std::f64::consts::FRAC_PI_2, 2.5, -0.7] {
+            let (t, br) = b.traction(&SlipState::from_polar(psi, f64::INFINITY).unwrap());
+            assert_eq!(br, Branch::Outside);
+            assert!((t.fx + psi.cos()).abs() < 1e-14 && (t.fy + psi.sin()).abs() < 1e-14);
+            assert_eq!(t.tz, 0.0);
+            let ub = 1.0 / (psi.sin().powi(2) + psi.cos().powi(2) / (1.0 - e2)).sqrt();
+            let at = |u: f64| b.traction(&SlipState::from_polar(psi, u).unwrap());
+            let (ti, bi) = at(ub * (1.0 - 1e-9));
+            let (to, bo) = at(ub * (1.0 + 1e-9));
+            assert_eq!((bi, bo), (Branch::Inside, Branch::Outside));
+            let jump = (ti.fx - to.fx)
+                .abs()
+                .max((ti.fy - to.fy).abs())
+                .max((ti.tz - to.tz).abs());
+            assert!(jump < 1e-7, "e2 {e2} psi {psi}: jump {jump:e}");
+            // the per-call form agrees with the per-contact one there
+            let (tv, _) =
+                Best::traction(&k, &SlipState::from_polar(psi, ub * (1.0 + 1e-9)).unwrap());
+            assert!((tv.fx - to.fx).abs() < 1e-6 && (tv.tz - to.tz).abs() < 1e-6);
+        }
+    }
+}
+
+/// Continuity along u: on a fine log grid from the ellipse to u = 1e3 (crossing every cubic
+/// piece), neighbouring values differ by no more than the exact law's slope allows.
+#[test]
+fn continuous_along_u() {
+    for e2 in [0.0, 0.5, 0.99] {
+        let k = Constants::from_parameter(Parameter::new(e2 as f32).unwrap());
+        let b = BestContact::new(&k);
+        for psi in [0.2f64, 1.0, 1.5] {
+            let mut prev: Option<Traction<f32>> = None;
+            for i in 0..20_000 {
+                let u = 0.05 * (i as f64 * 1e-4 * 10f64.ln() * 4.3).exp();
+                let t = b
+                    .traction(&SlipState::from_polar(psi as f32, u as f32).unwrap())
+                    .0;
+                if let Some(p) = prev {
+                    let d = (t.fx - p.fx)
+                        .abs()
+                        .max((t.fy - p.fy).abs())
+                        .max((t.tz - p.tz).abs());
+                    // slope ≤ 30 (e² = 0.99 near the ellipse) × step 1e-3·u, plus rounding
+                    assert!(d < 30.0 * 1e-3 * u as f32 + 1e-5, "{e2} {psi} {u}: {d}");
+                }
+                prev = Some(t);
+            }
+        }
+    }
 }

@@ -5,7 +5,7 @@ use std::process::ExitCode;
 use contensou::Real;
 use contensou::elliptic::Parameter;
 use contensou::friction::{
-    Constants, Coulomb, Ellipsoid, Exact, FrictionLaw, Pade, Simplified, SlipState,
+    Best, Constants, Coulomb, Ellipsoid, Exact, FrictionLaw, Pade, Simplified, SlipState,
 };
 
 use crate::{Options, run_csv};
@@ -23,11 +23,13 @@ pub fn run(options: &Options) -> Result<ExitCode, String> {
         "ellipsoid" => eval::<f64, Ellipsoid>(),
         "coulomb" if f32 => eval::<f32, Coulomb>(),
         "coulomb" => eval::<f64, Coulomb>(),
+        "best" if f32 => eval::<f32, Best>(),
+        "best" => eval::<f64, Best>(),
         "exact" if f32 => eval::<f32, Exact>(),
         "exact" => eval::<f64, Exact>(),
         other => {
             return Err(format!(
-                "unknown model `{other}` for friction (exact, simplified, pade, ellipsoid, coulomb)"
+                "unknown model `{other}` for friction (exact, simplified, pade, ellipsoid, coulomb, best)"
             ));
         }
     })

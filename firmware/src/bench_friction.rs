@@ -79,6 +79,36 @@ fn from_integrals<T: Real>(r: &Runner) {
     r.bench("friction", "constants-from-integrals", T::NAME, &inputs, constants::<T>);
 }
 
+#[inline(never)]
+fn best_core<T: Real>(input: (&BestContact<T>, SlipState<T>)) -> Traction<T> {
+    input.0.traction(&input.1).0
+}
+
+#[inline(never)]
+fn best_new<T: Real>(k: &Constants<T>) -> BestContact<T> {
+    BestContact::new(k)
+}
+
+/// `best` per contact ([`BestContact`], method `best`), its once-per-contact construction
+/// (`best-contact-new`), and the per-call form [`Best`] for e² changing every call
+/// (`best-varying`).
+fn best<T: Real>(r: &Runner) {
+    let k = Constants::<T>::from_parameter(
+        Parameter::new(T::from_f64(0.5)).expect("e² = 0.5 is inside the domain"),
+    );
+    let b = BestContact::new(&k);
+    let pairs = mixed_set();
+    let states: [(&BestContact<T>, SlipState<T>); N] = core::array::from_fn(|i| {
+        let (u, psi) = pairs[i];
+        let s = SlipState::from_polar(T::from_f64(psi), T::from_f64(u)).expect("finite input");
+        (&b, s)
+    });
+    r.bench("friction", "best", T::NAME, &states, best_core::<T>);
+    let states: [(&Constants<T>, SlipState<T>); N] = core::array::from_fn(|i| (&k, states[i].1));
+    r.bench("friction", "best-varying", T::NAME, &states, core::<T, Best>);
+    r.bench("friction", "best-contact-new", T::NAME, &[&k], best_new::<T>);
+}
+
 /// One line per law (each measures f32 and f64).
 pub fn run(r: &Runner) {
     for_both::<Simplified>(r);
@@ -89,6 +119,8 @@ pub fn run(r: &Runner) {
     full::<f64, Simplified>(r);
     from_integrals::<f32>(r);
     from_integrals::<f64>(r);
+    best::<f32>(r);
+    best::<f64>(r);
 }
 
 fn for_both<L: FrictionLaw>(r: &Runner) {
