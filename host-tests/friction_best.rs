@@ -302,3 +302,29 @@ fn no_jump_at_the_ellipse_beyond_rounding() {
     println!("jump at the ellipse: {j64:.1} eps (f64), {j32:.1} eps (f32)");
     assert!(j64 <= 8.0 && j32 <= 8.0, "{j64} {j32}");
 }
+
+/// The per-contact dimensional call scales like `Friction::tangential` with the per-call law.
+#[test]
+fn dimensional_call_matches_the_friction_wrapper() {
+    use contensou::friction::{Friction, Slip};
+    let k = Constants::from_parameter(Parameter::new(0.7).unwrap());
+    let b = BestContact::new(&k);
+    let law = Friction::<f64, Best>::new(0.3, 0.0).unwrap();
+    let (a, n) = (50e-6, 2.0);
+    for (vx, vy, om) in [
+        (1e-3, 5e-4, 30.0),
+        (-2e-4, 1e-4, -80.0),
+        (0.0, 0.0, 10.0),
+        (1e-3, 0.0, 0.0),
+    ] {
+        let slip = Slip::new(vx, vy, om).unwrap();
+        let fast = b.tangential(&law, a, n, slip);
+        let slow = law.tangential(&k, a, n, slip);
+        assert_eq!(fast.branch, slow.branch);
+        let fnn = 0.3 * n;
+        assert!((fast.fx - slow.fx).abs() <= 1e-4 * fnn && (fast.fy - slow.fy).abs() <= 1e-4 * fnn);
+        assert!((fast.tz - slow.tz).abs() <= 1e-5 * fnn * a);
+        let none = b.tangential(&law, a, -1.0, slip);
+        assert_eq!((none.fx, none.fy, none.tz), (0.0, 0.0, 0.0));
+    }
+}

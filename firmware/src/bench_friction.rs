@@ -84,6 +84,14 @@ fn best_core<T: Real>(input: (&BestContact<T>, SlipState<T>)) -> Traction<T> {
     input.0.traction(&input.1).0
 }
 
+/// One dimensional per-step call of `BestContact::tangential`.
+type BestStep<'a, T> = (&'a BestContact<T>, &'a Friction<T, Best>, T, T, Slip<T>);
+
+#[inline(never)]
+fn best_dimensional<T: Real>(input: BestStep<'_, T>) -> Tangential<T, best::Branch> {
+    input.0.tangential(input.1, input.2, input.3, input.4)
+}
+
 #[inline(never)]
 fn best_new<T: Real>(k: &Constants<T>) -> BestContact<T> {
     BestContact::new(k)
@@ -107,6 +115,16 @@ fn best<T: Real>(r: &Runner) {
     let states: [(&Constants<T>, SlipState<T>); N] = core::array::from_fn(|i| (&k, states[i].1));
     r.bench("friction", "best-varying", T::NAME, &states, core::<T, Best>);
     r.bench("friction", "best-contact-new", T::NAME, &[&k], best_new::<T>);
+    let f = Friction::<T, Best>::new(T::from_f64(0.3), T::ZERO).expect("valid friction");
+    // The same slips as `full`: ω = 100 rad/s, a = 50 µm, N = 2 N, v = u·aω.
+    let steps: [BestStep<'_, T>; N] = core::array::from_fn(|i| {
+        let (u, psi) = pairs[i];
+        let (s, c) = (libm::sin(psi), libm::cos(psi));
+        let v = T::from_f64(u * 50e-6 * 100.0);
+        let slip = Slip::new(v * T::from_f64(c), v * T::from_f64(s), T::from_f64(100.0));
+        (&b, &f, T::from_f64(50e-6), T::from_f64(2.0), slip.expect("finite input"))
+    });
+    r.bench("friction", "best-dimensional", T::NAME, &steps, best_dimensional::<T>);
 }
 
 /// One line per law (each measures f32 and f64).

@@ -25,8 +25,8 @@
 //!   onset at the boundary.
 //!
 //! [`BestContact`] (per contact, e² fixed) interpolates the series once into 8 cubic pieces in z
-//! (Chebyshev–Lobatto nodes), so a call is two or three square roots, four divisions and seven
-//! cubics. [`Best`], the [`FrictionLaw`] (e² may change every call), sums the series per call.
+//! (Chebyshev–Lobatto nodes), so a call outside is four square roots, four or five divisions
+//! and seven cubics, and inside one division and the quartic. [`Best`], the [`FrictionLaw`] (e² may change every call), sums the series per call.
 //!
 //! # Domain and special cases
 //!
@@ -59,16 +59,17 @@
 //!
 //! Cortex-M4F, `f32`, QEMU stage `friction` (mixed set: u log-uniform in [0.01, 100], ψ uniform,
 //! e² = 0.5; the rig's 8-instruction call floor included):
-//! [`BestContact::traction`] **121 instructions** on average (82 inside … 179 outside;
-//! `simplified`: 66, so 1.83× on average, 2.7× worst on the set); [`BestContact::new`]
-//! 15,953 once per contact; [`Best`] (e² changing every call) 1,327 on average, 3,102 worst
-//! (the 693-term series is summed per call). `f64` (soft float): 5,712 / 86,899 per call.
+//! [`BestContact::traction`] **100 instructions** on average (61 inside … 156 outside;
+//! `simplified`: 66, so 1.52× on average, 2.4× worst on the set); the dimensional
+//! [`BestContact::tangential`] 137 (`simplified`'s 125); [`BestContact::new`] 15,953 once per
+//! contact; [`Best`] (e² changing every call) 1,306 on average, 3,079 worst (the 693-term
+//! series is summed per call). `f64` (soft float): 5,800 / 86,970 per call.
 //! Flash: the table is 7 × 9 × 11 `f32` = 2,772 bytes (+ 64 bytes of series); RAM per contact:
 //! `BestContact<f32>` 948 bytes. Host (criterion, x86-64): see `bench-results/friction.csv`.
 
 mod table;
 
-use super::{Constants, FrictionLaw, SlipState, Traction, larger};
+use super::{Constants, Friction, FrictionLaw, Slip, SlipState, Tangential, Traction, larger};
 use crate::Real;
 
 /// Number of cubic pieces in z of [`BestContact`].
@@ -157,7 +158,8 @@ impl<T: Real> Quartic<T> {
         }
     }
 
-    /// (|F_x|, |F_y|, T_z) for X = y/w, Y = x/w ≥ 0 (T_z for w > 0).
+    /// (−F_x, −F_y, T_z) for X = y/|w|, Y = x/|w| (T_z for w > 0): F_x is odd in Y and even in
+    /// X, F_y the reverse, T_z even in both.
     #[inline(always)]
     fn eval(&self, x: T, y: T) -> (T, T, T) {
         let (x2, y2) = (x * x, y * y);
@@ -267,8 +269,8 @@ impl<T: Real> Series<T> {
     }
 }
 
-/// Confocal coordinates of the IC for |x|, |y|, |w| (IC outside or pure translation):
-/// (cos ν, sin ν, τ/(1 + γ), z-argument 1 − τ).
+/// Confocal coordinates of the IC for x, y, w (IC outside or pure translation):
+/// (cos ν, sin ν, τ, 1 − |τ|), with the signs of x and y on cos ν and sin ν and that of w on τ.
 #[inline(always)]
 fn confocal<T: Real>(m: T, g1: T, x: T, y: T, w: T) -> (T, T, T, T) {
     let p = x * x + y * y;
@@ -286,44 +288,48 @@ fn confocal<T: Real>(m: T, g1: T, x: T, y: T, w: T) -> (T, T, T, T) {
     };
     let (ac, bc) = (a2.sqrt(), larger(b2.sqrt(), T::MIN_POSITIVE));
     let tau = g1 * w / (ac + bc);
-    (x / bc, y / ac, tau, T::ONE - tau)
+    (x / bc, y / ac, tau, T::ONE - tau.abs())
 }
 
 /// Puts the signs back and clamps the coefficients to their passive signs.
 #[inline(always)]
-fn assemble<T: Real>(s: &SlipState<T>, c: T, sn: T, tau: T, k: &[T; 7]) -> Traction<T> {
+fn assemble<T: Real>(c: T, sn: T, tau: T, k: &[T; 7]) -> Traction<T> {
     let q = sn * sn;
-    // a + b·q ≥ 0.3 over the fitted domain (tested): no clamp needed for the forces.
-    let fx = c * (k[0] + k[1] * q);
-    let fy = sn * (k[2] + k[3] * q);
-    let tz = tau * larger(-(k[4] + q * (k[5] + k[6] * q)), T::ZERO);
-    signed(s, fx, fy, tz)
-}
-
-/// (−|F_x| sgn x, −|F_y| sgn y, −|T_z| sgn w) from magnitudes ≥ 0.
-#[inline(always)]
-fn signed<T: Real>(s: &SlipState<T>, fx: T, fy: T, tz: T) -> Traction<T> {
+    // a + b·q ≥ 0.3 over the fitted domain (tested): no clamp needed for the forces, whose
+    // signs come from c = cos ν and sn = sin ν (computed from the signed x and y).
+    // τ carries the sign of w; the polynomial is clamped to its passive sign (≤ 0).
+    let t = k[4] + q * (k[5] + k[6] * q);
     Traction {
-        fx: -fx.copysign(s.x()),
-        fy: -fy.copysign(s.y()),
-        tz: -tz.copysign(s.w()),
+        fx: -c * (k[0] + k[1] * q),
+        fy: -sn * (k[2] + k[3] * q),
+        tz: tau * if t < T::ZERO { t } else { T::ZERO },
     }
 }
 
-/// Inside branch or rest: `None` when the IC is outside.
+/// Inside branch or rest: `None` when the IC is outside. The forces take their signs from the
+/// signed x, y (F_x odd in x, F_y odd in y, both even in the rest), the torque from w.
 #[inline(always)]
 fn inside<T: Real>(q: &Quartic<T>, s: &SlipState<T>) -> Option<(Traction<T>, Branch)> {
-    let (x, y, w) = (s.x().abs(), s.y().abs(), s.w().abs());
+    let (x, y, w) = (s.x(), s.y(), s.w());
     if x * x + q.m1 * y * y > q.m1 * w * w {
         return None;
     }
     if w == T::ZERO {
         return Some((Traction::default(), Branch::Rest));
     }
-    let iw = T::ONE / w;
+    let iw = T::ONE / w.abs();
     let (fx, fy, tz) = q.eval(y * iw, x * iw);
-    // Exact: fx, fy ≥ 0 and tz ≤ −0.003 (e² = 0.99) by the quartic's structure.
-    Some((signed(s, fx, fy, -tz), Branch::Inside))
+    // Exact: the brackets of fx, fy are > 0 and tz ≤ −0.003 (e² = 0.99) by the quartic's
+    // structure.
+    Some((
+        Traction {
+            fx: -fx,
+            fy: -fy,
+            // tz < 0; w/|w| = ±1 up to one rounding, exactly odd in w
+            tz: tz * (w * iw),
+        },
+        Branch::Inside,
+    ))
 }
 
 impl Best {
@@ -344,10 +350,10 @@ impl FrictionLaw for Best {
         }
         let gamma = k.m1().sqrt();
         let g1 = T::ONE + gamma;
-        let (c, sn, tau, one_minus) = confocal(k.m(), g1, s.x().abs(), s.y().abs(), s.w().abs());
+        let (c, sn, tau, one_minus) = confocal(k.m(), g1, s.x(), s.y(), s.w());
         let z = larger(one_minus, T::ZERO).sqrt();
         let co = Series::new(k, &q, gamma).at(z);
-        (assemble(s, c, sn, tau, &co), Branch::Outside)
+        (assemble(c, sn, tau, &co), Branch::Outside)
     }
 }
 
@@ -418,20 +424,48 @@ impl<T: Real> BestContact<T> {
         }
     }
 
+    /// One per-step call with dimensions, like [`Friction::tangential`] but with this
+    /// contact's precomputed tables: major semi-axis `a` (m), normal force `n` (N) and the slip
+    /// → force (N) and drilling torque (N·m) on body B from body A. `friction` supplies f (its
+    /// δ is ignored: `best` has no regularization). N ≤ 0 (or NaN) gives the zero wrench; `a` ≤ 0
+    /// (or NaN) is a point contact (pure translation). Total for finite `a`, `n`.
+    #[inline]
+    pub fn tangential(
+        &self,
+        friction: &Friction<T, Best>,
+        a: T,
+        n: T,
+        slip: Slip<T>,
+    ) -> Tangential<T, Branch> {
+        // `x > 0` is false for NaN: both clamps map NaN to 0.
+        let a = if a > T::ZERO { a } else { T::ZERO };
+        let fn_ = if n > T::ZERO {
+            friction.coefficient() * n
+        } else {
+            T::ZERO
+        };
+        let (t, branch) = self.traction(&SlipState::from_clamped(slip, a, T::ZERO));
+        Tangential {
+            fx: fn_ * t.fx,
+            fy: fn_ * t.fy,
+            tz: fn_ * a * t.tz,
+            branch,
+        }
+    }
+
     /// The dimensionless traction (F/(fN), T_z/(fNa)) and the branch for a slip state.
     /// Total: finite output for every state.
-    #[inline]
+    #[inline(always)]
     pub fn traction(&self, s: &SlipState<T>) -> (Traction<T>, Branch) {
         if let Some(r) = inside(&self.quartic, s) {
             return r;
         }
-        let (c, sn, tau, one_minus) =
-            confocal(self.m, self.g1, s.x().abs(), s.y().abs(), s.w().abs());
+        let (c, sn, tau, one_minus) = confocal(self.m, self.g1, s.x(), s.y(), s.w());
         let zn = larger(one_minus, T::ZERO).sqrt() * T::from_usize(PIECES);
         let i = zn.trunc_usize().min(PIECES - 1);
         let r = zn - T::from_usize(i);
         let piece = &self.pieces[i];
         let co = piece.map(|p| p[0] + r * (p[1] + r * (p[2] + r * p[3])));
-        (assemble(s, c, sn, tau, &co), Branch::Outside)
+        (assemble(c, sn, tau, &co), Branch::Outside)
     }
 }
