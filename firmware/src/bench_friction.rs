@@ -112,6 +112,14 @@ fn best<T: Real>(r: &Runner) {
         (&b, s)
     });
     r.bench("friction", "best", T::NAME, &states, best_core::<T>);
+    // The thinnest fitted patch, e² = 0.99: the outside path with b_c² from the
+    // cancellation-free quotient (u < e) is taken there.
+    let k99 = Constants::<T>::from_parameter(
+        Parameter::new(T::from_f64(0.99)).expect("e² = 0.99 is inside the domain"),
+    );
+    let b99 = BestContact::new(&k99);
+    let thin: [(&BestContact<T>, SlipState<T>); N] = core::array::from_fn(|i| (&b99, states[i].1));
+    r.bench("friction", "best-e2-0.99", T::NAME, &thin, best_core::<T>);
     let states: [(&Constants<T>, SlipState<T>); N] = core::array::from_fn(|i| (&k, states[i].1));
     r.bench("friction", "best-varying", T::NAME, &states, core::<T, Best>);
     r.bench("friction", "best-contact-new", T::NAME, &[&k], best_new::<T>);

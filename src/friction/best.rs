@@ -4,9 +4,10 @@
 //!
 //! # Formula
 //!
-//! Slip state (x, y, w) (see [`SlipState`]); by the exact law's symmetries (F_x odd in x, F_y
-//! odd in y, T_z odd in w, even otherwise) everything is computed for |x|, |y|, |w| and the
-//! signs are put back. The IC is (X₀, Y₀) = (−y, x)/w.
+//! Slip state (x, y, w) (see [`SlipState`]); the exact law's symmetries (F_x odd in x, F_y
+//! odd in y, T_z odd in w, even otherwise) are built in: every formula below takes x² and y²,
+//! and the signs come from the signed x (in cos ν or Y), y (sin ν or X) and w (τ, or w/|w|).
+//! The IC is (X₀, Y₀) = (−y, x)/w.
 //!
 //! - **IC inside** (x² + m₁y² ≤ m₁w²): the exact quartic
 //!   Ψ = C + (B/2)X₀² + (A/2)Y₀² + c₄₀(X₀⁴ + Y₀⁴/m₁) + c₂₂X₀²Y₀²,
@@ -30,8 +31,11 @@
 //!
 //! # Domain and special cases
 //!
-//! Every [`SlipState`] and every e² (fitted for e² ∈ [0, 0.99]; above that the fit uses
-//! e² = 0.99's shape between exact ends). δ is ignored (like [`Exact`](super::Exact)): rest
+//! Every [`SlipState`] and every e². The fit covers e² ∈ [0, 0.99]; above that it uses
+//! e² = 0.99's shape between exact ends (still exact inside, on the ellipse and at u = ∞), and
+//! the error outside grows: measured (`f64`) 3.3e-2 fN / 3.0e-3 fNa at e² = 0.995, 9.3e-2 /
+//! 8.1e-3 at 0.999, 0.19 / 1.4e-2 as e² → 1. Everywhere |F| is scaled back onto |F| ≤ 1 where
+//! the fit would overshoot it (by up to 4e-4 past 0.99, by rounding below). δ is ignored (like [`Exact`](super::Exact)): rest
 //! gives zero, pure translation −v_P/|v_P| exactly, pure spin −C·sgn ω exactly.
 //! Exact (to rounding) inside the ellipse, on its boundary and as u → ∞; continuous across the
 //! boundary and between the cubic pieces (to a few rounding steps); symmetries bit-exact;
@@ -59,13 +63,14 @@
 //!
 //! Cortex-M4F, `f32`, QEMU stage `friction` (mixed set: u log-uniform in [0.01, 100], ψ uniform,
 //! e² = 0.5; the rig's 8-instruction call floor included):
-//! [`BestContact::traction`] **100 instructions** on average (61 inside … 156 outside;
-//! `simplified`: 66, so 1.52× on average, 2.4× worst on the set); the dimensional
-//! [`BestContact::tangential`] 137 (`simplified`'s 125); [`BestContact::new`] 15,953 once per
-//! contact; [`Best`] (e² changing every call) 1,306 on average, 3,079 worst (the 693-term
-//! series is summed per call). `f64` (soft float): 5,800 / 86,970 per call.
-//! Flash: the table is 7 × 9 × 11 `f32` = 2,772 bytes (+ 64 bytes of series); RAM per contact:
-//! `BestContact<f32>` 948 bytes. Host (criterion, x86-64): see `bench-results/friction.csv`.
+//! [`BestContact::traction`] **107 instructions** on average (63 inside … 172 outside;
+//! `simplified`: 66, so 1.62× on average, 2.6× worst on the set; 125 on the same set at
+//! e² = 0.99, worst 174); the dimensional [`BestContact::tangential`] 143 (`simplified`'s 125);
+//! [`BestContact::new`] 15,953 once per contact; [`Best`] (e² changing every call) 1,312 on
+//! average, 3,094 worst (the 693-term series is summed per call). `f64` (soft float): 5,931 /
+//! 87,101 per call. Flash: the table is 7 × 9 × 11 `f32` = 2,772 bytes (+ 64 bytes of series);
+//! RAM per contact: `BestContact<f32>` 948 bytes. Host (criterion, x86-64, mixed set): ≈20 ns
+//! per call (`BestContact`), ≈100 ns (`Best`); `bench-results/friction.csv`.
 
 mod table;
 
@@ -306,6 +311,26 @@ fn assemble<T: Real>(c: T, sn: T, tau: T, k: &[T; 7]) -> Traction<T> {
     }
 }
 
+/// |F| ≤ 1: past the fitted range (e² > 0.99) the fit can overshoot it by up to 4e-4 (inside
+/// the range only by rounding); scale back onto the unit disk (a positive factor: passivity
+/// and continuity are kept). One compare on the common path.
+#[inline(always)]
+fn bounded<T: Real>(t: Traction<T>) -> Traction<T> {
+    let f2 = t.fx * t.fx + t.fy * t.fy;
+    if f2 > T::ONE { rescale(t, f2) } else { t }
+}
+
+#[cold]
+#[inline(never)]
+fn rescale<T: Real>(t: Traction<T>, f2: T) -> Traction<T> {
+    let r = T::ONE / f2.sqrt();
+    Traction {
+        fx: t.fx * r,
+        fy: t.fy * r,
+        tz: t.tz,
+    }
+}
+
 /// Inside branch or rest: `None` when the IC is outside. The forces take their signs from the
 /// signed x, y (F_x odd in x, F_y odd in y, both even in the rest), the torque from w.
 #[inline(always)]
@@ -353,7 +378,9 @@ impl FrictionLaw for Best {
         let (c, sn, tau, one_minus) = confocal(k.m(), g1, s.x(), s.y(), s.w());
         let z = larger(one_minus, T::ZERO).sqrt();
         let co = Series::new(k, &q, gamma).at(z);
-        (assemble(c, sn, tau, &co), Branch::Outside)
+        let t = assemble(c, sn, tau, &co);
+        let t = bounded(t);
+        (t, Branch::Outside)
     }
 }
 
@@ -466,6 +493,6 @@ impl<T: Real> BestContact<T> {
         let r = zn - T::from_usize(i);
         let piece = &self.pieces[i];
         let co = piece.map(|p| p[0] + r * (p[1] + r * (p[2] + r * p[3])));
-        (assemble(c, sn, tau, &co), Branch::Outside)
+        (bounded(assemble(c, sn, tau, &co)), Branch::Outside)
     }
 }
