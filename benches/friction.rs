@@ -14,7 +14,8 @@ use std::time::Duration;
 use contensou::Real;
 use contensou::elliptic::Parameter;
 use contensou::friction::{
-    Constants, Coulomb, Ellipsoid, Exact, FrictionLaw, Pade, Simplified, SlipState, Traction,
+    Best, BestContact, Constants, Coulomb, Ellipsoid, Exact, FrictionLaw, Pade, Simplified,
+    SlipState, Traction,
 };
 use criterion::Criterion;
 
@@ -42,6 +43,23 @@ fn bench_law<T: Real, L: FrictionLaw>(c: &mut Criterion) {
     let set = inputs::<T>();
     c.bench_function(&format!("friction/{}-{}", L::NAME, T::NAME), |b| {
         b.iter(|| run::<T, L>(&k, black_box(&set)))
+    });
+}
+
+/// `best` per contact ([`BestContact`], constants built once outside the loop).
+fn bench_best<T: Real>(c: &mut Criterion) {
+    let k = Constants::from_parameter(Parameter::new(T::from_f64(0.5)).unwrap());
+    let b = BestContact::new(&k);
+    let set = inputs::<T>();
+    c.bench_function(&format!("friction/best-contact-{}", T::NAME), |bch| {
+        bch.iter(|| {
+            let mut acc = T::ZERO;
+            for s in black_box(&set) {
+                let (t, _) = black_box(&b).traction(black_box(s));
+                acc += t.fx + t.fy + t.tz;
+            }
+            acc
+        })
     });
 }
 
@@ -157,6 +175,10 @@ fn main() {
     bench_law::<f64, Coulomb>(&mut c);
     bench_law::<f32, Exact>(&mut c);
     bench_law::<f64, Exact>(&mut c);
+    bench_best::<f32>(&mut c);
+    bench_best::<f64>(&mut c);
+    bench_law::<f32, Best>(&mut c);
+    bench_law::<f64, Best>(&mut c);
     c.final_summary();
 
     let exact: Vec<(f64, f64, f64, Traction<f64>)> = {
@@ -210,6 +232,8 @@ fn main() {
     row!(f64, Coulomb);
     row!(f32, Exact);
     row!(f64, Exact);
+    row!(f32, Best);
+    row!(f64, Best);
     let out = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("bench-results/friction.csv");
     let _ = std::fs::create_dir_all(out.parent().unwrap());
     std::fs::write(&out, csv).unwrap();

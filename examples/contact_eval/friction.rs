@@ -5,7 +5,8 @@ use std::process::ExitCode;
 use contensou::Real;
 use contensou::elliptic::Parameter;
 use contensou::friction::{
-    Constants, Coulomb, Ellipsoid, Exact, FrictionLaw, Pade, Simplified, SlipState,
+    Best, BestContact, Constants, Coulomb, Ellipsoid, Exact, FrictionLaw, Pade, Simplified,
+    SlipState, Traction,
 };
 
 use crate::{Options, run_csv};
@@ -23,11 +24,15 @@ pub fn run(options: &Options) -> Result<ExitCode, String> {
         "ellipsoid" => eval::<f64, Ellipsoid>(),
         "coulomb" if f32 => eval::<f32, Coulomb>(),
         "coulomb" => eval::<f64, Coulomb>(),
+        "best" if f32 => eval::<f32, BestPerContact>(),
+        "best" => eval::<f64, BestPerContact>(),
+        "best-varying" if f32 => eval::<f32, Best>(),
+        "best-varying" => eval::<f64, Best>(),
         "exact" if f32 => eval::<f32, Exact>(),
         "exact" => eval::<f64, Exact>(),
         other => {
             return Err(format!(
-                "unknown model `{other}` for friction (exact, simplified, pade, ellipsoid, coulomb)"
+                "unknown model `{other}` for friction (exact, simplified, pade, ellipsoid, coulomb, best, best-varying)"
             ));
         }
     })
@@ -44,4 +49,15 @@ fn eval<T: Real, L: FrictionLaw>() -> ExitCode {
         let (t, _) = L::traction(&Constants::from_parameter(p), &s);
         Ok(vec![t.fx, t.fy, t.tz])
     })
+}
+
+/// `best`: the per-contact form, built for each row's e², as a law for [`eval`].
+struct BestPerContact;
+
+impl FrictionLaw for BestPerContact {
+    const NAME: &'static str = "best";
+    type Branch = contensou::friction::best::Branch;
+    fn traction<T: Real>(k: &Constants<T>, s: &SlipState<T>) -> (Traction<T>, Self::Branch) {
+        BestContact::new(k).traction(s)
+    }
 }

@@ -79,6 +79,62 @@ fn from_integrals<T: Real>(r: &Runner) {
     r.bench("friction", "constants-from-integrals", T::NAME, &inputs, constants::<T>);
 }
 
+#[inline(never)]
+fn best_core<T: Real>(input: (&BestContact<T>, SlipState<T>)) -> Traction<T> {
+    input.0.traction(&input.1).0
+}
+
+/// One dimensional per-step call of `BestContact::tangential`.
+type BestStep<'a, T> = (&'a BestContact<T>, &'a Friction<T, Best>, T, T, Slip<T>);
+
+#[inline(never)]
+fn best_dimensional<T: Real>(input: BestStep<'_, T>) -> Tangential<T, best::Branch> {
+    input.0.tangential(input.1, input.2, input.3, input.4)
+}
+
+#[inline(never)]
+fn best_new<T: Real>(k: &Constants<T>) -> BestContact<T> {
+    BestContact::new(k)
+}
+
+/// `best` per contact ([`BestContact`], method `best`), its once-per-contact construction
+/// (`best-contact-new`), and the per-call form [`Best`] for e² changing every call
+/// (`best-varying`).
+fn best<T: Real>(r: &Runner) {
+    let k = Constants::<T>::from_parameter(
+        Parameter::new(T::from_f64(0.5)).expect("e² = 0.5 is inside the domain"),
+    );
+    let b = BestContact::new(&k);
+    let pairs = mixed_set();
+    let states: [(&BestContact<T>, SlipState<T>); N] = core::array::from_fn(|i| {
+        let (u, psi) = pairs[i];
+        let s = SlipState::from_polar(T::from_f64(psi), T::from_f64(u)).expect("finite input");
+        (&b, s)
+    });
+    r.bench("friction", "best", T::NAME, &states, best_core::<T>);
+    // The thinnest fitted patch, e² = 0.99: the outside path with b_c² from the
+    // cancellation-free quotient (u < e) is taken there.
+    let k99 = Constants::<T>::from_parameter(
+        Parameter::new(T::from_f64(0.99)).expect("e² = 0.99 is inside the domain"),
+    );
+    let b99 = BestContact::new(&k99);
+    let thin: [(&BestContact<T>, SlipState<T>); N] = core::array::from_fn(|i| (&b99, states[i].1));
+    r.bench("friction", "best-e2-0.99", T::NAME, &thin, best_core::<T>);
+    let states: [(&Constants<T>, SlipState<T>); N] = core::array::from_fn(|i| (&k, states[i].1));
+    r.bench("friction", "best-varying", T::NAME, &states, core::<T, Best>);
+    r.bench("friction", "best-contact-new", T::NAME, &[&k], best_new::<T>);
+    let f = Friction::<T, Best>::new(T::from_f64(0.3), T::ZERO).expect("valid friction");
+    // The same slips as `full`: ω = 100 rad/s, a = 50 µm, N = 2 N, v = u·aω.
+    let steps: [BestStep<'_, T>; N] = core::array::from_fn(|i| {
+        let (u, psi) = pairs[i];
+        let (s, c) = (libm::sin(psi), libm::cos(psi));
+        let v = T::from_f64(u * 50e-6 * 100.0);
+        let slip = Slip::new(v * T::from_f64(c), v * T::from_f64(s), T::from_f64(100.0));
+        (&b, &f, T::from_f64(50e-6), T::from_f64(2.0), slip.expect("finite input"))
+    });
+    r.bench("friction", "best-dimensional", T::NAME, &steps, best_dimensional::<T>);
+}
+
 /// One line per law (each measures f32 and f64).
 pub fn run(r: &Runner) {
     for_both::<Simplified>(r);
@@ -89,6 +145,8 @@ pub fn run(r: &Runner) {
     full::<f64, Simplified>(r);
     from_integrals::<f32>(r);
     from_integrals::<f64>(r);
+    best::<f32>(r);
+    best::<f64>(r);
 }
 
 fn for_both<L: FrictionLaw>(r: &Runner) {

@@ -28,6 +28,7 @@
 //! # Ok::<(), contensou::Error>(())
 //! ```
 
+pub mod best;
 pub mod constants;
 pub mod coulomb;
 pub mod ellipsoid;
@@ -38,6 +39,7 @@ pub mod reference;
 pub mod simplified;
 pub mod slip;
 
+pub use best::{Best, BestContact};
 pub use constants::Constants;
 pub use coulomb::Coulomb;
 pub use ellipsoid::Ellipsoid;

@@ -1,0 +1,431 @@
+//! The `best` friction law: max error against the exact integrals on a dense independent set
+//! (e² ∈ [0, 0.99], ψ in all quadrants, u log-spaced plus points just inside and outside the
+//! ellipse, near u = 1 and u = ∞), `f64` and `f32`, per-contact and per-call forms; passivity,
+//! symmetries, continuity across the ellipse and the cubic pieces, limits.
+#![allow(clippy::excessive_precision)]
+
+use contensou::Real;
+use contensou::elliptic::Parameter;
+use contensou::friction::best::Branch;
+use contensou::friction::{Best, BestContact, Constants, FrictionLaw, SlipState, Traction, exact};
+
+/// Error bound of issue 5 (fN for the force, fNa for the torque).
+const BOUND: f64 = 5e-4;
+
+fn e2s() -> Vec<f64> {
+    let mut v: Vec<f64> = (0..=22).map(|i| 0.99 * (i as f64 / 22.0).sqrt()).collect();
+    v.extend([1e-6, 0.01, 0.5, 0.687, 0.9, 0.95, 0.98, 0.985, 0.99]);
+    v
+}
+
+/// ψ values: quadrants, axes and irregular angles.
+fn psis() -> Vec<f64> {
+    let mut v: Vec<f64> = (0..24)
+        .map(|i| 0.0131 + i as f64 * std::f64::consts::PI / 12.0)
+        .collect();
+    v.extend([
+        0.0,
+        std::f64::consts::FRAC_PI_2,
+        -std::f64::consts::FRAC_PI_2,
+        3.0,
+        1e-4,
+    ]);
+    v
+}
+
+/// u values for one (e², ψ): log grid, boundary ± offsets, near 1.
+fn us(e2: f64, psi: f64) -> Vec<f64> {
+    let ub = 1.0 / (psi.sin().powi(2) + psi.cos().powi(2) / (1.0 - e2)).sqrt();
+    let mut v: Vec<f64> = (0..=60)
+        .map(|i| 10f64.powf(-2.0 + 4.5 * i as f64 / 60.0))
+        .collect();
+    for d in [1e-9, 1e-6, 1e-4, 1e-3, 1e-2, 0.03, 0.1, 0.3] {
+        v.push(ub * (1.0 + d));
+        v.push(ub * (1.0 - d));
+    }
+    v.extend([
+        ub,
+        0.97,
+        0.99,
+        1.0,
+        1.01,
+        1.03,
+        1.1,
+        1.3,
+        1e4,
+        1e7,
+        f64::INFINITY,
+    ]);
+    v
+}
+
+struct Errors {
+    force: f64,
+    torque: f64,
+    at: (f64, f64, f64),
+}
+
+type Law<T> = Box<dyn Fn(&SlipState<T>) -> Traction<T>>;
+
+fn max_error<T: Real>(build: impl Fn(&Constants<T>) -> Law<T>) -> Errors {
+    let mut e = Errors {
+        force: 0.0,
+        torque: 0.0,
+        at: (0.0, 0.0, 0.0),
+    };
+    for e2 in e2s() {
+        let p = Parameter::new(T::from_f64(e2)).unwrap();
+        let k = Constants::from_parameter(p);
+        let p64 = Parameter::new(p.m().to_f64()).unwrap();
+        let law = build(&k);
+        for psi in psis() {
+            for u in us(e2, psi) {
+                let s = SlipState::<T>::from_polar(T::from_f64(psi), T::from_f64(u)).unwrap();
+                let r = exact::traction(p64, s.x().to_f64(), s.y().to_f64(), s.w().to_f64());
+                let t = law(&s);
+                let f = (t.fx.to_f64() - r.fx)
+                    .abs()
+                    .max((t.fy.to_f64() - r.fy).abs());
+                let tz = (t.tz.to_f64() - r.tz).abs();
+                if f.max(tz) > e.force.max(e.torque) {
+                    e.at = (e2, psi, u);
+                }
+                e.force = e.force.max(f);
+                e.torque = e.torque.max(tz);
+            }
+        }
+    }
+    e
+}
+
+fn report(name: &str, e: &Errors) {
+    println!(
+        "{name}: force {:.2e} fN, torque {:.2e} fNa, worst at (e2, psi, u) = {:?}",
+        e.force, e.torque, e.at
+    );
+}
+
+#[test]
+fn per_contact_error_against_exact() {
+    let e64 = max_error::<f64>(|k| {
+        let b = BestContact::new(k);
+        Box::new(move |s| b.traction(s).0)
+    });
+    report("BestContact f64", &e64);
+    let e32 = max_error::<f32>(|k| {
+        let b = BestContact::new(k);
+        Box::new(move |s| b.traction(s).0)
+    });
+    report("BestContact f32", &e32);
+    for e in [&e64, &e32] {
+        assert!(e.force <= BOUND && e.torque <= BOUND);
+    }
+    assert!(e64.force <= BestContact::<f64>::ERROR.0 && e64.torque <= BestContact::<f64>::ERROR.1);
+}
+
+#[test]
+fn per_call_error_against_exact() {
+    let e64 = max_error::<f64>(|k| {
+        let k = *k;
+        Box::new(move |s| Best::traction(&k, s).0)
+    });
+    report("Best f64", &e64);
+    let e32 = max_error::<f32>(|k| {
+        let k = *k;
+        Box::new(move |s| Best::traction(&k, s).0)
+    });
+    report("Best f32", &e32);
+    assert!(e32.force <= BOUND && e32.torque <= BOUND);
+    assert!(e64.force <= Best::ERROR.0 && e64.torque <= Best::ERROR.1);
+}
+
+/// splitmix64
+struct Rng(u64);
+impl Rng {
+    fn unit(&mut self) -> f64 {
+        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        ((z ^ (z >> 31)) >> 11) as f64 / (1u64 << 53) as f64
+    }
+}
+
+/// Passivity (F·v_P + T_z·ω ≤ 0, each component opposing its own velocity), |F| ≤ 1,
+/// finiteness and the exact law's symmetries, bit-exact, over random states of every kind.
+fn properties<T: Real>(seed: u64) {
+    let mut rng = Rng(seed);
+    for i in 0..20_000 {
+        let e2 = if i % 7 == 0 { 0.0 } else { 0.99 * rng.unit() };
+        let k = Constants::from_parameter(Parameter::new(T::from_f64(e2)).unwrap());
+        let b = BestContact::new(&k);
+        let psi = 2.0 * std::f64::consts::PI * rng.unit();
+        let u = match i % 10 {
+            0 => 0.0,
+            1 => f64::INFINITY,
+            _ => (rng.unit() * 12.0 - 6.0).exp(),
+        };
+        let s = SlipState::<T>::from_polar(T::from_f64(psi), T::from_f64(u)).unwrap();
+        let (x, y, w) = (s.x(), s.y(), s.w());
+        let d = T::ZERO;
+        for sign in [T::ONE, -T::ONE] {
+            let st = SlipState::new(x, y, sign * w, d).unwrap();
+            let (t, _) = b.traction(&st);
+            let (t2, _) = Best::traction(&k, &st);
+            for t in [t, t2] {
+                let (fx, fy, tz) = (t.fx.to_f64(), t.fy.to_f64(), t.tz.to_f64());
+                assert!(fx.is_finite() && fy.is_finite() && tz.is_finite());
+                assert!(fx * st.x().to_f64() <= 0.0 && fy * st.y().to_f64() <= 0.0);
+                assert!(tz * st.w().to_f64() <= 0.0);
+                assert!(fx.hypot(fy) <= 1.0 + 1e-6, "{e2} {psi} {u}");
+            }
+            let mirror = |mx: T, my: T, mw: T| {
+                b.traction(&SlipState::new(mx * x, my * y, mw * sign * w, d).unwrap())
+                    .0
+            };
+            let m = mirror(-T::ONE, T::ONE, T::ONE);
+            assert!(m.fx == -t.fx && m.fy == t.fy && m.tz == t.tz);
+            let m = mirror(T::ONE, -T::ONE, T::ONE);
+            assert!(m.fx == t.fx && m.fy == -t.fy && m.tz == t.tz);
+            let m = mirror(T::ONE, T::ONE, -T::ONE);
+            assert!(m.fx == t.fx && m.fy == t.fy && m.tz == -t.tz);
+        }
+    }
+}
+
+#[test]
+fn passive_bounded_finite_and_symmetric() {
+    properties::<f64>(1);
+    properties::<f32>(2);
+}
+
+/// Rest → 0; pure spin → (0, 0, −C sgn ω); pure translation → −v_P/|v_P|, T = 0; the jump
+/// across the ellipse boundary (u_b(1 ± 1e-9)) is below rounding plus slope × step.
+#[test]
+fn limits_and_boundary_continuity() {
+    for e2 in [0.0, 0.3, 0.687, 0.9, 0.99] {
+        let k = Constants::from_parameter(Parameter::new(e2).unwrap());
+        let b = BestContact::new(&k);
+        let (t, br) = b.traction(&SlipState::new(0.0, 0.0, 0.0, 0.0).unwrap());
+        assert_eq!((t, br), (Traction::default(), Branch::Rest));
+        let (t, _) = b.traction(&SlipState::new(0.0, 0.0, -2.0, 0.0).unwrap());
+        assert_eq!((t.fx, t.fy), (0.0, 0.0));
+        assert!((t.tz - k.spin_torque()).abs() < 1e-15);
+        for psi in [0.0, 0.4, 1.3, std::f64::consts::FRAC_PI_2, 2.5, -0.7] {
+            let (t, br) = b.traction(&SlipState::from_polar(psi, f64::INFINITY).unwrap());
+            assert_eq!(br, Branch::Outside);
+            assert!((t.fx + psi.cos()).abs() < 1e-14 && (t.fy + psi.sin()).abs() < 1e-14);
+            assert_eq!(t.tz, 0.0);
+            let ub = 1.0 / (psi.sin().powi(2) + psi.cos().powi(2) / (1.0 - e2)).sqrt();
+            let at = |u: f64| b.traction(&SlipState::from_polar(psi, u).unwrap());
+            let (ti, bi) = at(ub * (1.0 - 1e-9));
+            let (to, bo) = at(ub * (1.0 + 1e-9));
+            assert_eq!((bi, bo), (Branch::Inside, Branch::Outside));
+            let jump = (ti.fx - to.fx)
+                .abs()
+                .max((ti.fy - to.fy).abs())
+                .max((ti.tz - to.tz).abs());
+            assert!(jump < 1e-7, "e2 {e2} psi {psi}: jump {jump:e}");
+            // the per-call form agrees with the per-contact one there
+            let (tv, _) =
+                Best::traction(&k, &SlipState::from_polar(psi, ub * (1.0 + 1e-9)).unwrap());
+            assert!((tv.fx - to.fx).abs() < 1e-6 && (tv.tz - to.tz).abs() < 1e-6);
+        }
+    }
+}
+
+/// Continuity along u: on a fine log grid from the ellipse to u = 1e3 (crossing every cubic
+/// piece), neighbouring values differ by no more than the exact law's slope allows.
+#[test]
+fn continuous_along_u() {
+    for e2 in [0.0, 0.5, 0.99] {
+        let k = Constants::from_parameter(Parameter::new(e2 as f32).unwrap());
+        let b = BestContact::new(&k);
+        for psi in [0.2f64, 1.0, 1.5] {
+            let mut prev: Option<Traction<f32>> = None;
+            for i in 0..20_000 {
+                let u = 0.05 * (i as f64 * 1e-4 * 10f64.ln() * 4.3).exp();
+                let t = b
+                    .traction(&SlipState::from_polar(psi as f32, u as f32).unwrap())
+                    .0;
+                if let Some(p) = prev {
+                    let d = (t.fx - p.fx)
+                        .abs()
+                        .max((t.fy - p.fy).abs())
+                        .max((t.tz - p.tz).abs());
+                    // slope ≤ 30 (e² = 0.99 near the ellipse) × step 1e-3·u, plus rounding
+                    assert!(d < 30.0 * 1e-3 * u as f32 + 1e-5, "{e2} {psi} {u}: {d}");
+                }
+                prev = Some(t);
+            }
+        }
+    }
+}
+
+/// Bisect the inside/outside switch along u to adjacent floats: the jump there is a few
+/// rounding steps (the law is continuous and has no √-like onset at the ellipse).
+fn boundary_jump<T: Real>(next_up: impl Fn(T) -> T) -> f64 {
+    let mut worst = 0.0f64;
+    for e2 in [0.0, 0.3, 0.687, 0.9, 0.99] {
+        let k = Constants::from_parameter(Parameter::new(T::from_f64(e2)).unwrap());
+        let b = BestContact::new(&k);
+        for i in 0..40 {
+            let psi = T::from_f64(0.05 + i as f64 * 0.157);
+            let at = |u: T| b.traction(&SlipState::from_polar(psi, u).unwrap());
+            let (mut lo, mut hi) = (T::from_f64(0.05), T::from_f64(1.5));
+            assert_eq!(at(lo).1, Branch::Inside);
+            assert_eq!(at(hi).1, Branch::Outside);
+            for _ in 0..200 {
+                let mid = T::HALF * (lo + hi);
+                if mid <= lo || mid >= hi {
+                    break;
+                }
+                if at(mid).1 == Branch::Inside {
+                    lo = mid;
+                } else {
+                    hi = mid;
+                }
+            }
+            assert!(next_up(lo) >= hi);
+            let (a, c) = (at(lo).0, at(hi).0);
+            let d = |p: T, q: T| (p.to_f64() - q.to_f64()).abs();
+            worst = worst.max(d(a.fx, c.fx).max(d(a.fy, c.fy)).max(d(a.tz, c.tz)));
+        }
+    }
+    worst / T::EPSILON.to_f64()
+}
+
+#[test]
+fn no_jump_at_the_ellipse_beyond_rounding() {
+    let j64 = boundary_jump::<f64>(|x| f64::from_bits(x.to_bits() + 1));
+    let j32 = boundary_jump::<f32>(|x| f32::from_bits(x.to_bits() + 1));
+    println!("jump at the ellipse: {j64:.1} eps (f64), {j32:.1} eps (f32)");
+    assert!(j64 <= 8.0 && j32 <= 8.0, "{j64} {j32}");
+}
+
+/// The per-contact dimensional call scales like `Friction::tangential` with the per-call law.
+#[test]
+fn dimensional_call_matches_the_friction_wrapper() {
+    use contensou::friction::{Friction, Slip};
+    let k = Constants::from_parameter(Parameter::new(0.7).unwrap());
+    let b = BestContact::new(&k);
+    let law = Friction::<f64, Best>::new(0.3, 0.0).unwrap();
+    let (a, n) = (50e-6, 2.0);
+    for (vx, vy, om) in [
+        (1e-3, 5e-4, 30.0),
+        (-2e-4, 1e-4, -80.0),
+        (0.0, 0.0, 10.0),
+        (1e-3, 0.0, 0.0),
+    ] {
+        let slip = Slip::new(vx, vy, om).unwrap();
+        let fast = b.tangential(&law, a, n, slip);
+        let slow = law.tangential(&k, a, n, slip);
+        assert_eq!(fast.branch, slow.branch);
+        let fnn = 0.3 * n;
+        assert!((fast.fx - slow.fx).abs() <= 1e-4 * fnn && (fast.fy - slow.fy).abs() <= 1e-4 * fnn);
+        assert!((fast.tz - slow.tz).abs() <= 1e-5 * fnn * a);
+        let none = b.tangential(&law, a, -1.0, slip);
+        assert_eq!((none.fx, none.fy, none.tz), (0.0, 0.0, 0.0));
+    }
+}
+
+/// Raw slips of every scale (subnormal to huge, zeros, pure spin and translation) through
+/// `SlipState::new`: finite, passive, |F| ≤ 1; f32 against f64 on ordinary states.
+fn extremes<T: Real>(seed: u64) -> f64 {
+    let mut rng = Rng(seed);
+    let ks: Vec<(Constants<T>, BestContact<T>)> = [0.0, 0.4, 0.9, 0.99, 0.999999]
+        .iter()
+        .map(|&m| {
+            let k = Constants::from_parameter(Parameter::new(T::from_f64(m)).unwrap());
+            (k, BestContact::new(&k))
+        })
+        .collect();
+    let mut worst = 0.0f64;
+    for i in 0..20_000 {
+        let (k, b) = &ks[i % ks.len()];
+        let mut c = || {
+            let r = rng.unit();
+            if r < 0.1 {
+                0.0
+            } else {
+                let v = (rng.unit() * 160.0 - 90.0).exp();
+                if rng.unit() < 0.5 { -v } else { v }
+            }
+        };
+        let (vx, vy, aw) = (c(), c(), c());
+        let Ok(s) = SlipState::new(T::from_f64(vx), T::from_f64(vy), T::from_f64(aw), T::ZERO)
+        else {
+            continue;
+        };
+        let (t, _) = b.traction(&s);
+        let (fx, fy, tz) = (t.fx.to_f64(), t.fy.to_f64(), t.tz.to_f64());
+        assert!(
+            fx.is_finite() && fy.is_finite() && tz.is_finite(),
+            "{vx} {vy} {aw}"
+        );
+        assert!(fx * s.x().to_f64() <= 0.0 && fy * s.y().to_f64() <= 0.0);
+        assert!(
+            tz * s.w().to_f64() <= 0.0 && fx.hypot(fy) <= 1.0 + 1e-6,
+            "m {} state {:?} -> {fx} {fy} {tz}",
+            k.m().to_f64(),
+            s
+        );
+        let _ = k;
+        if T::EPSILON.to_f64() < 1e-10 {
+            // the same (f32-representable) state in f32
+            let m = k.m().to_f64() as f32;
+            let k32 = Constants::from_parameter(Parameter::new(m).unwrap());
+            let s32 = SlipState::new(vx as f32, vy as f32, aw as f32, 0.0);
+            let s64 = SlipState::new(vx as f32 as f64, vy as f32 as f64, aw as f32 as f64, 0.0);
+            let k64 = Constants::from_parameter(Parameter::new(m as f64).unwrap());
+            let ordinary = [vx, vy, aw]
+                .iter()
+                .all(|v| *v == 0.0 || (v.abs() > 1e-30 && v.abs() < 1e30));
+            if let (Ok(s32), Ok(s64), true) = (s32, s64, ordinary) {
+                let a = BestContact::new(&k32).traction(&s32).0;
+                let b = BestContact::new(&k64).traction(&s64).0;
+                let d = (a.fx as f64 - b.fx).abs().max((a.fy as f64 - b.fy).abs());
+                worst = worst.max(d.max((a.tz as f64 - b.tz).abs()));
+            }
+        }
+    }
+    worst
+}
+
+#[test]
+fn extreme_slips_and_f32_against_f64() {
+    extremes::<f32>(5);
+    let d = extremes::<f64>(6);
+    println!("f32 vs f64: {d:.1e}");
+    assert!(d < 2e-6, "{d}");
+}
+
+/// Past the fitted range (e² > 0.99): exact inside and at the ends, but the outside error
+/// grows to the measured figures of the module docs; |F| ≤ 1 still holds.
+#[test]
+fn beyond_the_fitted_range() {
+    for (m1, force, torque) in [
+        (5e-3, 3.5e-2, 3.2e-3),
+        (1e-3, 9.5e-2, 8.5e-3),
+        (1e-8, 0.19, 1.4e-2),
+    ] {
+        let p = Parameter::from_complement(m1).unwrap();
+        let k = Constants::from_parameter(p);
+        let b = BestContact::new(&k);
+        let (mut ef, mut et) = (0.0f64, 0.0f64);
+        for i in 0..30 {
+            let psi = 0.001 + i as f64 * 0.0524;
+            for j in 0..80 {
+                let u = 10f64.powf(-3.0 + 6.0 * j as f64 / 80.0);
+                let s = SlipState::from_polar(psi, u).unwrap();
+                let r = exact::traction(p, s.x(), s.y(), s.w());
+                let t = b.traction(&s).0;
+                ef = ef.max((t.fx - r.fx).abs().max((t.fy - r.fy).abs()));
+                et = et.max((t.tz - r.tz).abs());
+                assert!(t.fx.hypot(t.fy) <= 1.0 + 1e-15);
+            }
+        }
+        println!("m1 {m1:e}: force {ef:.2e}, torque {et:.2e}");
+        assert!(ef <= force && et <= torque, "m1 {m1}: {ef} {et}");
+    }
+}
