@@ -303,7 +303,8 @@ fn no_jump_at_the_ellipse_beyond_rounding() {
     assert!(j64 <= 8.0 && j32 <= 8.0, "{j64} {j32}");
 }
 
-/// The per-contact dimensional call scales like `Friction::tangential` with the per-call law.
+/// The per-contact dimensional call (`Friction::tangential_prepared`) agrees with the per-call
+/// law through `Friction::tangential`.
 #[test]
 fn dimensional_call_matches_the_friction_wrapper() {
     use contensou::friction::{Friction, Slip};
@@ -318,13 +319,13 @@ fn dimensional_call_matches_the_friction_wrapper() {
         (1e-3, 0.0, 0.0),
     ] {
         let slip = Slip::new(vx, vy, om).unwrap();
-        let fast = b.tangential(&law, a, n, slip);
+        let fast = law.tangential_prepared(&b, a, n, slip);
         let slow = law.tangential(&k, a, n, slip);
         assert_eq!(fast.branch, slow.branch);
         let fnn = 0.3 * n;
         assert!((fast.fx - slow.fx).abs() <= 1e-4 * fnn && (fast.fy - slow.fy).abs() <= 1e-4 * fnn);
         assert!((fast.tz - slow.tz).abs() <= 1e-5 * fnn * a);
-        let none = b.tangential(&law, a, -1.0, slip);
+        let none = law.tangential_prepared(&b, a, -1.0, slip);
         assert_eq!((none.fx, none.fy, none.tz), (0.0, 0.0, 0.0));
     }
 }
@@ -427,5 +428,54 @@ fn beyond_the_fitted_range() {
         }
         println!("m1 {m1:e}: force {ef:.2e}, torque {et:.2e}");
         assert!(ef <= force && et <= torque, "m1 {m1}: {ef} {et}");
+    }
+}
+
+/// Regularization near rest (δ > 0): below the slip scale S = |v_Px| + |v_Py| + a|ω| = δ the
+/// traction is the unregularized one times S/δ (continuous at S = δ, passive, zero at rest);
+/// at S ≥ δ it is unchanged. Both forms, f64.
+#[test]
+fn regularization_ramps_linearly_below_delta() {
+    use contensou::friction::{Friction, FrictionLaw, Slip};
+    let k = Constants::from_parameter(Parameter::new(0.6).unwrap());
+    let b = Best::prepare(&k);
+    let (a, n, f, delta) = (1e-3, 3.0, 0.2, 1e-3);
+    let sharp = Friction::<f64, Best>::new(f, 0.0).unwrap();
+    let soft = Friction::<f64, Best>::new(f, delta).unwrap();
+    for (vx, vy, om) in [
+        (3e-4, -2e-4, 0.4),
+        (1e-4, 0.0, 0.0),
+        (0.0, 0.0, 0.5),
+        (-2e-4, 4e-4, -0.2),
+    ] {
+        let s = f64::abs(vx) + f64::abs(vy) + a * f64::abs(om);
+        for scale in [1e-3, 0.1, 0.5, 0.999_999, 1.0, 1.000_001, 3.0] {
+            let k_s = scale * delta / s;
+            let slip = Slip::new(vx * k_s, vy * k_s, om * k_s).unwrap();
+            let ramp = scale.min(1.0);
+            for (r, u) in [
+                (
+                    soft.tangential(&k, a, n, slip),
+                    sharp.tangential(&k, a, n, slip),
+                ),
+                (
+                    soft.tangential_prepared(&b, a, n, slip),
+                    sharp.tangential_prepared(&b, a, n, slip),
+                ),
+            ] {
+                for (got, want) in [
+                    (r.fx, u.fx * ramp),
+                    (r.fy, u.fy * ramp),
+                    (r.tz, u.tz * ramp),
+                ] {
+                    assert!(
+                        (got - want).abs() <= 1e-12 * f * n,
+                        "scale {scale}: {got} vs {want}"
+                    );
+                }
+                let power = r.fx * slip.vx() + r.fy * slip.vy() + r.tz * slip.omega();
+                assert!(power <= 0.0);
+            }
+        }
     }
 }

@@ -36,7 +36,7 @@
 //! # Ok::<(), contensou::Error>(())
 //! ```
 
-use crate::friction::{Constants, Friction, FrictionLaw, Slip};
+use crate::friction::{Best, Constants, Friction, FrictionLaw, Slip, Tangential};
 use crate::geometry::Curvatures;
 use crate::normal::{Damping, Hertz, Modulus, NormalLaw, Patch};
 use crate::shape::{self, Eccentricity, Ratio, Shape};
@@ -61,17 +61,15 @@ pub struct Wrench<T, B> {
 
 /// Normal law + damping + friction law: the step shared by both contact forms.
 #[inline(always)]
-fn step<T: Real, N: NormalLaw<T>, D: Damping<T>, L: FrictionLaw>(
+fn step<T: Real, N: NormalLaw<T>, D: Damping<T>, B>(
     normal: &N,
     damping: &D,
-    friction: &Friction<T, L>,
-    constants: &Constants<T>,
     h: T,
     hdot: T,
-    slip: Slip<T>,
-) -> Wrench<T, L::Branch> {
+    tangential: impl FnOnce(&Patch<T>) -> Tangential<T, B>,
+) -> Wrench<T, B> {
     let patch = normal.damped_patch(h, hdot, damping);
-    let t = friction.tangential(constants, patch.a, patch.n, slip);
+    let t = tangential(&patch);
     Wrench {
         n: patch.n,
         fx: t.fx,
@@ -85,14 +83,16 @@ fn step<T: Real, N: NormalLaw<T>, D: Damping<T>, L: FrictionLaw>(
 /// A contact of fixed geometry: everything that depends only on geometry and materials is
 /// precomputed; [`Contact::wrench`] is the per-step call.
 ///
-/// Cost per step (f32, Cortex-M4F, Hertz + undamped + [`crate::friction::Simplified`]): see
-/// `bench-results/qemu.csv`, stage `wrench`, method `fixed`.
+/// The friction law defaults to [`Best`] (exact-grade, per-contact tables built here once).
+///
+/// Cost per step (f32, Cortex-M4F, Hertz + undamped): `bench-results/qemu.csv`, stage `wrench`,
+/// method `fixed` ([`crate::friction::Simplified`]) and `fixed-best` ([`Best`]).
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Contact<T, N, D, L> {
+pub struct Contact<T: Real, N, D, L: FrictionLaw = Best> {
     normal: N,
     damping: D,
     friction: Friction<T, L>,
-    constants: Constants<T>,
+    prepared: L::Prepared<T>,
 }
 
 impl<T: Real, D: Damping<T>, L: FrictionLaw> Contact<T, Hertz<T>, D, L> {
@@ -125,7 +125,8 @@ impl<T: Real, D: Damping<T>, L: FrictionLaw> Contact<T, Hertz<T>, D, L> {
 impl<T: Real, N: NormalLaw<T>, D: Damping<T>, L: FrictionLaw> Contact<T, N, D, L> {
     /// From parts built separately — e.g. the volumetric or fitted normal law with the friction
     /// constants of the shape it stands for ([`Constants::circle`] for a circular law). The
-    /// caller is responsible for `constants` describing the same ellipse as `normal`.
+    /// caller is responsible for `constants` describing the same ellipse as `normal`. Builds
+    /// the friction law's per-contact form once ([`FrictionLaw::prepare`]).
     pub fn from_parts(
         normal: N,
         damping: D,
@@ -136,22 +137,17 @@ impl<T: Real, N: NormalLaw<T>, D: Damping<T>, L: FrictionLaw> Contact<T, N, D, L
             normal,
             damping,
             friction,
-            constants,
+            prepared: L::prepare(&constants),
         }
     }
 
     /// One step: approach h (m), its rate ḣ (m/s), slip → the wrench on B from A. Total.
     #[inline]
     pub fn wrench(&self, h: T, hdot: T, slip: Slip<T>) -> Wrench<T, L::Branch> {
-        step(
-            &self.normal,
-            &self.damping,
-            &self.friction,
-            &self.constants,
-            h,
-            hdot,
-            slip,
-        )
+        step(&self.normal, &self.damping, h, hdot, |patch| {
+            self.friction
+                .tangential_prepared(&self.prepared, patch.a, patch.n, slip)
+        })
     }
 
     /// The normal law (for its stiffness, energy and inverse).
@@ -159,9 +155,9 @@ impl<T: Real, N: NormalLaw<T>, D: Damping<T>, L: FrictionLaw> Contact<T, N, D, L
         &self.normal
     }
 
-    /// The friction constants of the patch shape.
-    pub fn constants(&self) -> &Constants<T> {
-        &self.constants
+    /// The friction law's per-contact form (for most laws the shape's [`Constants`]).
+    pub fn prepared(&self) -> &L::Prepared<T> {
+        &self.prepared
     }
 }
 
@@ -172,8 +168,11 @@ impl<T: Real, N: NormalLaw<T>, D: Damping<T>, L: FrictionLaw> Contact<T, N, D, L
 /// [`shape::Table`]) plus the friction law's own. Cost per step (f32, Cortex-M4F, undamped +
 /// [`crate::friction::Simplified`]): `bench-results/qemu.csv`, stage `wrench`, method
 /// `table_each_step`.
+///
+/// The friction law defaults to [`Best`], evaluated in its per-call form (nothing precomputed,
+/// e² may change every call).
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct VaryingContact<T, D, L> {
+pub struct VaryingContact<T, D, L = Best> {
     estar: Modulus<T>,
     damping: D,
     friction: Friction<T, L>,
@@ -203,14 +202,8 @@ impl<T: Real, D: Damping<T>, L: FrictionLaw> VaryingContact<T, D, L> {
         let shape = shape::Table::shape(Ratio::clamped(curvatures.ratio()));
         let normal = Hertz::from_shape(curvatures, &shape, self.estar);
         let constants = Constants::from_shape(&shape);
-        step(
-            &normal,
-            &self.damping,
-            &self.friction,
-            &constants,
-            h,
-            hdot,
-            slip,
-        )
+        step(&normal, &self.damping, h, hdot, |patch| {
+            self.friction.tangential(&constants, patch.a, patch.n, slip)
+        })
     }
 }

@@ -5,8 +5,7 @@ use std::process::ExitCode;
 use contensou::Real;
 use contensou::elliptic::Parameter;
 use contensou::friction::{
-    Best, BestContact, Constants, Coulomb, Ellipsoid, Exact, FrictionLaw, Pade, Simplified,
-    SlipState, Traction,
+    Best, Constants, Coulomb, Ellipsoid, Exact, FrictionLaw, Pade, Simplified, SlipState, Traction,
 };
 
 use crate::{Options, run_csv};
@@ -24,10 +23,10 @@ pub fn run(options: &Options) -> Result<ExitCode, String> {
         "ellipsoid" => eval::<f64, Ellipsoid>(),
         "coulomb" if f32 => eval::<f32, Coulomb>(),
         "coulomb" => eval::<f64, Coulomb>(),
-        "best" if f32 => eval::<f32, BestPerContact>(),
-        "best" => eval::<f64, BestPerContact>(),
-        "best-varying" if f32 => eval::<f32, Best>(),
-        "best-varying" => eval::<f64, Best>(),
+        "best" if f32 => eval::<f32, Best>(),
+        "best" => eval::<f64, Best>(),
+        "best-varying" if f32 => eval_per_call::<f32, Best>(),
+        "best-varying" => eval_per_call::<f64, Best>(),
         "exact" if f32 => eval::<f32, Exact>(),
         "exact" => eval::<f64, Exact>(),
         other => {
@@ -38,7 +37,18 @@ pub fn run(options: &Options) -> Result<ExitCode, String> {
     })
 }
 
+/// Each row through the law's per-contact form (`prepare` at the row's e², then
+/// `traction_prepared`): what a contact of fixed shape evaluates every step.
 fn eval<T: Real, L: FrictionLaw>() -> ExitCode {
+    rows::<T>(|k, s| L::traction_prepared(&L::prepare(k), s).0)
+}
+
+/// Each row through the law's per-call form (`traction`, nothing precomputed).
+fn eval_per_call<T: Real, L: FrictionLaw>() -> ExitCode {
+    rows::<T>(|k, s| L::traction(k, s).0)
+}
+
+fn rows<T: Real>(law: impl Fn(&Constants<T>, &SlipState<T>) -> Traction<T>) -> ExitCode {
     run_csv::<T>(&["e2", "psi", "u"], &["Fx", "Fy", "Tz"], &mut |row| {
         let (e2, psi, u) = (row[0], row[1], row[2]);
         let p = Parameter::new(e2).map_err(|e| format!("e2 = {e2}: {e}"))?;
@@ -46,18 +56,7 @@ fn eval<T: Real, L: FrictionLaw>() -> ExitCode {
             return Err(format!("u = {u}: must be >= 0 (inf allowed)"));
         }
         let s = SlipState::from_polar(psi, u).map_err(|e| format!("{e}"))?;
-        let (t, _) = L::traction(&Constants::from_parameter(p), &s);
+        let t = law(&Constants::from_parameter(p), &s);
         Ok(vec![t.fx, t.fy, t.tz])
     })
-}
-
-/// `best`: the per-contact form, built for each row's e², as a law for [`eval`].
-struct BestPerContact;
-
-impl FrictionLaw for BestPerContact {
-    const NAME: &'static str = "best";
-    type Branch = contensou::friction::best::Branch;
-    fn traction<T: Real>(k: &Constants<T>, s: &SlipState<T>) -> (Traction<T>, Self::Branch) {
-        BestContact::new(k).traction(s)
-    }
 }

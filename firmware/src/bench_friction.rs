@@ -84,12 +84,12 @@ fn best_core<T: Real>(input: (&BestContact<T>, SlipState<T>)) -> Traction<T> {
     input.0.traction(&input.1).0
 }
 
-/// One dimensional per-step call of `BestContact::tangential`.
+/// One dimensional per-step call of `Friction::<T, Best>::tangential_prepared`.
 type BestStep<'a, T> = (&'a BestContact<T>, &'a Friction<T, Best>, T, T, Slip<T>);
 
 #[inline(never)]
 fn best_dimensional<T: Real>(input: BestStep<'_, T>) -> Tangential<T, best::Branch> {
-    input.0.tangential(input.1, input.2, input.3, input.4)
+    input.1.tangential_prepared(input.0, input.2, input.3, input.4)
 }
 
 #[inline(never)]

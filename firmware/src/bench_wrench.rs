@@ -5,6 +5,8 @@
 //!   e² = 0.989, solved once by Newton).
 //! - `table_each_step`: `VaryingContact::wrench`, the eccentricity and every shape constant from
 //!   `shape::Table` each step (includes g = P/Q, Hertz constants and friction constants).
+//! - `fixed-best`, `table_each_step-best`: the same with the default law `Best` (per-contact
+//!   tables for `fixed`; the per-call form for `table_each_step`).
 //!
 //! Inputs: the friction stage's mixed set (64 states, u log-uniform in [0.01, 100], ψ uniform),
 //! h = 5 µm (a ≈ 1.1 mm), ω = 100 rad/s, v = u·a·ω, ḣ = 0.
@@ -12,7 +14,7 @@
 use crate::harness::Runner;
 use contensou::Real;
 use contensou::contact::{Contact, VaryingContact, Wrench};
-use contensou::friction::{Friction, Simplified, Slip};
+use contensou::friction::{Best, Friction, FrictionLaw, Simplified, Slip};
 use contensou::geometry::{Curvatures, Race};
 use contensou::normal::{Hertz, Modulus, Undamped};
 use contensou::shape::Newton;
@@ -20,23 +22,21 @@ use contensou::shape::Newton;
 include!("../../benches/friction_set.rs");
 
 const N: usize = SET;
-type Branch = <Simplified as contensou::friction::FrictionLaw>::Branch;
-
-type FixedInput<'a, T> = (&'a Contact<T, Hertz<T>, Undamped, Simplified>, T, Slip<T>);
+type FixedInput<'a, T, L> = (&'a Contact<T, Hertz<T>, Undamped, L>, T, Slip<T>);
 
 #[inline(never)]
-fn fixed<T: Real>(x: FixedInput<'_, T>) -> Wrench<T, Branch> {
+fn fixed<T: Real, L: FrictionLaw>(x: FixedInput<'_, T, L>) -> Wrench<T, L::Branch> {
     x.0.wrench(x.1, T::ZERO, x.2)
 }
 
-type VaryingInput<'a, T> = (&'a VaryingContact<T, Undamped, Simplified>, &'a Curvatures<T>, T, Slip<T>);
+type VaryingInput<'a, T, L> = (&'a VaryingContact<T, Undamped, L>, &'a Curvatures<T>, T, Slip<T>);
 
 #[inline(never)]
-fn table_each_step<T: Real>(x: VaryingInput<'_, T>) -> Wrench<T, Branch> {
+fn table_each_step<T: Real, L: FrictionLaw>(x: VaryingInput<'_, T, L>) -> Wrench<T, L::Branch> {
     x.0.wrench(x.1, x.2, T::ZERO, x.3)
 }
 
-fn precision<T: Real>(r: &Runner) {
+fn law<T: Real, L: FrictionLaw>(r: &Runner, suffix: &str) {
     let curv = Curvatures::<T>::ball_race(
         T::from_f64(12.7e-3),
         T::from_f64(6.6e-3),
@@ -46,7 +46,7 @@ fn precision<T: Real>(r: &Runner) {
     )
     .expect("valid bearing geometry");
     let estar = Modulus::new(T::from_f64(1.142857e11)).expect("positive modulus");
-    let friction = Friction::<T, Simplified>::new(T::from_f64(0.07), T::ZERO).expect("valid f");
+    let friction = Friction::<T, L>::new(T::from_f64(0.07), T::ZERO).expect("valid f");
     let contact =
         Contact::hertz::<Newton>(&curv, estar, Undamped, friction).expect("g in the domain");
     let varying = VaryingContact::new(estar, Undamped, friction);
@@ -63,13 +63,41 @@ fn precision<T: Real>(r: &Runner) {
         )
         .expect("finite slip")
     });
-    let fixed_inputs: [FixedInput<'_, T>; N] = core::array::from_fn(|i| (&contact, h, slips[i]));
-    r.bench("wrench", "fixed", T::NAME, &fixed_inputs, fixed::<T>);
-    let varying_inputs: [VaryingInput<'_, T>; N] = core::array::from_fn(|i| (&varying, &curv, h, slips[i]));
-    r.bench("wrench", "table_each_step", T::NAME, &varying_inputs, table_each_step::<T>);
+    let mut name = heapless_name("fixed", suffix);
+    let fixed_inputs: [FixedInput<'_, T, L>; N] = core::array::from_fn(|i| (&contact, h, slips[i]));
+    r.bench("wrench", name.as_str(), T::NAME, &fixed_inputs, fixed::<T, L>);
+    name = heapless_name("table_each_step", suffix);
+    let varying_inputs: [VaryingInput<'_, T, L>; N] =
+        core::array::from_fn(|i| (&varying, &curv, h, slips[i]));
+    r.bench("wrench", name.as_str(), T::NAME, &varying_inputs, table_each_step::<T, L>);
+}
+
+/// `base` + `suffix` in a fixed buffer (no allocation on the MCU).
+fn heapless_name(base: &str, suffix: &str) -> Name {
+    let mut n = Name { buf: [0; 32], len: 0 };
+    for &byte in base.as_bytes().iter().chain(suffix.as_bytes()) {
+        if n.len < n.buf.len() {
+            n.buf[n.len] = byte;
+            n.len += 1;
+        }
+    }
+    n
+}
+
+struct Name {
+    buf: [u8; 32],
+    len: usize,
+}
+
+impl Name {
+    fn as_str(&self) -> &str {
+        core::str::from_utf8(&self.buf[..self.len]).unwrap_or("?")
+    }
 }
 
 pub fn run(r: &Runner) {
-    precision::<f32>(r);
-    precision::<f64>(r);
+    law::<f32, Simplified>(r, "");
+    law::<f64, Simplified>(r, "");
+    law::<f32, Best>(r, "-best");
+    law::<f64, Best>(r, "-best");
 }

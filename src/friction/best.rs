@@ -35,7 +35,8 @@
 //! e² = 0.99's shape between exact ends (still exact inside, on the ellipse and at u = ∞), and
 //! the error outside grows: measured (`f64`) 3.3e-2 fN / 3.0e-3 fNa at e² = 0.995, 9.3e-2 /
 //! 8.1e-3 at 0.999, 0.19 / 1.4e-2 as e² → 1. Everywhere |F| is scaled back onto |F| ≤ 1 where
-//! the fit would overshoot it (by up to 4e-4 past 0.99, by rounding below). δ is ignored (like [`Exact`](super::Exact)): rest
+//! the fit would overshoot it (by up to 4e-4 past 0.99, by rounding below). The dimensionless core ignores δ; the dimensional
+//! wrapper ramps it to zero below the slip scale δ ([`FrictionLaw::RAMP_BELOW_DELTA`]). Rest
 //! gives zero, pure translation −v_P/|v_P| exactly, pure spin −C·sgn ω exactly.
 //! Exact (to rounding) inside the ellipse, on its boundary and as u → ∞; continuous across the
 //! boundary and between the cubic pieces (to a few rounding steps); symmetries bit-exact;
@@ -74,7 +75,7 @@
 
 mod table;
 
-use super::{Constants, Friction, FrictionLaw, Slip, SlipState, Tangential, Traction, larger};
+use super::{Constants, FrictionLaw, SlipState, Traction, larger};
 use crate::Real;
 
 /// Number of cubic pieces in z of [`BestContact`].
@@ -367,8 +368,28 @@ impl Best {
 impl FrictionLaw for Best {
     const NAME: &'static str = "best";
     type Branch = Branch;
+    type Prepared<T: Real> = BestContact<T>;
+    const RAMP_BELOW_DELTA: bool = true;
 
+    /// The per-call form (e² may change every call): the fitted series summed at this e².
     fn traction<T: Real>(k: &Constants<T>, s: &SlipState<T>) -> (Traction<T>, Branch) {
+        Self::per_call(k, s)
+    }
+
+    /// Build the per-contact tables ([`BestContact::new`]).
+    fn prepare<T: Real>(k: &Constants<T>) -> BestContact<T> {
+        BestContact::new(k)
+    }
+
+    /// The per-contact form: [`BestContact::traction`].
+    #[inline(always)]
+    fn traction_prepared<T: Real>(p: &BestContact<T>, s: &SlipState<T>) -> (Traction<T>, Branch) {
+        p.traction(s)
+    }
+}
+
+impl Best {
+    fn per_call<T: Real>(k: &Constants<T>, s: &SlipState<T>) -> (Traction<T>, Branch) {
         let q = Quartic::new(k);
         if let Some(r) = inside(&q, s) {
             return r;
@@ -448,35 +469,6 @@ impl<T: Real> BestContact<T> {
             m: k.m(),
             g1: T::ONE + gamma,
             pieces,
-        }
-    }
-
-    /// One per-step call with dimensions, like [`Friction::tangential`] but with this
-    /// contact's precomputed tables: major semi-axis `a` (m), normal force `n` (N) and the slip
-    /// → force (N) and drilling torque (N·m) on body B from body A. `friction` supplies f (its
-    /// δ is ignored: `best` has no regularization). N ≤ 0 (or NaN) gives the zero wrench; `a` ≤ 0
-    /// (or NaN) is a point contact (pure translation). Total for finite `a`, `n`.
-    #[inline]
-    pub fn tangential(
-        &self,
-        friction: &Friction<T, Best>,
-        a: T,
-        n: T,
-        slip: Slip<T>,
-    ) -> Tangential<T, Branch> {
-        // `x > 0` is false for NaN: both clamps map NaN to 0.
-        let a = if a > T::ZERO { a } else { T::ZERO };
-        let fn_ = if n > T::ZERO {
-            friction.coefficient() * n
-        } else {
-            T::ZERO
-        };
-        let (t, branch) = self.traction(&SlipState::from_clamped(slip, a, T::ZERO));
-        Tangential {
-            fx: fn_ * t.fx,
-            fy: fn_ * t.fy,
-            tz: fn_ * a * t.tz,
-            branch,
         }
     }
 

@@ -48,6 +48,7 @@ impl Coulomb {
 impl FrictionLaw for Coulomb {
     const NAME: &'static str = "coulomb";
     type Branch = Branch;
+    super::law::constants_are_prepared!();
 
     #[inline]
     fn traction<T: Real>(_k: &Constants<T>, s: &SlipState<T>) -> (Traction<T>, Branch) {

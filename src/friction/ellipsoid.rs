@@ -51,6 +51,7 @@ impl Ellipsoid {
 impl FrictionLaw for Ellipsoid {
     const NAME: &'static str = "ellipsoid";
     type Branch = Smooth;
+    super::law::constants_are_prepared!();
 
     #[inline]
     fn traction<T: Real>(k: &Constants<T>, s: &SlipState<T>) -> (Traction<T>, Smooth) {

@@ -50,6 +50,7 @@ impl Pade {
 impl FrictionLaw for Pade {
     const NAME: &'static str = "pade";
     type Branch = Smooth;
+    super::law::constants_are_prepared!();
 
     #[inline]
     fn traction<T: Real>(k: &Constants<T>, s: &SlipState<T>) -> (Traction<T>, Smooth) {

@@ -26,6 +26,7 @@ pub enum Branch {
 impl FrictionLaw for Exact {
     const NAME: &'static str = "exact";
     type Branch = Branch;
+    super::law::constants_are_prepared!();
 
     fn traction<T: Real>(k: &Constants<T>, s: &SlipState<T>) -> (Traction<T>, Branch) {
         let (x, y, w) = (s.x(), s.y(), s.w());

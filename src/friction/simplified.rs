@@ -122,6 +122,7 @@ fn zone<T: Real>(v: T, width: T, d: T) -> Zone {
 impl FrictionLaw for Simplified {
     const NAME: &'static str = "simplified";
     type Branch = Branch;
+    super::law::constants_are_prepared!();
 
     #[inline]
     fn traction<T: Real>(k: &Constants<T>, s: &SlipState<T>) -> (Traction<T>, Branch) {

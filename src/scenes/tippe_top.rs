@@ -94,7 +94,7 @@ impl<T: Real> Params<T> {
 
 /// One sphere of the top with its floor contact.
 #[derive(Clone, Copy, Debug, PartialEq)]
-struct Sphere<T, L> {
+struct Sphere<T: Real, L: FrictionLaw> {
     offset: T,
     radius: T,
     contact: Contact<T, Hertz<T>, HuntCrossley<T>, L>,
@@ -160,7 +160,7 @@ impl<T: Real, L: FrictionLaw> Sphere<T, L> {
 
 /// The tippe top with friction law `L` (see the [module docs](self)).
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct TippeTop<T, L> {
+pub struct TippeTop<T: Real, L: FrictionLaw> {
     mass: T,
     gravity: T,
     inertia: Vec3<T>,
