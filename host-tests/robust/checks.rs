@@ -203,6 +203,10 @@ pub fn elliptic<T: Fz>(inp: &mut Input<'_>) {
             "Constants::new::<Table>",
         );
         constants_ok(&Constants::from_parameter(p), "Constants::from_parameter");
+        constants_ok(
+            &Constants::from_integrals(p, &Agm::integrals(p)),
+            "Constants::from_integrals",
+        );
         let t = friction::exact::traction(p, vx, vy, w);
         for v in [t.fx, t.fy, t.tz] {
             fin(v, "exact::traction");
