@@ -55,4 +55,14 @@ if cargo build --release --features canary >"$log" 2>&1; then
 fi
 grep -q 'undefined symbol: contensou_panic_path_survived' "$log" || { cat "$log" >&2; exit 1; }
 cargo build --release >/dev/null 2>&1
-echo "no-panic: OK — $probes probe instances ($((probes / 2)) entry-point probes × f32/f64) link without any panic path"
+# Firmware often builds for size or without LTO: the proof must hold there too.
+for variant in OPT_LEVEL=z LTO=false; do
+    echo "no-panic: variant profile.release.${variant,,}"
+    if ! env "CARGO_PROFILE_RELEASE_$variant" CARGO_TARGET_DIR="target/variant-${variant,,}" \
+        cargo build --release >"$log" 2>&1; then
+        echo "NO-PANIC PROOF FAILED with CARGO_PROFILE_RELEASE_$variant:" >&2
+        grep -E 'undefined symbol|error' "$log" | head -n 20 >&2
+        exit 1
+    fi
+done
+echo "no-panic: OK — $probes probe instances ($((probes / 2)) entry-point probes × f32/f64) link without any panic path (opt-level 3 + fat LTO; also opt-level z, and no LTO)"
