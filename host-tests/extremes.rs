@@ -322,3 +322,50 @@ fn from_complement_constants_are_finite() {
     one::<f64, Coulomb>();
     one::<f64, Exact>();
 }
+
+/// Slip speeds whose sum |v_Px| + |v_Py| + a|ω| or product aω overflows (the slip state's
+/// rarely taken `unusual` path, which the fuzzer reaches only partly): every law stays finite
+/// and bounded; aω = ±∞ is pure spin.
+#[test]
+fn overflowing_slip_speeds_stay_finite() {
+    fn one<T: Real, L: FrictionLaw>() {
+        let k = Constants::from_parameter(Parameter::new(T::from_f64(0.5)).unwrap());
+        let big = T::MAX;
+        let fr = Friction::<T, L>::new(T::from_f64(0.2), T::ZERO).unwrap();
+        for (vx, vy, om, a) in [
+            (big, big, big, big),
+            (big, -big, T::ZERO, T::ONE),
+            (T::ZERO, T::ZERO, -big, big),
+            (T::ONE, big, big, T::from_f64(1e-3)),
+        ] {
+            let slip = Slip::new(vx, vy, om).unwrap();
+            let t = fr.tangential(&k, a, T::ONE, slip);
+            for x in [t.fx, t.fy, t.tz] {
+                assert!(x.is_finite(), "{} at {vx:?} {vy:?} {om:?} {a:?}", L::NAME);
+            }
+            assert!(t.fx.hypot(t.fy) <= T::from_f64(0.2 * (1.0 + 1e-5)));
+        }
+        // aω = −∞ with v_P = 0: pure spin, T_z = +C·fNa (opposing ω < 0).
+        let slip = Slip::new(T::ZERO, T::ZERO, -big).unwrap();
+        let t = fr.tangential(&k, big, T::ONE, slip);
+        assert!(t.fx == T::ZERO && t.fy == T::ZERO, "{}", L::NAME);
+        // (Coulomb has no drilling torque: T_z = 0.)
+        assert!(
+            t.tz >= T::ZERO && t.tz.is_finite(),
+            "{}: {:?}",
+            L::NAME,
+            t.tz.to_f64()
+        );
+        assert!(t.tz > T::ZERO || L::NAME == "coulomb", "{}", L::NAME);
+    }
+    one::<f32, Simplified>();
+    one::<f32, Pade>();
+    one::<f32, Ellipsoid>();
+    one::<f32, Coulomb>();
+    one::<f32, Exact>();
+    one::<f64, Simplified>();
+    one::<f64, Pade>();
+    one::<f64, Ellipsoid>();
+    one::<f64, Coulomb>();
+    one::<f64, Exact>();
+}

@@ -13,7 +13,7 @@ targets=(elliptic geometry normal friction wrench)
 command -v cargo-fuzz >/dev/null || cargo install cargo-fuzz --locked
 logs=fuzz/target/logs
 mkdir -p "$logs"
-cargo +nightly fuzz build -O >/dev/null
+cargo +nightly fuzz build -O >"$logs/build.log" 2>&1 || { cat "$logs/build.log" >&2; exit 1; }
 echo "| target | seconds | executions | exec/s | cov | ft | corpus | crashes |"
 echo "|---|---|---|---|---|---|---|---|"
 failed=0
