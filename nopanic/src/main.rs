@@ -66,6 +66,7 @@ macro_rules! probes {
     ($( fn $name:ident<$T:ident>($($arg:ident),*) $body:block )*) => {
         $(
             #[inline(never)]
+            #[allow(clippy::too_many_arguments)]
             fn $name<$T: Real>($($arg: $T),*) {
                 $(let $arg = black_box($arg);)*
                 let _ = black_box($body);
