@@ -7,7 +7,7 @@
 //! # Square root on Cortex-M4F
 //!
 //! `libm::sqrtf` is a software routine on `thumbv7em-none-eabihf` (≈50 instructions). On every
-//! `eabihf` ARM target `f32::sqrt` goes through [`crate::hw_sqrt`], which executes the FPU's
+//! `eabihf` ARM target `f32::sqrt` goes through the private `hw_sqrt` module (`src/hw_sqrt.rs`), which executes the FPU's
 //! `vsqrt.f32` (one instruction plus call/return). Elsewhere libm is used (on x86-64 libm itself
 //! compiles to `sqrtss`/`sqrtsd`). `f64` is always libm: the M4F has a single-precision FPU only.
 //!

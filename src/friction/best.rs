@@ -66,10 +66,12 @@
 //! e² = 0.5; the rig's 8-instruction call floor included):
 //! [`BestContact::traction`] **107 instructions** on average (63 inside … 172 outside;
 //! `simplified`: 66, so 1.62× on average, 2.6× worst on the set; 125 on the same set at
-//! e² = 0.99, worst 174); the dimensional [`BestContact::tangential`] 143 (`simplified`'s 125);
-//! [`BestContact::new`] 15,953 once per contact; [`Best`] (e² changing every call) 1,312 on
-//! average, 3,094 worst (the 693-term series is summed per call). `f64` (soft float): 5,931 /
-//! 87,101 per call. Flash: the table is 7 × 9 × 11 `f32` = 2,772 bytes (+ 64 bytes of series);
+//! e² = 0.99, worst 174); the dimensional `Friction::<f32, Best>::tangential_prepared` 180
+//! (`simplified`'s `tangential` 125); the full wrench `Contact::wrench` with fixed geometry 231
+//! (164 with `simplified`); [`BestContact::new`] ([`FrictionLaw::prepare`]) 19,281 once per
+//! contact; the per-call form [`Best`]`::traction` (e² changing every call) 1,324 on average,
+//! 3,103 worst (the 693-term series is summed per call). `f64` (soft float): 5,931 / 87,114 per
+//! call. Flash: the table is 7 × 9 × 11 `f32` = 2,772 bytes (+ 64 bytes of series);
 //! RAM per contact: `BestContact<f32>` 948 bytes. Host (criterion, x86-64, mixed set): ≈20 ns
 //! per call (`BestContact`), ≈100 ns (`Best`); `bench-results/friction.csv`.
 
@@ -438,25 +440,28 @@ impl<T: Real> BestContact<T> {
             [32.0 / 3.0, -56.0 / 3.0, 40.0 / 3.0, -16.0 / 3.0],
             [-16.0 / 3.0, 32.0 / 3.0, -32.0 / 3.0, 16.0 / 3.0],
         ];
+        let half = series.at(T::HALF / n);
         for (i, piece) in pieces.iter_mut().enumerate() {
             let vals = nodes.map(|r| series.at((T::from_usize(i) + T::from_f64(r)) / n));
             for (j, cubic) in piece.iter_mut().enumerate() {
+                // Coefficient j at the four nodes (`get` keeps the build provably panic-free).
+                let col = vals.map(|v| v.get(j).copied().unwrap_or(T::ZERO));
                 for (cp, row) in cubic.iter_mut().zip(inv.iter()) {
                     *cp = row
                         .iter()
-                        .zip(vals.iter())
-                        .fold(T::ZERO, |acc, (&w, v)| acc + T::from_f64(w) * v[j]);
+                        .zip(col.iter())
+                        .fold(T::ZERO, |acc, (&w, &v)| acc + T::from_f64(w) * v);
                 }
                 // exact at the left end, and at the right end up to one rounding of the sum
                 // (the inverse Vandermonde's entries up to 56/3 would amplify rounding).
                 let [c0, c1, c2, _] = *cubic;
-                cubic[0] = vals[0][j];
-                cubic[3] = vals[3][j] - c0 - c1 - c2;
+                cubic[0] = col[0];
+                cubic[3] = col[3] - c0 - c1 - c2;
                 if i == 0 {
                     // At the ellipse the coefficients grow like z² (zero slope): keep it, so
                     // the law has no √-like onset there. c₀ + c₂r² + c₃r³ through r = 1/2, 1.
-                    let half = series.at(T::HALF / n);
-                    let (h, e) = (half[j] - vals[0][j], vals[3][j] - vals[0][j]);
+                    let half_j = half.get(j).copied().unwrap_or(T::ZERO);
+                    let (h, e) = (half_j - col[0], col[3] - col[0]);
                     let eight = T::from_f64(8.0);
                     cubic[1] = T::ZERO;
                     cubic[3] = T::TWO * e - eight * h;

@@ -1,0 +1,3 @@
+//! The checks shared with the `robust` integration test (host-tests/robust/checks.rs).
+#[path = "../../host-tests/robust/checks.rs"]
+pub mod checks;

@@ -1,0 +1,212 @@
+//! The README's "Errors" table (issue 8): it lists every `Error` variant of src/error.rs, and
+//! each variant is produced by the inputs the table names, in `f32` and `f64`.
+
+use contensou::elliptic::Parameter;
+use contensou::friction::{Friction, Simplified, Slip, SlipState};
+use contensou::geometry::{Curvatures, Principal, Race};
+use contensou::normal::{
+    CompressionDamping, Fitted, Hertz, HuntCrossley, Material, Modulus, Undamped,
+};
+use contensou::shape::{Newton, Ratio};
+use contensou::{Error, Real, contact::Contact};
+
+/// Variant names declared in src/error.rs (`    Name,` or `    Name(…),` inside the enum).
+fn declared() -> Vec<String> {
+    let src = include_str!("../src/error.rs");
+    let body = src
+        .split("pub enum Error {")
+        .nth(1)
+        .unwrap()
+        .split("\n}")
+        .next()
+        .unwrap();
+    body.lines()
+        .map(str::trim)
+        .filter(|l| l.chars().next().is_some_and(|c| c.is_ascii_uppercase()))
+        .map(|l| l.split([',', '(']).next().unwrap().to_string())
+        .collect()
+}
+
+/// Variant names in the first column of the README's Errors table.
+fn documented() -> Vec<String> {
+    let readme = include_str!("../README.md");
+    let section = readme
+        .split("## Errors")
+        .nth(1)
+        .unwrap()
+        .split("\n## ")
+        .next()
+        .unwrap();
+    section
+        .lines()
+        .filter(|l| l.starts_with("| `"))
+        .map(|l| l[3..].split(['`', '(']).next().unwrap().to_string())
+        .collect()
+}
+
+#[test]
+fn readme_table_lists_every_variant() {
+    let (d, r) = (declared(), documented());
+    assert_eq!(d.len(), 9, "variants parsed from src/error.rs: {d:?}");
+    assert_eq!(d, r, "src/error.rs vs README Errors table");
+}
+
+fn nonfinite<V: std::fmt::Debug>(r: Result<V, Error>, name: &'static str) {
+    assert_eq!(r.unwrap_err(), Error::NonFinite(name));
+}
+
+fn each_variant<T: Real>() {
+    let x = T::from_f64;
+    let nan = x(f64::NAN);
+    let inf = x(f64::INFINITY);
+    // NonFinite(name): the names the table quotes, and a few more.
+    nonfinite(Parameter::new(nan), "m");
+    nonfinite(Parameter::from_complement(inf), "m1");
+    nonfinite(Slip::new(nan, x(0.0), x(0.0)), "v_Px");
+    nonfinite(Slip::new(x(0.0), x(0.0), -inf), "omega");
+    nonfinite(Friction::<T, Simplified>::new(nan, x(0.0)), "f");
+    nonfinite(Friction::<T, Simplified>::new(x(0.1), inf), "delta");
+    nonfinite(SlipState::new(x(1.0), x(0.0), nan, x(0.0)), "a_omega");
+    nonfinite(Curvatures::new(x(1.0), nan), "Q");
+    nonfinite(Modulus::new(inf), "E*");
+    nonfinite(Ratio::new(nan), "g");
+
+    // EllipticParameterOutOfDomain: m < 0, 1 − m below m₁_min, m₁ outside [m₁_min, 1].
+    let min = Parameter::<T>::min_complement().to_f64();
+    for m in [-1e-30, -1.0, 1.0, 1.0 - min / 4.0, 2.0] {
+        assert_eq!(
+            Parameter::new(x(m)),
+            Err(Error::EllipticParameterOutOfDomain),
+            "m = {m}"
+        );
+    }
+    for m1 in [0.0, min / 2.0, 1.0 + 1e-6, -1.0] {
+        assert_eq!(
+            Parameter::from_complement(x(m1)),
+            Err(Error::EllipticParameterOutOfDomain),
+            "m1 = {m1}"
+        );
+    }
+    assert!(Parameter::new(x(1.0 - 2.0 * min)).is_ok());
+    assert!(Parameter::from_complement(x(min)).is_ok());
+
+    // CurvatureNotPositive: min(p, q) ≤ 0; a ball larger than its concave seat; a ball not
+    // fitting the groove; an inner race made concave; two bodies not convex towards each other.
+    let cnp = Err(Error::CurvatureNotPositive);
+    assert_eq!(Curvatures::new(x(0.0), x(1.0)), cnp);
+    assert_eq!(Curvatures::new(x(2.0), x(-1.0)), cnp);
+    assert_eq!(Curvatures::sphere_sphere(x(0.01), x(-0.005)), cnp);
+    assert_eq!(
+        Curvatures::ball_race(x(0.0127), x(0.006), x(0.065), x(0.0), Race::Outer),
+        cnp
+    );
+    assert_eq!(
+        Curvatures::ball_race(x(0.0127), x(0.0066), x(0.01), x(0.0), Race::Inner),
+        cnp
+    );
+    let flat = Principal::plane();
+    let cup = Principal {
+        k1: x(-1.0),
+        k2: x(-1.0),
+    };
+    assert_eq!(Curvatures::from_bodies(flat, cup, x(0.0)), cnp);
+
+    // CurvatureRatioOutOfRange: g = P/Q < 1e-4, or Ratio::new outside [1e-4, 1].
+    let thin = Curvatures::new(x(1e-5), x(1.0)).unwrap();
+    let e = Modulus::new(x(1e11)).unwrap();
+    let crr = Error::CurvatureRatioOutOfRange;
+    assert_eq!(Ratio::of(&thin).unwrap_err(), crr);
+    assert_eq!(Hertz::new::<Newton>(&thin, e).unwrap_err(), crr);
+    assert_eq!(Fitted::new(&thin, e).unwrap_err(), crr);
+    let fr = Friction::<T, Simplified>::new(x(0.1), x(0.0)).unwrap();
+    assert_eq!(
+        Contact::hertz::<Newton>(&thin, e, Undamped, fr).unwrap_err(),
+        crr
+    );
+    for g in [0.0, 9.9e-5, 1.0001, -0.5] {
+        assert_eq!(Ratio::new(x(g)).unwrap_err(), crr, "g = {g}");
+    }
+
+    // ModulusNotPositive: E ≤ 0, E* ≤ 0, Modulus::of under/overflowing.
+    let mnp = Error::ModulusNotPositive;
+    assert_eq!(Material::new(x(0.0), x(0.3)).unwrap_err(), mnp);
+    assert_eq!(Material::new(x(-2e11), x(0.3)).unwrap_err(), mnp);
+    assert_eq!(Modulus::new(x(-0.0)).unwrap_err(), mnp);
+    let tiny = if T::MANTISSA_DIGITS > 24 {
+        1e-320
+    } else {
+        1e-44
+    };
+    let soft = Material::new(x(tiny), x(0.0)).unwrap();
+    assert_eq!(Modulus::of(soft, soft).unwrap_err(), mnp);
+
+    // PoissonRatioOutOfRange: ν outside (−1, 0.5].
+    for nu in [-1.0, 0.5000001, 2.0] {
+        assert_eq!(
+            Material::new(x(2e11), x(nu)).unwrap_err(),
+            Error::PoissonRatioOutOfRange
+        );
+    }
+    assert!(Material::new(x(2e11), x(0.5)).is_ok());
+
+    // FrictionCoefficientNegative.
+    assert_eq!(
+        Friction::<T, Simplified>::new(x(-0.1), x(0.0)).unwrap_err(),
+        Error::FrictionCoefficientNegative
+    );
+
+    // LengthNotPositive: radius/diameter/pitch ≤ 0, a zero signed radius, δ < 0.
+    let lnp = Error::LengthNotPositive;
+    assert_eq!(Curvatures::sphere_plane(x(0.0)).unwrap_err(), lnp);
+    assert_eq!(Curvatures::sphere_plane(x(-1.0)).unwrap_err(), lnp);
+    assert_eq!(Curvatures::sphere_sphere(x(0.0), x(1.0)).unwrap_err(), lnp);
+    assert_eq!(Principal::sphere(x(0.0)).unwrap_err(), lnp);
+    for (d, rg, dm) in [
+        (0.0, 0.0066, 0.065),
+        (0.0127, -0.0066, 0.065),
+        (0.0127, 0.0066, 0.0),
+    ] {
+        let r = Curvatures::ball_race(x(d), x(rg), x(dm), x(0.0), Race::Inner);
+        assert_eq!(r.unwrap_err(), lnp, "ball_race({d}, {rg}, {dm})");
+    }
+    assert_eq!(
+        Friction::<T, Simplified>::new(x(0.1), x(-1e-3)).unwrap_err(),
+        lnp
+    );
+    // …but a negative signed radius is a concave body, not an error.
+    assert!(Principal::sphere(x(-1.0)).is_ok());
+
+    // DampingNegative.
+    assert_eq!(
+        HuntCrossley::new(x(-0.1)).unwrap_err(),
+        Error::DampingNegative
+    );
+    assert_eq!(
+        CompressionDamping::new(x(-1.0)).unwrap_err(),
+        Error::DampingNegative
+    );
+}
+
+#[test]
+fn each_variant_is_produced_by_the_documented_input() {
+    each_variant::<f32>();
+    each_variant::<f64>();
+}
+
+#[test]
+fn messages_are_nonempty_and_name_the_input() {
+    let e = Parameter::<f64>::new(f64::NAN).unwrap_err();
+    assert_eq!(e.to_string(), "m must be finite");
+    for v in [
+        Error::EllipticParameterOutOfDomain,
+        Error::CurvatureNotPositive,
+        Error::CurvatureRatioOutOfRange,
+        Error::ModulusNotPositive,
+        Error::PoissonRatioOutOfRange,
+        Error::FrictionCoefficientNegative,
+        Error::LengthNotPositive,
+        Error::DampingNegative,
+    ] {
+        assert!(!v.as_str().is_empty() && v.to_string() == v.as_str());
+    }
+}

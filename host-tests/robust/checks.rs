@@ -1,0 +1,691 @@
+//! Robustness checks over every public constructor and evaluation entry point, driven by an
+//! arbitrary byte string. Shared by the cargo-fuzz targets (`fuzz/`, issue 8) and the
+//! `robust` integration test (a seeded short run in `cargo test`).
+//!
+//! Each byte string decodes into inputs of both kinds: raw `f32`/`f64` bit patterns (NaN, ±∞,
+//! subnormals, ±0, huge, tiny) and physical magnitudes 10^[−40, 40]. The oracles:
+//!
+//! - every constructor returns exactly the documented result: `Ok` for finite input in its
+//!   domain, the documented `Error` variant otherwise (`NonFinite` for NaN/±∞);
+//! - no per-step output is NaN for finite input (any magnitude);
+//! - inside the physical box ([`Box`]) every output is finite, the normal force ≥ 0, friction
+//!   bounded by fN and passive (F·v_P + T_z·ω ≤ 0 up to rounding).
+//!
+//! A failed check panics (a fuzzer crash).
+#![allow(dead_code, clippy::neg_cmp_op_on_partial_ord, clippy::collapsible_if)]
+
+use contensou::contact::{Contact, VaryingContact, Wrench};
+use contensou::elliptic::{self, Agm, Integrals, Method, Parameter, Theta};
+use contensou::friction::{
+    self, Best, Constants, Coulomb, Ellipsoid, Exact, Friction, FrictionLaw, Pade, Simplified,
+    Slip, SlipState,
+};
+use contensou::geometry::{Curvatures, Principal, Race};
+use contensou::normal::{
+    CompressionDamping, Damping, Fitted, Hertz, HuntCrossley, Material, Modulus, NormalLaw, Patch,
+    Undamped, Volumetric,
+};
+use contensou::shape::{self, Eccentricity, HamrockDowson, Linear, Newton, Ratio};
+use contensou::{Error, Real};
+
+/// A float type the decoder can build from raw bits.
+pub trait Fz: Real + core::fmt::Debug {
+    /// From the low bits of `u`.
+    fn from_raw(u: u64) -> Self;
+}
+impl Fz for f32 {
+    fn from_raw(u: u64) -> Self {
+        f32::from_bits(u as u32)
+    }
+}
+impl Fz for f64 {
+    fn from_raw(u: u64) -> Self {
+        f64::from_bits(u)
+    }
+}
+
+/// Decodes inputs from the fuzzer's bytes (zeros once they run out).
+pub struct Input<'a>(&'a [u8]);
+
+impl<'a> Input<'a> {
+    /// Over `data`.
+    pub fn new(data: &'a [u8]) -> Self {
+        Input(data)
+    }
+    /// The next byte (0 past the end).
+    pub fn byte(&mut self) -> u8 {
+        match self.0.split_first() {
+            Some((&b, rest)) => {
+                self.0 = rest;
+                b
+            }
+            None => 0,
+        }
+    }
+    fn u64(&mut self) -> u64 {
+        (0..8).fold(0, |acc, _| (acc << 8) | u64::from(self.byte()))
+    }
+    /// A value: raw bits, a special value, or a physical magnitude, by a tag byte.
+    pub fn val<T: Fz>(&mut self) -> T {
+        let tag = self.byte();
+        let sign = if tag & 0x80 != 0 { -1.0 } else { 1.0 };
+        match tag % 4 {
+            0 => T::from_raw(self.u64()),
+            1 => {
+                const SPECIAL: [f64; 14] = [
+                    0.0,
+                    -0.0,
+                    f64::INFINITY,
+                    f64::NEG_INFINITY,
+                    f64::NAN,
+                    1.0,
+                    -1.0,
+                    0.5,
+                    1e-300,
+                    5e-324,
+                    1.1754943508222875e-38,
+                    1e-45,
+                    3.4028234663852886e38,
+                    f64::MAX,
+                ];
+                let x = SPECIAL[usize::from(self.byte()) % SPECIAL.len()];
+                T::from_f64(x)
+            }
+            _ => {
+                let e = i32::from(self.byte() % 81) - 40;
+                let mant = 1.0 + f64::from(self.byte()) / 256.0;
+                T::from_f64(sign * mant * 10f64.powi(e))
+            }
+        }
+    }
+}
+
+/// The physical box in which every output must be finite (SI): curvatures P, Q (1/m) in
+/// [1e-6, 1e9], E* in [1e3, 1e13] Pa, h ≤ 1 m, |ḣ| ≤ 1e6 m/s, damping c_d ≤ 1e6 s/m,
+/// d ≤ 1e12, f ≤ 10, δ ≤ 1e6 m/s, |v|, |ω| ≤ 1e12 (any tiny or subnormal value is inside).
+pub struct Box;
+
+impl Box {
+    fn within<T: Real>(x: T, lo: f64, hi: f64) -> bool {
+        let x = x.to_f64();
+        x >= lo && x <= hi
+    }
+    fn small<T: Real>(x: T, hi: f64) -> bool {
+        x.is_finite() && x.to_f64().abs() <= hi
+    }
+}
+
+fn nan<T: Real>(x: T) -> bool {
+    x.to_f64().is_nan()
+}
+fn fin<T: Real>(x: T, what: &str) {
+    assert!(x.is_finite(), "{what} = {x:?} not finite", x = x.to_f64());
+}
+fn not_nan<T: Real>(x: T, what: &str) {
+    assert!(!nan(x), "{what} is NaN");
+}
+
+/// What a constructor must return: `Ok` if `ok`, else the error `err`; NaN/±∞ inputs give
+/// `NonFinite`.
+fn expect<V: core::fmt::Debug>(
+    r: &Result<V, Error>,
+    finite: bool,
+    ok: bool,
+    err: Error,
+    who: &str,
+) {
+    match (finite, r) {
+        (false, Err(Error::NonFinite(_))) => {}
+        (true, Ok(_)) if ok => {}
+        (true, Err(e)) if !ok && *e == err => {}
+        _ => panic!("{who}: got {r:?}, expected finite={finite} ok={ok} err={err:?}"),
+    }
+}
+
+fn integrals_ok<T: Real>(i: &Integrals<T>, who: &str) {
+    for (v, n) in [(i.k, "K"), (i.e, "E"), (i.b, "B"), (i.d, "D")] {
+        fin(v, who);
+        assert!(v > T::ZERO, "{who}: {n} = {} ≤ 0", v.to_f64());
+    }
+}
+
+fn constants_ok<T: Real>(k: &Constants<T>, who: &str) {
+    for v in [
+        k.m(),
+        k.m1(),
+        k.gamma(),
+        k.slope_x(),
+        k.slope_y(),
+        k.spin_torque(),
+        k.knee_x(),
+        k.knee_y(),
+        k.knee_z_max(),
+    ] {
+        fin(v, who);
+    }
+}
+
+/// Elliptic parameter, integrals by every method, friction constants, the exact traction.
+pub fn elliptic<T: Fz>(inp: &mut Input<'_>) {
+    let min = Parameter::<T>::min_complement();
+    let m: T = inp.val();
+    let r = Parameter::new(m);
+    let in_domain = m >= T::ZERO && T::ONE - m >= min;
+    expect(
+        &r,
+        m.is_finite(),
+        in_domain,
+        Error::EllipticParameterOutOfDomain,
+        "Parameter::new",
+    );
+    let m1: T = inp.val();
+    let rc = Parameter::from_complement(m1);
+    let in_domain = m1 >= min && m1 <= T::ONE;
+    expect(
+        &rc,
+        m1.is_finite(),
+        in_domain,
+        Error::EllipticParameterOutOfDomain,
+        "Parameter::from_complement",
+    );
+    let (vx, vy, w): (T, T, T) = (inp.val(), inp.val(), inp.val());
+    for p in [r, rc].into_iter().flatten() {
+        integrals_ok(&Agm::integrals(p), "Agm");
+        integrals_ok(&Theta::integrals(p), "Theta");
+        integrals_ok(&elliptic::Table::integrals(p), "Table");
+        let (k, e) = elliptic::paper_k_e(p);
+        fin(k, "paper K");
+        fin(e, "paper E");
+        constants_ok(&Constants::new::<Agm>(p), "Constants::new::<Agm>");
+        constants_ok(&Constants::new::<Theta>(p), "Constants::new::<Theta>");
+        constants_ok(
+            &Constants::new::<elliptic::Table>(p),
+            "Constants::new::<Table>",
+        );
+        constants_ok(&Constants::from_parameter(p), "Constants::from_parameter");
+        constants_ok(
+            &Constants::from_integrals(p, &Agm::integrals(p)),
+            "Constants::from_integrals",
+        );
+        let t = friction::exact::traction(p, vx, vy, w);
+        for v in [t.fx, t.fy, t.tz] {
+            fin(v, "exact::traction");
+        }
+        assert!(t.fx.hypot(t.fy).to_f64() <= 1.0 + 1e-6 && t.tz.abs().to_f64() <= 0.6);
+    }
+}
+
+fn shape_ok<T: Real>(s: &shape::Shape<T>, who: &str) {
+    fin(s.e2(), who);
+    fin(s.m1(), who);
+    assert!(
+        // m₁ may exceed 1 by the table's fit error (≤ 5e-12 relative) near g = 1.
+        s.e2() >= T::ZERO && s.m1() > T::ZERO && s.m1().to_f64() <= 1.0 + 1e-11,
+        "{who}: e2/m1 range: e2 = {:?}, m1 = {:?}",
+        s.e2().to_f64(),
+        s.m1().to_f64()
+    );
+    integrals_ok(&s.integrals(), who);
+    constants_ok(&Constants::from_shape(s), who);
+}
+
+/// Curvature ratio, every eccentricity method, every curvature constructor.
+pub fn geometry<T: Fz>(inp: &mut Input<'_>) {
+    let g: T = inp.val();
+    let r = Ratio::new(g);
+    let in_range = g >= T::from_f64(1e-4) && g <= T::ONE;
+    expect(
+        &r,
+        g.is_finite(),
+        in_range,
+        Error::CurvatureRatioOutOfRange,
+        "Ratio::new",
+    );
+    if let Ok(g) = r {
+        shape_ok(&Newton::shape(g), "Newton");
+        shape_ok(&Linear::shape(g), "Linear");
+        shape_ok(&HamrockDowson::shape(g), "HamrockDowson");
+        shape_ok(&shape::Table::shape(g), "Table");
+        for (a, b) in [Newton::solve(g), Linear::solve(g), HamrockDowson::solve(g)] {
+            fin(a, "solve");
+            fin(b, "solve");
+        }
+    }
+    shape_ok(&shape::Table::shape(Ratio::clamped(g)), "Table (clamped)");
+
+    let (p, q): (T, T) = (inp.val(), inp.val());
+    let c = Curvatures::new(p, q);
+    expect(
+        &c,
+        p.is_finite() && q.is_finite(),
+        p.min(q) > T::ZERO,
+        Error::CurvatureNotPositive,
+        "Curvatures::new",
+    );
+    if let Ok(c) = c {
+        assert!(c.p() <= c.q() && c.p() > T::ZERO);
+        let r = Ratio::of(&c);
+        expect(
+            &r,
+            true,
+            c.ratio() >= T::from_f64(1e-4),
+            Error::CurvatureRatioOutOfRange,
+            "Ratio::of",
+        );
+        not_nan(c.ratio(), "ratio");
+        not_nan(c.gaussian_radius(), "gaussian_radius");
+        if Box::within(c.p(), 1e-6, 1e9) && Box::within(c.q(), 1e-6, 1e9) {
+            fin(c.gaussian_radius(), "gaussian_radius");
+        }
+    }
+    // Constructors from radii and bodies: Ok values are validated curvatures.
+    let (r1, r2, r3, ang): (T, T, T, T) = (inp.val(), inp.val(), inp.val(), inp.val());
+    let all_finite = r1.is_finite() && r2.is_finite();
+    let results = [
+        Curvatures::sphere_plane(r1),
+        Curvatures::sphere_sphere(r1, r2),
+        Curvatures::ball_race(r1, r2, r3, ang, Race::Inner),
+        Curvatures::ball_race(r1, r2, r3, ang, Race::Outer),
+        Curvatures::from_bodies(
+            Principal { k1: r1, k2: r2 },
+            Principal { k1: r3, k2: ang },
+            r2,
+        ),
+    ];
+    for c in results.iter().flatten() {
+        assert!(
+            c.p() > T::ZERO && c.p() <= c.q() && c.q().is_finite(),
+            "curvatures {c:?}"
+        );
+        not_nan(c.major_angle(), "major_angle");
+    }
+    if all_finite && r1 > T::ZERO && Box::within(r1, 1e-9, 1e6) {
+        assert!(results[0].is_ok(), "sphere_plane({:?})", r1.to_f64());
+    }
+    // Inputs are checked in order: the first bad one names the error.
+    let first_bad = [r1, r2]
+        .into_iter()
+        .find(|r| !r.is_finite() || *r == T::ZERO);
+    match first_bad {
+        Some(r) if !r.is_finite() => assert!(matches!(results[1], Err(Error::NonFinite(_)))),
+        Some(_) => assert_eq!(results[1].unwrap_err(), Error::LengthNotPositive),
+        None => {}
+    }
+    let _ = Principal::sphere(r1);
+}
+
+fn patch_ok<T: Real>(p: &Patch<T>, boxed: bool, who: &str) {
+    // Outside the box N, a or b may overflow to ∞ (a physical quantity beyond the float's
+    // range); NaN is allowed only downstream of such an overflow.
+    // Likewise for N, a or b underflowing to 0 at h > 0 (then p0 may be 0/0).
+    let overflow = !(p.n.is_finite() && p.a.is_finite() && p.b.is_finite())
+        || (p.h > T::ZERO && (p.n == T::ZERO || p.a == T::ZERO || p.b == T::ZERO));
+    for v in [p.h, p.a, p.b, p.n, p.p0, p.e2, p.m1] {
+        assert!(!nan(v) || overflow, "{who}: NaN in {p:?}");
+        if boxed {
+            fin(v, who);
+        }
+    }
+    assert!(
+        !(p.n < T::ZERO) && !(p.a < T::ZERO) && !(p.b < T::ZERO),
+        "{who}: negative {p:?}"
+    );
+}
+
+/// Materials, moduli, damping laws and every normal law's patch.
+pub fn normal<T: Fz>(inp: &mut Input<'_>) {
+    let (e1, n1): (T, T) = (inp.val(), inp.val());
+    let mat = Material::new(e1, n1);
+    let fine = e1.is_finite() && n1.is_finite();
+    match mat {
+        _ if !fine => assert!(matches!(mat, Err(Error::NonFinite(_)))),
+        _ if !(e1 > T::ZERO) => assert_eq!(mat, Err(Error::ModulusNotPositive)),
+        _ if !(n1 > -T::ONE && n1 <= T::HALF) => {
+            assert_eq!(mat, Err(Error::PoissonRatioOutOfRange))
+        }
+        _ => assert!(mat.is_ok()),
+    }
+    if let Ok(m) = mat {
+        if let Ok(e) = Modulus::of(m, m) {
+            assert!(e.get() > T::ZERO && e.get().is_finite());
+        }
+    }
+    let es: T = inp.val();
+    let e = Modulus::new(es);
+    expect(
+        &e,
+        es.is_finite(),
+        es > T::ZERO,
+        Error::ModulusNotPositive,
+        "Modulus::new",
+    );
+    let (cd, d): (T, T) = (inp.val(), inp.val());
+    let hc = HuntCrossley::new(cd);
+    expect(
+        &hc,
+        cd.is_finite(),
+        cd >= T::ZERO,
+        Error::DampingNegative,
+        "HuntCrossley::new",
+    );
+    let cdamp = CompressionDamping::new(d);
+    expect(
+        &cdamp,
+        d.is_finite(),
+        d >= T::ZERO,
+        Error::DampingNegative,
+        "CompressionDamping::new",
+    );
+    let (p, q, h, hdot): (T, T, T, T) = (inp.val(), inp.val(), inp.val(), inp.val());
+    let (Ok(c), Ok(e)) = (Curvatures::new(p, q), e) else {
+        return;
+    };
+    if !(h.is_finite() && hdot.is_finite()) {
+        return;
+    }
+    let boxed = Box::within(c.p(), 1e-6, 1e9)
+        && Box::within(c.q(), 1e-6, 1e9)
+        && Box::within(e.get(), 1e3, 1e13)
+        && h.to_f64() <= 1.0
+        && Box::small(hdot, 1e6)
+        && hc.map_or(true, |_| cd.to_f64() <= 1e6)
+        && cdamp.map_or(true, |_| d.to_f64() <= 1e12);
+    let mut laws: [Option<Hertz<T>>; 5] = [
+        Hertz::new::<Newton>(&c, e).ok(),
+        Hertz::new::<Linear>(&c, e).ok(),
+        Hertz::new::<HamrockDowson>(&c, e).ok(),
+        Hertz::new::<shape::Table>(&c, e).ok(),
+        Some(Hertz::from_shape(
+            &c,
+            &shape::Table::shape(Ratio::clamped(c.ratio())),
+            e,
+        )),
+    ];
+    if c.p() == c.q() {
+        laws[0] = Some(Hertz::circular(c.p(), e));
+    }
+    let check = |law: &dyn Fn(T) -> Patch<T>, damped: &dyn Fn(T, T) -> [Patch<T>; 3], who: &str| {
+        patch_ok(&law(h), boxed, who);
+        for pt in damped(h, hdot) {
+            patch_ok(&pt, boxed, who);
+        }
+    };
+    macro_rules! law {
+        ($l:expr, $who:expr) => {{
+            let l = $l;
+            check(
+                &|h| l.patch(h),
+                &|h, hd| {
+                    [
+                        l.damped_patch(h, hd, &Undamped),
+                        hc.map_or(l.patch(h), |x| l.damped_patch(h, hd, &x)),
+                        cdamp.map_or(l.patch(h), |x| l.damped_patch(h, hd, &x)),
+                    ]
+                },
+                $who,
+            );
+            if l.stiffness().is_finite() {
+                not_nan(l.energy(h), "energy");
+                not_nan(l.approach(h), "approach");
+            }
+            if boxed {
+                fin(l.stiffness(), "stiffness");
+                fin(l.energy(h), "energy");
+            }
+        }};
+    }
+    for l in laws.into_iter().flatten() {
+        law!(l, "Hertz");
+    }
+    law!(Volumetric::new(&c, e), "Volumetric");
+    law!(Fitted::clamped(&c, e), "Fitted");
+    if let Ok(f) = Fitted::new(&c, e) {
+        law!(f, "Fitted::new");
+    }
+    let _ = (Undamped.force(h, h, hdot), hc.map(|x| x.force(h, h, hdot)));
+}
+
+/// What the laws derive (so that `Friction<T, L>` is `Copy`, `Debug`, `PartialEq`).
+pub trait Law: FrictionLaw + Copy + core::fmt::Debug + PartialEq {}
+impl<L: FrictionLaw + Copy + core::fmt::Debug + PartialEq> Law for L {}
+
+/// F·v + T·ω ≤ 0 up to rounding.
+fn passive<T: Real>(fx: T, fy: T, tz: T, vx: T, vy: T, om: T, who: &str) {
+    let (fx, fy, tz, vx, vy, om) = (
+        fx.to_f64(),
+        fy.to_f64(),
+        tz.to_f64(),
+        vx.to_f64(),
+        vy.to_f64(),
+        om.to_f64(),
+    );
+    let p = fx * vx + fy * vy + tz * om;
+    let scale = (fx * vx).abs() + (fy * vy).abs() + (tz * om).abs();
+    assert!(
+        p <= 1e-5 * scale || !p.is_finite() && scale.is_infinite(),
+        "{who}: power {p} > 0 (scale {scale})"
+    );
+}
+
+fn law_core<L: FrictionLaw, T: Fz>(k: &Constants<T>, s: &SlipState<T>) {
+    let (t, _) = L::traction(k, s);
+    for v in [t.fx, t.fy, t.tz] {
+        fin(v, L::NAME);
+    }
+    assert!(
+        t.fx.hypot(t.fy).to_f64() <= 1.0 + 1e-5,
+        "{}: |F| > fN",
+        L::NAME
+    );
+    // Exact: |T| ≤ (3/8)E(0) = 0.589; the approximations stay within their stated error.
+    assert!(
+        t.tz.abs().to_f64() <= 1.0,
+        "{}: |T| too large: {t:?} at {s:?}, {k:?}",
+        L::NAME
+    );
+    passive(t.fx, t.fy, t.tz, s.x(), s.y(), s.w(), L::NAME);
+}
+
+fn law_dimensional<L: Law, T: Fz>(
+    inp: &mut Input<'_>,
+    k: &Constants<T>,
+    slip: Slip<T>,
+    boxed: bool,
+) {
+    let (f, delta, a, n): (T, T, T, T) = (inp.val(), inp.val(), inp.val(), inp.val());
+    let fr = Friction::<T, L>::new(f, delta);
+    let fine = f.is_finite() && delta.is_finite();
+    match fr {
+        _ if !fine => assert!(matches!(fr, Err(Error::NonFinite(_)))),
+        _ if f < T::ZERO => assert_eq!(fr, Err(Error::FrictionCoefficientNegative)),
+        _ if delta < T::ZERO => assert_eq!(fr, Err(Error::LengthNotPositive)),
+        _ => assert!(fr.is_ok()),
+    }
+    let Ok(fr) = fr else { return };
+    if !(a.is_finite() && n.is_finite()) {
+        return;
+    }
+    let t = fr.tangential(k, a, n, slip);
+    let boxed = boxed
+        && f.to_f64() <= 10.0
+        && delta.to_f64() <= 1e6
+        && Box::small(a, 1e3)
+        && Box::small(n, 1e20);
+    let overflow = !(f * n * a).is_finite() || !(f * n).is_finite();
+    for v in [t.fx, t.fy, t.tz] {
+        assert!(!nan(v) || overflow, "{}: NaN {t:?}", L::NAME);
+        if boxed {
+            fin(v, L::NAME);
+        }
+    }
+    if boxed {
+        passive(
+            t.fx,
+            t.fy,
+            t.tz,
+            slip.vx(),
+            slip.vy(),
+            slip.omega(),
+            L::NAME,
+        );
+    }
+}
+
+/// Slip, slip state, friction coefficients and every friction law (core and dimensional).
+pub fn friction<T: Fz>(inp: &mut Input<'_>) {
+    let (vx, vy, om, delta): (T, T, T, T) = (inp.val(), inp.val(), inp.val(), inp.val());
+    let fine = vx.is_finite() && vy.is_finite() && om.is_finite();
+    let slip = Slip::new(vx, vy, om);
+    expect(&slip, fine, true, Error::NonFinite(""), "Slip::new");
+    let s = SlipState::new(vx, vy, om, delta);
+    expect(
+        &s,
+        fine && delta.is_finite(),
+        true,
+        Error::NonFinite(""),
+        "SlipState::new",
+    );
+    let (psi, u): (T, T) = (inp.val(), inp.val());
+    let sp = SlipState::from_polar(psi, u);
+    assert_eq!(
+        sp.is_ok(),
+        psi.is_finite() && !nan(u),
+        "from_polar({:?}, {:?})",
+        psi.to_f64(),
+        u.to_f64()
+    );
+    let m1: T = inp.val();
+    let k = Parameter::from_complement(m1).map_or(Constants::circle(), Constants::from_parameter);
+    let a: T = inp.val();
+    let states = [
+        s.ok(),
+        sp.ok(),
+        slip.map(|sl| SlipState::from_slip(sl, a, delta)).ok(),
+    ];
+    for st in states.into_iter().flatten() {
+        // The documented invariant is |x|, |y|, |w| ≤ 1; the multiply by 1/s can round 2 ulp over.
+        for v in [st.x(), st.y(), st.w()] {
+            assert!(
+                v.abs() <= T::ONE + T::from_f64(4.0) * T::EPSILON,
+                "slip state {st:?}"
+            );
+        }
+        assert!(st.d() > T::ZERO, "slip state d");
+        law_core::<Simplified, T>(&k, &st);
+        law_core::<Pade, T>(&k, &st);
+        law_core::<Ellipsoid, T>(&k, &st);
+        law_core::<Coulomb, T>(&k, &st);
+        law_core::<Exact, T>(&k, &st);
+        law_core::<Best, T>(&k, &st);
+    }
+    let Ok(slip) = slip else { return };
+    let boxed = Box::small(vx, 1e12) && Box::small(vy, 1e12) && Box::small(om, 1e12);
+    law_dimensional::<Simplified, T>(inp, &k, slip, boxed);
+    law_dimensional::<Pade, T>(inp, &k, slip, boxed);
+    law_dimensional::<Ellipsoid, T>(inp, &k, slip, boxed);
+    law_dimensional::<Coulomb, T>(inp, &k, slip, boxed);
+    law_dimensional::<Exact, T>(inp, &k, slip, boxed);
+    law_dimensional::<Best, T>(inp, &k, slip, boxed);
+}
+
+fn wrench_ok<T: Real, B: core::fmt::Debug>(
+    w: &Wrench<T, B>,
+    f: T,
+    boxed: bool,
+    slip: &Slip<T>,
+    who: &str,
+) {
+    patch_ok(&w.patch, boxed, who);
+    // fN and fNa (the scales of F and T) overflowing to ∞ is the same case.
+    let overflow = !(w.n * w.patch.a * f).is_finite() || !(w.n * f).is_finite();
+    for v in [w.n, w.fx, w.fy, w.tz] {
+        assert!(!nan(v) || overflow, "{who}: NaN in {w:?} at {slip:?}");
+        if boxed {
+            fin(v, who);
+        }
+    }
+    if boxed {
+        passive(w.fx, w.fy, w.tz, slip.vx(), slip.vy(), slip.omega(), who);
+    }
+}
+
+fn contact_law<L: Law, T: Fz>(inp: &mut Input<'_>, c: &Curvatures<T>, e: Modulus<T>, boxed: bool) {
+    let (f, delta, h, hdot, vx, vy, om, cd): (T, T, T, T, T, T, T, T) = (
+        inp.val(),
+        inp.val(),
+        inp.val(),
+        inp.val(),
+        inp.val(),
+        inp.val(),
+        inp.val(),
+        inp.val(),
+    );
+    let (Ok(fr), Ok(slip), Ok(hc)) = (
+        Friction::<T, L>::new(f, delta),
+        Slip::new(vx, vy, om),
+        HuntCrossley::new(cd),
+    ) else {
+        return;
+    };
+    if !(h.is_finite() && hdot.is_finite()) {
+        return;
+    }
+    let boxed = boxed
+        && f.to_f64() <= 10.0
+        && delta.to_f64() <= 1e6
+        && h.to_f64() <= 1.0
+        && Box::small(hdot, 1e6)
+        && cd.to_f64() <= 1e6
+        && Box::small(vx, 1e12)
+        && Box::small(vy, 1e12)
+        && Box::small(om, 1e12);
+    if let Ok(contact) = Contact::hertz::<Newton>(c, e, hc, fr) {
+        wrench_ok(&contact.wrench(h, hdot, slip), f, boxed, &slip, L::NAME);
+    }
+    let varying = VaryingContact::new(e, Undamped, fr);
+    wrench_ok(&varying.wrench(c, h, hdot, slip), f, boxed, &slip, L::NAME);
+    let fitted = Contact::from_parts(
+        Fitted::clamped(c, e),
+        Undamped,
+        fr,
+        Constants::from_shape(&shape::Table::shape(Ratio::clamped(c.ratio()))),
+    );
+    wrench_ok(&fitted.wrench(h, hdot, slip), f, boxed, &slip, L::NAME);
+}
+
+/// `Contact::wrench` and `VaryingContact::wrench` with every friction law.
+pub fn wrench<T: Fz>(inp: &mut Input<'_>) {
+    let (p, q, es): (T, T, T) = (inp.val(), inp.val(), inp.val());
+    let (Ok(c), Ok(e)) = (Curvatures::new(p, q), Modulus::new(es)) else {
+        return;
+    };
+    let boxed = Box::within(c.p(), 1e-6, 1e9)
+        && Box::within(c.q(), 1e-6, 1e9)
+        && Box::within(e.get(), 1e3, 1e13);
+    contact_law::<Simplified, T>(inp, &c, e, boxed);
+    contact_law::<Pade, T>(inp, &c, e, boxed);
+    contact_law::<Ellipsoid, T>(inp, &c, e, boxed);
+    contact_law::<Coulomb, T>(inp, &c, e, boxed);
+    contact_law::<Exact, T>(inp, &c, e, boxed);
+    contact_law::<Best, T>(inp, &c, e, boxed);
+}
+
+/// Everything, in `f32` then `f64`, the first byte choosing the area (for a single target).
+pub fn all(data: &[u8]) {
+    let mut inp = Input::new(data);
+    let area = inp.byte();
+    match area % 5 {
+        0 => elliptic::<f32>(&mut inp),
+        1 => geometry::<f32>(&mut inp),
+        2 => normal::<f32>(&mut inp),
+        3 => friction::<f32>(&mut inp),
+        _ => wrench::<f32>(&mut inp),
+    }
+    match area / 5 % 5 {
+        0 => elliptic::<f64>(&mut inp),
+        1 => geometry::<f64>(&mut inp),
+        2 => normal::<f64>(&mut inp),
+        3 => friction::<f64>(&mut inp),
+        _ => wrench::<f64>(&mut inp),
+    }
+}

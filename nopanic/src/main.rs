@@ -1,0 +1,279 @@
+//! Link-time no-panic proof for `contensou` on `thumbv7em-none-eabihf` (issue 8).
+//!
+//! `main` calls every public constructor and evaluation entry point, in `f32` and `f64`, on
+//! inputs the optimiser cannot see (`black_box`), and black-boxes every output. The panic
+//! handler calls `contensou_panic_path_survived`, a function that is declared but never
+//! defined: if any panic path survives optimisation (opt-level 3, fat LTO, one codegen unit,
+//! `panic = "abort"`), the handler is referenced and **linking fails** with an undefined
+//! symbol. A successful link is the proof. Run by `tools/no-panic.sh`, which on failure rebuilds
+//! with `--features locate` and names the probes that still reach the panic machinery.
+//!
+//! Each entry point is called from its own `#[inline(never)]` probe (`probe_*`), so a surviving
+//! panic call site is attributed to the entry point that reaches it.
+#![no_std]
+#![no_main]
+
+use core::hint::black_box;
+
+use contensou::Real;
+use contensou::contact::{Contact, VaryingContact};
+use contensou::elliptic::{self, Agm, Method, Parameter, Theta};
+use contensou::friction::{
+    self, Best, Constants, Coulomb, Ellipsoid, Exact, Friction, FrictionLaw, Pade, Simplified, Slip,
+    SlipState,
+};
+use contensou::geometry::{Curvatures, Principal, Race};
+use contensou::normal::{
+    CompressionDamping, Damping, Fitted, Hertz, HuntCrossley, Material, Modulus, NormalLaw,
+    Undamped, Volumetric,
+};
+use contensou::shape::{self, Eccentricity, HamrockDowson, Linear, Newton, Ratio};
+use cortex_m_rt::entry;
+
+#[cfg(not(feature = "locate"))]
+unsafe extern "Rust" {
+    /// Never defined anywhere: referencing it makes the link fail.
+    fn contensou_panic_path_survived() -> !;
+}
+
+#[cfg(not(feature = "locate"))]
+#[panic_handler]
+fn panic(_: &core::panic::PanicInfo<'_>) -> ! {
+    // SAFETY: never executed in a linked image — the symbol does not exist, so an image that
+    // still references this handler does not link.
+    unsafe { contensou_panic_path_survived() }
+}
+
+/// `--features locate`: a real handler, so the image links and the call sites can be found.
+#[cfg(feature = "locate")]
+#[panic_handler]
+#[inline(never)]
+fn panic(_: &core::panic::PanicInfo<'_>) -> ! {
+    loop {
+        core::hint::spin_loop();
+    }
+}
+
+/// An input the optimiser knows nothing about.
+#[inline(always)]
+fn x<T: Real>(v: f64) -> T {
+    black_box(T::from_f64(v))
+}
+
+/// One probe per entry point: `#[inline(never)]` keeps its name in the image; every argument
+/// is re-black-boxed inside so that no constant reaches the library through LTO.
+macro_rules! probes {
+    ($( fn $name:ident<$T:ident>($($arg:ident),*) $body:block )*) => {
+        $(
+            #[inline(never)]
+            #[allow(clippy::too_many_arguments)]
+            fn $name<$T: Real>($($arg: $T),*) {
+                $(let $arg = black_box($arg);)*
+                let _ = black_box($body);
+            }
+        )*
+        fn run_all<R: Real>() {
+            // Every argument is a black-boxed value: the probes must hold for any.
+            $( $name::<R>($(probes!(@arg $arg)),*); )*
+        }
+    };
+    (@arg $arg:ident) => { x(0.5) };
+}
+
+/// A generic friction-law probe set, instantiated per law below.
+macro_rules! law_probes {
+    ($($law:ident: $tangential:ident, $core:ident, $wrench:ident, $varying:ident;)*) => {
+        probes! {
+            $(
+            fn $tangential<T>(f, delta, m, a, n, vx, vy, om) {
+                let (Ok(fr), Ok(p), Ok(s)) =
+                    (Friction::<T, $law>::new(f, delta), Parameter::new(m), Slip::new(vx, vy, om))
+                else { return };
+                fr.tangential(&Constants::from_parameter(p), a, n, s)
+            }
+            fn $core<T>(m1, vx, vy, aw, delta) {
+                let (Ok(p), Ok(s)) = (Parameter::from_complement(m1), SlipState::new(vx, vy, aw, delta))
+                else { return };
+                <$law as FrictionLaw>::traction(&Constants::from_parameter(p), &s)
+            }
+            fn $wrench<T>(p, q, e, f, delta, h, hdot, vx, vy, om, cd) {
+                let (Ok(c), Ok(e), Ok(fr), Ok(s), Ok(hc)) = (
+                    Curvatures::new(p, q),
+                    Modulus::new(e),
+                    Friction::<T, $law>::new(f, delta),
+                    Slip::new(vx, vy, om),
+                    HuntCrossley::new(cd),
+                ) else { return };
+                let Ok(contact) = Contact::hertz::<Newton>(&c, e, hc, fr) else { return };
+                black_box(contact.wrench(h, hdot, s))
+            }
+            fn $varying<T>(p, q, e, f, delta, h, hdot, vx, vy, om, d) {
+                let (Ok(c), Ok(e), Ok(fr), Ok(s), Ok(cdamp)) = (
+                    Curvatures::new(p, q),
+                    Modulus::new(e),
+                    Friction::<T, $law>::new(f, delta),
+                    Slip::new(vx, vy, om),
+                    CompressionDamping::new(d),
+                ) else { return };
+                VaryingContact::new(e, cdamp, fr).wrench(&c, h, hdot, s)
+            }
+            )*
+        }
+    };
+}
+
+law_probes! {
+    Simplified: probe_tangential_simplified, probe_core_simplified, probe_contact_wrench_simplified, probe_varying_wrench_simplified;
+    Pade: probe_tangential_pade, probe_core_pade, probe_contact_wrench_pade, probe_varying_wrench_pade;
+    Ellipsoid: probe_tangential_ellipsoid, probe_core_ellipsoid, probe_contact_wrench_ellipsoid, probe_varying_wrench_ellipsoid;
+    Coulomb: probe_tangential_coulomb, probe_core_coulomb, probe_contact_wrench_coulomb, probe_varying_wrench_coulomb;
+    Exact: probe_tangential_exact, probe_core_exact, probe_contact_wrench_exact, probe_varying_wrench_exact;
+    Best: probe_tangential_best, probe_core_best, probe_contact_wrench_best, probe_varying_wrench_best;
+}
+
+/// The rest of the API, one probe per entry point.
+mod api {
+    use super::*;
+
+    probes! {
+        // elliptic
+        fn probe_parameter_new<T>(m) { (Parameter::new(m), Parameter::<T>::min_complement()) }
+        fn probe_parameter_from_complement<T>(m1) { Parameter::from_complement(m1).map(|p| (p.m(), p.m1())) }
+        fn probe_integrals_agm<T>(m) { Parameter::new(m).map(Agm::integrals) }
+        fn probe_integrals_theta<T>(m) { Parameter::new(m).map(Theta::integrals) }
+        fn probe_integrals_table<T>(m) { Parameter::new(m).map(elliptic::Table::integrals) }
+        fn probe_integrals_agm_c<T>(m1) { Parameter::from_complement(m1).map(Agm::integrals) }
+        fn probe_integrals_theta_c<T>(m1) { Parameter::from_complement(m1).map(Theta::integrals) }
+        fn probe_integrals_table_c<T>(m1) { Parameter::from_complement(m1).map(elliptic::Table::integrals) }
+        fn probe_paper_k_e<T>(m1) { Parameter::from_complement(m1).map(elliptic::paper_k_e) }
+        // geometry
+        fn probe_principal_sphere<T>(r) { (Principal::sphere(r), Principal::<T>::plane()) }
+        fn probe_curvatures_new<T>(p, q) {
+            Curvatures::new(p, q).map(|c| (c.ratio(), c.major_angle(), c.gaussian_radius()))
+        }
+        fn probe_curvatures_from_bodies<T>(a1, a2, b1, b2, om) {
+            Curvatures::from_bodies(Principal { k1: a1, k2: a2 }, Principal { k1: b1, k2: b2 }, om)
+        }
+        fn probe_curvatures_sphere_plane<T>(r) { Curvatures::sphere_plane(r) }
+        fn probe_curvatures_sphere_sphere<T>(ra, rb) { Curvatures::sphere_sphere(ra, rb) }
+        fn probe_curvatures_ball_race<T>(d, rg, dm, alpha) {
+            (
+                Curvatures::ball_race(d, rg, dm, alpha, Race::Inner),
+                Curvatures::ball_race(d, rg, dm, alpha, Race::Outer),
+            )
+        }
+        // shape
+        fn probe_ratio<T>(g, p, q) {
+            (Ratio::new(g), Ratio::clamped(g), Curvatures::new(p, q).and_then(|c| Ratio::of(&c)))
+        }
+        fn probe_shape_newton<T>(g) { Ratio::new(g).map(|g| (Newton::shape(g), Newton::solve(g))) }
+        fn probe_shape_linear<T>(g) { Ratio::new(g).map(|g| (Linear::shape(g), Linear::solve(g))) }
+        fn probe_shape_hamrock_dowson<T>(g) {
+            Ratio::new(g).map(|g| (HamrockDowson::shape(g), HamrockDowson::solve(g)))
+        }
+        fn probe_shape_table<T>(g) { shape::Table::shape(Ratio::clamped(g)) }
+        // normal
+        fn probe_material_modulus<T>(e1, n1, e2, n2, es) {
+            let m = (Material::new(e1, n1), Material::new(e2, n2));
+            let of = match m { (Ok(a), Ok(b)) => Some(Modulus::of(a, b)), _ => None };
+            (m, of, Modulus::new(es))
+        }
+        fn probe_damping<T>(cd, d, el, h, hdot) {
+            (
+                Undamped.force(el, h, hdot),
+                HuntCrossley::new(cd).map(|c| c.force(el, h, hdot)),
+                CompressionDamping::new(d).map(|c| c.force(el, h, hdot)),
+            )
+        }
+        fn probe_hertz<T>(p, q, e, h, hdot, cd, n) {
+            let (Ok(c), Ok(e), Ok(hc)) = (Curvatures::new(p, q), Modulus::new(e), HuntCrossley::new(cd))
+            else { return };
+            black_box(Hertz::circular(c.p(), e).patch(h));
+            let Ok(law) = Hertz::new::<Newton>(&c, e) else { return };
+            (law.patch(h), law.damped_patch(h, hdot, &hc), law.approach(n), law.energy(h), law.stiffness())
+        }
+        fn probe_hertz_from_shape<T>(p, q, e, h, hdot, d) {
+            let (Ok(c), Ok(e), Ok(cdamp)) = (Curvatures::new(p, q), Modulus::new(e), CompressionDamping::new(d))
+            else { return };
+            let law = Hertz::from_shape(&c, &shape::Table::shape(Ratio::clamped(c.ratio())), e);
+            (law.patch(h), law.damped_patch(h, hdot, &cdamp))
+        }
+        fn probe_volumetric<T>(p, q, e, h, hdot, n) {
+            let (Ok(c), Ok(e)) = (Curvatures::new(p, q), Modulus::new(e)) else { return };
+            let law = Volumetric::new(&c, e);
+            (law.patch(h), law.damped_patch(h, hdot, &Undamped), law.approach(n), law.energy(h))
+        }
+        fn probe_fitted<T>(p, q, e, h, hdot, cd) {
+            let (Ok(c), Ok(e), Ok(hc)) = (Curvatures::new(p, q), Modulus::new(e), HuntCrossley::new(cd))
+            else { return };
+            let law = Fitted::clamped(&c, e);
+            (Fitted::new(&c, e), law.patch(h), law.damped_patch(h, hdot, &hc))
+        }
+        // friction
+        fn probe_slip_state<T>(vx, vy, om, a, delta, psi, u) {
+            let s = Slip::new(vx, vy, om);
+            let from = s.map(|s| SlipState::from_slip(s, a, delta));
+            (s, from, SlipState::new(vx, vy, a, delta), SlipState::from_polar(psi, u))
+        }
+        fn probe_constants<T>(m, m1, g) {
+            let (Ok(p), Ok(pc)) = (Parameter::new(m), Parameter::from_complement(m1)) else { return };
+            (
+                Constants::new::<Agm>(p),
+                Constants::new::<Theta>(pc),
+                Constants::new::<elliptic::Table>(p),
+                Constants::from_parameter(pc),
+                Constants::from_integrals(p, &Agm::integrals(p)),
+                Constants::from_shape(&shape::Table::shape(Ratio::clamped(g))),
+                Constants::<T>::circle(),
+            )
+        }
+        fn probe_exact_traction<T>(m1, vx, vy, aw) {
+            Parameter::from_complement(m1).map(|p| friction::exact::traction(p, vx, vy, aw))
+        }
+        // contact (other normal laws through from_parts)
+        fn probe_contact_from_parts<T>(p, q, e, f, h, hdot, vx, vy, om) {
+            let (Ok(c), Ok(e), Ok(fr), Ok(s)) =
+                (Curvatures::new(p, q), Modulus::new(e), Friction::<T, Simplified>::new(f, f), Slip::new(vx, vy, om))
+            else { return };
+            let v = Contact::from_parts(Volumetric::new(&c, e), Undamped, fr, Constants::circle());
+            let k = Constants::from_shape(&shape::Table::shape(Ratio::clamped(c.ratio())));
+            let ft = Contact::from_parts(Fitted::clamped(&c, e), Undamped, fr, k);
+            let hd = Contact::hertz::<HamrockDowson>(&c, e, Undamped, fr);
+            let li = Contact::hertz::<Linear>(&c, e, Undamped, fr);
+            let tb = Contact::hertz::<shape::Table>(&c, e, Undamped, fr);
+            (
+                v.wrench(h, hdot, s),
+                ft.wrench(h, hdot, s),
+                hd.map(|w| w.wrench(h, hdot, s)),
+                li.map(|w| w.wrench(h, hdot, s)),
+                tb.map(|w| w.wrench(h, hdot, s)),
+            )
+        }
+    }
+
+    pub(crate) fn run<T: Real>() {
+        run_all::<T>();
+    }
+}
+
+/// `--features canary`: a probe that can panic (an unchecked slice index), to show that the
+/// proof detects one (`tools/no-panic.sh` requires this build to fail).
+#[cfg(feature = "canary")]
+#[inline(never)]
+fn probe_canary(i: usize) -> u8 {
+    let t = black_box([1u8, 2, 3]);
+    t[black_box(i)]
+}
+
+#[entry]
+fn main() -> ! {
+    #[cfg(feature = "canary")]
+    black_box(probe_canary(black_box(7)));
+    run_all::<f32>();
+    run_all::<f64>();
+    api::run::<f32>();
+    api::run::<f64>();
+    loop {
+        core::hint::spin_loop();
+    }
+}
