@@ -19,7 +19,7 @@
 use std::fmt::Write as _;
 use std::time::Instant;
 
-use contensou::friction::{Coulomb, Friction, FrictionLaw, Simplified};
+use contensou::friction::{Best, Coulomb, Friction, FrictionLaw, Simplified};
 use contensou::scenes::integrate::{Tolerance, dopri45, rk4};
 use contensou::scenes::tippe_top::{N, Params, Probe, TippeTop};
 
@@ -88,6 +88,7 @@ fn main() {
         fixed::<Simplified>("simplified", 1e-4),
         fixed::<Coulomb>("coulomb-steep", 1e-4),
         fixed::<Coulomb>("coulomb-gentle", 1e-2),
+        fixed::<Best>("best", 1e-4),
     ];
     for r in &runs {
         let mut csv = String::from("t,theta,n_big,n_small,energy,jellett,spin\n");
@@ -151,6 +152,12 @@ fn main() {
         "cost to T = {T_COST} s, Dormand–Prince 5(4), rtol = {RTOL:e}, atol = (1e-9 m, 1e-6 m/s, 1e-8, 1e-4 rad/s):"
     );
     let base = adaptive::<Simplified>("simplified", 1e-4);
+    let best = adaptive::<Best>("best", 1e-4);
+    println!(
+        "  best/simplified: rhs evaluations ×{:.2}, wall time ×{:.2}",
+        best.0 as f64 / base.0 as f64,
+        best.1 / base.1
+    );
     for (name, delta) in [("coulomb-steep", 1e-4), ("coulomb-gentle", 1e-2)] {
         let other = adaptive::<Coulomb>(name, delta);
         println!(
@@ -224,6 +231,7 @@ fn plot(runs: &[Run], path: &str) {
         RGBColor(200, 30, 30),
         RGBColor(30, 30, 200),
         RGBColor(30, 150, 30),
+        RGBColor(230, 140, 0),
     ];
     for (r, c) in runs.iter().zip(colours) {
         chart
