@@ -267,6 +267,25 @@ fn sweep<T: Real + 'static, L: FrictionLaw + Copy + 'static>(
     worst
 }
 
+/// Calls the generic `f::<T, L>()` for every friction law `L` in both precisions.
+macro_rules! every_law_and_precision {
+    ($f:ident) => {
+        for_laws!($f, f32);
+        for_laws!($f, f64);
+    };
+}
+
+macro_rules! for_laws {
+    ($f:ident, $t:ty) => {
+        $f::<$t, Simplified>();
+        $f::<$t, Pade>();
+        $f::<$t, Ellipsoid>();
+        $f::<$t, Coulomb>();
+        $f::<$t, Exact>();
+        $f::<$t, Best>();
+    };
+}
+
 fn all_laws<T: Real + 'static>() -> Vec<(&'static str, f64)> {
     let mut out = Vec::new();
     for (varying, compl) in [(false, false), (true, false), (false, true)] {
@@ -312,18 +331,7 @@ fn from_complement_constants_are_finite() {
             }
         }
     }
-    one::<f32, Simplified>();
-    one::<f32, Pade>();
-    one::<f32, Ellipsoid>();
-    one::<f32, Coulomb>();
-    one::<f32, Exact>();
-    one::<f32, Best>();
-    one::<f64, Simplified>();
-    one::<f64, Pade>();
-    one::<f64, Ellipsoid>();
-    one::<f64, Coulomb>();
-    one::<f64, Exact>();
-    one::<f64, Best>();
+    every_law_and_precision!(one);
 }
 
 /// Slip speeds whose sum |v_Px| + |v_Py| + a|ω| or product aω overflows (the slip state's
@@ -361,16 +369,5 @@ fn overflowing_slip_speeds_stay_finite() {
         );
         assert!(t.tz > T::ZERO || L::NAME == "coulomb", "{}", L::NAME);
     }
-    one::<f32, Simplified>();
-    one::<f32, Pade>();
-    one::<f32, Ellipsoid>();
-    one::<f32, Coulomb>();
-    one::<f32, Exact>();
-    one::<f32, Best>();
-    one::<f64, Simplified>();
-    one::<f64, Pade>();
-    one::<f64, Ellipsoid>();
-    one::<f64, Coulomb>();
-    one::<f64, Exact>();
-    one::<f64, Best>();
+    every_law_and_precision!(one);
 }
