@@ -20,6 +20,7 @@ use contensou::normal::{Hertz, Modulus, Undamped};
 use contensou::shape::Newton;
 
 include!("../../benches/friction_set.rs");
+include!("../../benches/wrench_set.rs");
 
 const N: usize = SET;
 type FixedInput<'a, T, L> = (&'a Contact<T, Hertz<T>, Undamped, L>, T, Slip<T>);
@@ -37,32 +38,7 @@ fn table_each_step<T: Real, L: FrictionLaw>(x: VaryingInput<'_, T, L>) -> Wrench
 }
 
 fn law<T: Real, L: FrictionLaw>(r: &Runner, suffix: &str) {
-    let curv = Curvatures::<T>::ball_race(
-        T::from_f64(12.7e-3),
-        T::from_f64(6.6e-3),
-        T::from_f64(65e-3),
-        T::ZERO,
-        Race::Inner,
-    )
-    .expect("valid bearing geometry");
-    let estar = Modulus::new(T::from_f64(1.142857e11)).expect("positive modulus");
-    let friction = Friction::<T, L>::new(T::from_f64(0.07), T::ZERO).expect("valid f");
-    let contact =
-        Contact::hertz::<Newton>(&curv, estar, Undamped, friction).expect("g in the domain");
-    let varying = VaryingContact::new(estar, Undamped, friction);
-    let h = T::from_f64(5e-6);
-    let a = contact.wrench(h, T::ZERO, Slip::default()).patch.a.to_f64();
-    let pairs = mixed_set();
-    let slips: [Slip<T>; N] = core::array::from_fn(|i| {
-        let (u, psi) = pairs[i];
-        let v = u * a * 100.0;
-        Slip::new(
-            T::from_f64(v * libm::cos(psi)),
-            T::from_f64(v * libm::sin(psi)),
-            T::from_f64(100.0),
-        )
-        .expect("finite slip")
-    });
+    let (curv, contact, varying, h, slips) = wrench_scene::<T, L>();
     let mut name = heapless_name("fixed", suffix);
     let fixed_inputs: [FixedInput<'_, T, L>; N] = core::array::from_fn(|i| (&contact, h, slips[i]));
     r.bench("wrench", name.as_str(), T::NAME, &fixed_inputs, fixed::<T, L>);
