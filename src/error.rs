@@ -17,7 +17,9 @@ pub enum Error {
     /// A sum of principal curvatures (P + Q, or P or Q itself) that must be positive is ≤ 0:
     /// the bodies are not locally convex towards each other (no Hertz contact).
     CurvatureNotPositive,
-    /// Curvature ratio g = P/Q outside the supported range of the eccentricity solver.
+    /// Curvature ratio g = P/Q outside the supported range of the eccentricity solver
+    /// (below `shape::Ratio::MIN` = 1e-4), or, for `normal::Volumetric::checked`, below that
+    /// law's stated domain g ≥ 0.5.
     CurvatureRatioOutOfRange,
     /// A Young's modulus or effective modulus that must be positive is ≤ 0.
     ModulusNotPositive,

@@ -383,15 +383,44 @@ impl<T: Real> NormalLaw<T> for Hertz<T> {
 ///
 /// N = (4/3)E*√R_e·h^{3/2}, a = b = √(R_e h), e² = 0. Exact for P = Q. Measured force error
 /// vs exact Hertz at equal h (`bench-results/hertz.md`), always low: −0.14% at g = P/Q = 0.77,
-/// −1.2% at 0.46, −4.7% at 0.22, −9.8% at 0.1, −30.3% at 0.01, −50.5% at 1e-3. Cost per step: as
-/// [`Hertz::patch`]; construction: one `sqrt` and one division, no elliptic integral.
+/// −1.2% at 0.46, −4.7% at 0.22, −9.8% at 0.1, −30.3% at 0.01, −50.5% at 1e-3, −66.5% at
+/// 1e-4. Cost per step: as [`Hertz::patch`]; construction: one `sqrt` and one division, no
+/// elliptic integral.
+///
+/// # Stated domain
+///
+/// Within [`Volumetric::MAX_ERROR`] = 1 % for g ≥ [`Volumetric::MIN_RATIO`] = 0.5 (measured
+/// −0.99 % at g = 0.5 against mpmath, `tools/data/stability_shape.csv`; the error grows
+/// monotonically as g falls, chart `docs/report/stability/volumetric.csv`).
+/// [`Volumetric::checked`] refuses geometries past that edge; [`Volumetric::new`] accepts every
+/// geometry (unchanged behaviour) and stays finite, with the error above. For elongated
+/// contacts use [`Fitted`] (≤ 1.3e-5 over g ∈ [1e-4, 1], same per-step cost).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Volumetric<T>(Hertz<T>);
 
 impl<T: Real> Volumetric<T> {
-    /// From validated curvatures and modulus. Total.
+    /// Smallest g = P/Q accepted by [`Volumetric::checked`]: the force error stays within
+    /// [`Volumetric::MAX_ERROR`] for g ∈ [0.5, 1].
+    pub const MIN_RATIO: f64 = 0.5;
+    /// The error bound that [`Volumetric::MIN_RATIO`] guarantees: 1 % of N (relative, at equal h).
+    pub const MAX_ERROR: f64 = 0.01;
+
+    /// From validated curvatures and modulus, any g = P/Q. Total. The force error grows as g
+    /// falls (see the type's docs): −1 % at g = 0.5, −66.5 % at 1e-4. Prefer
+    /// [`Volumetric::checked`] unless the geometry is known to be nearly circular.
     pub fn new(curvatures: &Curvatures<T>, estar: Modulus<T>) -> Self {
         Volumetric(Hertz::circle_of_radius(curvatures.gaussian_radius(), estar))
+    }
+
+    /// [`Volumetric::new`] only within its stated domain g = P/Q ≥ [`Volumetric::MIN_RATIO`]
+    /// (force error ≤ 1 %). Errors: [`Error::CurvatureRatioOutOfRange`] for g < 0.5 (NaN cannot
+    /// occur: the curvatures are validated).
+    pub fn checked(curvatures: &Curvatures<T>, estar: Modulus<T>) -> Result<Self, Error> {
+        if curvatures.ratio() >= T::from_f64(Self::MIN_RATIO) {
+            Ok(Self::new(curvatures, estar))
+        } else {
+            Err(Error::CurvatureRatioOutOfRange)
+        }
     }
 }
 

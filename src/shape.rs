@@ -37,6 +37,13 @@ use crate::geometry::Curvatures;
 use crate::{Error, Real};
 
 /// A validated curvature ratio g = P/Q ∈ [[`Ratio::MIN`], 1].
+///
+/// The domain guards every eccentricity method: [`Table`] and [`crate::normal::Fitted`] are
+/// fitted on it, and [`Newton`], exact in `f64` down to g ≈ 1.5e-11 and in `f32` down to
+/// g ≈ 5e-7 (below, m₁ = (b/a)² leaves the elliptic domain and is clamped; see
+/// [`Newton::solve_unchecked`]), keeps a margin of 200× (`f32`). Below 1e-4: [`Ratio::new`]
+/// returns [`Error::CurvatureRatioOutOfRange`]; [`Ratio::clamped`] returns 1e-4 (tested in
+/// `host-tests/stability.rs`).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Ratio<T>(T);
 
@@ -180,24 +187,42 @@ impl Newton {
 
     /// (c, m₁) with G(c) = g.
     pub fn solve<T: Real>(g: Ratio<T>) -> (T, T) {
-        let g = g.get();
+        Self::solve_unchecked(g.get(), Self::iterations::<T>())
+    }
+
+    /// The same iteration at a raw g with a chosen iteration count, **without** the [`Ratio`]
+    /// domain check: for convergence studies (`examples/stability.rs`), not for callers, who
+    /// should go through [`Ratio`]. Total: g is clamped into [`T::MIN_POSITIVE`](Real::MIN_POSITIVE), 1]
+    /// (NaN → `MIN_POSITIVE`) and m₁ into [m₁_min, 1] ([`Parameter::min_complement`]).
+    ///
+    /// Below [`Ratio::MIN`] (measured against mpmath down to g = 1e-12,
+    /// `tools/data/stability_shape.csv`; `examples/stability.rs` →
+    /// `docs/report/stability/newton_small_g.csv`, `newton_iterations.csv`): the iteration
+    /// itself does not degrade — 3 steps reach 1e-14 in `f64` (2 reach 2e-6 in `f32`) at every
+    /// g < 0.69, although the Hamrock–Dowson start is 53 % off in m₁ at g = 1e-4, 81 % at 1e-6,
+    /// 93 % at 1e-8. What fails is the floor m₁_min of [`Parameter`]: `f32` m₁ < 2⁻²⁴ below
+    /// g ≈ 5e-7 (m₁ error 25 % at g = 4.2e-7, 63× at 1e-8), `f64` m₁ < 1e-12 below
+    /// g ≈ 1.5e-11 (7 % at 1.3e-11); m₁ is then clamped to the floor (finite, wrong).
+    pub fn solve_unchecked<T: Real>(g: T, iterations: usize) -> (T, T) {
+        // g > 1 → 1 (the circle); g < MIN_POSITIVE (incl. ≤ 0 and NaN) → MIN_POSITIVE.
+        let g = g.clamp_to(T::MIN_POSITIVE, T::ONE);
         if g >= T::ONE {
             (T::ZERO, T::ONE)
         } else if g >= T::from_f64(0.8) {
-            let c = Self::small_c(g);
+            let c = Self::small_c(g, iterations);
             (c, T::ONE - c)
         } else {
-            let m1 = Self::large_c(g);
+            let m1 = Self::large_c(g, iterations);
             (T::ONE - m1, m1)
         }
     }
 
     /// Small-c branch: solve c·u(c)/B(c) = 1 − g by series.
-    fn small_c<T: Real>(g: T) -> T {
+    fn small_c<T: Real>(g: T, iterations: usize) -> T {
         let eps = T::ONE - g; // exact for g ≥ 1/2
         let mut c = T::from_f64(4.0 / 3.0) * eps;
         let terms = if T::MANTISSA_DIGITS > 24 { 40 } else { 20 };
-        for _ in 0..Self::iterations::<T>() {
+        for _ in 0..iterations {
             // (π/2)·Σ over n of: B: w_n² cⁿ/(2n+2); D: w_n w_{n+1} cⁿ;
             // (B − D)/c: −w_n² n/(n+1) c^{n−1} (n ≥ 1), w_n = C(2n, n)/4ⁿ.
             let (mut b, mut db, mut d, mut dd, mut bd, mut dbd) =
@@ -234,11 +259,11 @@ impl Newton {
     }
 
     /// Large-c branch: Newton in t = ln m₁.
-    fn large_c<T: Real>(g: T) -> T {
+    fn large_c<T: Real>(g: T, iterations: usize) -> T {
         let ln_g = g.ln();
         let min = Parameter::<T>::min_complement();
         let mut m1 = (T::from_f64(4.0 / core::f64::consts::PI) * ln_g).exp();
-        for _ in 0..Self::iterations::<T>() {
+        for _ in 0..iterations {
             let Ok(p) = Parameter::from_complement(m1.clamp_to(min, T::from_f64(0.8))) else {
                 break;
             };
@@ -280,6 +305,17 @@ impl Eccentricity for Newton {
 /// g; K 12%, E 3.4%; a 2.2%, b 122%, N 12% relative (`bench-results/hertz.md`).
 /// Cost: one multiply + one AGM (no `ln`/`exp`); host ≈ 60 ns; M4F 180 instructions (f32),
 /// 12,582 (f64).
+///
+/// # Beyond the knee
+///
+/// G* is a fit for c ≤ c₁ = 0.4 (g ≥ 0.7) only. Measured against mpmath
+/// (`tools/data/stability_shape.csv`, chart `docs/report/stability/linear_gstar.csv`): at the
+/// knee g = 0.7 both segments give c = 0.4 (continuous; error c 0.022, N 0.62 %); past it the
+/// c error peaks at 0.054 (g ≈ 0.27) and the N error grows to 7.7 % at g = 0.1, 12.2 % at
+/// g = [`Ratio::MIN`]; b, through m₁ = (6/7)·g against the exact m₁ ≈ g/ln(…), is 29 % off at
+/// g = 0.1 and 122 % at 1e-4. Always finite (the [`Ratio`] domain is the guard; tested at the
+/// knee and at [`Ratio::MIN`] in `host-tests/stability.rs`). Use [`Table`] (≤ 3e-7 `f32`,
+/// 94 instructions) when elongated contacts matter.
 #[derive(Clone, Copy, Debug, Default)]
 pub struct Linear;
 

@@ -19,8 +19,8 @@ use contensou::Real;
 use contensou::contact::{Contact, VaryingContact};
 use contensou::elliptic::{self, Agm, Method, Parameter, Theta};
 use contensou::friction::{
-    self, Best, Constants, Coulomb, Ellipsoid, Exact, Friction, FrictionLaw, Pade, Simplified, Slip,
-    SlipState,
+    self, Best, Constants, Coulomb, Ellipsoid, Exact, Explicit, Friction, FrictionLaw, Pade,
+    Simplified, Slip, SlipState,
 };
 use contensou::geometry::{Curvatures, Principal, Race};
 use contensou::normal::{
@@ -229,6 +229,18 @@ mod api {
         }
         fn probe_exact_traction<T>(m1, vx, vy, aw) {
             Parameter::from_complement(m1).map(|p| friction::exact::traction(p, vx, vy, aw))
+        }
+        // stability guards
+        fn probe_newton_unchecked<T>(g) { Newton::solve_unchecked(g, black_box(6)) }
+        fn probe_volumetric_checked<T>(p, q, e, h) {
+            let (Ok(c), Ok(e)) = (Curvatures::new(p, q), Modulus::new(e)) else { return };
+            Volumetric::checked(&c, e).map(|law| law.patch(h))
+        }
+        fn probe_stable_step<T>(f, delta, mass, n) {
+            let (Ok(co), Ok(si)) =
+                (Friction::<T, Coulomb>::new(f, delta), Friction::<T, Simplified>::new(f, delta))
+            else { return };
+            (co.stable_step(mass, n, Explicit::Euler), si.stable_step(mass, n, Explicit::Rk4))
         }
         // contact (other normal laws through from_parts)
         fn probe_contact_from_parts<T>(p, q, e, f, h, hdot, vx, vy, om) {

@@ -46,6 +46,16 @@
 //!
 //! [`paper_k_e`] keeps the paper's unfixed theta form for comparison only: its `f64` error is
 //! 4.4e-15 up to m = 0.87, 3.2e-8 at m = 0.99 and 0.32 at m = 1 − 1e-12.
+//!
+//! # Stability
+//!
+//! - **Near m = 1**: every [`Method`] takes m₁ from [`Parameter`] and stays accurate to
+//!   m₁_min; the paper's theta form does not (see [`paper_k_e`]).
+//! - **Small m**: the quotient (K − E)/m formed from K and E loses everything in `f32`
+//!   (measured with [`Agm`]'s K, E: 1.7e-3 relative at m = 1e-4, 100 % at m = 1e-8; `f64`: 3e-12
+//!   at 1e-4, 5e-6 at 1e-11), so every method returns D itself: `f32` D ≤ 2.8e-7 for m from 1e-11
+//!   to 0.42 by all three methods (chart `docs/report/stability/d_cancellation.csv`, mpmath
+//!   `tools/data/stability_elliptic.csv`, asserted in `host-tests/stability.rs`).
 
 mod agm;
 mod table;

@@ -174,10 +174,16 @@ impl Method for Theta {
 /// q = ε + 2ε⁵ + 15ε⁹ + 150ε¹³ + 1707ε¹⁷, K = (π/2)θ₃², θ₃ = 1 + 2Σ_{n=1}^{6} q^{n²},
 /// E = ((2 − m)/3)K + (π²/K)(1/12 − 2Σ_{n=1}^{10} q²ⁿ/(1 − q²ⁿ)²).
 ///
-/// Kept for the stability map; use [`Theta`] instead. Finite on the whole domain, but its error
-/// grows without bound as m → 1: measured in `f64` ≤ 1e-14 only up to m ≈ 0.87, 3e-8 at
-/// m = 0.99 (the truncated nome series), ≈0.3 at m = 1 − 1e-12; in `f32` it fails near
-/// m ≈ 0.9975. Cost: two square roots, ≈60 multiply-adds and 11 divisions.
+/// Kept for the stability map; use [`Theta`] instead (it is deliberately not a [`Method`], so
+/// it cannot be plugged into the contact types). Domain: every valid [`Parameter`], always
+/// finite, but accurate only for m ≲ 0.87. Max relative error of K and E against mpmath
+/// (`tools/data/stability_elliptic.csv`; chart `docs/report/stability/theta_near_1.csv`):
+/// `f64` 5.5e-15 at m₁ = 0.13, 7.8e-14 at m₁ = 0.1, 3.2e-8 at m₁ = 1e-2, 1.8e-5 at 1e-3,
+/// 2.3e-2 at 1e-6, 0.32 at m₁ = 1e-12 (the truncated nome series and θ₃/E sums stop
+/// converging as q → 1); `f32` above its own rounding (1e-6) from m₁ ≈ 3e-3 (m ≈ 0.997), 6.6e-2
+/// at m₁ = 2⁻²⁴. [`Theta`], with the complementary nome for m > ½, stays within 2.8e-16 (`f64`)
+/// on the whole domain, asserted in `host-tests/stability.rs`.
+/// Cost: two square roots, ≈60 multiply-adds and 11 divisions.
 pub fn paper_k_e<T: Real>(p: Parameter<T>) -> (T, T) {
     let c = T::from_f64;
     let (m, m1) = (p.m(), p.m1());

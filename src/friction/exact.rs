@@ -57,6 +57,20 @@ use super::Traction;
 use crate::Real;
 use crate::elliptic::{Agm, Method, Parameter};
 
+/// The large-u series F = −w + F₂/u², T_z = T₁/u is used only for u = v/(aω) > this value.
+///
+/// The series converges only for u > 1 (model.md §3). Measured against this module's
+/// quadrature (`examples/stability.rs` → `docs/report/stability/large_u_series.csv`, max over
+/// 25 ψ ∈ [0, π/2] and e² ∈ {0, 0.687, 0.99}): the two-term force errs by 11 fN at u = 0.1
+/// (it grows like 1/u², past the bound |F| ≤ fN), 3.1e-2 fN at u = 1, 3.4e-4 at u = 3.2,
+/// 3.5e-6 at 10, 3.5e-10 at 100, 6.7e-16 at 1e4; the torque T₁/u by 1.6 fNa at u = 0.1,
+/// 3.5e-2 at 1, 4.2e-5 at 10, 4.2e-14 at 1e4 (next term O(u⁻³)), so below 1e-16 past the
+/// switch. No approximate law evaluates F₂; [`Simplified`](super::Simplified) and
+/// [`Pade`](super::Pade) use T₁ as the torque's asymptote by design (the paper's model; their
+/// stated model error includes it). Checked in `host-tests/stability.rs` (continuity across the
+/// switch; the series alone is far off the reference where the quadrature is used).
+pub const SERIES_MIN_U: f64 = 1e5;
+
 /// Exact dimensionless traction (force / fN, torque / fNa) on body B from body A over the
 /// Hertz ellipse with semi-axes a (along x) and b = a·√m₁, for a slip state given by the
 /// centre's slip velocity (vx, vy) and a·ω (all in the same units; the result is homogeneous of
@@ -102,7 +116,7 @@ fn traction_f64(m: f64, m1: f64, vx: f64, vy: f64, w: f64) -> (f64, f64, f64) {
 /// vx, vy, w ≥ 0, max = 1.
 fn first_quadrant(m: f64, m1: f64, vx: f64, vy: f64, w: f64) -> (f64, f64, f64) {
     let v = libm::hypot(vx, vy);
-    if w < 1e-5 * v {
+    if w < v / SERIES_MIN_U {
         return large_u(m, vx / v, vy / v, w / v);
     }
     if vy * vy + vx * vx / m1 <= w * w {

@@ -43,7 +43,7 @@ pub use best::{Best, BestContact};
 pub use constants::Constants;
 pub use coulomb::Coulomb;
 pub use ellipsoid::Ellipsoid;
-pub use law::{Friction, FrictionLaw, Tangential};
+pub use law::{Explicit, Friction, FrictionLaw, Tangential};
 pub use pade::Pade;
 pub use reference::Exact;
 pub use simplified::Simplified;
