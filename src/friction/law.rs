@@ -242,8 +242,12 @@ macro_rules! stable_step_for {
             /// law saturates at ±fN, so it stays bounded and finite, but it never comes to
             /// rest); Euler already flips sign every step past h*/2. The step shrinks ∝ δ: as
             /// δ → 0 the law becomes Coulomb's sign law, for which no explicit step is stable.
-            /// Spin only widens the ramp (the spin-induced width aω/A, aω/B is used where it
-            /// exceeds δ), so h* holds for every ω.
+            /// For the translational degrees of freedom spin only widens the ramp (`simplified`
+            /// uses the spin-induced width aω/A, aω/B where it exceeds δ), so h* holds for
+            /// every ω. Not covered: the rotational step of `simplified`'s regularized torque
+            /// (stiffness dT/dω = fN·a²/(5δ) below aω = 5Cδ, so h < limit·5Iδ/(fN·a²) for an
+            /// inertia I), and the laws that ignore δ (`pade`, `ellipsoid`, `exact`: at ω = 0
+            /// Coulomb's sign law, no stable explicit step).
             ///
             /// # Edge cases and accuracy
             ///
