@@ -198,8 +198,9 @@ columns are joined from the recorded benchmark files by `stage,method,precision`
 How to read the cost columns:
 
 - **host ns**: criterion on the machine that ran `tools/report.sh` (`bench-results/host-ns.csv`,
-  fastest sample per benchmark, divided by the calls per iteration). The machine is shared and
-  loaded; repeat runs differ by 10–30 %, so compare ratios, not absolute figures. Host time is
+  fastest sample per benchmark, divided by the calls per iteration). The machine (2 cores) is
+  shared and loaded: two back-to-back runs agreed within 5 % on 36 of 40 rows and differed by
+  up to 42 % on the others, so compare orders of magnitude, not single figures. Host time is
   not the MCU cost.
 - **QEMU insns**: executed Cortex-M4F instructions per call under QEMU (`-icount`,
   `bench-results/qemu.csv`), deterministic. These are *instructions, not cycles*: QEMU models no
