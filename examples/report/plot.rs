@@ -72,7 +72,9 @@ fn tick(log: bool, v: f64) -> String {
         } else {
             String::new()
         }
-    } else if v != 0.0 && (v.abs() >= 1e4 || v.abs() < 1e-3) {
+    } else if v.abs() < 1e-12 {
+        "0".into()
+    } else if v.abs() >= 1e4 || v.abs() < 1e-3 {
         format!("{v:.0e}")
     } else {
         format!("{}", (v * 1e6).round() / 1e6)
@@ -80,7 +82,7 @@ fn tick(log: bool, v: f64) -> String {
 }
 
 /// Padded range of mapped values; log axes widen to whole decades.
-fn range(vals: impl Iterator<Item = f64>, log: bool) -> (f64, f64) {
+fn range(vals: impl Iterator<Item = f64>, log: bool, pad: f64) -> (f64, f64) {
     let (mut lo, mut hi) = vals.fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
         (a.min(v), b.max(v))
     });
@@ -89,8 +91,8 @@ fn range(vals: impl Iterator<Item = f64>, log: bool) -> (f64, f64) {
     }
     if log {
         // whole decades, with room for a point sitting on a decade
-        lo = (lo - 0.1).floor();
-        hi = (hi + 0.1).ceil();
+        lo = (lo - pad).floor();
+        hi = (hi + pad).ceil();
     } else {
         let pad = if hi > lo { 0.05 * (hi - lo) } else { 1.0 };
         lo -= pad;
@@ -129,11 +131,33 @@ fn axes(chart: &mut Chart<'_>, x: Axis<'_>, y: Axis<'_>, r: [f64; 4], grid: bool
     Ok(())
 }
 
-/// The series legend, upper right.
-fn legend(chart: &mut Chart<'_>) -> Res {
+/// The series legend, in the corner (a third of each axis) holding the fewest of `pts`.
+fn legend(chart: &mut Chart<'_>, r: [f64; 4], pts: &[(f64, f64)]) -> Res {
+    let (w, h) = ((r[1] - r[0]) / 3.0, (r[3] - r[2]) / 3.0);
+    let count = |right: bool, top: bool| {
+        pts.iter()
+            .filter(|p| {
+                (if right {
+                    p.0 > r[1] - w
+                } else {
+                    p.0 < r[0] + w
+                }) && (if top { p.1 > r[3] - h } else { p.1 < r[2] + h })
+            })
+            .count()
+    };
+    let corners = [
+        (true, true, SeriesLabelPosition::UpperRight),
+        (false, true, SeriesLabelPosition::UpperLeft),
+        (true, false, SeriesLabelPosition::LowerRight),
+        (false, false, SeriesLabelPosition::LowerLeft),
+    ];
+    let position = corners
+        .into_iter()
+        .min_by_key(|c| count(c.0, c.1))
+        .map_or(SeriesLabelPosition::UpperRight, |c| c.2);
     chart
         .configure_series_labels()
-        .position(SeriesLabelPosition::UpperRight)
+        .position(position)
         .label_font((FONT, 14))
         .background_style(WHITE.mix(0.85))
         .border_style(BLACK)
@@ -154,8 +178,8 @@ pub fn pareto(
         .iter()
         .filter_map(|(l, a, b)| Some((l.clone(), x.map(*a)?, y.map(*b)?)))
         .collect();
-    let (x0, x1) = range(mapped.iter().map(|p| p.1), x.log);
-    let (y0, y1) = range(mapped.iter().map(|p| p.2), y.log);
+    let (x0, x1) = range(mapped.iter().map(|p| p.1), x.log, 0.1);
+    let (y0, y1) = range(mapped.iter().map(|p| p.2), y.log, 0.1);
     let mut front: Vec<(f64, f64)> = Vec::new();
     let mut sorted: Vec<(f64, f64)> = mapped.iter().map(|p| (p.1, p.2)).collect();
     sorted.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.total_cmp(&b.1)));
@@ -230,7 +254,8 @@ pub fn pareto(
             .label(name)
             .legend(move |(a, b)| Circle::new((a + 10, b), 5, c.filled()));
     }
-    legend(&mut chart)?;
+    let pts: Vec<(f64, f64)> = mapped.iter().map(|p| (p.1, p.2)).collect();
+    legend(&mut chart, [x0, x1, y0, y1], &pts)?;
     root.present()?;
     Ok(())
 }
@@ -264,8 +289,8 @@ pub fn lines(
     let sparse = mapped
         .iter()
         .all(|s| s.1.iter().map(Vec::len).sum::<usize>() <= 60);
-    let (x0, x1) = range(all().map(|p| p.0), x.log);
-    let (y0, y1) = range(all().map(|p| p.1), y.log);
+    let (x0, x1) = range(all().map(|p| p.0), x.log, 0.0);
+    let (y0, y1) = range(all().map(|p| p.1), y.log, 0.0);
     let root = BitMapBackend::new(path, (1000, 620)).into_drawing_area();
     root.fill(&WHITE)?;
     let mut chart = ChartBuilder::on(&root)
@@ -294,7 +319,8 @@ pub fn lines(
             }
         }
     }
-    legend(&mut chart)?;
+    let pts: Vec<(f64, f64)> = all().copied().collect();
+    legend(&mut chart, [x0, x1, y0, y1], &pts)?;
     root.present()?;
     Ok(())
 }
