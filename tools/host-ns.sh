@@ -1,0 +1,55 @@
+#!/usr/bin/env bash
+# Host nanoseconds per call for the report: runs the criterion benches elliptic, hertz, friction
+# and wrench with short measurement times, then reads target/criterion/<id>/new/sample.json and
+# keeps the fastest sample (time/iterations; on a shared, loaded machine the minimum is far more
+# repeatable than the mean), divided by the calls per iteration, and writes
+#   bench-results/host-ns.csv    stage,method,precision,ns   (keys as in bench-results/qemu.csv)
+#
+#   tools/host-ns.sh            # run the benches, then collect
+#   tools/host-ns.sh --collect  # only collect from the last criterion run
+#
+# `cargo bench --bench friction` also re-measures its accuracy grid and rewrites
+# bench-results/friction.csv.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+if [[ "${1:-}" != "--collect" ]]; then
+    args=(--warm-up-time 0.2 --measurement-time 0.6)
+    for b in elliptic hertz friction wrench; do
+        cargo bench --bench "$b" -- "${args[@]}" >&2
+    done
+fi
+python3 - <<'PY'
+import json, os
+def fastest(cid, calls):
+    path = f"target/criterion/{cid}/new/sample.json"
+    if not os.path.exists(path):
+        return None
+    with open(path) as f:
+        d = json.load(f)
+    return min(t / n for t, n in zip(d["times"], d["iters"])) / calls
+rows = []
+for p in ("f32", "f64"):
+    # benches/elliptic.rs: group kebd (K, E, B, D all used, as the QEMU stage), 64 m per iteration
+    for m in ("agm", "theta", "table"):
+        rows.append(("elliptic", m, p, fastest(f"kebd_{m}_{p}", 64)))
+    # benches/hertz.rs: one call per iteration
+    for m in ("per_step", "table_each_step", "fitted_each_step", "shape_table", "shape_linear",
+              "shape_hamrock-dowson", "shape_newton"):
+        rows.append(("hertz", m, p, fastest(f"hertz_{m}_{p}", 1)))
+    # benches/friction.rs: the 64-state mixed set per iteration; `best-contact` is BestContact
+    # (QEMU `best`), the law `Best` re-deriving its constants per call is QEMU `best-varying`
+    for cid, m in (("simplified", "simplified"), ("pade", "pade"), ("ellipsoid", "ellipsoid"),
+                   ("coulomb", "coulomb"), ("exact", "exact"), ("best-contact", "best"),
+                   ("best", "best-varying")):
+        rows.append(("friction", m, p, fastest(f"friction_{cid}-{p}", 64)))
+    # benches/wrench.rs: one step per iteration
+    for g in ("fixed", "table_each_step"):
+        for law, suffix in (("simplified", ""), ("best", "-best")):
+            rows.append(("wrench", g + suffix, p, fastest(f"wrench_{g}_{law}_{p}", 1)))
+with open("bench-results/host-ns.csv", "w") as f:
+    f.write("stage,method,precision,ns\n")
+    for s, m, p, ns in rows:
+        if ns is not None:
+            f.write(f"{s},{m},{p},{ns:.2f}\n")
+print("wrote bench-results/host-ns.csv")
+PY
