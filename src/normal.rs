@@ -43,6 +43,7 @@ mod fit_data;
 
 use crate::error::finite;
 use crate::geometry::{Curvatures, positive};
+use crate::math::{Backend, Libm};
 use crate::shape::{Eccentricity, Ratio, Shape};
 use crate::{Error, Real};
 
@@ -353,10 +354,23 @@ impl<T: Real> Hertz<T> {
 impl<T: Real> NormalLaw<T> for Hertz<T> {
     #[inline]
     fn patch(&self, h: T) -> Patch<T> {
+        self.patch_with::<Libm>(h)
+    }
+
+    #[inline(always)]
+    fn stiffness(&self) -> T {
+        self.k_h
+    }
+}
+
+impl<T: Real> Hertz<T> {
+    /// [`NormalLaw::patch`] with √h from the backend `B`.
+    #[inline(always)]
+    fn patch_with<B: Backend>(&self, h: T) -> Patch<T> {
         if !positive(h) {
             return Patch::empty(self.e2, self.m1);
         }
-        let sh = h.sqrt();
+        let sh = B::sqrt(h);
         Patch {
             h,
             a: self.a_coef * sh,
@@ -367,10 +381,35 @@ impl<T: Real> NormalLaw<T> for Hertz<T> {
             m1: self.m1,
         }
     }
+}
 
+/// [`Hertz`] with the per-step √h from micromath (feature `micromath`; `f32` only, libm for
+/// `f64`): a = a′√h, b = b′√h, N = k_H·h·√h, p0 = p0′√h with micromath's bit-shift square root.
+/// Built from a [`Hertz`] (`HertzMicromath::from(law)`), whose constants it keeps.
+///
+/// Domain: every h (h ≤ 0 → [`Patch::empty`]). Measured max relative error against exact
+/// Hertz (`f32`, same constants, h over 12 decades, host-tests/micromath.rs): HERTZ_MM_ERR.
+/// Cost per [`NormalLaw::patch`]: HERTZ_MM_COST.
+#[cfg(feature = "micromath")]
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct HertzMicromath<T>(Hertz<T>);
+
+#[cfg(feature = "micromath")]
+impl<T: Real> From<Hertz<T>> for HertzMicromath<T> {
+    fn from(law: Hertz<T>) -> Self {
+        HertzMicromath(law)
+    }
+}
+
+#[cfg(feature = "micromath")]
+impl<T: Real> NormalLaw<T> for HertzMicromath<T> {
+    #[inline]
+    fn patch(&self, h: T) -> Patch<T> {
+        self.0.patch_with::<crate::math::Micromath>(h)
+    }
     #[inline(always)]
     fn stiffness(&self) -> T {
-        self.k_h
+        self.0.k_h
     }
 }
 
