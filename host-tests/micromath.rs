@@ -348,10 +348,28 @@ fn exact_set() -> Vec<(f64, f64, f64, Traction<f64>)> {
         .collect()
 }
 
+/// Max |F_M − F_L| (fN) and |T_M − T_L| (fNa) of the twin `M` against its libm law `L`, f32.
+fn deviation<L: FrictionLaw, M: FrictionLaw>(set: &[(f64, f64, f64, Traction<f64>)]) -> (f64, f64) {
+    let (mut f, mut t) = (0.0f64, 0.0f64);
+    for &(e2, psi, u, _) in set {
+        let k = Constants::from_parameter(Parameter::new(e2 as f32).unwrap());
+        let s = SlipState::<f32>::from_polar(psi as f32, u as f32).unwrap();
+        let (a, b) = (L::traction(&k, &s).0, M::traction(&k, &s).0);
+        f = f.max(((a.fx - b.fx) as f64).hypot((a.fy - b.fy) as f64));
+        t = t.max(((a.tz - b.tz) as f64).abs());
+    }
+    println!(
+        "ROW {} twin vs libm law: force {f:.3e} fN, torque {t:.3e} fNa",
+        L::NAME
+    );
+    (f, t)
+}
+
 fn compare<L: FrictionLaw, M: FrictionLaw>(
     set: &[(f64, f64, f64, Traction<f64>)],
-) -> (FrictionErrors, FrictionErrors) {
+) -> (FrictionErrors, (f64, f64)) {
     let (l, m) = (friction_error::<L>(set), friction_error::<M>(set));
+    let dev = deviation::<L, M>(set);
     show(&format!("{} force fN", L::NAME), l.force, m.force);
     show(&format!("{} torque fNa", L::NAME), l.torque, m.torque);
     println!(
@@ -366,23 +384,28 @@ fn compare<L: FrictionLaw, M: FrictionLaw>(
         let s = SlipState::from_polar(psi, u).unwrap();
         assert_eq!(L::traction(&k, &s).0, M::traction(&k, &s).0);
     }
-    (l, m)
+    (m, dev)
 }
 
 #[test]
 fn friction_laws() {
     let set = exact_set();
-    let (_, m) = compare::<Simplified, SimplifiedMicromath>(&set);
+    let (m, dev) = compare::<Simplified, SimplifiedMicromath>(&set);
+    assert!(dev.0 < 0.058 && dev.1 < 0.027);
     assert!(m.force.0 < 0.33 && m.torque.0 < 0.336 && m.max_force <= 1.0);
     assert!(
         m.force.1 < 0.035 && m.torque.1 < 1.2e-3,
         "simplified median"
     );
-    let (_, m) = compare::<Coulomb, CoulombMicromath>(&set);
+    let (m, dev) = compare::<Coulomb, CoulombMicromath>(&set);
+    // 1 − 1/1.0607: the square root is at most 6.07 % high
+    assert!(dev.0 < 0.0573 && dev.1 == 0.0);
     assert!(m.force.0 < 0.99 && m.max_force <= 1.0, "coulomb");
-    let (_, m) = compare::<Ellipsoid, EllipsoidMicromath>(&set);
+    let (m, dev) = compare::<Ellipsoid, EllipsoidMicromath>(&set);
+    assert!(dev.0 < 0.0573 && dev.1 < 0.022);
     assert!(m.force.0 < 0.22 && m.torque.0 < 0.125 && m.max_force <= 1.0);
     assert!(m.force.1 < 0.045 && m.torque.1 < 9e-3, "ellipsoid median");
-    let (_, m) = compare::<Best, BestMicromath>(&set);
+    let (m, dev) = compare::<Best, BestMicromath>(&set);
+    assert!(dev.0 < 3e-6 && dev.1 < 3e-7);
     assert!(m.force.0 < 3e-6 && m.torque.0 < 1e-6, "best");
 }

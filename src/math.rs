@@ -2,14 +2,14 @@
 //!
 //! A [`Backend`] is a zero-sized type chosen at compile time. [`Libm`] is what [`Real`] does
 //! (libm, and the `vsqrt.f32` shim for `f32` square roots on the Cortex-M4F): every method type
-//! of the crate uses it. With the feature `micromath`, [`Micromath`] substitutes the
+//! of the crate uses it. With the feature `micromath`, `Micromath` substitutes the
 //! [micromath](https://docs.rs/micromath/2.1.0) crate's fast `f32` approximations, and each
 //! method where that can matter gets a twin type named `…Micromath` that implements the same
 //! trait ([`crate::elliptic::Method`], [`crate::shape::Eccentricity`],
 //! [`crate::normal::NormalLaw`], [`crate::friction::FrictionLaw`]). Without the feature nothing
 //! changes: same types, same code, same results.
 //!
-//! micromath is `f32`-only: for `f64` [`Micromath`] falls back to libm (the `f64` results of a
+//! micromath is `f32`-only: for `f64` `Micromath` falls back to libm (the `f64` results of a
 //! `…Micromath` type equal its libm twin's), so the twins stay generic over [`Real`] like every
 //! other method.
 //!
@@ -21,13 +21,43 @@
 //! exp(x)   = 2^⌊x/ln 2⌋ · (four Taylor terms of e^f, f = frac(x/ln 2)·ln 2 ∈ [0, ln 2))
 //! ```
 //!
+//! micromath's `ln` takes 1/x for x < 1 by a bit trick that is up to 12 % off (0.118 absolute
+//! error in ln x); `Micromath::ln` divides exactly instead (−ln(1/x)), which is both more
+//! accurate (6.2e-5) and one instruction cheaper on the M4F.
+//!
 //! Which functions each twin routes through the backend, its measured error against the same
 //! mpmath references as its libm twin (host-tests/micromath.rs), and its cost on the Cortex-M4F
 //! (QEMU instructions per call, `bench-results/qemu.csv`, rows ending in `-micromath`):
 //!
-//! MEASURED-TABLE
+//! | twin (QEMU key) | routes | libm: max error, M4F insns | micromath: max error, M4F insns | worth it? |
+//! |---|---|---|---|---|
+//! | `sqrt` alone (`core`) | — | 5.7e-8 rel., 11 (`vsqrt.f32`) | 6.1e-2 rel. (always ≥ √x), 18 | no |
+//! | `ln` alone (`core`) | — | 4.9e-7 abs., 59 | 6.2e-5 abs., 44 (micromath's own: 0.118, 45) | yes, alone |
+//! | `exp` alone (`core`) | — | 6.2e-8 rel., 67 | 2.4e-3 rel., 94 | no |
+//! | `ThetaMicromath` (`elliptic`) | `ln` | 3.4e-7 (K, E, B, D), 122 | 4.7e-5, 117 | barely (Table: 1.1e-7, 45) |
+//! | `HamrockDowsonMicromath` (`hertz`, `shape_…`) | `ln`, `exp` | c 1.6e-2 abs., 277 | c 1.65e-2 abs., 295 | no |
+//! | `HertzMicromath` (`hertz`, `per_step…`) | `sqrt` | a, b, N, p0 5.0e-7, 36 | 6.1e-2, 32 | only for ≥ 6.1 % budgets |
+//! | `SimplifiedMicromath` (`friction`) | `sqrt` | 0.329 fN / 0.335 fNa, 66 | 0.329 / 0.335 (median ×36), 70 | no |
+//! | `CoulombMicromath` (`friction`) | `sqrt` | 0.988 fN / 0.589 fNa, 42 | 0.988 / 0.589, 45 | no |
+//! | `EllipsoidMicromath` (`friction`) | `sqrt` | 0.227 fN / 0.121 fNa, 34 | 0.211 / 0.121 (median ×3.4), 37 | no |
+//! | `BestMicromath` (`friction`, per call) | `ln` | 2.0e-6 fN / 8.8e-7 fNa, 1,324 | 2.6e-6 / 8.9e-7, 1,297 | marginal |
 //!
-//! Verdict: see `bench-results/micromath.md`.
+//! Errors: `f32`, max over the sets of host-tests/micromath.rs (functions: 2,000 x from 1e-6 to
+//! 1e6, exp on [−20, 20], against `f64` libm; the methods: against mpmath references and the
+//! exact friction integrals). Instructions: QEMU per call, including the rig's 8-instruction
+//! call floor. Host times (criterion, x86-64) are equal within the shared machine's noise.
+//!
+//! **Verdict.** On the Cortex-M4F micromath rarely pays. Its bit-trick `sqrt` is up to 6.1 %
+//! high and is not even cheaper than the FPU's `vsqrt.f32` (18 against 11 instructions as a
+//! call; inlined, 4 fewer than the shim in `HertzMicromath`
+//! but 3–4 more in the friction laws, all measured). Its `exp` costs more than libm's. Only `ln` is cheaper (15 instructions
+//! per call) — after fixing micromath's reciprocal below 1 —, and every `ln` of the crate is
+//! off the per-step path except in [`Best`](crate::friction::Best)'s per-call form. Use
+//! `HertzMicromath` only where a 6 % high normal force is
+//! acceptable, `BestMicromath` where e² changes every call
+//! and a 3e-6 friction error is, `ThetaMicromath` where
+//! 5e-5 in K, E, B, D is and the [`Table`](crate::elliptic::Table)'s 12 KB of flash are not.
+//! `bench-results/micromath.md` has the same table with medians and host times.
 
 use crate::Real;
 
@@ -38,7 +68,7 @@ mod sealed {
     impl Sealed for super::Micromath {}
 }
 
-/// Where square roots, logarithms and exponentials come from (sealed: [`Libm`], [`Micromath`]).
+/// Where square roots, logarithms and exponentials come from (sealed: [`Libm`], `Micromath`).
 pub trait Backend:
     sealed::Sealed + Copy + core::fmt::Debug + Default + PartialEq + Eq + Send + Sync + 'static
 {
@@ -97,7 +127,7 @@ fn on_f32<T: Real>(
     }
 }
 
-/// micromath's `ln`, its argument kept ≥ 1 (see [`Micromath::ln`]).
+/// micromath's `ln`, its argument kept ≥ 1 (see `Micromath::ln`).
 #[cfg(feature = "micromath")]
 #[inline(always)]
 fn ln_f32(x: micromath::F32) -> micromath::F32 {
