@@ -239,7 +239,8 @@ fn hertz_per_step() {
     // dense in h: N = k_H·h·√h against the exact value, h from 1e-12 to 1 m
     let curv = Curvatures::new(3.0f32, 30.0).unwrap();
     let law = Hertz::new::<Newton>(&curv, Modulus::new(1.1e11).unwrap()).unwrap();
-    let twin = HertzMicromath::from(law);
+    let twin = HertzMicromath::new::<Newton>(&curv, Modulus::new(1.1e11).unwrap()).unwrap();
+    assert_eq!(twin, HertzMicromath::from(law));
     let n = stats(
         (0..4000)
             .map(|i| {

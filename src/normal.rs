@@ -385,7 +385,8 @@ impl<T: Real> Hertz<T> {
 
 /// [`Hertz`] with the per-step √h from micromath (feature `micromath`; `f32` only, libm for
 /// `f64`): a = a′√h, b = b′√h, N = k_H·h·√h, p0 = p0′√h with micromath's bit-shift square root.
-/// Built from a [`Hertz`] (`HertzMicromath::from(law)`), whose constants it keeps.
+/// Built like [`Hertz`] ([`HertzMicromath::new`]) or from one (`HertzMicromath::from(law)`),
+/// whose constants it keeps.
 ///
 /// Domain: every h (h ≤ 0 → [`Patch::empty`]); `f64` is [`Hertz`]. micromath's √h is never
 /// below the true root and at most 6.07 % above it (exact at h = 4ᵏ), so a, b, p0 and N are
@@ -397,6 +398,18 @@ impl<T: Real> Hertz<T> {
 #[cfg(feature = "micromath")]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct HertzMicromath<T>(Hertz<T>);
+
+#[cfg(feature = "micromath")]
+impl<T: Real> HertzMicromath<T> {
+    /// As [`Hertz::new`]: built with the eccentricity method `M`. Errors:
+    /// [`Error::CurvatureRatioOutOfRange`] if P/Q < 1e-4.
+    pub fn new<M: Eccentricity>(
+        curvatures: &Curvatures<T>,
+        estar: Modulus<T>,
+    ) -> Result<Self, Error> {
+        Hertz::new::<M>(curvatures, estar).map(HertzMicromath)
+    }
+}
 
 #[cfg(feature = "micromath")]
 impl<T: Real> From<Hertz<T>> for HertzMicromath<T> {

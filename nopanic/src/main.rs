@@ -285,9 +285,8 @@ mod mm_api {
         fn probe_hertz_mm<T>(p, q, e, h, hdot, cd) {
             let (Ok(c), Ok(e), Ok(hc)) = (Curvatures::new(p, q), Modulus::new(e), HuntCrossley::new(cd))
             else { return };
-            let Ok(law) = Hertz::new::<Newton>(&c, e) else { return };
-            let law = HertzMicromath::from(law);
-            (law.patch(h), law.damped_patch(h, hdot, &hc))
+            let Ok(law) = HertzMicromath::new::<Newton>(&c, e) else { return };
+            (law.patch(h), law.damped_patch(h, hdot, &hc), HertzMicromath::from(Hertz::circular(c.p(), e)).patch(h))
         }
     }
 
