@@ -6,6 +6,8 @@
 //! iteration divided by 64 is the time per call. Groups: `ke` (K and E used) and `kebd` (all
 //! four; `ellip` has no B, so it computes K, E, D and B = K − D).
 //!
+//! With `--features micromath` also `ke/theta_micromath_f32` and `kebd/theta_micromath_f32`.
+//!
 //! `tools/host-bench.sh` runs this and turns criterion's estimates into
 //! bench-results/host-elliptic.md with the ratio ours/ellip. Whole run: well under 2 minutes.
 use std::hint::black_box;
@@ -46,8 +48,13 @@ fn params<T: Real>() -> Vec<Parameter<T>> {
 }
 
 fn ours<T: Real, M: Method>(c: &mut Criterion) {
+    ours_as::<T, M>(c, &format!("{}/{}", M::NAME, T::NAME));
+}
+
+/// Benchmarks `ke/<id>` and `kebd/<id>`.
+fn ours_as<T: Real, M: Method>(c: &mut Criterion, id: &str) {
     let ps = params::<T>();
-    c.bench_function(&format!("ke/{}/{}", M::NAME, T::NAME), |b| {
+    c.bench_function(&format!("ke/{id}"), |b| {
         b.iter(|| {
             let mut acc = T::ZERO;
             for &p in black_box(&ps) {
@@ -57,7 +64,7 @@ fn ours<T: Real, M: Method>(c: &mut Criterion) {
             acc
         })
     });
-    c.bench_function(&format!("kebd/{}/{}", M::NAME, T::NAME), |b| {
+    c.bench_function(&format!("kebd/{id}"), |b| {
         b.iter(|| {
             let mut acc = T::ZERO;
             for &p in black_box(&ps) {
@@ -111,6 +118,8 @@ fn all(c: &mut Criterion) {
     ours::<f32, Theta>(c);
     ours::<f32, Table>(c);
     ellip_f32(c);
+    #[cfg(feature = "micromath")]
+    ours_as::<f32, contensou::elliptic::ThetaMicromath>(c, "theta_micromath_f32");
 }
 
 criterion_group! {

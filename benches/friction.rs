@@ -6,6 +6,9 @@
 //! ```text
 //! cargo bench --bench friction
 //! ```
+//!
+//! With `--features micromath` also `friction/<law>_micromath_f32` for simplified, ellipsoid,
+//! coulomb and best (per call); their errors are in bench-results/micromath.md.
 use std::fmt::Write as _;
 use std::hint::black_box;
 use std::path::PathBuf;
@@ -39,11 +42,13 @@ fn run<T: Real, L: FrictionLaw>(k: &Constants<T>, set: &[SlipState<T>]) -> T {
 }
 
 fn bench_law<T: Real, L: FrictionLaw>(c: &mut Criterion) {
+    bench_law_as::<T, L>(c, &format!("friction/{}-{}", L::NAME, T::NAME));
+}
+
+fn bench_law_as<T: Real, L: FrictionLaw>(c: &mut Criterion, id: &str) {
     let k = Constants::from_parameter(Parameter::new(T::from_f64(0.5)).unwrap());
     let set = inputs::<T>();
-    c.bench_function(&format!("friction/{}-{}", L::NAME, T::NAME), |b| {
-        b.iter(|| run::<T, L>(&k, black_box(&set)))
-    });
+    c.bench_function(id, |b| b.iter(|| run::<T, L>(&k, black_box(&set))));
 }
 
 /// `best` per contact ([`BestContact`], constants built once outside the loop).
@@ -179,6 +184,16 @@ fn main() {
     bench_best::<f64>(&mut c);
     bench_law::<f32, Best>(&mut c);
     bench_law::<f64, Best>(&mut c);
+    #[cfg(feature = "micromath")]
+    {
+        use contensou::friction::{
+            BestMicromath, CoulombMicromath, EllipsoidMicromath, SimplifiedMicromath,
+        };
+        bench_law_as::<f32, SimplifiedMicromath>(&mut c, "friction/simplified_micromath_f32");
+        bench_law_as::<f32, EllipsoidMicromath>(&mut c, "friction/ellipsoid_micromath_f32");
+        bench_law_as::<f32, CoulombMicromath>(&mut c, "friction/coulomb_micromath_f32");
+        bench_law_as::<f32, BestMicromath>(&mut c, "friction/best_micromath_f32");
+    }
     c.final_summary();
 
     let exact: Vec<(f64, f64, f64, Traction<f64>)> = {

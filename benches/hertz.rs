@@ -1,7 +1,8 @@
 //! criterion: Hertz normal contact per step (geometry precomputed), per step with the
 //! eccentricity from g every step (table; fitted law), and construction (Newton, linear,
 //! Hamrock–Dowson) — f32 and f64. Short runs; figures go to bench-results/hertz.md via
-//! `cargo run --release --example hertz_report`.
+//! `cargo run --release --example hertz_report`. With `--features micromath` also
+//! `hertz/per_step_micromath_f32` and `hertz/shape_hamrock-dowson_micromath_f32`.
 use std::hint::black_box;
 use std::time::Duration;
 
@@ -21,17 +22,23 @@ fn inputs<T: Real>() -> (T, T, Modulus<T>, [T; 4]) {
     )
 }
 
-fn per_step<T: Real>(c: &mut Criterion) {
-    let (p, q, estar, hs) = inputs::<T>();
-    let curv = Curvatures::new(p, q).unwrap();
-    let law = Hertz::new::<Newton>(&curv, estar).unwrap();
+/// `law.patch(h)` over the four approaches, as benchmark `id`.
+fn patch<T: Real, L: NormalLaw<T>>(c: &mut Criterion, id: &str, law: L, hs: [T; 4]) {
     let mut i = 0;
-    c.bench_function(&format!("hertz/per_step/{}", T::NAME), |b| {
+    c.bench_function(id, |b| {
         b.iter(|| {
             i = (i + 1) & 3;
             black_box(law.patch(black_box(hs[i])))
         })
     });
+}
+
+fn per_step<T: Real>(c: &mut Criterion) {
+    let (p, q, estar, hs) = inputs::<T>();
+    let curv = Curvatures::new(p, q).unwrap();
+    let law = Hertz::new::<Newton>(&curv, estar).unwrap();
+    patch(c, &format!("hertz/per_step/{}", T::NAME), law, hs);
+    let mut i = 0;
     let curvs = [0.0305, 0.045, 0.2, 0.7].map(|g| Curvatures::new(p, p / T::from_f64(g)).unwrap());
     c.bench_function(&format!("hertz/table_each_step/{}", T::NAME), |b| {
         b.iter(|| {
@@ -51,9 +58,13 @@ fn per_step<T: Real>(c: &mut Criterion) {
 }
 
 fn construct<T: Real, M: Eccentricity>(c: &mut Criterion) {
+    construct_as::<T, M>(c, &format!("hertz/shape_{}/{}", M::NAME, T::NAME));
+}
+
+fn construct_as<T: Real, M: Eccentricity>(c: &mut Criterion, id: &str) {
     let gs = [0.0305, 0.045, 0.2, 0.7].map(|g| Ratio::new(T::from_f64(g)).unwrap());
     let mut i = 0;
-    c.bench_function(&format!("hertz/shape_{}/{}", M::NAME, T::NAME), |b| {
+    c.bench_function(id, |b| {
         b.iter(|| {
             i = (i + 1) & 3;
             black_box(M::shape(black_box(gs[i])))
@@ -72,6 +83,20 @@ fn benches(c: &mut Criterion) {
     construct::<f64, Linear>(c);
     construct::<f32, HamrockDowson>(c);
     construct::<f64, HamrockDowson>(c);
+    #[cfg(feature = "micromath")]
+    {
+        use contensou::normal::HertzMicromath;
+        let (p, q, estar, hs) = inputs::<f32>();
+        let law = Hertz::new::<Newton>(&Curvatures::new(p, q).unwrap(), estar).unwrap();
+        patch(
+            c,
+            "hertz/per_step_micromath_f32",
+            HertzMicromath::from(law),
+            hs,
+        );
+        let id = "hertz/shape_hamrock-dowson_micromath_f32";
+        construct_as::<f32, contensou::shape::HamrockDowsonMicromath>(c, id);
+    }
 }
 
 criterion_group! {

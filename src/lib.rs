@@ -47,6 +47,7 @@ pub mod error;
 pub mod friction;
 pub mod geometry;
 mod hw_sqrt;
+pub mod math;
 pub mod normal;
 pub mod real;
 #[cfg(feature = "scenes")]

@@ -43,6 +43,7 @@ mod fit_data;
 
 use crate::error::finite;
 use crate::geometry::{Curvatures, positive};
+use crate::math::{Backend, Libm};
 use crate::shape::{Eccentricity, Ratio, Shape};
 use crate::{Error, Real};
 
@@ -353,10 +354,23 @@ impl<T: Real> Hertz<T> {
 impl<T: Real> NormalLaw<T> for Hertz<T> {
     #[inline]
     fn patch(&self, h: T) -> Patch<T> {
+        self.patch_with::<Libm>(h)
+    }
+
+    #[inline(always)]
+    fn stiffness(&self) -> T {
+        self.k_h
+    }
+}
+
+impl<T: Real> Hertz<T> {
+    /// [`NormalLaw::patch`] with √h from the backend `B`.
+    #[inline(always)]
+    fn patch_with<B: Backend>(&self, h: T) -> Patch<T> {
         if !positive(h) {
             return Patch::empty(self.e2, self.m1);
         }
-        let sh = h.sqrt();
+        let sh = B::sqrt(h);
         Patch {
             h,
             a: self.a_coef * sh,
@@ -367,10 +381,52 @@ impl<T: Real> NormalLaw<T> for Hertz<T> {
             m1: self.m1,
         }
     }
+}
 
+/// [`Hertz`] with the per-step √h from micromath (feature `micromath`; `f32` only, libm for
+/// `f64`): a = a′√h, b = b′√h, N = k_H·h·√h, p0 = p0′√h with micromath's bit-shift square root.
+/// Built like [`Hertz`] ([`HertzMicromath::new`]) or from one (`HertzMicromath::from(law)`),
+/// whose constants it keeps.
+///
+/// Domain: every h (h ≤ 0 → [`Patch::empty`]); `f64` is [`Hertz`]. micromath's √h is never
+/// below the true root and at most 6.07 % above it (exact at h = 4ᵏ), so a, b, p0 and N are
+/// biased high by that factor. Measured max relative error of a, b, N, p0 (`f32`, Newton
+/// constants, tools/data/hertz_ref.csv; and N over h ∈ [1e-12, 1] m; asserted by
+/// host-tests/micromath.rs): **6.1e-2** (median 1.5e-2; [`Hertz`] 5.0e-7). Cost per
+/// [`NormalLaw::patch`]: M4F **32** instructions (`f32`; [`Hertz`] 36: the bit trick is
+/// inlined, `vsqrt.f32` is a call), host ≈ 9–12 ns.
+#[cfg(feature = "micromath")]
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct HertzMicromath<T>(Hertz<T>);
+
+#[cfg(feature = "micromath")]
+impl<T: Real> HertzMicromath<T> {
+    /// As [`Hertz::new`]: built with the eccentricity method `M`. Errors:
+    /// [`Error::CurvatureRatioOutOfRange`] if P/Q < 1e-4.
+    pub fn new<M: Eccentricity>(
+        curvatures: &Curvatures<T>,
+        estar: Modulus<T>,
+    ) -> Result<Self, Error> {
+        Hertz::new::<M>(curvatures, estar).map(HertzMicromath)
+    }
+}
+
+#[cfg(feature = "micromath")]
+impl<T: Real> From<Hertz<T>> for HertzMicromath<T> {
+    fn from(law: Hertz<T>) -> Self {
+        HertzMicromath(law)
+    }
+}
+
+#[cfg(feature = "micromath")]
+impl<T: Real> NormalLaw<T> for HertzMicromath<T> {
+    #[inline]
+    fn patch(&self, h: T) -> Patch<T> {
+        self.0.patch_with::<crate::math::Micromath>(h)
+    }
     #[inline(always)]
     fn stiffness(&self) -> T {
-        self.k_h
+        self.0.k_h
     }
 }
 

@@ -44,6 +44,9 @@ probes="$(arm-none-eabi-nm -C "$elf" | grep -c 'contensou_nopanic::.*probe_')"
 # probes! entries, plus four per law_probes! line; each in f32 and f64
 laws="$(grep -cE '^\s+[A-Za-z]+: probe_tangential_' src/main.rs)"
 expected=$((2 * ($(grep -cE '^\s+fn probe_[a-z_]+<T>' src/main.rs) + 4 * laws)))
+# the micromath twins' probes (`*_mm`) are instantiated in f32 only
+mm=$(($(grep -cE '^\s+fn probe_[a-z_]+_mm<T>' src/main.rs) + 4 * $(grep -cE '^\s+[A-Za-z]+: probe_tangential_[a-z_]+_mm,' src/main.rs)))
+expected=$((expected - mm))
 if ((probes != expected)); then
     echo "NO-PANIC PROOF VACUOUS: $probes probe instances in the image, expected $expected" >&2
     exit 1

@@ -4,11 +4,17 @@
 //!   argument and result moves) that every row includes.
 //! - `vsqrt`: `Real::sqrt` for `f32`, the crate's hardware-sqrt shim (`vsqrt.f32`).
 //! - `libm`: `libm::sqrtf`, the software square root the shim replaces.
+//! - `ln-libm`, `exp-libm`: `Real::ln`, `Real::exp` for `f32` (libm's `logf`, `expf`).
+//! - `sqrt-micromath`, `ln-micromath`, `exp-micromath`: the same through
+//!   `contensou::math::Micromath` (feature `micromath`).
+//! - `ln-raw-micromath`: micromath's own `ln` (the backend keeps its argument ≥ 1).
 //!
-//! Inputs: the 32 values x_i = (1 + 0.093 i)·2^(i−16), i = 0..31 (1.5e-5 … 1.7e4).
+//! Inputs: the 32 values x_i = (1 + 0.093 i)·2^(i−16), i = 0..31 (1.5e-5 … 1.7e4); for `exp`
+//! their logarithms (−11.1 … 9.7).
 
 use crate::harness::Runner;
 use contensou::Real;
+use contensou::math::{Backend, Micromath};
 
 fn inputs() -> [f32; 32] {
     let mut scale = 1.0 / 65536.0f32;
@@ -34,9 +40,46 @@ fn sqrt_libm(x: f32) -> f32 {
     libm::sqrtf(x)
 }
 
+#[inline(never)]
+fn ln_libm(x: f32) -> f32 {
+    Real::ln(x)
+}
+
+#[inline(never)]
+fn exp_libm(x: f32) -> f32 {
+    Real::exp(x)
+}
+
+#[inline(never)]
+fn sqrt_micromath(x: f32) -> f32 {
+    Micromath::sqrt(x)
+}
+
+#[inline(never)]
+fn ln_micromath(x: f32) -> f32 {
+    Micromath::ln(x)
+}
+
+#[inline(never)]
+fn ln_raw_micromath(x: f32) -> f32 {
+    micromath::F32(x).ln().0
+}
+
+#[inline(never)]
+fn exp_micromath(x: f32) -> f32 {
+    Micromath::exp(x)
+}
+
 pub fn run(r: &Runner) {
     let xs = inputs();
     r.bench("core", "call", "f32", &xs, call);
     r.bench("core", "vsqrt", "f32", &xs, sqrt_vsqrt);
     r.bench("core", "libm", "f32", &xs, sqrt_libm);
+    let logs = xs.map(libm::logf);
+    r.bench("core", "ln-libm", "f32", &xs, ln_libm);
+    r.bench("core", "exp-libm", "f32", &logs, exp_libm);
+    r.bench("core", "sqrt-micromath", "f32", &xs, sqrt_micromath);
+    r.bench("core", "ln-micromath", "f32", &xs, ln_micromath);
+    r.bench("core", "exp-micromath", "f32", &logs, exp_micromath);
+    r.bench("core", "ln-raw-micromath", "f32", &xs, ln_raw_micromath);
 }

@@ -39,4 +39,6 @@ pub fn run(r: &Runner) {
     method::<Agm>(r);
     method::<Theta>(r);
     method::<Table>(r);
+    // micromath twins: f32 only (their f64 is libm, identical to the row above).
+    r.bench("elliptic", ThetaMicromath::NAME, f32::NAME, &inputs::<f32>(), integrals::<ThetaMicromath, f32>);
 }

@@ -147,6 +147,12 @@ pub fn run(r: &Runner) {
     from_integrals::<f64>(r);
     best::<f32>(r);
     best::<f64>(r);
+    // micromath twins: f32 only (their f64 is libm). `best-micromath` is the per-call form,
+    // to compare with `best-varying`.
+    law::<f32, SimplifiedMicromath>(r);
+    law::<f32, EllipsoidMicromath>(r);
+    law::<f32, CoulombMicromath>(r);
+    law::<f32, BestMicromath>(r);
 }
 
 fn for_both<L: FrictionLaw>(r: &Runner) {

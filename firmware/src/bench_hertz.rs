@@ -14,8 +14,10 @@
 use crate::harness::Runner;
 use contensou::Real;
 use contensou::geometry::Curvatures;
-use contensou::normal::{Fitted, Hertz, Modulus, NormalLaw, Patch};
-use contensou::shape::{Eccentricity, HamrockDowson, Linear, Newton, Ratio, Shape, Table};
+use contensou::normal::{Fitted, Hertz, HertzMicromath, Modulus, NormalLaw, Patch};
+use contensou::shape::{
+    Eccentricity, HamrockDowson, HamrockDowsonMicromath, Linear, Newton, Ratio, Shape, Table,
+};
 
 const N: usize = 16;
 
@@ -31,6 +33,11 @@ fn case<T: Real>(k: usize) -> (Curvatures<T>, Modulus<T>, T) {
 
 #[inline(never)]
 fn per_step<T: Real>(x: (Hertz<T>, T)) -> Patch<T> {
+    x.0.patch(x.1)
+}
+
+#[inline(never)]
+fn per_step_micromath<T: Real>(x: (HertzMicromath<T>, T)) -> Patch<T> {
     x.0.patch(x.1)
 }
 
@@ -69,7 +76,23 @@ fn precision<T: Real>(r: &Runner) {
     r.bench("hertz", "shape_newton", T::NAME, &gs, shape::<Newton, T>);
 }
 
+/// The micromath twins (f32 only: their f64 is libm).
+fn micromath(r: &Runner) {
+    let cases: [(Curvatures<f32>, Modulus<f32>, f32); N] = core::array::from_fn(case::<f32>);
+    let laws: [(HertzMicromath<f32>, f32); N] = core::array::from_fn(|k| {
+        let (curv, estar, h) = cases[k];
+        let law = Hertz::new::<Newton>(&curv, estar).expect("g in the domain");
+        (HertzMicromath::from(law), h)
+    });
+    let gs: [Ratio<f32>; N] =
+        core::array::from_fn(|k| Ratio::of(&cases[k].0).expect("g in the domain"));
+    r.bench("hertz", "per_step-micromath", "f32", &laws, per_step_micromath::<f32>);
+    let name = "shape_hamrock-dowson-micromath";
+    r.bench("hertz", name, "f32", &gs, shape::<HamrockDowsonMicromath, f32>);
+}
+
 pub fn run(r: &Runner) {
     precision::<f32>(r);
     precision::<f64>(r);
+    micromath(r);
 }

@@ -17,17 +17,19 @@ use core::hint::black_box;
 
 use contensou::Real;
 use contensou::contact::{Contact, VaryingContact};
-use contensou::elliptic::{self, Agm, Method, Parameter, Theta};
+use contensou::elliptic::{self, Agm, Method, Parameter, Theta, ThetaMicromath};
 use contensou::friction::{
-    self, Best, Constants, Coulomb, Ellipsoid, Exact, Explicit, Friction, FrictionLaw, Pade,
-    Simplified, Slip, SlipState,
+    self, Best, BestMicromath, Constants, Coulomb, CoulombMicromath, Ellipsoid, EllipsoidMicromath,
+    Exact, Explicit, Friction, FrictionLaw, Pade, Simplified, SimplifiedMicromath, Slip, SlipState,
 };
 use contensou::geometry::{Curvatures, Principal, Race};
 use contensou::normal::{
-    CompressionDamping, Damping, Fitted, Hertz, HuntCrossley, Material, Modulus, NormalLaw,
-    Undamped, Volumetric,
+    CompressionDamping, Damping, Fitted, Hertz, HertzMicromath, HuntCrossley, Material, Modulus,
+    NormalLaw, Undamped, Volumetric,
 };
-use contensou::shape::{self, Eccentricity, HamrockDowson, Linear, Newton, Ratio};
+use contensou::shape::{
+    self, Eccentricity, HamrockDowson, HamrockDowsonMicromath, Linear, Newton, Ratio,
+};
 use cortex_m_rt::entry;
 
 #[cfg(not(feature = "locate"))]
@@ -268,6 +270,43 @@ mod api {
     }
 }
 
+/// The micromath twins (feature `micromath`): `f32` only. Their `f64` is libm, the same code as
+/// their libm twins' (the linker folds such probes into one symbol), already probed above.
+/// tools/no-panic.sh counts the probes named `*_mm` once.
+mod mm_laws {
+    use super::*;
+
+    law_probes! {
+    SimplifiedMicromath: probe_tangential_simplified_mm, probe_core_simplified_mm, probe_contact_wrench_simplified_mm, probe_varying_wrench_simplified_mm;
+    EllipsoidMicromath: probe_tangential_ellipsoid_mm, probe_core_ellipsoid_mm, probe_contact_wrench_ellipsoid_mm, probe_varying_wrench_ellipsoid_mm;
+    CoulombMicromath: probe_tangential_coulomb_mm, probe_core_coulomb_mm, probe_contact_wrench_coulomb_mm, probe_varying_wrench_coulomb_mm;
+    BestMicromath: probe_tangential_best_mm, probe_core_best_mm, probe_contact_wrench_best_mm, probe_varying_wrench_best_mm;
+    }
+
+    pub(crate) fn run() {
+        run_all::<f32>();
+    }
+}
+
+mod mm_api {
+    use super::*;
+
+    probes! {
+        fn probe_integrals_theta_mm<T>(m1) { Parameter::from_complement(m1).map(ThetaMicromath::integrals) }
+        fn probe_shape_hamrock_dowson_mm<T>(g) { Ratio::new(g).map(HamrockDowsonMicromath::shape) }
+        fn probe_hertz_mm<T>(p, q, e, h, hdot, cd) {
+            let (Ok(c), Ok(e), Ok(hc)) = (Curvatures::new(p, q), Modulus::new(e), HuntCrossley::new(cd))
+            else { return };
+            let Ok(law) = HertzMicromath::new::<Newton>(&c, e) else { return };
+            (law.patch(h), law.damped_patch(h, hdot, &hc), HertzMicromath::from(Hertz::circular(c.p(), e)).patch(h))
+        }
+    }
+
+    pub(crate) fn run() {
+        run_all::<f32>();
+    }
+}
+
 /// `--features canary`: a probe that can panic (an unchecked slice index), to show that the
 /// proof detects one (`tools/no-panic.sh` requires this build to fail).
 #[cfg(feature = "canary")]
@@ -285,6 +324,8 @@ fn main() -> ! {
     run_all::<f64>();
     api::run::<f32>();
     api::run::<f64>();
+    mm_laws::run();
+    mm_api::run();
     loop {
         core::hint::spin_loop();
     }

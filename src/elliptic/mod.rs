@@ -64,6 +64,8 @@ mod theta;
 
 pub use agm::Agm;
 pub use table::Table;
+#[cfg(feature = "micromath")]
+pub use theta::ThetaMicromath;
 pub use theta::{Theta, ThetaTerms, paper_k_e};
 
 use crate::{Error, Real};

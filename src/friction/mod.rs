@@ -48,6 +48,11 @@ pub use pade::Pade;
 pub use reference::Exact;
 pub use simplified::Simplified;
 pub use slip::{Slip, SlipState};
+#[cfg(feature = "micromath")]
+pub use {
+    best::BestMicromath, coulomb::CoulombMicromath, ellipsoid::EllipsoidMicromath,
+    simplified::SimplifiedMicromath,
+};
 
 /// Dimensionless friction on body B from body A: `fx`, `fy` in units of fN, `tz` in units of
 /// fNa (a = major semi-axis). Contact frame: x along the major axis.
