@@ -159,6 +159,13 @@ pub fn hertz_newton<T: Real>(r: &Refs) -> Vec<Vec<f64>> {
     hertz_rows::<T, _>(r, false, |c, e| Hertz::new::<Newton>(c, e).ok())
 }
 
+/// As [`hertz_newton`], the per-step square root by micromath (feature `micromath`).
+#[cfg(feature = "micromath")]
+pub fn hertz_newton_micromath<T: Real>(r: &Refs) -> Vec<Vec<f64>> {
+    use contensou::normal::HertzMicromath;
+    hertz_rows::<T, _>(r, false, |c, e| HertzMicromath::new::<Newton>(c, e).ok())
+}
+
 /// e² by table from g every step (`Hertz::from_shape`).
 pub fn hertz_table_each_step<T: Real>(r: &Refs) -> Vec<Vec<f64>> {
     hertz_rows::<T, _>(r, false, |c, e| {

@@ -216,7 +216,9 @@ pub fn pareto(
     };
     for ((label, a, b), &(px, py)) in mapped.iter().zip(&pixel) {
         let on_front = front.iter().any(|&(fa, fb)| fa == *a && fb == *b);
-        let c = if label.ends_with("f32") {
+        let c = if label.contains("micromath") {
+            colour(2)
+        } else if label.ends_with("f32") {
             colour(0)
         } else {
             colour(1)
@@ -248,7 +250,13 @@ pub fn pareto(
                 + Text::new(label.clone(), (dx, dy), (FONT, 13)),
         ))?;
     }
-    for (name, c) in [("f32", colour(0)), ("f64", colour(1))] {
+    let micromath = mapped.iter().any(|p| p.0.contains("micromath"));
+    let kinds = [
+        ("f32", colour(0)),
+        ("f64", colour(1)),
+        ("f32, micromath backend", colour(2)),
+    ];
+    for &(name, c) in kinds.iter().take(if micromath { 3 } else { 2 }) {
         chart
             .draw_series(std::iter::empty::<Circle<(f64, f64), i32>>())?
             .label(name)

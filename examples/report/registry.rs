@@ -128,7 +128,8 @@ macro_rules! m {
 
 /// Every method × precision the report measures.
 pub fn methods() -> Vec<Method> {
-    vec![
+    #[allow(unused_mut)]
+    let mut all = vec![
         m!("elliptic", "agm", ELLIPTIC, elliptic::<f32, Agm>),
         m!("elliptic", "agm", ELLIPTIC, elliptic::<f64, Agm>),
         m!("elliptic", "theta", ELLIPTIC, elliptic::<f32, Theta>),
@@ -252,6 +253,65 @@ pub fn methods() -> Vec<Method> {
             "table_each_step-best",
             WRENCH,
             wrench_varying::<f64, Best>
+        ),
+    ];
+    #[cfg(feature = "micromath")]
+    all.extend(micromath());
+    all
+}
+
+/// The micromath twins (feature `micromath`; f32 only: their f64 is the libm method).
+#[cfg(feature = "micromath")]
+fn micromath() -> Vec<Method> {
+    use contensou::elliptic::ThetaMicromath;
+    use contensou::friction::{
+        BestMicromath, CoulombMicromath, EllipsoidMicromath, SimplifiedMicromath,
+    };
+    use contensou::shape::HamrockDowsonMicromath;
+
+    use crate::measure::hertz_newton_micromath;
+    vec![
+        m!(
+            "elliptic",
+            "theta-micromath",
+            ELLIPTIC,
+            elliptic::<f32, ThetaMicromath>
+        ),
+        m!(
+            "hertz",
+            "shape_hamrock-dowson-micromath",
+            ECCENTRICITY,
+            shape::<f32, HamrockDowsonMicromath>
+        ),
+        m!(
+            "hertz",
+            "per_step-micromath",
+            NORMAL,
+            hertz_newton_micromath::<f32>
+        ),
+        m!(
+            "friction",
+            "simplified-micromath",
+            FRICTION,
+            law_prepared::<f32, SimplifiedMicromath>
+        ),
+        m!(
+            "friction",
+            "ellipsoid-micromath",
+            FRICTION,
+            law_prepared::<f32, EllipsoidMicromath>
+        ),
+        m!(
+            "friction",
+            "coulomb-micromath",
+            FRICTION,
+            law_prepared::<f32, CoulombMicromath>
+        ),
+        m!(
+            "friction",
+            "best-micromath",
+            FRICTION,
+            law_per_call::<f32, BestMicromath>
         ),
     ]
 }
