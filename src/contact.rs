@@ -122,6 +122,34 @@ impl<T: Real, D: Damping<T>, L: FrictionLaw> Contact<T, Hertz<T>, D, L> {
     }
 }
 
+impl<T: Real, D: Damping<T>, L: FrictionLaw> Contact<T, Hertz<T>, D, L> {
+    /// A circular patch (P = Q: sphere on plane, sphere on sphere, ball in a spherical cup)
+    /// built with no eccentricity method at all: [`Hertz::circular`] + [`Constants::circle`].
+    /// Unlike [`Contact::hertz`], whose circle test is a runtime branch (so the elliptic code
+    /// is still linked), nothing of [`crate::elliptic`] or [`crate::shape`]'s solvers is
+    /// reachable from here: the firmware size probe `scene,sphere-plane-*` links no AGM,
+    /// theta, elliptic table or shape table (see [`crate::select`]).
+    ///
+    /// Exact Hertz (a = b = √(Rh), N = (4/3)E*√R·h^{3/2}, R = 1/(2P)). Errors:
+    /// [`Error::CurvatureRatioOutOfRange`] if P ≠ Q (the patch is not a circle).
+    pub fn circular(
+        curvatures: &Curvatures<T>,
+        estar: Modulus<T>,
+        damping: D,
+        friction: Friction<T, L>,
+    ) -> Result<Self, Error> {
+        if curvatures.p() != curvatures.q() {
+            return Err(Error::CurvatureRatioOutOfRange);
+        }
+        Ok(Self::from_parts(
+            Hertz::circular(curvatures.p(), estar),
+            damping,
+            friction,
+            Constants::circle(),
+        ))
+    }
+}
+
 impl<T: Real, N: NormalLaw<T>, D: Damping<T>, L: FrictionLaw> Contact<T, N, D, L> {
     /// From parts built separately — e.g. the volumetric or fitted normal law with the friction
     /// constants of the shape it stands for ([`Constants::circle`] for a circular law). The

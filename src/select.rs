@@ -1,0 +1,266 @@
+//! Compile-time model selection: declare what a scene has, get the cheapest adequate contact
+//! type — and link nothing else.
+//!
+//! A scene is described by five types in [`Scene`]`<P, G, S, B, T>`:
+//!
+//! | parameter | choices | meaning |
+//! |---|---|---|
+//! | `P` patch | [`Circular`], [`Elliptic`] | P = Q (sphere on plane or sphere) or P < Q |
+//! | `G` geometry | [`Fixed`], [`Varying`] | curvatures fixed for the contact's life, or new every step |
+//! | `S` motion | [`Spin`], [`NoSpin`] | relative spin ω about the normal present, or always 0 |
+//! | `B` budget | [`Coarse`], [`ExactGrade`] | friction error bound (below) |
+//! | `T` precision | `f32`, `f64` | [`Real`] |
+//!
+//! [`Select`] resolves it to a law ([`LawOf`]) and a contact type ([`ContactOf`]), and
+//! [`Select::build`] constructs it from the geometry kind's input. Everything is decided by
+//! types: a firmware that uses one configuration links only that configuration's code.
+//!
+//! ```
+//! use contensou::friction::Friction;
+//! use contensou::geometry::Curvatures;
+//! use contensou::normal::{Modulus, Undamped};
+//! use contensou::select::{Circular, Coarse, Fixed, Scene, Select, Spin};
+//!
+//! // A 6.35 mm steel ball spinning on a steel plane, friction within 0.25 fN / 0.15 fNa.
+//! type Ball = Scene<Circular, Fixed, Spin, Coarse, f32>;
+//! let contact = Ball::build(
+//!     &Curvatures::sphere_plane(6.35e-3)?,
+//!     Modulus::new(1.15e11)?,
+//!     Undamped,
+//!     Friction::new(0.1, 0.0)?,
+//! )?;
+//! let w = contact.wrench(1e-6, 0.0, contensou::friction::Slip::new(0.01, 0.0, 50.0)?);
+//! assert!(w.n > 0.0 && w.fx < 0.0 && w.tz < 0.0);
+//! # Ok::<(), contensou::Error>(())
+//! ```
+//!
+//! # What is chosen
+//!
+//! - **Normal law.** [`Circular`] + [`Fixed`]: [`Hertz::circular`] + [`crate::friction::Constants::circle`]
+//!   through [`Contact::circular`] — closed forms, **no elliptic integral, no eccentricity
+//!   solver, no table is linked** (checked on the firmware's size probe: no `elliptic::` or
+//!   `shape::` symbol). [`Elliptic`] + [`Fixed`]: exact Hertz with the eccentricity solved once
+//!   by [`Newton`] at construction ([`Contact::hertz`]); per step only a square root and the
+//!   friction law. [`Elliptic`] + [`Varying`]: [`VaryingContact`], the shape from
+//!   [`crate::shape::Table`] every step (fixed cost, no elliptic integral per step). The
+//!   normal force and semi-axes are exact-grade in every configuration (relative error
+//!   ≤ [`NORMAL_BOUND`]); `Circular` + `Varying` is not offered (a circle's shape cannot vary;
+//!   a changing radius is the `Elliptic` + `Varying` contact at P = Q).
+//! - **Friction law.** [`NoSpin`]: [`Coulomb`] at every budget — with ω = 0 the
+//!   Contensou–Erismann integrals reduce exactly to F = −fN·v_P/|v_P|, T_z = 0 (the exact
+//!   law's pure-translation limit), which is Coulomb's law for δ = 0 (its g_δ ramp below δ is
+//!   the regularization, a modelling choice, not an error). [`Spin`]: the budget's law,
+//!   [`Budget::SpinLaw`]:
+//!   - [`Coarse`] (≤ 0.25 fN, ≤ 0.15 fNa) → [`Ellipsoid`] (measured 0.227 fN, 0.134 fNa
+//!     over e² ∈ [0, 0.99]; 34 M4F instructions). The paper's [`crate::friction::Simplified`]
+//!     (0.393 fN / 0.354 fNa, 66 instructions) is dominated by it in error *and* cost, so no
+//!     budget selects it; build `Contact<_, _, _, Simplified>` directly to reproduce the paper.
+//!     The ellipsoidal law ignores δ (Coulomb's sign law at ω = 0).
+//!   - [`ExactGrade`] (≤ 5e-4 fN, ≤ 5e-4 fNa) → [`Best`] (measured 5.2e-5 fN / 4.1e-6 fNa in
+//!     the per-contact form a [`Fixed`] contact precomputes, 2.0e-6 / 8.7e-7 per call for
+//!     [`Varying`]).
+//!
+//! The friction bounds hold for patches with e² ≤ 0.99 (g = P/Q ≥ 0.0274); beyond that both
+//! laws degrade (see [`Best`]'s and [`Ellipsoid`]'s docs).
+//!
+//! # The table
+//!
+//! Per step (h, ḣ, v_P, ω → N, F, T_z), measured by `tools/scene-bench.sh` into
+//! `bench-results/scenes.csv`: M4F instructions per step (QEMU, stage `scene`, the 64-state
+//! mixed set of the `wrench` stage), flash bytes the configuration adds to an empty firmware
+//! (construction + step, size probe), and the max error against exact Hertz (f64 [`Newton`])
+//! + [`crate::friction::exact`] (N relative; F in fN; T_z in fNa) on the host.
+//!
+//! SCENE-TABLE
+//!
+//! # Extending
+//!
+//! A budget is a type implementing [`Budget`]: its bounds and the cheapest law measured to
+//! meet them. MICROMATH: the `micromath` backend (feature `micromath`, `f32` only) will plug
+//! in here as a further budget (or as `Coarse`'s law when its measured error fits 0.25 fN /
+//! 0.15 fNa) once its laws are measured; nothing here depends on it yet.
+
+use core::marker::PhantomData;
+
+use crate::contact::{Contact, VaryingContact};
+use crate::friction::{Best, Coulomb, Ellipsoid, Friction, FrictionLaw};
+use crate::geometry::Curvatures;
+use crate::normal::{Damping, Hertz, Modulus};
+use crate::shape::Newton;
+use crate::{Error, Real};
+
+/// Relative error bound on N, a and b in every configuration (measured ≤ 7.6e-7 in `f32`,
+/// exact-grade in `f64`).
+pub const NORMAL_BOUND: f64 = 2e-6;
+
+/// Friction error bound (fN and fNa) without spin: [`Coulomb`] is the exact law there, so
+/// only rounding remains (measured ≤ 1.2e-7 in `f32`).
+pub const NOSPIN_BOUND: f64 = 1e-6;
+
+mod sealed {
+    pub trait Sealed {}
+}
+
+/// Patch kind: P = Q (sphere on plane, sphere on sphere). No elliptic code is linked.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Circular;
+/// Patch kind: P < Q, an elliptic patch.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Elliptic;
+/// Geometry: the curvatures are fixed (constants precomputed at construction).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Fixed;
+/// Geometry: the curvatures change every step (shape from a table per step).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Varying;
+/// Motion: the bodies spin relative to each other about the normal (ω ≠ 0).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Spin;
+/// Motion: ω = 0 always (pure sliding or rolling without spin): the plain Coulomb law is exact.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct NoSpin;
+/// Budget: friction within 0.25 fN in force and 0.15 fNa in torque.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Coarse;
+/// Budget: friction within 5e-4 fN in force and 5e-4 fNa in torque.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct ExactGrade;
+
+impl sealed::Sealed for Spin {}
+impl sealed::Sealed for NoSpin {}
+
+/// An error budget for the friction of a spinning contact: its bounds (max over e² ≤ 0.99,
+/// all slip directions and ratios, δ = 0, against the exact integrals) and the cheapest law
+/// measured to meet them.
+pub trait Budget {
+    /// Short name used in benchmark keys.
+    const NAME: &'static str;
+    /// Bound on |F − F_exact| in units of fN.
+    const FORCE: f64;
+    /// Bound on |T_z − T_exact| in units of fNa.
+    const TORQUE: f64;
+    /// The cheapest law within the bounds (measured instructions per call).
+    type SpinLaw: FrictionLaw;
+}
+
+impl Budget for Coarse {
+    const NAME: &'static str = "coarse";
+    const FORCE: f64 = 0.25;
+    const TORQUE: f64 = 0.15;
+    type SpinLaw = Ellipsoid;
+}
+
+impl Budget for ExactGrade {
+    const NAME: &'static str = "exact";
+    const FORCE: f64 = 5e-4;
+    const TORQUE: f64 = 5e-4;
+    type SpinLaw = Best;
+}
+
+// MICROMATH: a micromath-backed budget goes here (feature `micromath`, f32 only), e.g.
+// `#[cfg(feature = "micromath")] impl Budget for Micro { … type SpinLaw = <its law>; }`,
+// with bounds from its measured error — not assumed.
+
+/// Whether the contact spins: [`Spin`] takes the budget's law, [`NoSpin`] plain Coulomb.
+pub trait Motion: sealed::Sealed {
+    /// Short name used in benchmark keys.
+    const NAME: &'static str;
+    /// Whether ω ≠ 0 occurs.
+    const SPINS: bool;
+    /// The friction law for budget `B`.
+    type Law<B: Budget>: FrictionLaw;
+}
+
+impl Motion for Spin {
+    const NAME: &'static str = "spin";
+    const SPINS: bool = true;
+    type Law<B: Budget> = B::SpinLaw;
+}
+
+impl Motion for NoSpin {
+    const NAME: &'static str = "nospin";
+    const SPINS: bool = false;
+    type Law<B: Budget> = Coulomb;
+}
+
+/// A scene declaration: patch `P`, geometry `G`, motion `S`, budget `B`, precision `T`. A
+/// zero-sized marker; see [`Select`] and the [module docs](self).
+#[derive(Debug)]
+pub struct Scene<P, G, S, B, T>(PhantomData<Markers<P, G, S, B, T>>);
+
+/// The marker parameters, held by function pointer so that `Scene` is `Send + Sync + Copy`
+/// whatever they are.
+type Markers<P, G, S, B, T> = fn() -> (P, G, S, B, T);
+
+/// What a [`Scene`] resolves to.
+pub trait Select {
+    /// The precision.
+    type Real: Real;
+    /// The friction law chosen.
+    type Law: FrictionLaw;
+    /// What the constructor needs of the geometry: [`Curvatures`] for a fixed contact,
+    /// `()` for a varying one (its curvatures come with every step).
+    type Geometry;
+    /// The contact type chosen, for damping law `D`.
+    type Contact<D: Damping<Self::Real>>;
+    /// Short name of the geometry kind (benchmark keys): `sphere-plane`, `ball-race` or
+    /// `varying`; the key is `<GEOMETRY>-<Motion::NAME>[-<Budget::NAME>]`.
+    const GEOMETRY: &'static str;
+    /// Bound on the friction force error (fN).
+    const FORCE: f64;
+    /// Bound on the drilling torque error (fNa).
+    const TORQUE: f64;
+
+    /// Build the contact. Errors: those of the geometry kind's constructor
+    /// ([`Contact::circular`], [`Contact::hertz`]; a varying contact cannot fail).
+    fn build<D: Damping<Self::Real>>(
+        geometry: &Self::Geometry,
+        estar: Modulus<Self::Real>,
+        damping: D,
+        friction: Friction<Self::Real, Self::Law>,
+    ) -> Result<Self::Contact<D>, Error>;
+}
+
+/// The friction law a scene resolves to.
+pub type LawOf<S> = <S as Select>::Law;
+/// The contact type a scene resolves to, with damping law `D` (default [`Undamped`](crate::normal::Undamped)).
+pub type ContactOf<S, D = crate::normal::Undamped> = <S as Select>::Contact<D>;
+
+/// One [`Select`] impl per geometry kind: patch, geometry, key name, constructor input, contact
+/// type (with `$d` its damping law and `L` the resolved law) and the constructor body.
+macro_rules! select {
+    ($p:ty, $g:ty, $name:literal, $geometry:ty,
+     |$d:ident| $contact:ty,
+     |$geo:pat_param, $estar:ident, $damping:ident, $friction:ident| $build:expr) => {
+        impl<S: Motion, B: Budget, T: Real> Select for Scene<$p, $g, S, B, T> {
+            type Real = T;
+            type Law = S::Law<B>;
+            type Geometry = $geometry;
+            type Contact<$d: Damping<T>> = $contact;
+            const GEOMETRY: &'static str = $name;
+            const FORCE: f64 = if S::SPINS { B::FORCE } else { NOSPIN_BOUND };
+            const TORQUE: f64 = if S::SPINS { B::TORQUE } else { NOSPIN_BOUND };
+
+            fn build<$d: Damping<T>>(
+                $geo: &$geometry,
+                $estar: Modulus<T>,
+                $damping: $d,
+                $friction: Friction<T, Self::Law>,
+            ) -> Result<Self::Contact<$d>, Error> {
+                $build
+            }
+        }
+    };
+}
+
+select!(Circular, Fixed, "sphere-plane", Curvatures<T>,
+    |D| Contact<T, Hertz<T>, D, S::Law<B>>,
+    |curvatures, estar, damping, friction| Contact::circular(curvatures, estar, damping, friction));
+
+select!(Elliptic, Fixed, "ball-race", Curvatures<T>,
+    |D| Contact<T, Hertz<T>, D, S::Law<B>>,
+    |curvatures, estar, damping, friction| Contact::hertz::<Newton>(curvatures, estar, damping, friction));
+
+select!(Elliptic, Varying, "varying", (),
+    |D| VaryingContact<T, D, S::Law<B>>,
+    |_, estar, damping, friction| Ok(VaryingContact::new(estar, damping, friction)));
