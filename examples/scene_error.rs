@@ -1,8 +1,9 @@
 //! Max error of every `contensou::select` scene configuration against the exact references
 //! (f64 Newton Hertz + the exact Contensou–Erismann integrals), on a dense grid: 40 ratios u
 //! per decade in [1e-2, 1e2] plus u = 0 and ∞, 19 directions ψ, 3 approaches h, 3–11
-//! geometries per kind. Prints `scene,precision,n_rel,a_rel,force_fn,torque_fna` (read by
-//! `tools/scene-bench.sh`). Run: `cargo run --release --example scene_error`.
+//! geometries per kind. Prints CSV (read by `tools/scene-bench.sh`): `scene,precision,
+//! contact,normal,law,n_rel,a_rel,force_fn,torque_fna,force_bound_fn,torque_bound_fna`.
+//! Run: `cargo run --release --example scene_error`.
 
 use contensou::select::*;
 
@@ -20,7 +21,17 @@ macro_rules! scenes {
                 } else {
                     format!("{}-nospin", $kind)
                 };
-                println!("{key},{},{:.2e},{:.2e},{:.2e},{:.2e}", T::NAME, e[0], e[1], e[2], e[3]);
+                let (contact, normal) = match S::<T>::GEOMETRY {
+                    "sphere-plane" => ("Contact", "Hertz::circular"),
+                    "ball-race" => ("Contact", "Hertz by shape::Table at construction"),
+                    _ => ("VaryingContact", "Hertz by shape::Table per step"),
+                };
+                let law = <LawOf<S<T>> as FrictionLaw>::NAME;
+                let (bf, bt) = (S::<T>::FORCE, S::<T>::TORQUE);
+                println!(
+                    "{key},{},{contact},{normal},{law},{:.2e},{:.2e},{:.2e},{:.2e},{bf:e},{bt:e}",
+                    T::NAME, e[0], e[1], e[2], e[3]
+                );
             }
         )*}
     };
@@ -39,7 +50,9 @@ scenes! {
 }
 
 fn main() {
-    println!("scene,precision,n_rel,a_rel,force_fn,torque_fna");
+    println!(
+        "scene,precision,contact,normal,law,n_rel,a_rel,force_fn,torque_fna,force_bound_fn,torque_bound_fna"
+    );
     all::<f32>();
     all::<f64>();
 }

@@ -36,20 +36,26 @@
 //!
 //! # What is chosen
 //!
-//! - **Normal law.** [`Circular`] + [`Fixed`]: [`Hertz::circular`] + [`crate::friction::Constants::circle`]
-//!   through [`Contact::circular`] — closed forms, **no elliptic integral, no eccentricity
-//!   solver, no table is linked** (checked on the firmware's size probe: no `elliptic::` or
-//!   `shape::` symbol). [`Elliptic`] + [`Fixed`]: exact Hertz with the eccentricity solved once
-//!   by [`Newton`] at construction ([`Contact::hertz`]); per step only a square root and the
-//!   friction law. [`Elliptic`] + [`Varying`]: [`VaryingContact`], the shape from
-//!   [`crate::shape::Table`] every step (fixed cost, no elliptic integral per step). The
-//!   normal force and semi-axes are exact-grade in every configuration (relative error
-//!   ≤ [`NORMAL_BOUND`]); `Circular` + `Varying` is not offered (a circle's shape cannot vary;
-//!   a changing radius is the `Elliptic` + `Varying` contact at P = Q).
+//! - **Normal law.** [`Circular`] + [`Fixed`]: [`Hertz::circular`] +
+//!   [`crate::friction::Constants::circle`] through [`Contact::circular`] — closed forms: **no
+//!   elliptic integral, no eccentricity solver and no shape table is linked** (checked by
+//!   `tools/flash-bench.sh` on the size probe's line table, inlined code included:
+//!   `bench-results/scene-no-elliptic.txt`). [`Elliptic`] + [`Fixed`]: exact-grade Hertz with
+//!   the shape from [`Table`] once at construction ([`Contact::hertz`]; constants
+//!   precomputed, per step a square root and the friction law). [`crate::shape::Newton`] would
+//!   be exact to 1.5e-15 instead of 3.6e-12 (f64), but in `f32` the table is the more accurate
+//!   (3.0e-7 against 7.6e-7) and it is 5 KB smaller and 13× cheaper to build, so the table is
+//!   the cheapest adequate choice. [`Elliptic`] + [`Varying`]: [`VaryingContact`], the shape
+//!   from [`Table`] every step (fixed cost, no elliptic integral). N, a and b are exact-grade in
+//!   every configuration (relative error ≤ [`NORMAL_BOUND`]); `Circular` + `Varying` is not
+//!   offered (a circle's shape cannot vary; a changing radius is `Elliptic` + `Varying` at
+//!   P = Q).
 //! - **Friction law.** [`NoSpin`]: [`Coulomb`] at every budget — with ω = 0 the
 //!   Contensou–Erismann integrals reduce exactly to F = −fN·v_P/|v_P|, T_z = 0 (the exact
 //!   law's pure-translation limit), which is Coulomb's law for δ = 0 (its g_δ ramp below δ is
-//!   the regularization, a modelling choice, not an error). [`Spin`]: the budget's law,
+//!   the regularization, a modelling choice, not an error). (At ω = 0 [`Ellipsoid`] is also
+//!   exact and 18 instructions cheaper per `f32` step, but ignores δ; in `f64` Coulomb is the
+//!   cheaper.) [`Spin`]: the budget's law,
 //!   [`Budget::SpinLaw`]:
 //!   - [`Coarse`] (≤ 0.25 fN, ≤ 0.15 fNa) → [`Ellipsoid`] (measured 0.227 fN, 0.134 fNa
 //!     over e² ∈ [0, 0.99]; 34 M4F instructions). The paper's [`crate::friction::Simplified`]
@@ -68,10 +74,30 @@
 //! Per step (h, ḣ, v_P, ω → N, F, T_z), measured by `tools/scene-bench.sh` into
 //! `bench-results/scenes.csv`: M4F instructions per step (QEMU, stage `scene`, the 64-state
 //! mixed set of the `wrench` stage), flash bytes the configuration adds to an empty firmware
-//! (construction + step, size probe), and the max error against exact Hertz (f64 [`Newton`])
-//! + [`crate::friction::exact`] (N relative; F in fN; T_z in fNa) on the host.
+//! (construction from curvatures + one step, size probe `firmware/src/bin/probe.rs`; an
+//! `f64` row includes the soft-float routines), and the max error on the host against exact
+//! Hertz (f64 [`crate::shape::Newton`]) + [`crate::friction::exact`] (N relative; F in fN;
+//! T_z in fNa; `examples/scene_error.rs`: 3–11 geometries per kind, 19 slip directions, 40
+//! ratios u per decade in [1e-2, 1e2] plus 0 and ∞). Asserted against the bounds by
+//! `host-tests/select.rs`.
 //!
-//! SCENE-TABLE
+//! | scene | declaration | contact, normal law, friction law | f32: insns / flash B | f64: insns / flash B | max error N (f32) / F fN / T_z fNa |
+//! |---|---|---|---|---|---|
+//! | sphere-plane-spin-coarse | `Circular, Fixed, Spin, Coarse` | [`Contact`], `Hertz::circular`, [`Ellipsoid`] | 109 / 1204 | 3518 / 6000 | 1.0e-07 / 1.1e-01 / 8.3e-02 |
+//! | sphere-plane-spin-exact | `Circular, Fixed, Spin, ExactGrade` | [`Contact`], `Hertz::circular`, [`Best`] | 209 / 11032 | 7880 / 19920 | 1.0e-07 / 9.3e-07 / 2.5e-07 |
+//! | sphere-plane-nospin | `Circular, Fixed, NoSpin, _` | [`Contact`], `Hertz::circular`, [`Coulomb`] | 127 / 1244 | 3348 / 6072 | 1.0e-07 / 2.0e-07 / 0 |
+//! | ball-race-spin-coarse | `Elliptic, Fixed, Spin, Coarse` | [`Contact`], Hertz, `Table` once, [`Ellipsoid`] | 109 / 4000 | 3517 / 12064 | 1.7e-07 / 2.2e-01 / 1.3e-01 |
+//! | ball-race-spin-exact | `Elliptic, Fixed, Spin, ExactGrade` | [`Contact`], Hertz, `Table` once, [`Best`] | 230 / 14796 | 9192 / 30012 | 1.7e-07 / 4.9e-05 / 3.5e-06 |
+//! | ball-race-nospin | `Elliptic, Fixed, NoSpin, _` | [`Contact`], Hertz, `Table` once, [`Coulomb`] | 127 / 3992 | 3338 / 12056 | 1.7e-07 / 1.9e-07 / 0 |
+//! | varying-spin-coarse | `Elliptic, Varying, Spin, Coarse` | [`VaryingContact`], Hertz, `Table` per step, [`Ellipsoid`] | 258 / 4136 | 9779 / 11928 | 2.6e-07 / 2.2e-01 / 1.3e-01 |
+//! | varying-spin-exact | `Elliptic, Varying, Spin, ExactGrade` | [`VaryingContact`], Hertz, `Table` per step, [`Best`] | 1574 / 12328 | 99308 / 25612 | 2.6e-07 / 2.1e-06 / 7.2e-07 |
+//! | varying-nospin | `Elliptic, Varying, NoSpin, _` | [`VaryingContact`], Hertz, `Table` per step, [`Coulomb`] | 265 / 4168 | 9516 / 11896 | 2.6e-07 / 2.9e-07 / 0 |
+//!
+//! Instructions include the rig's 8-instruction call floor; `f64` is soft float on the M4F.
+//! The [`Best`] rows' flash includes its 2.8 KB (`f32`) coefficient table and, for a fixed
+//! contact, [`crate::friction::BestContact::new`]. N is exact in closed form for the circle
+//! (the `f32` figure is rounding); F and T_z of the `Coarse` rows are the ellipsoidal law's
+//! own error, worst at the thinnest patch (e² = 0.989–0.99).
 //!
 //! # Extending
 //!
@@ -86,11 +112,11 @@ use crate::contact::{Contact, VaryingContact};
 use crate::friction::{Best, Coulomb, Ellipsoid, Friction, FrictionLaw};
 use crate::geometry::Curvatures;
 use crate::normal::{Damping, Hertz, Modulus};
-use crate::shape::Newton;
+use crate::shape::Table;
 use crate::{Error, Real};
 
-/// Relative error bound on N, a and b in every configuration (measured ≤ 7.6e-7 in `f32`,
-/// exact-grade in `f64`).
+/// Relative error bound on N, a and b in every configuration (measured ≤ 2.6e-7 in `f32`,
+/// ≤ 6.1e-13 in `f64`; `bench-results/scenes.csv`).
 pub const NORMAL_BOUND: f64 = 2e-6;
 
 /// Friction error bound (fN and fNa) without spin: [`Coulomb`] is the exact law there, so
@@ -206,6 +232,8 @@ pub trait Select {
     /// Short name of the geometry kind (benchmark keys): `sphere-plane`, `ball-race` or
     /// `varying`; the key is `<GEOMETRY>-<Motion::NAME>[-<Budget::NAME>]`.
     const GEOMETRY: &'static str;
+    /// Whether the scene spins ([`Motion::SPINS`]).
+    const SPINS: bool;
     /// Bound on the friction force error (fN).
     const FORCE: f64;
     /// Bound on the drilling torque error (fNa).
@@ -238,6 +266,7 @@ macro_rules! select {
             type Geometry = $geometry;
             type Contact<$d: Damping<T>> = $contact;
             const GEOMETRY: &'static str = $name;
+            const SPINS: bool = S::SPINS;
             const FORCE: f64 = if S::SPINS { B::FORCE } else { NOSPIN_BOUND };
             const TORQUE: f64 = if S::SPINS { B::TORQUE } else { NOSPIN_BOUND };
 
@@ -259,7 +288,7 @@ select!(Circular, Fixed, "sphere-plane", Curvatures<T>,
 
 select!(Elliptic, Fixed, "ball-race", Curvatures<T>,
     |D| Contact<T, Hertz<T>, D, S::Law<B>>,
-    |curvatures, estar, damping, friction| Contact::hertz::<Newton>(curvatures, estar, damping, friction));
+    |curvatures, estar, damping, friction| Contact::hertz::<Table>(curvatures, estar, damping, friction));
 
 select!(Elliptic, Varying, "varying", (),
     |D| VaryingContact<T, D, S::Law<B>>,
