@@ -5,6 +5,7 @@
 //! contact,normal,law,n_rel,a_rel,force_fn,torque_fna,force_bound_fn,torque_bound_fna`.
 //! Run: `cargo run --release --example scene_error`.
 
+use contensou::friction::FrictionLaw;
 use contensou::select::*;
 
 include!("../host-tests/select_set.rs");

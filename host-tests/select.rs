@@ -4,8 +4,9 @@
 
 use std::any::TypeId;
 
+use contensou::contact::VaryingContact;
 use contensou::friction::{Best, Coulomb, Ellipsoid};
-use contensou::normal::HuntCrossley;
+use contensou::normal::{Damping, HuntCrossley};
 use contensou::select::*;
 
 include!("select_set.rs");

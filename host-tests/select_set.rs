@@ -7,11 +7,12 @@
 // (`friction::exact`, validated against mpmath in host-tests/friction_exact.rs), both fed the
 // model's own (rounded) inputs, so that only the model's error is measured.
 
-use contensou::contact::{Contact, VaryingContact};
-use contensou::friction::{Exact, Friction, FrictionLaw, Slip};
+use contensou::contact::Contact;
+use contensou::friction::{Exact, Friction, Slip};
 use contensou::geometry::{Curvatures, Race};
-use contensou::normal::{Damping, Hertz, Modulus, NormalLaw, Undamped};
-use contensou::select::{ContactOf, Select};
+use contensou::normal::{Hertz, Modulus, NormalLaw, Undamped};
+use contensou::contact::Wrench;
+use contensou::select::{Select, Step};
 use contensou::shape::Newton;
 use contensou::Real;
 
@@ -19,23 +20,9 @@ use contensou::Real;
 const ESTAR: f64 = 1.142857e11;
 const F: f64 = 0.1;
 
-/// One per-step call of either contact form: (N, a, F_x, F_y, T_z).
-trait Step<T> {
-    fn step(&self, curv: &Curvatures<T>, h: T, slip: Slip<T>) -> [f64; 5];
-}
-
-impl<T: Real, N: NormalLaw<T>, D: Damping<T>, L: FrictionLaw> Step<T> for Contact<T, N, D, L> {
-    fn step(&self, _curv: &Curvatures<T>, h: T, slip: Slip<T>) -> [f64; 5] {
-        let w = self.wrench(h, T::ZERO, slip);
-        [w.n, w.patch.a, w.fx, w.fy, w.tz].map(|x| x.to_f64())
-    }
-}
-
-impl<T: Real, D: Damping<T>, L: FrictionLaw> Step<T> for VaryingContact<T, D, L> {
-    fn step(&self, curv: &Curvatures<T>, h: T, slip: Slip<T>) -> [f64; 5] {
-        let w = self.wrench(curv, h, T::ZERO, slip);
-        [w.n, w.patch.a, w.fx, w.fy, w.tz].map(|x| x.to_f64())
-    }
+/// (N, a, F_x, F_y, T_z) of a wrench, in f64.
+fn parts<T: Real, B>(w: Wrench<T, B>) -> [f64; 5] {
+    [w.n, w.patch.a, w.fx, w.fy, w.tz].map(|x| x.to_f64())
 }
 
 /// The geometries of each kind (in `T`, then read back exactly into f64 for the reference).
@@ -87,9 +74,6 @@ fn slip_grid(per_decade: usize, spins: bool) -> Vec<(f64, f64)> {
 /// Max errors of scene `S` over its geometries, h ∈ {0.1, 1, 5} µm and the slip grid:
 /// (N relative, a relative, |F − F_ref|/(fN), |T_z − T_ref|/(fNa)).
 fn scene_errors<S: Select>(kind: &str, spins: bool, per_decade: usize) -> [f64; 4]
-where
-    S::Geometry: FromCurvatures<S::Real>,
-    ContactOf<S>: Step<S::Real>,
 {
     let t = <S::Real as Real>::from_f64;
     let estar = Modulus::new(t(ESTAR)).unwrap();
@@ -97,7 +81,7 @@ where
     let grid = slip_grid(per_decade, spins);
     let mut worst = [0.0f64; 4];
     for curv in geometries::<S::Real>(kind) {
-        let model = S::build(&S::Geometry::of(&curv), estar, Undamped, friction).unwrap();
+        let model = S::build(&S::geometry(&curv), estar, Undamped, friction).unwrap();
         let curv64 = Curvatures::new(curv.p().to_f64(), curv.q().to_f64()).unwrap();
         let reference = Contact::<f64, Hertz<f64>, Undamped, Exact>::hertz::<Newton>(
             &curv64,
@@ -120,8 +104,8 @@ where
                 let slip64 =
                     Slip::new(slip.vx().to_f64(), slip.vy().to_f64(), slip.omega().to_f64())
                         .unwrap();
-                let m = model.step(&curv, h, slip);
-                let r = reference.step(&curv64, h.to_f64(), slip64);
+                let m = parts(model.step(&curv, h, S::Real::ZERO, slip));
+                let r = parts(reference.step(&curv64, h.to_f64(), 0.0, slip64));
                 let fnr = F * r[0];
                 worst[0] = worst[0].max((m[0] - r[0]).abs() / r[0]);
                 worst[1] = worst[1].max((m[1] - r[1]).abs() / r[1]);
@@ -131,20 +115,4 @@ where
         }
     }
     worst
-}
-
-/// The constructor input of a geometry kind from a geometry: the curvatures themselves for a
-/// fixed contact, nothing for a varying one.
-trait FromCurvatures<T> {
-    fn of(curv: &Curvatures<T>) -> Self;
-}
-
-impl<T: Copy> FromCurvatures<T> for Curvatures<T> {
-    fn of(curv: &Curvatures<T>) -> Self {
-        *curv
-    }
-}
-
-impl<T> FromCurvatures<T> for () {
-    fn of(_: &Curvatures<T>) -> Self {}
 }

@@ -108,10 +108,10 @@
 
 use core::marker::PhantomData;
 
-use crate::contact::{Contact, VaryingContact};
-use crate::friction::{Best, Coulomb, Ellipsoid, Friction, FrictionLaw};
+use crate::contact::{Contact, VaryingContact, Wrench};
+use crate::friction::{Best, Coulomb, Ellipsoid, Friction, FrictionLaw, Slip};
 use crate::geometry::Curvatures;
-use crate::normal::{Damping, Hertz, Modulus};
+use crate::normal::{Damping, Hertz, Modulus, NormalLaw};
 use crate::shape::Table;
 use crate::{Error, Real};
 
@@ -227,8 +227,8 @@ pub trait Select {
     /// What the constructor needs of the geometry: [`Curvatures`] for a fixed contact,
     /// `()` for a varying one (its curvatures come with every step).
     type Geometry;
-    /// The contact type chosen, for damping law `D`.
-    type Contact<D: Damping<Self::Real>>;
+    /// The contact type chosen, for damping law `D`; every one steps through [`Step`].
+    type Contact<D: Damping<Self::Real>>: Step<Self::Real>;
     /// Short name of the geometry kind (benchmark keys): `sphere-plane`, `ball-race` or
     /// `varying`; the key is `<GEOMETRY>-<Motion::NAME>[-<Budget::NAME>]`.
     const GEOMETRY: &'static str;
@@ -247,6 +247,36 @@ pub trait Select {
         damping: D,
         friction: Friction<Self::Real, Self::Law>,
     ) -> Result<Self::Contact<D>, Error>;
+
+    /// The constructor input of this geometry kind from curvatures: the curvatures themselves
+    /// for a fixed contact, `()` for a varying one (for code generic over scenes).
+    fn geometry(curvatures: &Curvatures<Self::Real>) -> Self::Geometry;
+}
+
+/// One per-step call of any scene's contact: this step's curvatures (read by a varying
+/// contact, ignored by a fixed one), approach h (m), its rate ḣ (m/s) and the slip → the
+/// wrench on B from A. Total; the contact's own `wrench` under one signature.
+pub trait Step<T: Real> {
+    /// The friction law's branch.
+    type Branch: Copy + core::fmt::Debug + PartialEq;
+    /// One step (see the [trait docs](Step)).
+    fn step(&self, curv: &Curvatures<T>, h: T, hdot: T, slip: Slip<T>) -> Wrench<T, Self::Branch>;
+}
+
+impl<T: Real, N: NormalLaw<T>, D: Damping<T>, L: FrictionLaw> Step<T> for Contact<T, N, D, L> {
+    type Branch = L::Branch;
+    #[inline(always)]
+    fn step(&self, _: &Curvatures<T>, h: T, hdot: T, slip: Slip<T>) -> Wrench<T, L::Branch> {
+        self.wrench(h, hdot, slip)
+    }
+}
+
+impl<T: Real, D: Damping<T>, L: FrictionLaw> Step<T> for VaryingContact<T, D, L> {
+    type Branch = L::Branch;
+    #[inline(always)]
+    fn step(&self, curv: &Curvatures<T>, h: T, hdot: T, slip: Slip<T>) -> Wrench<T, L::Branch> {
+        self.wrench(curv, h, hdot, slip)
+    }
 }
 
 /// The friction law a scene resolves to.
@@ -255,11 +285,12 @@ pub type LawOf<S> = <S as Select>::Law;
 pub type ContactOf<S, D = crate::normal::Undamped> = <S as Select>::Contact<D>;
 
 /// One [`Select`] impl per geometry kind: patch, geometry, key name, constructor input, contact
-/// type (with `$d` its damping law and `L` the resolved law) and the constructor body.
+/// type (for damping law `$d`), the constructor body and the geometry input from curvatures.
 macro_rules! select {
     ($p:ty, $g:ty, $name:literal, $geometry:ty,
      |$d:ident| $contact:ty,
-     |$geo:pat_param, $estar:ident, $damping:ident, $friction:ident| $build:expr) => {
+     |$geo:pat_param, $estar:ident, $damping:ident, $friction:ident| $build:expr,
+     |$c:pat_param| $of:expr) => {
         impl<S: Motion, B: Budget, T: Real> Select for Scene<$p, $g, S, B, T> {
             type Real = T;
             type Law = S::Law<B>;
@@ -278,18 +309,26 @@ macro_rules! select {
             ) -> Result<Self::Contact<$d>, Error> {
                 $build
             }
+
+            #[inline(always)]
+            fn geometry($c: &Curvatures<T>) -> $geometry {
+                $of
+            }
         }
     };
 }
 
 select!(Circular, Fixed, "sphere-plane", Curvatures<T>,
     |D| Contact<T, Hertz<T>, D, S::Law<B>>,
-    |curvatures, estar, damping, friction| Contact::circular(curvatures, estar, damping, friction));
+    |curvatures, estar, damping, friction| Contact::circular(curvatures, estar, damping, friction),
+    |c| *c);
 
 select!(Elliptic, Fixed, "ball-race", Curvatures<T>,
     |D| Contact<T, Hertz<T>, D, S::Law<B>>,
-    |curvatures, estar, damping, friction| Contact::hertz::<Table>(curvatures, estar, damping, friction));
+    |curvatures, estar, damping, friction| Contact::hertz::<Table>(curvatures, estar, damping, friction),
+    |c| *c);
 
 select!(Elliptic, Varying, "varying", (),
     |D| VaryingContact<T, D, S::Law<B>>,
-    |_, estar, damping, friction| Ok(VaryingContact::new(estar, damping, friction)));
+    |_, estar, damping, friction| Ok(VaryingContact::new(estar, damping, friction)),
+    |_| ());

@@ -21,17 +21,17 @@
 use core::hint::black_box as bb;
 
 use contensou::Real;
+use contensou::contact::{Contact, VaryingContact};
 use contensou::elliptic::{Agm, Integrals, Method, Parameter, Table as EllTable, Theta};
 use contensou::friction::*;
-use contensou::normal::{Fitted, Modulus, NormalLaw};
+use contensou::geometry::Curvatures;
+use contensou::normal::{Fitted, Hertz, Modulus, NormalLaw, Undamped};
 use contensou::scenes::integrate::{rk4, rk4_step};
 use contensou::scenes::tippe_top::{Params, TippeTop};
 use contensou::select::*;
 use contensou::shape::{Eccentricity, HamrockDowson, Linear, Newton, Ratio, Table};
 use cortex_m_rt::entry;
 use panic_semihosting as _;
-
-include!("../scene_step.rs");
 
 /// The key this probe was built for.
 const KEY: &str = match option_env!("CONTENSOU_PROBE") {
@@ -175,23 +175,19 @@ fn tippe_top(steps: usize) {
         bb(rk4(&top, 0.0, y, t(1e-5), steps, |_, _, _| {}));
     }
 }
-fn scene<S: Select>()
-where
-    S::Geometry: FromCurvatures<S::Real>,
-    S::Contact<Undamped>: SceneStep<S::Real>,
-{
+fn scene<S: Select>() {
     let curv = if S::GEOMETRY == "sphere-plane" {
         ok(Curvatures::new(t(78.7), t(78.7)))
     } else {
         curvatures()
     };
     let c = ok(S::build(
-        &S::Geometry::of(&bb(curv)),
+        &S::geometry(&bb(curv)),
         estar(),
         Undamped,
         friction(),
     ));
-    bb(c.step(&curv, t(1e-6), slip()));
+    bb(c.step(&curv, t(1e-6), S::Real::ZERO, slip()));
 }
 
 /// `probes! { "stage,method,precision" => body; … }`: every key, and the body run for `KEY`.

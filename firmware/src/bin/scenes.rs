@@ -18,9 +18,10 @@ mod counter;
 mod harness;
 
 use contensou::Real;
+use contensou::contact::Wrench;
 use contensou::friction::{Friction, Slip};
-use contensou::geometry::Race;
-use contensou::normal::Modulus;
+use contensou::geometry::{Curvatures, Race};
+use contensou::normal::{Modulus, Undamped};
 use contensou::select::*;
 use cortex_m_rt::entry;
 use cortex_m_semihosting::debug;
@@ -28,7 +29,6 @@ use harness::Runner;
 use panic_semihosting as _;
 
 include!("../../../benches/friction_set.rs");
-include!("../scene_step.rs");
 
 /// Every scene configuration: `$m!(method key, patch, geometry, motion, budget)`.
 macro_rules! scene_configs {
@@ -53,16 +53,12 @@ const VARYING_G: [f64; 16] = [
 type SceneInput<'a, C, T> = (&'a C, &'a Curvatures<T>, T, Slip<T>);
 
 #[inline(never)]
-fn scene_step<T: Real, C: SceneStep<T>>(x: SceneInput<'_, C, T>) -> Wrench<T, C::Branch> {
-    x.0.step(x.1, x.2, x.3)
+fn scene_step<T: Real, C: Step<T>>(x: SceneInput<'_, C, T>) -> Wrench<T, C::Branch> {
+    x.0.step(x.1, x.2, T::ZERO, x.3)
 }
 
 /// One row: the contact `S` resolves to, over the 64 mixed slips (see the module docs).
-fn scene<S: Select>(r: &Runner, method: &str)
-where
-    S::Geometry: FromCurvatures<S::Real>,
-    S::Contact<Undamped>: SceneStep<S::Real>,
-{
+fn scene<S: Select>(r: &Runner, method: &str) {
     let t = <S::Real as Real>::from_f64;
     let curvs: [Curvatures<S::Real>; SET] = core::array::from_fn(|i| {
         match S::GEOMETRY {
@@ -80,7 +76,7 @@ where
         5e-6
     });
     let contact = S::build(
-        &S::Geometry::of(&curvs[0]),
+        &S::geometry(&curvs[0]),
         Modulus::new(t(1.142857e11)).expect("positive modulus"),
         Undamped,
         Friction::new(t(0.1), t(0.0)).expect("valid f"),
@@ -90,7 +86,12 @@ where
     let omega = if S::SPINS { 100.0 } else { 0.0 };
     let inputs: [SceneInput<'_, S::Contact<Undamped>, S::Real>; SET] = core::array::from_fn(|i| {
         let (u, psi) = pairs[i];
-        let a = contact.step(&curvs[i], h, Slip::default()).patch.a.to_f64();
+        let zero = S::Real::ZERO;
+        let a = contact
+            .step(&curvs[i], h, zero, Slip::default())
+            .patch
+            .a
+            .to_f64();
         let v = u * a * 100.0;
         let slip = Slip::new(t(v * libm::cos(psi)), t(v * libm::sin(psi)), t(omega));
         (&contact, &curvs[i], h, slip.expect("finite slip"))
