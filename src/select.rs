@@ -120,7 +120,7 @@ use crate::{Error, Real};
 pub const NORMAL_BOUND: f64 = 2e-6;
 
 /// Friction error bound (fN and fNa) without spin: [`Coulomb`] is the exact law there, so
-/// only rounding remains (measured ≤ 1.2e-7 in `f32`).
+/// only rounding remains (measured ≤ 3.0e-7 in `f32`, the normal force's rounding included).
 pub const NOSPIN_BOUND: f64 = 1e-6;
 
 mod sealed {
@@ -145,10 +145,13 @@ pub struct Spin;
 /// Motion: ω = 0 always (pure sliding or rolling without spin): the plain Coulomb law is exact.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct NoSpin;
-/// Budget: friction within 0.25 fN in force and 0.15 fNa in torque.
+/// Budget: friction within 0.25 fN in force and 0.15 fNa in torque → [`Ellipsoid`] (measured
+/// 0.227 fN / 0.134 fNa; 109 M4F instructions per `f32` step of a fixed contact).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Coarse;
-/// Budget: friction within 5e-4 fN in force and 5e-4 fNa in torque.
+/// Budget: friction within 5e-4 fN in force and 5e-4 fNa in torque ("exact-grade") → [`Best`]
+/// (measured 4.9e-5 fN / 3.5e-6 fNa; 209–230 M4F instructions per `f32` step of a fixed
+/// contact, 1,574 of a varying one).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct ExactGrade;
 
@@ -165,7 +168,7 @@ pub trait Budget {
     const FORCE: f64;
     /// Bound on |T_z − T_exact| in units of fNa.
     const TORQUE: f64;
-    /// The cheapest law within the bounds (measured instructions per call).
+    /// The cheapest law (in measured instructions per call) within the bounds.
     type SpinLaw: FrictionLaw;
 }
 
