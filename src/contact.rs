@@ -99,6 +99,8 @@ impl<T: Real, D: Damping<T>, L: FrictionLaw> Contact<T, Hertz<T>, D, L> {
     /// Exact Hertz on the given curvatures, the eccentricity solved once by method `M`
     /// ([`shape::Newton`] for the exact shape). A circle (P = Q) takes the circular fast path
     /// and evaluates no elliptic integral.
+    /// That test is a runtime branch, so `M`'s elliptic code is still linked; for a patch
+    /// known to be circular, [`Contact::circular`] links none.
     ///
     /// Errors: [`Error::CurvatureRatioOutOfRange`] if P/Q is below the solver's range.
     pub fn hertz<M: Eccentricity>(
