@@ -99,6 +99,8 @@ impl<T: Real, D: Damping<T>, L: FrictionLaw> Contact<T, Hertz<T>, D, L> {
     /// Exact Hertz on the given curvatures, the eccentricity solved once by method `M`
     /// ([`shape::Newton`] for the exact shape). A circle (P = Q) takes the circular fast path
     /// and evaluates no elliptic integral.
+    /// That test is a runtime branch, so `M`'s elliptic code is still linked; for a patch
+    /// known to be circular, [`Contact::circular`] links none.
     ///
     /// Errors: [`Error::CurvatureRatioOutOfRange`] if P/Q is below the solver's range.
     pub fn hertz<M: Eccentricity>(
@@ -118,6 +120,34 @@ impl<T: Real, D: Damping<T>, L: FrictionLaw> Contact<T, Hertz<T>, D, L> {
             damping,
             friction,
             Constants::from_shape(&shape),
+        ))
+    }
+}
+
+impl<T: Real, D: Damping<T>, L: FrictionLaw> Contact<T, Hertz<T>, D, L> {
+    /// A circular patch (P = Q: sphere on plane, sphere on sphere, ball in a spherical cup)
+    /// built with no eccentricity method at all: [`Hertz::circular`] + [`Constants::circle`].
+    /// Unlike [`Contact::hertz`], whose circle test is a runtime branch (so the elliptic code
+    /// is still linked), nothing of [`crate::elliptic`] or [`crate::shape`]'s solvers is
+    /// reachable from here: the firmware size probe `scene,sphere-plane-*` links no AGM,
+    /// theta, elliptic table or shape table (see [`crate::select`]).
+    ///
+    /// Exact Hertz (a = b = √(Rh), N = (4/3)E*√R·h^{3/2}, R = 1/(2P)). Errors:
+    /// [`Error::CurvatureRatioOutOfRange`] if P ≠ Q (the patch is not a circle).
+    pub fn circular(
+        curvatures: &Curvatures<T>,
+        estar: Modulus<T>,
+        damping: D,
+        friction: Friction<T, L>,
+    ) -> Result<Self, Error> {
+        if curvatures.p() != curvatures.q() {
+            return Err(Error::CurvatureRatioOutOfRange);
+        }
+        Ok(Self::from_parts(
+            Hertz::circular(curvatures.p(), estar),
+            damping,
+            friction,
+            Constants::circle(),
         ))
     }
 }

@@ -52,6 +52,7 @@ pub mod normal;
 pub mod real;
 #[cfg(feature = "scenes")]
 pub mod scenes;
+pub mod select;
 pub mod shape;
 
 pub use error::Error;

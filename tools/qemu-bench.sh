@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# MCU rig (rig B): build the benchmark firmware for thumbv7em-none-eabihf, run it twice under
+# MCU rig (rig B): build the benchmark firmware for thumbv7em-none-eabihf, run it (and its
+# `scenes` binary) twice under
 # QEMU (netduinoplus2, -icount shift=0: TIM2 counts executed instructions), check the counts are
 # deterministic, and write
 #   bench-results/qemu.csv            stage,method,precision,insns (per call, overhead subtracted)
@@ -24,7 +25,14 @@ rustup target list --installed --toolchain "$chan" | grep -q '^thumbv7em-none-ea
 cargo build --release --locked
 elf="target/thumbv7em-none-eabihf/release/contensou-firmware"
 
-run() { cargo run --release --locked --quiet | tr -d '\r'; }
+# The main firmware, then the `scenes` binary (stage `scene` rows of contensou::select's
+# configurations; a binary of its own so the main firmware's code and counts are unaffected).
+run() {
+    {
+        cargo run --release --locked --quiet
+        cargo run --release --locked --quiet --bin scenes
+    } | tr -d '\r'
+}
 first="$(run)"
 second="$(run)"
 if [[ "$first" != "$second" ]]; then

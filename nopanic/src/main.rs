@@ -263,6 +263,22 @@ mod api {
                 tb.map(|w| w.wrench(h, hdot, s)),
             )
         }
+        // Contact::circular and contensou::select: each geometry kind, each law it resolves to
+        fn probe_select<T>(p, q, e, f, h, hdot, vx, vy, om) {
+            use contensou::select::*;
+            let (Ok(c), Ok(e), Ok(s)) = (Curvatures::new(p, q), Modulus::new(e), Slip::new(vx, vy, om))
+            else { return };
+            let (Ok(f1), Ok(f2), Ok(f3)) = (Friction::new(f, f), Friction::new(f, f), Friction::new(f, f))
+            else { return };
+            type Ball<T> = Scene<Circular, Fixed, Spin, Coarse, T>;
+            type Race<T> = Scene<Elliptic, Fixed, Spin, ExactGrade, T>;
+            type Wander<T> = Scene<Elliptic, Varying, NoSpin, Coarse, T>;
+            (
+                Ball::<T>::build(&Ball::<T>::geometry(&c), e, Undamped, f1).map(|k| k.step(&c, h, hdot, s)),
+                Race::<T>::build(&Race::<T>::geometry(&c), e, Undamped, f2).map(|k| k.step(&c, h, hdot, s)),
+                Wander::<T>::build(&Wander::<T>::geometry(&c), e, Undamped, f3).map(|k| k.step(&c, h, hdot, s)),
+            )
+        }
     }
 
     pub(crate) fn run<T: Real>() {

@@ -1,0 +1,296 @@
+//! Flash size probe: links exactly one benchmark key's code into an otherwise empty firmware.
+//!
+//! The key `stage,method,precision` (as in `bench-results/qemu.csv`) is chosen at build time:
+//! `CONTENSOU_PROBE=wrench,fixed,f32 cargo build --release --bin probe`; unset = `baseline`
+//! (nothing but the runtime). Only that key's branch survives (a `const` condition), so
+//! `.text + .rodata` of this binary minus the baseline's is what the key adds to a firmware:
+//! the call and everything it reaches (library code, soft-float and libm routines, tables).
+//! An unknown key fails to compile. `tools/flash-bench.sh` builds one probe per key.
+//!
+//! Inputs go through `black_box`, built by the cheapest constructor of their type (e.g.
+//! `Constants::circle()`, `Parameter::new`, `Hertz::circular`): the figure is the call's code,
+//! not an input generator's. Where the benchmarked call takes a per-contact form that only a
+//! constructor can make, the constructor is included (rows with `BestContact`: `best`,
+//! `best-e2-0.99`, `best-dimensional`, `fixed-best` include `BestContact::new`). Scene rows
+//! (`scene,<configuration>`) are whole configurations: `Select::build` from validated
+//! curvatures plus one `wrench` step. Nothing panics on the probed paths (invalid input
+//! halts), so no panic machinery is linked. Not meant to be run.
+#![no_std]
+#![no_main]
+
+use core::hint::black_box as bb;
+
+use contensou::Real;
+use contensou::contact::{Contact, VaryingContact};
+use contensou::elliptic::{Agm, Integrals, Method, Parameter, Table as EllTable, Theta};
+use contensou::friction::*;
+use contensou::geometry::Curvatures;
+use contensou::normal::{Fitted, Hertz, Modulus, NormalLaw, Undamped};
+use contensou::scenes::integrate::{rk4, rk4_step};
+use contensou::scenes::tippe_top::{Params, TippeTop};
+use contensou::select::*;
+use contensou::shape::{Eccentricity, HamrockDowson, Linear, Newton, Ratio, Table};
+use cortex_m_rt::entry;
+use panic_semihosting as _;
+
+/// The key this probe was built for.
+const KEY: &str = match option_env!("CONTENSOU_PROBE") {
+    Some(k) => k,
+    None => "baseline",
+};
+
+const fn same(a: &str, b: &str) -> bool {
+    let (a, b) = (a.as_bytes(), b.as_bytes());
+    if a.len() != b.len() {
+        return false;
+    }
+    let mut i = 0;
+    while i < a.len() {
+        if a[i] != b[i] {
+            return false;
+        }
+        i += 1;
+    }
+    true
+}
+
+/// Halts on an invalid probe input (never taken; keeps panics out of the binary).
+fn ok<T, E>(r: Result<T, E>) -> T {
+    match r {
+        Ok(v) => v,
+        Err(_) => halt(),
+    }
+}
+
+fn halt() -> ! {
+    loop {
+        cortex_m::asm::wfi();
+    }
+}
+
+fn t<T: Real>(x: f32) -> T {
+    bb(T::from_f64(f64::from(x)))
+}
+
+fn param<T: Real>() -> Parameter<T> {
+    ok(Parameter::new(t(0.5)))
+}
+
+fn circle<T: Real>() -> Constants<T> {
+    bb(Constants::circle())
+}
+
+fn state<T: Real>() -> SlipState<T> {
+    ok(SlipState::new(t(0.3), t(0.2), t(1.0), T::ZERO))
+}
+
+fn slip<T: Real>() -> Slip<T> {
+    ok(Slip::new(t(1e-3), t(2e-3), t(100.0)))
+}
+
+fn estar<T: Real>() -> Modulus<T> {
+    ok(Modulus::new(t(1.142857e11)))
+}
+
+fn curvatures<T: Real>() -> Curvatures<T> {
+    ok(Curvatures::new(t(3.0), t(30.0)))
+}
+
+fn friction<T: Real, L: FrictionLaw>() -> Friction<T, L> {
+    ok(Friction::new(t(0.1), t(0.0)))
+}
+
+fn hertz<T: Real>() -> Hertz<T> {
+    bb(Hertz::circular(t(3.0), estar()))
+}
+
+fn best<T: Real>() -> BestContact<T> {
+    BestContact::new(&circle())
+}
+
+/// The probed bodies, one per precision-generic row.
+fn elliptic<T: Real, M: Method>() {
+    bb(M::integrals(param::<T>()));
+}
+fn per_step<T: Real>() {
+    bb(hertz::<T>().patch(t(1e-6)));
+}
+fn table_each_step<T: Real>() {
+    let c = curvatures::<T>();
+    bb(Hertz::from_shape(&c, &Table::shape(Ratio::clamped(c.ratio())), estar()).patch(t(1e-6)));
+}
+fn fitted_each_step<T: Real>() {
+    bb(Fitted::clamped(&curvatures::<T>(), estar()).patch(t(1e-6)));
+}
+fn shape<T: Real, M: Eccentricity>() {
+    bb(M::shape(ok(Ratio::<T>::new(t(0.1)))));
+}
+fn core<T: Real, L: FrictionLaw>() {
+    bb(L::traction(&circle::<T>(), &state()));
+}
+fn dimensional<T: Real, L: FrictionLaw>() {
+    bb(friction::<T, L>().tangential(&circle(), t(50e-6), t(2.0), slip()));
+}
+fn from_integrals<T: Real>() {
+    let i = Integrals {
+        k: t(1.8),
+        e: t(1.3),
+        b: t(0.8),
+        d: t(1.0),
+    };
+    bb(Constants::from_integrals(param::<T>(), &bb(i)));
+}
+fn best_core<T: Real>() {
+    bb(best::<T>().traction(&state()));
+}
+fn best_new<T: Real>() {
+    bb(BestContact::<T>::new(&circle()));
+}
+fn best_dimensional<T: Real>() {
+    bb(friction::<T, Best>().tangential_prepared(&best(), t(50e-6), t(2.0), slip()));
+}
+fn fixed<T: Real, L: FrictionLaw>() {
+    let c = bb(Contact::from_parts(
+        hertz::<T>(),
+        Undamped,
+        friction::<T, L>(),
+        circle(),
+    ));
+    bb(c.wrench(t(1e-6), T::ZERO, slip()));
+}
+fn varying<T: Real, L: FrictionLaw>() {
+    let c = bb(VaryingContact::new(
+        estar::<T>(),
+        Undamped,
+        friction::<T, L>(),
+    ));
+    bb(c.wrench(&curvatures(), t(1e-6), T::ZERO, slip()));
+}
+fn tippe_top(steps: usize) {
+    let top: TippeTop<f32, Simplified> = ok(TippeTop::new(&Params::paper(), friction()));
+    let y = top.initial_state(t(0.1), t(180.0));
+    if steps == 1 {
+        bb(rk4_step(&top, 0.0, &y, t(1e-5)));
+    } else {
+        bb(rk4(&top, 0.0, y, t(1e-5), steps, |_, _, _| {}));
+    }
+}
+fn scene<S: Select>() {
+    let curv = if S::GEOMETRY == "sphere-plane" {
+        ok(Curvatures::new(t(78.7), t(78.7)))
+    } else {
+        curvatures()
+    };
+    let c = ok(S::build(
+        &S::geometry(&bb(curv)),
+        estar(),
+        Undamped,
+        friction(),
+    ));
+    bb(c.step(&curv, t(1e-6), S::Real::ZERO, slip()));
+}
+
+/// `probes! { "stage,method,precision" => body; … }`: every key, and the body run for `KEY`.
+macro_rules! probes {
+    ($($key:literal => $body:expr;)*) => {
+        /// Every key this probe knows (`tools/flash-bench.sh` reads them from this file).
+        const KEYS: &[&str] = &["baseline", $($key),*];
+
+        const _: () = {
+            let mut i = 0;
+            let mut known = false;
+            while i < KEYS.len() {
+                known |= same(KEYS[i], KEY);
+                i += 1;
+            }
+            assert!(known, "CONTENSOU_PROBE names no key of firmware/src/bin/probe.rs");
+        };
+
+        fn probe() {
+            $(if const { same(KEY, $key) } { $body; })*
+        }
+    };
+}
+
+probes! {
+    "core,call,f32" => bb(t::<f32>(1.0));
+    "core,vsqrt,f32" => bb(t::<f32>(2.0).sqrt());
+    "core,libm,f32" => bb(libm::sqrtf(t(2.0)));
+    "elliptic,agm,f32" => elliptic::<f32, Agm>();
+    "elliptic,agm,f64" => elliptic::<f64, Agm>();
+    "elliptic,theta,f32" => elliptic::<f32, Theta>();
+    "elliptic,theta,f64" => elliptic::<f64, Theta>();
+    "elliptic,table,f32" => elliptic::<f32, EllTable>();
+    "elliptic,table,f64" => elliptic::<f64, EllTable>();
+    "hertz,per_step,f32" => per_step::<f32>();
+    "hertz,per_step,f64" => per_step::<f64>();
+    "hertz,table_each_step,f32" => table_each_step::<f32>();
+    "hertz,table_each_step,f64" => table_each_step::<f64>();
+    "hertz,fitted_each_step,f32" => fitted_each_step::<f32>();
+    "hertz,fitted_each_step,f64" => fitted_each_step::<f64>();
+    "hertz,shape_table,f32" => shape::<f32, Table>();
+    "hertz,shape_table,f64" => shape::<f64, Table>();
+    "hertz,shape_linear,f32" => shape::<f32, Linear>();
+    "hertz,shape_linear,f64" => shape::<f64, Linear>();
+    "hertz,shape_hamrock-dowson,f32" => shape::<f32, HamrockDowson>();
+    "hertz,shape_hamrock-dowson,f64" => shape::<f64, HamrockDowson>();
+    "hertz,shape_newton,f32" => shape::<f32, Newton>();
+    "hertz,shape_newton,f64" => shape::<f64, Newton>();
+    "friction,simplified,f32" => core::<f32, Simplified>();
+    "friction,simplified,f64" => core::<f64, Simplified>();
+    "friction,pade,f32" => core::<f32, Pade>();
+    "friction,pade,f64" => core::<f64, Pade>();
+    "friction,ellipsoid,f32" => core::<f32, Ellipsoid>();
+    "friction,ellipsoid,f64" => core::<f64, Ellipsoid>();
+    "friction,coulomb,f32" => core::<f32, Coulomb>();
+    "friction,coulomb,f64" => core::<f64, Coulomb>();
+    "friction,simplified-dimensional,f32" => dimensional::<f32, Simplified>();
+    "friction,simplified-dimensional,f64" => dimensional::<f64, Simplified>();
+    "friction,constants-from-integrals,f32" => from_integrals::<f32>();
+    "friction,constants-from-integrals,f64" => from_integrals::<f64>();
+    "friction,best,f32" => best_core::<f32>();
+    "friction,best,f64" => best_core::<f64>();
+    "friction,best-e2-0.99,f32" => best_core::<f32>();
+    "friction,best-e2-0.99,f64" => best_core::<f64>();
+    "friction,best-varying,f32" => core::<f32, Best>();
+    "friction,best-varying,f64" => core::<f64, Best>();
+    "friction,best-contact-new,f32" => best_new::<f32>();
+    "friction,best-contact-new,f64" => best_new::<f64>();
+    "friction,best-dimensional,f32" => best_dimensional::<f32>();
+    "friction,best-dimensional,f64" => best_dimensional::<f64>();
+    "wrench,fixed,f32" => fixed::<f32, Simplified>();
+    "wrench,fixed,f64" => fixed::<f64, Simplified>();
+    "wrench,table_each_step,f32" => varying::<f32, Simplified>();
+    "wrench,table_each_step,f64" => varying::<f64, Simplified>();
+    "wrench,fixed-best,f32" => fixed::<f32, Best>();
+    "wrench,fixed-best,f64" => fixed::<f64, Best>();
+    "wrench,table_each_step-best,f32" => varying::<f32, Best>();
+    "wrench,table_each_step-best,f64" => varying::<f64, Best>();
+    "scene,tippe_top_step,f32" => tippe_top(1);
+    "scene,tippe_top_step_two_contacts,f32" => tippe_top(1);
+    "scene,tippe_top_10ms,f32" => tippe_top(1_000);
+    "scene,sphere-plane-spin-coarse,f32" => scene::<Scene<Circular, Fixed, Spin, Coarse, f32>>();
+    "scene,sphere-plane-spin-coarse,f64" => scene::<Scene<Circular, Fixed, Spin, Coarse, f64>>();
+    "scene,sphere-plane-spin-exact,f32" => scene::<Scene<Circular, Fixed, Spin, ExactGrade, f32>>();
+    "scene,sphere-plane-spin-exact,f64" => scene::<Scene<Circular, Fixed, Spin, ExactGrade, f64>>();
+    "scene,sphere-plane-nospin,f32" => scene::<Scene<Circular, Fixed, NoSpin, ExactGrade, f32>>();
+    "scene,sphere-plane-nospin,f64" => scene::<Scene<Circular, Fixed, NoSpin, ExactGrade, f64>>();
+    "scene,ball-race-spin-coarse,f32" => scene::<Scene<Elliptic, Fixed, Spin, Coarse, f32>>();
+    "scene,ball-race-spin-coarse,f64" => scene::<Scene<Elliptic, Fixed, Spin, Coarse, f64>>();
+    "scene,ball-race-spin-exact,f32" => scene::<Scene<Elliptic, Fixed, Spin, ExactGrade, f32>>();
+    "scene,ball-race-spin-exact,f64" => scene::<Scene<Elliptic, Fixed, Spin, ExactGrade, f64>>();
+    "scene,ball-race-nospin,f32" => scene::<Scene<Elliptic, Fixed, NoSpin, ExactGrade, f32>>();
+    "scene,ball-race-nospin,f64" => scene::<Scene<Elliptic, Fixed, NoSpin, ExactGrade, f64>>();
+    "scene,varying-spin-coarse,f32" => scene::<Scene<Elliptic, Varying, Spin, Coarse, f32>>();
+    "scene,varying-spin-coarse,f64" => scene::<Scene<Elliptic, Varying, Spin, Coarse, f64>>();
+    "scene,varying-spin-exact,f32" => scene::<Scene<Elliptic, Varying, Spin, ExactGrade, f32>>();
+    "scene,varying-spin-exact,f64" => scene::<Scene<Elliptic, Varying, Spin, ExactGrade, f64>>();
+    "scene,varying-nospin,f32" => scene::<Scene<Elliptic, Varying, NoSpin, ExactGrade, f32>>();
+    "scene,varying-nospin,f64" => scene::<Scene<Elliptic, Varying, NoSpin, ExactGrade, f64>>();
+}
+
+#[entry]
+fn main() -> ! {
+    probe();
+    halt()
+}
