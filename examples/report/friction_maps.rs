@@ -193,5 +193,7 @@ pub fn all_maps(dir: &Path) -> Result<Vec<Maps>, Box<dyn std::error::Error>> {
         maps::<Best>(dir, &exact)?,
         maps::<Simplified>(dir, &exact)?,
         maps::<Pade>(dir, &exact)?,
+        maps::<Ellipsoid>(dir, &exact)?,
+        maps::<Coulomb>(dir, &exact)?,
     ])
 }
