@@ -14,8 +14,11 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 if [[ "${1:-}" != "--collect" ]]; then
     args=(--warm-up-time 0.2 --measurement-time 0.6)
+    # the optional micromath backend's twins get their own rows (`*_micromath_f32` ids)
+    features=()
+    grep -q '^micromath *=' Cargo.toml && features=(--features micromath)
     for b in elliptic hertz friction wrench; do
-        cargo bench --bench "$b" -- "${args[@]}" >&2
+        cargo bench "${features[@]}" --bench "$b" -- "${args[@]}" >&2
     done
 fi
 python3 - <<'PY'
@@ -46,6 +49,12 @@ for p in ("f32", "f64"):
     for g in ("fixed", "table_each_step"):
         for law, suffix in (("simplified", ""), ("best", "-best")):
             rows.append(("wrench", g + suffix, p, fastest(f"wrench_{g}_{law}_{p}", 1)))
+# the micromath twins (f32 only; present when the benches ran with --features micromath)
+rows.append(("elliptic", "theta-micromath", "f32", fastest("kebd_theta_micromath_f32", 64)))
+for m in ("per_step", "shape_hamrock-dowson"):
+    rows.append(("hertz", f"{m}-micromath", "f32", fastest(f"hertz_{m}_micromath_f32", 1)))
+for m in ("simplified", "ellipsoid", "coulomb", "best"):
+    rows.append(("friction", f"{m}-micromath", "f32", fastest(f"friction_{m}_micromath_f32", 64)))
 with open("bench-results/host-ns.csv", "w") as f:
     f.write("stage,method,precision,ns\n")
     for s, m, p, ns in rows:
