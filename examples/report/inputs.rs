@@ -131,8 +131,8 @@ pub fn stability(dir: &Path) -> Vec<(String, String)> {
 pub fn scenes() -> Option<String> {
     let t = read_table(&repo("bench-results/scenes.csv"))?;
     let mut md = String::new();
-    for c in &t.comments {
-        md.push_str(&format!("{c}\n\n"));
+    if !t.comments.is_empty() {
+        md.push_str(&format!("{}\n\n", t.comments.join(" ")));
     }
     md.push_str(&format!("| {} |\n", t.header.join(" | ")));
     md.push_str(&format!("|{}\n", "---|".repeat(t.header.len())));

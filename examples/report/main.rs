@@ -340,7 +340,12 @@ fn main() {
         out.md.push('\n');
     }
 
-    out.md.push_str("\n## Scenes\n\n");
+    out.md.push_str(
+        "\n## Scenes: the cheapest adequate model per scene\n\n\
+         What `contensou::select` resolves each declared scene to (`Scene<patch, geometry, \
+         motion, budget, precision>`), chosen at compile time so only that configuration's \
+         code is linked: per step cost, flash and measured error against the exact model.\n\n",
+    );
     match inputs::scenes() {
         Some(t) => out.md.push_str(&t),
         None => out
