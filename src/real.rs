@@ -56,6 +56,12 @@ pub trait Real:
 {
     /// `"f32"` or `"f64"`, for reports and benchmark labels.
     const NAME: &'static str;
+    /// Of a generated table kept in both precisions, the one in `Self`'s: `single` for `f32`,
+    /// `double` for `f64`. Resolved at compile time; no per-call conversion, no fallback.
+    fn of_precision<'a, const W: usize, const C: usize>(
+        single: &'a [[f32; W]; C],
+        double: &'a [[f64; W]; C],
+    ) -> &'a [[Self; W]; C];
     /// Significand bits including the implicit one: 24 or 53. Use it to pick fixed iteration
     /// counts per precision (`if T::MANTISSA_DIGITS > 24 { .. }` folds at compile time).
     const MANTISSA_DIGITS: u32;
@@ -137,7 +143,7 @@ pub trait Real:
 }
 
 macro_rules! impl_real {
-    ($t:ident, $bits:ident, $name:literal, $sqrt:path,
+    ($t:ident, $bits:ident, $name:literal, $own:tt, $sqrt:path,
      $abs:ident, $fmin:ident, $fmax:ident, $copysign:ident, $ln:ident, $exp:ident, $sin:ident,
      $cos:ident, $sincos:ident, $atan2:ident, $cbrt:ident, $hypot:ident, $floor:ident) => {
         impl Real for $t {
@@ -154,6 +160,13 @@ macro_rules! impl_real {
             const MAX: Self = $t::MAX;
             const MIN_POSITIVE: Self = $t::MIN_POSITIVE;
 
+            #[inline(always)]
+            fn of_precision<'a, const W: usize, const C: usize>(
+                single: &'a [[f32; W]; C],
+                double: &'a [[f64; W]; C],
+            ) -> &'a [[Self; W]; C] {
+                (single, double).$own
+            }
             #[inline(always)]
             fn from_f64(x: f64) -> Self {
                 x as $t
@@ -247,6 +260,7 @@ impl_real!(
     f32,
     f32,
     "f32",
+    0,
     crate::hw_sqrt::sqrtf,
     fabsf,
     fminf,
@@ -266,6 +280,7 @@ impl_real!(
     f64,
     f64,
     "f64",
+    1,
     libm::sqrt,
     fabs,
     fmin,

@@ -29,8 +29,6 @@
 
 mod table_data;
 
-use core::any::Any;
-
 use crate::elliptic::{Agm, Integrals, Method, Parameter};
 use crate::error::finite;
 use crate::geometry::Curvatures;
@@ -166,8 +164,8 @@ pub trait Eccentricity {
 ///   residual r = ln(m₁D/B) − ln g, dr/dt = 3/2 − (B − m₁D)/(2c)·(1/D + 1/B), K/E/B/D by
 ///   [`Agm`]; start at Hamrock–Dowson m₁ = g^{4/π}.
 ///
-/// Iterations: 6 (f64) / 4 (f32) in both branches; then K, E, B, D by [`Agm`]. M4F: 1,191
-/// instructions (f32), 116,635 (f64); host ≈ 0.6 / 1.1 µs.
+/// Iterations: 6 (f64) / 4 (f32) in both branches; then K, E, B, D by [`Agm`]. M4F: 1,200
+/// instructions (f32), 116,700 (f64); host ≈ 0.6 / 1.1 µs.
 ///
 /// # Domain, error, cost
 ///
@@ -442,10 +440,8 @@ impl Table {
 
 /// The coefficient table in `T`'s own precision (no per-call conversion).
 #[inline(always)]
-fn coefficients<T: Real>() -> Option<&'static [[T; table_data::WIDTH]; table_data::CELLS]> {
-    let f32s: &'static dyn Any = &table_data::TABLE_F32;
-    let f64s: &'static dyn Any = &table_data::TABLE_F64;
-    f32s.downcast_ref().or_else(|| f64s.downcast_ref())
+fn coefficients<T: Real>() -> &'static [[T; table_data::WIDTH]; table_data::CELLS] {
+    T::of_precision(&table_data::TABLE_F32, &table_data::TABLE_F64)
 }
 
 /// Horner on the coefficients `row[offset..offset + DEGREE + 1]`, constant term first.
@@ -469,10 +465,7 @@ impl Eccentricity for Table {
 
     #[inline]
     fn shape<T: Real>(g: Ratio<T>) -> Shape<T> {
-        // `Real` is sealed to f32/f64, both of which have a table: the fallback is never taken.
-        let Some(table) = coefficients::<T>() else {
-            return Shape::circle();
-        };
+        let table = coefficients::<T>();
         let g = g.get();
         let x = g.sqrt().sqrt().sqrt();
         let s = (x - T::from_f64(table_data::X0)) * T::from_f64(table_data::INV_WIDTH);
