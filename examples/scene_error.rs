@@ -1,6 +1,6 @@
 //! Max error of every `contensou::select` scene configuration against the exact references
 //! (f64 Newton Hertz + the exact Contensou–Erismann integrals), on a dense grid: 40 ratios u
-//! per decade in [1e-2, 1e2] plus u = 0 and ∞, 19 directions ψ, 3 approaches h, 3–11
+//! per decade in [1e-2, 1e2] plus u = 0 and ∞, 19 directions ψ, 4 approaches h, 3–11
 //! geometries per kind. Prints CSV (read by `tools/scene-bench.sh`): `scene,precision,
 //! contact,normal,law,n_rel,a_rel,force_fn,torque_fna,force_bound_fn,torque_bound_fna`.
 //! Run: `cargo run --release --example scene_error` (every configuration, libm), and

@@ -71,7 +71,7 @@ fn slip_grid(per_decade: usize, spins: bool) -> Vec<(f64, f64)> {
     grid
 }
 
-/// Max errors of scene `S` over its geometries, h ∈ {0.1, 1, 5} µm and the slip grid:
+/// Max errors of scene `S` over its geometries, h ∈ {0.1, 1, 1.907, 5} µm and the slip grid:
 /// (N relative, a relative, |F − F_ref|/(fN), |T_z − T_ref|/(fNa)).
 fn scene_errors<S: Select>(kind: &str, spins: bool, per_decade: usize) -> [f64; 4]
 {

@@ -9,7 +9,7 @@
 //! | `G` geometry | [`Fixed`], [`Varying`] | curvatures fixed for the contact's life, or new every step |
 //! | `S` motion | [`Spin`], [`NoSpin`] | relative spin ω about the normal present, or always 0 |
 //! | `B` budget | [`Rough`], [`Coarse`], [`ExactGrade`] | error bounds on N, a, b and friction (below) |
-//! | `T` precision | `f32`, `f64` | [`Real`] |
+//! | `T` precision | `f32`, `f64` | [`Precision`] (a [`Real`]) |
 //!
 //! [`Select`] resolves it to a law ([`LawOf`]) and a contact type ([`ContactOf`]), and
 //! [`Select::build`] constructs it from the geometry kind's input. Everything is decided by
@@ -98,7 +98,7 @@
 //! `f64` row includes the soft-float routines), and the max error on the host against exact
 //! Hertz (f64 [`crate::shape::Newton`]) + [`crate::friction::exact`] (N relative; F in fN;
 //! T_z in fNa; `examples/scene_error.rs`: 3–11 geometries per kind, 19 slip directions, 40
-//! ratios u per decade in [1e-2, 1e2] plus 0 and ∞). Asserted against the bounds by
+//! ratios u per decade in [1e-2, 1e2] plus 0 and ∞, h ∈ {0.1, 1, 2⁻¹⁹ ≈ 1.9, 5} µm). Asserted against the bounds by
 //! `host-tests/select.rs`.
 //!
 //! | scene | declaration | contact, normal law, friction law | f32: insns / flash B | f64: insns / flash B | max error N (f32) / F fN / T_z fNa |
