@@ -98,8 +98,8 @@
 //! `f64` row includes the soft-float routines), and the max error on the host against exact
 //! Hertz (f64 [`crate::shape::Newton`]) + [`crate::friction::exact`] (N relative; F in fN;
 //! T_z in fNa; `examples/scene_error.rs`: 3–11 geometries per kind, 19 slip directions, 40
-//! ratios u per decade in [1e-2, 1e2] plus 0 and ∞, h ∈ {0.1, 1, 2⁻¹⁹ ≈ 1.9, 5} µm). Asserted against the bounds by
-//! `host-tests/select.rs`.
+//! ratios u per decade in [1e-2, 1e2] plus 0 and ∞, h ∈ {0.1, 1, 2⁻¹⁹ ≈ 1.9, 5} µm).
+//! Asserted against the bounds by `host-tests/select.rs`.
 //!
 //! | scene | declaration | contact, normal law, friction law | f32: insns / flash B | f64: insns / flash B | max error N (f32) / F fN / T_z fNa |
 //! |---|---|---|---|---|---|
