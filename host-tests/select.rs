@@ -1,15 +1,25 @@
 //! `contensou::select`: each scene declaration resolves to the types its table row names, and
 //! each configuration's error against the exact references (f64 Newton Hertz + the exact
-//! Contensou–Erismann integrals) is within its budget's bounds.
+//! Contensou–Erismann integrals) is within its budget's bounds. With `--features micromath`
+//! (run by .ci/run) the `f32` declarations that resolve to a micromath twin are checked too.
 
 use std::any::TypeId;
 
 use contensou::contact::VaryingContact;
 use contensou::friction::{Best, Coulomb, Ellipsoid};
+#[cfg(feature = "micromath")]
+use contensou::normal::HertzMicromath;
 use contensou::normal::{Damping, HuntCrossley};
 use contensou::select::*;
 
 include!("select_set.rs");
+
+/// The law of a varying exact-grade `f32` contact: `Best`, or with the feature `micromath`
+/// its per-call twin with micromath's `ln`.
+#[cfg(not(feature = "micromath"))]
+type VaryingBestF32 = Best;
+#[cfg(feature = "micromath")]
+type VaryingBestF32 = contensou::friction::BestMicromath;
 
 /// `ContactOf<S, D>` is `C` and `LawOf<S>` is `L`.
 fn resolves<S: Select + 'static, D: Damping<S::Real> + 'static, C: 'static, L: 'static>()
@@ -98,9 +108,100 @@ fn declarations_resolve_to_the_tabled_types() {
     resolves::<
         Scene<Elliptic, Varying, Spin, ExactGrade, f32>,
         H,
-        VaryingContact<f32, H, Best>,
+        VaryingContact<f32, H, VaryingBestF32>,
+        VaryingBestF32,
+    >();
+}
+
+/// `Rough` resolves to `Coarse`'s types where no micromath twin applies: `f64`, varying
+/// geometry, and `f32` without the feature.
+#[test]
+fn rough_without_a_twin_is_coarse() {
+    type U = Undamped;
+    resolves::<
+        Scene<Circular, Fixed, Spin, Rough, f64>,
+        U,
+        Contact<f64, Hertz<f64>, U, Ellipsoid>,
+        Ellipsoid,
+    >();
+    resolves::<
+        Scene<Elliptic, Fixed, NoSpin, Rough, f64>,
+        U,
+        Contact<f64, Hertz<f64>, U, Coulomb>,
+        Coulomb,
+    >();
+    resolves::<
+        Scene<Elliptic, Varying, Spin, Rough, f32>,
+        U,
+        VaryingContact<f32, U, Ellipsoid>,
+        Ellipsoid,
+    >();
+    #[cfg(not(feature = "micromath"))]
+    {
+        resolves::<
+            Scene<Circular, Fixed, Spin, Rough, f32>,
+            U,
+            Contact<f32, Hertz<f32>, U, Ellipsoid>,
+            Ellipsoid,
+        >();
+        resolves::<
+            Scene<Elliptic, Fixed, NoSpin, Rough, f32>,
+            U,
+            Contact<f32, Hertz<f32>, U, Coulomb>,
+            Coulomb,
+        >();
+    }
+}
+
+/// Without the feature a varying exact-grade `f32` contact takes `Best`; with it,
+/// `BestMicromath` (`f64` keeps `Best` either way, a fixed contact keeps `Best`).
+#[test]
+fn varying_exact_law_by_feature() {
+    type U = Undamped;
+    resolves::<
+        Scene<Elliptic, Varying, Spin, ExactGrade, f32>,
+        U,
+        VaryingContact<f32, U, VaryingBestF32>,
+        VaryingBestF32,
+    >();
+    resolves::<
+        Scene<Elliptic, Varying, Spin, ExactGrade, f64>,
+        U,
+        VaryingContact<f64, U, Best>,
         Best,
     >();
+    resolves::<
+        Scene<Elliptic, Fixed, Spin, ExactGrade, f32>,
+        U,
+        Contact<f32, Hertz<f32>, U, Best>,
+        Best,
+    >();
+    resolves::<
+        Scene<Elliptic, Varying, NoSpin, ExactGrade, f32>,
+        U,
+        VaryingContact<f32, U, Coulomb>,
+        Coulomb,
+    >();
+}
+
+/// With the feature, `Rough` fixed `f32` contacts take micromath's √h in Hertz.
+#[cfg(feature = "micromath")]
+#[test]
+fn rough_f32_takes_micromath_hertz() {
+    type U = Undamped;
+    type M = HertzMicromath<f32>;
+    resolves::<Scene<Circular, Fixed, Spin, Rough, f32>, U, Contact<f32, M, U, Ellipsoid>, Ellipsoid>(
+    );
+    resolves::<Scene<Circular, Fixed, NoSpin, Rough, f32>, U, Contact<f32, M, U, Coulomb>, Coulomb>(
+    );
+    resolves::<Scene<Elliptic, Fixed, Spin, Rough, f32>, U, Contact<f32, M, U, Ellipsoid>, Ellipsoid>(
+    );
+    resolves::<Scene<Elliptic, Fixed, NoSpin, Rough, f32>, U, Contact<f32, M, U, Coulomb>, Coulomb>(
+    );
+    assert_eq!(
+        TypeId::of::<NormalOf<Scene<Circular, Fixed, Spin, Rough, f32>>>(),
+        TypeId::of::<M>()
+    );
 }
 
 #[test]
@@ -117,6 +218,30 @@ fn names_and_bounds() {
         (Wander::FORCE, Wander::TORQUE),
         (NOSPIN_BOUND, NOSPIN_BOUND)
     );
+    assert_eq!(
+        (Ball::NORMAL, Race::NORMAL, Wander::NORMAL),
+        (NORMAL_BOUND, NORMAL_BOUND, NORMAL_BOUND)
+    );
+    type Rolling = Scene<Circular, Fixed, Spin, Rough, f32>;
+    assert_eq!(
+        (Rolling::NORMAL, Rolling::FORCE, Rolling::TORQUE),
+        (ROUGH_NORMAL_BOUND, 0.25, 0.17)
+    );
+    type Sliding = Scene<Elliptic, Fixed, NoSpin, Rough, f32>;
+    assert_eq!(
+        (Sliding::FORCE, Sliding::TORQUE),
+        (ROUGH_NORMAL_BOUND, ROUGH_NORMAL_BOUND)
+    );
+}
+
+/// micromath's √h is at most 6.07 % high: the rough bound must not be vacuous — the rough
+/// scenes' N is measured off by more than 5 % at h = 2⁻¹⁹ m (so the twin is really used),
+/// and within 6.5 %.
+#[cfg(feature = "micromath")]
+#[test]
+fn rough_normal_error_is_micromaths() {
+    let e = scene_errors::<Scene<Circular, Fixed, NoSpin, Rough, f32>>("sphere-plane", false, 8);
+    assert!(e[0] > 0.05 && e[0] <= ROUGH_NORMAL_BOUND, "{e:?}");
 }
 
 #[test]
@@ -139,11 +264,12 @@ macro_rules! within_bounds {
     ($($name:ident: $p:ty, $g:ty, $s:ty, $b:ty, $kind:literal;)*) => {$(
         #[test]
         fn $name() {
-            fn check<T: Real>() {
+            fn check<T: Precision>() {
                 type S<T> = Scene<$p, $g, $s, $b, T>;
                 let e = scene_errors::<S<T>>($kind, <$s as Motion>::SPINS, 8);
                 let ctx = format!("{} {} {}: {e:?}", $kind, stringify!($s $b), T::NAME);
-                assert!(e[0] <= NORMAL_BOUND && e[1] <= NORMAL_BOUND, "normal {ctx}");
+                let normal = S::<T>::NORMAL;
+                assert!(e[0] <= normal && e[1] <= normal, "normal {ctx}");
                 assert!(e[2] <= S::<T>::FORCE, "force {ctx}");
                 assert!(e[3] <= S::<T>::TORQUE, "torque {ctx}");
             }
@@ -163,4 +289,10 @@ within_bounds! {
     varying_spin_coarse: Elliptic, Varying, Spin, Coarse, "varying";
     varying_spin_exact: Elliptic, Varying, Spin, ExactGrade, "varying";
     varying_nospin: Elliptic, Varying, NoSpin, ExactGrade, "varying";
+    // Micromath's √h in f32 with the feature; Coarse's types otherwise.
+    sphere_plane_spin_rough: Circular, Fixed, Spin, Rough, "sphere-plane";
+    sphere_plane_nospin_rough: Circular, Fixed, NoSpin, Rough, "sphere-plane";
+    ball_race_spin_rough: Elliptic, Fixed, Spin, Rough, "ball-race";
+    ball_race_nospin_rough: Elliptic, Fixed, NoSpin, Rough, "ball-race";
+    varying_spin_rough: Elliptic, Varying, Spin, Rough, "varying";
 }

@@ -109,22 +109,9 @@ impl<T: Real, D: Damping<T>, L: FrictionLaw> Contact<T, Hertz<T>, D, L> {
         damping: D,
         friction: Friction<T, L>,
     ) -> Result<Self, Error> {
-        let (normal, shape) = if curvatures.p() == curvatures.q() {
-            (Hertz::circular(curvatures.p(), estar), Shape::circle())
-        } else {
-            let shape = M::shape(Ratio::of(curvatures)?);
-            (Hertz::from_shape(curvatures, &shape, estar), shape)
-        };
-        Ok(Self::from_parts(
-            normal,
-            damping,
-            friction,
-            Constants::from_shape(&shape),
-        ))
+        Self::hertz_with::<M>(curvatures, estar, damping, friction)
     }
-}
 
-impl<T: Real, D: Damping<T>, L: FrictionLaw> Contact<T, Hertz<T>, D, L> {
     /// A circular patch (P = Q: sphere on plane, sphere on sphere, ball in a spherical cup)
     /// built with no eccentricity method at all: [`Hertz::circular`] + [`Constants::circle`].
     /// Unlike [`Contact::hertz`], whose circle test is a runtime branch (so the elliptic code
@@ -140,11 +127,47 @@ impl<T: Real, D: Damping<T>, L: FrictionLaw> Contact<T, Hertz<T>, D, L> {
         damping: D,
         friction: Friction<T, L>,
     ) -> Result<Self, Error> {
+        Self::circular_with(curvatures, estar, damping, friction)
+    }
+}
+
+impl<T: Real, N: NormalLaw<T> + From<Hertz<T>>, D: Damping<T>, L: FrictionLaw> Contact<T, N, D, L> {
+    /// [`Contact::hertz`] with the normal law `N` made from the exact Hertz law by
+    /// `N::from` (e.g. `HertzMicromath`, feature `micromath`, which keeps Hertz's constants
+    /// and takes √h from micromath; `N = Hertz<T>` is [`Contact::hertz`]). Same errors.
+    pub fn hertz_with<M: Eccentricity>(
+        curvatures: &Curvatures<T>,
+        estar: Modulus<T>,
+        damping: D,
+        friction: Friction<T, L>,
+    ) -> Result<Self, Error> {
+        let (normal, shape) = if curvatures.p() == curvatures.q() {
+            (Hertz::circular(curvatures.p(), estar), Shape::circle())
+        } else {
+            let shape = M::shape(Ratio::of(curvatures)?);
+            (Hertz::from_shape(curvatures, &shape, estar), shape)
+        };
+        Ok(Self::from_parts(
+            N::from(normal),
+            damping,
+            friction,
+            Constants::from_shape(&shape),
+        ))
+    }
+
+    /// [`Contact::circular`] with the normal law `N` made from [`Hertz::circular`] by
+    /// `N::from` (e.g. `HertzMicromath`). Links no elliptic or shape code either. Same errors.
+    pub fn circular_with(
+        curvatures: &Curvatures<T>,
+        estar: Modulus<T>,
+        damping: D,
+        friction: Friction<T, L>,
+    ) -> Result<Self, Error> {
         if curvatures.p() != curvatures.q() {
             return Err(Error::CurvatureRatioOutOfRange);
         }
         Ok(Self::from_parts(
-            Hertz::circular(curvatures.p(), estar),
+            N::from(Hertz::circular(curvatures.p(), estar)),
             damping,
             friction,
             Constants::circle(),

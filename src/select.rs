@@ -8,8 +8,8 @@
 //! | `P` patch | [`Circular`], [`Elliptic`] | P = Q (sphere on plane or sphere) or P < Q |
 //! | `G` geometry | [`Fixed`], [`Varying`] | curvatures fixed for the contact's life, or new every step |
 //! | `S` motion | [`Spin`], [`NoSpin`] | relative spin ω about the normal present, or always 0 |
-//! | `B` budget | [`Coarse`], [`ExactGrade`] | friction error bound (below) |
-//! | `T` precision | `f32`, `f64` | [`Real`] |
+//! | `B` budget | [`Rough`], [`Coarse`], [`ExactGrade`] | error bounds on N, a, b and friction (below) |
+//! | `T` precision | `f32`, `f64` | [`Precision`] (a [`Real`]) |
 //!
 //! [`Select`] resolves it to a law ([`LawOf`]) and a contact type ([`ContactOf`]), and
 //! [`Select::build`] constructs it from the geometry kind's input. Everything is decided by
@@ -46,17 +46,27 @@
 //!   be exact to 1.5e-15 instead of 3.6e-12 (f64), but in `f32` the table is the more accurate
 //!   (3.0e-7 against 7.6e-7) and it is 5 KB smaller and 13× cheaper to build, so the table is
 //!   the cheapest adequate choice. [`Elliptic`] + [`Varying`]: [`VaryingContact`], the shape
-//!   from [`Table`] every step (fixed cost, no elliptic integral). N, a and b are exact-grade in
-//!   every configuration (relative error ≤ [`NORMAL_BOUND`]); `Circular` + `Varying` is not
-//!   offered (a circle's shape cannot vary; a changing radius is `Elliptic` + `Varying` at
-//!   P = Q).
+//!   from [`Table`] every step (fixed cost, no elliptic integral). N, a and b are exact-grade
+//!   (relative error ≤ [`NORMAL_BOUND`]) in every configuration but one: a [`Fixed`] contact
+//!   with budget [`Rough`] in `f32` with the feature `micromath` takes the per-step √h from
+//!   micromath (`HertzMicromath`, built from the same exact Hertz law through
+//!   [`Contact::circular_with`] / [`Contact::hertz_with`], so a sphere on a plane still links
+//!   no elliptic code): N, a, b up to 6.07 % high ([`ROUGH_NORMAL_BOUND`] = 6.5 %) for one M4F
+//!   instruction less per step (108 against 109; isolated, the twin's patch is 32 against
+//!   36). `Circular` + `Varying` is not offered (a circle's shape cannot vary; a changing
+//!   radius is `Elliptic` + `Varying` at P = Q).
 //! - **Friction law.** [`NoSpin`]: [`Coulomb`] at every budget — with ω = 0 the
 //!   Contensou–Erismann integrals reduce exactly to F = −fN·v_P/|v_P|, T_z = 0 (the exact
 //!   law's pure-translation limit), which is Coulomb's law for δ = 0 (its g_δ ramp below δ is
 //!   the regularization, a modelling choice, not an error). (At ω = 0 [`Ellipsoid`] is also
 //!   exact and 18 instructions cheaper per `f32` step, but ignores δ; in `f64` Coulomb is the
-//!   cheaper.) [`Spin`]: the budget's law,
-//!   [`Budget::SpinLaw`]:
+//!   cheaper; `CoulombMicromath` is 3 dearer.) [`Spin`]: the budget's law,
+//!   [`Budget::SpinLaw`] for a fixed contact (its per-contact form), [`Budget::VaryingSpinLaw`]
+//!   for a varying one (per-call form):
+//!   - [`Rough`] (≤ 0.25 fN, ≤ 0.17 fNa, N, a, b ≤ 6.5 %) → [`Ellipsoid`], as `Coarse`:
+//!     `EllipsoidMicromath` costs 3 instructions more. Its torque bound exceeds `Coarse`'s
+//!     because micromath's √h inflates N·a by up to 12.5 % (measured 0.159 fNa at the 209
+//!     inner race).
 //!   - [`Coarse`] (≤ 0.25 fN, ≤ 0.15 fNa) → [`Ellipsoid`] (measured 0.227 fN, 0.134 fNa
 //!     over e² ∈ [0, 0.99]; 34 M4F instructions). The paper's [`crate::friction::Simplified`]
 //!     (0.393 fN / 0.354 fNa, 66 instructions) is dominated by it in error *and* cost, so no
@@ -64,7 +74,17 @@
 //!     The ellipsoidal law ignores δ (Coulomb's sign law at ω = 0).
 //!   - [`ExactGrade`] (≤ 5e-4 fN, ≤ 5e-4 fNa) → [`Best`] (measured 5.2e-5 fN / 4.1e-6 fNa in
 //!     the per-contact form a [`Fixed`] contact precomputes, 2.0e-6 / 8.7e-7 per call for
-//!     [`Varying`]).
+//!     [`Varying`]). With the feature `micromath` a [`Varying`] `f32` contact takes
+//!     `BestMicromath` (the per-call form with micromath's `ln`: 2.8e-6 fN / 7.0e-7 fNa in the
+//!     scene, 1,562 instructions per step against 1,574). A [`Fixed`] contact keeps [`Best`]:
+//!     its per-contact [`crate::friction::BestContact`] calls no `ln` and is far cheaper than
+//!     any per-call form.
+//!
+//! The micromath twins are used exactly where the budget admits their measured error *and*
+//! they were measured cheaper in the scene (`bench-results/micromath.md` has each twin's
+//! figures); the others (its `sqrt` in the friction laws, `HamrockDowsonMicromath`) cost more
+//! on the M4F and are never chosen. The choice goes through [`Precision`]: for `f64` (where the
+//! twins are libm code) and without the feature every declaration resolves to libm types.
 //!
 //! The friction bounds hold for patches with e² ≤ 0.99 (g = P/Q ≥ 0.0274); beyond that both
 //! laws degrade (see [`Best`]'s and [`Ellipsoid`]'s docs).
@@ -78,33 +98,44 @@
 //! `f64` row includes the soft-float routines), and the max error on the host against exact
 //! Hertz (f64 [`crate::shape::Newton`]) + [`crate::friction::exact`] (N relative; F in fN;
 //! T_z in fNa; `examples/scene_error.rs`: 3–11 geometries per kind, 19 slip directions, 40
-//! ratios u per decade in [1e-2, 1e2] plus 0 and ∞). Asserted against the bounds by
-//! `host-tests/select.rs`.
+//! ratios u per decade in [1e-2, 1e2] plus 0 and ∞, h ∈ {0.1, 1, 2⁻¹⁹ ≈ 1.9, 5} µm).
+//! Asserted against the bounds by `host-tests/select.rs`.
 //!
 //! | scene | declaration | contact, normal law, friction law | f32: insns / flash B | f64: insns / flash B | max error N (f32) / F fN / T_z fNa |
 //! |---|---|---|---|---|---|
-//! | sphere-plane-spin-coarse | `Circular, Fixed, Spin, Coarse` | [`Contact`], `Hertz::circular`, [`Ellipsoid`] | 109 / 1204 | 3518 / 6000 | 1.0e-07 / 1.1e-01 / 8.3e-02 |
+//! | sphere-plane-spin-coarse | `Circular, Fixed, Spin, Coarse` | [`Contact`], `Hertz::circular`, [`Ellipsoid`] | 109 / 1204 | 3387 / 6000 | 1.0e-07 / 1.1e-01 / 8.3e-02 |
 //! | sphere-plane-spin-exact | `Circular, Fixed, Spin, ExactGrade` | [`Contact`], `Hertz::circular`, [`Best`] | 209 / 11032 | 7880 / 19920 | 1.0e-07 / 9.3e-07 / 2.5e-07 |
 //! | sphere-plane-nospin | `Circular, Fixed, NoSpin, _` | [`Contact`], `Hertz::circular`, [`Coulomb`] | 127 / 1244 | 3348 / 6072 | 1.0e-07 / 2.0e-07 / 0 |
-//! | ball-race-spin-coarse | `Elliptic, Fixed, Spin, Coarse` | [`Contact`], Hertz, `Table` once, [`Ellipsoid`] | 109 / 4000 | 3517 / 12064 | 1.7e-07 / 2.2e-01 / 1.3e-01 |
+//! | ball-race-spin-coarse | `Elliptic, Fixed, Spin, Coarse` | [`Contact`], Hertz, `Table` once, [`Ellipsoid`] | 109 / 4000 | 3386 / 12064 | 1.7e-07 / 2.2e-01 / 1.3e-01 |
 //! | ball-race-spin-exact | `Elliptic, Fixed, Spin, ExactGrade` | [`Contact`], Hertz, `Table` once, [`Best`] | 230 / 14796 | 9192 / 30012 | 1.7e-07 / 4.9e-05 / 3.5e-06 |
 //! | ball-race-nospin | `Elliptic, Fixed, NoSpin, _` | [`Contact`], Hertz, `Table` once, [`Coulomb`] | 127 / 3992 | 3338 / 12056 | 1.7e-07 / 1.9e-07 / 0 |
-//! | varying-spin-coarse | `Elliptic, Varying, Spin, Coarse` | [`VaryingContact`], Hertz, `Table` per step, [`Ellipsoid`] | 258 / 4136 | 9779 / 11928 | 2.6e-07 / 2.2e-01 / 1.3e-01 |
-//! | varying-spin-exact | `Elliptic, Varying, Spin, ExactGrade` | [`VaryingContact`], Hertz, `Table` per step, [`Best`] | 1574 / 12328 | 99308 / 25612 | 2.6e-07 / 2.1e-06 / 7.2e-07 |
+//! | varying-spin-coarse | `Elliptic, Varying, Spin, Coarse` | [`VaryingContact`], Hertz, `Table` per step, [`Ellipsoid`] | 258 / 4136 | 9641 / 11928 | 2.6e-07 / 2.2e-01 / 1.3e-01 |
+//! | varying-spin-exact | `Elliptic, Varying, Spin, ExactGrade` | [`VaryingContact`], Hertz, `Table` per step, [`Best`] | 1574 / 12320 | 99308 / 25612 | 2.6e-07 / 2.1e-06 / 7.2e-07 |
 //! | varying-nospin | `Elliptic, Varying, NoSpin, _` | [`VaryingContact`], Hertz, `Table` per step, [`Coulomb`] | 265 / 4168 | 9516 / 11896 | 2.6e-07 / 2.9e-07 / 0 |
+//! | sphere-plane-spin-rough-micromath | `Circular, Fixed, Spin, Rough` | [`Contact`], `HertzMicromath` from `Hertz::circular`, [`Ellipsoid`] | 108 / 1204 | — | 6.1e-02 / 1.2e-01 / 1.3e-01 |
+//! | sphere-plane-nospin-rough-micromath | `Circular, Fixed, NoSpin, Rough` | [`Contact`], `HertzMicromath` from `Hertz::circular`, [`Coulomb`] | 126 / 1244 | — | 6.1e-02 / 6.1e-02 / 0 |
+//! | ball-race-spin-rough-micromath | `Elliptic, Fixed, Spin, Rough` | [`Contact`], `HertzMicromath`, `Table` once, [`Ellipsoid`] | 108 / 3928 | — | 6.1e-02 / 2.3e-01 / 1.6e-01 |
+//! | ball-race-nospin-rough-micromath | `Elliptic, Fixed, NoSpin, Rough` | [`Contact`], `HertzMicromath`, `Table` once, [`Coulomb`] | 126 / 3968 | — | 6.1e-02 / 6.1e-02 / 0 |
+//! | varying-spin-exact-micromath | `Elliptic, Varying, Spin, ExactGrade` | [`VaryingContact`], Hertz, `Table` per step, `BestMicromath` | 1562 / 12360 | — | 2.6e-07 / 2.8e-06 / 7.0e-07 |
 //!
 //! Instructions include the rig's 8-instruction call floor; `f64` is soft float on the M4F.
 //! The [`Best`] rows' flash includes its 2.8 KB (`f32`) coefficient table and, for a fixed
 //! contact, [`crate::friction::BestContact::new`]. N is exact in closed form for the circle
 //! (the `f32` figure is rounding); F and T_z of the `Coarse` rows are the ellipsoidal law's
-//! own error, worst at the thinnest patch (e² = 0.989–0.99).
+//! own error, worst at the thinnest patch (e² = 0.989–0.99). The `-micromath` rows are what
+//! an `f32` declaration resolves to with the feature `micromath`, where that differs (`f64`
+//! rows are unchanged by it); without it the `Rough` rows are the `Coarse` ones and
+//! `varying-spin-exact` is the libm row. The rough rows' N error is micromath's √h bias at
+//! its worst (h = 2⁻¹⁹ m); it costs 1 instruction less per step than libm's `vsqrt.f32` —
+//! measured, but the whole gain of a 6 % normal-force error (a toy, not a bearing).
 //!
 //! # Extending
 //!
-//! A budget is a type implementing [`Budget`]: its bounds and the cheapest law measured to
-//! meet them. MICROMATH: the `micromath` backend (feature `micromath`, `f32` only) will plug
-//! in here as a further budget (or as `Coarse`'s law when its measured error fits 0.25 fN /
-//! 0.15 fNa) once its laws are measured; nothing here depends on it yet.
+//! A budget is a type implementing [`Budget`]: its bounds (N, a, b; friction with and without
+//! spin) and the cheapest laws measured to meet them — the fixed contact's normal law (any
+//! [`NormalLaw`] built `From` exact [`Hertz`]), the spin law of a fixed and of a varying
+//! contact. A law that depends on the precision (a micromath twin for `f32` only) goes
+//! through an associated type of [`Precision`].
 
 use core::marker::PhantomData;
 
@@ -115,16 +146,29 @@ use crate::normal::{Damping, Hertz, Modulus, NormalLaw};
 use crate::shape::Table;
 use crate::{Error, Real};
 
-/// Relative error bound on N, a and b in every configuration (measured ≤ 2.6e-7 in `f32`,
-/// ≤ 6.1e-13 in `f64`; `bench-results/scenes.csv`).
+/// Relative error bound on N, a and b of the [`Coarse`] and [`ExactGrade`] budgets, in every
+/// configuration (measured ≤ 2.6e-7 in `f32`, ≤ 6.1e-13 in `f64`; `bench-results/scenes.csv`).
+/// [`Rough`] has its own ([`ROUGH_NORMAL_BOUND`]); a scene's is [`Select::NORMAL`].
 pub const NORMAL_BOUND: f64 = 2e-6;
 
-/// Friction error bound (fN and fNa) without spin: [`Coulomb`] is the exact law there, so
-/// only rounding remains (measured ≤ 3.0e-7 in `f32`, the normal force's rounding included).
+/// Friction error bound (fN and fNa) without spin for the [`Coarse`] and [`ExactGrade`]
+/// budgets: [`Coulomb`] is the exact law there, so only rounding remains (measured ≤ 3.0e-7
+/// in `f32`, the normal force's rounding included). A scene's is [`Select::FORCE`].
 pub const NOSPIN_BOUND: f64 = 1e-6;
+
+/// [`Rough`]'s relative error bound on N, a and b: micromath's √h is never below the true
+/// root and at most 6.07 % above it, so N, a, b (and p0) are biased high by up to that
+/// factor (measured 6.07e-2 in every rough `f32` scene with the feature, at h = 2⁻¹⁹ m;
+/// `bench-results/scenes.csv`). Without the feature, in `f64` and for varying geometry `Rough`
+/// resolves to exact-grade Hertz and meets [`NORMAL_BOUND`].
+pub const ROUGH_NORMAL_BOUND: f64 = 0.065;
 
 mod sealed {
     pub trait Sealed {}
+    impl Sealed for f32 {}
+    impl Sealed for f64 {}
+    impl Sealed for super::Spin {}
+    impl Sealed for super::NoSpin {}
 }
 
 /// Patch kind: P = Q (sphere on plane, sphere on sphere). No elliptic code is linked.
@@ -145,50 +189,108 @@ pub struct Spin;
 /// Motion: ω = 0 always (pure sliding or rolling without spin): the plain Coulomb law is exact.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct NoSpin;
+/// Budget: N, a, b within 6.5 % ([`ROUGH_NORMAL_BOUND`]); friction within 0.25 fN and
+/// 0.17 fNa with spin, 0.065 fN without → [`Ellipsoid`] (with spin) and, for a fixed contact in
+/// `f32` with the feature `micromath`, micromath's √h in Hertz (`HertzMicromath`): measured
+/// N 6.07e-2, friction 0.233 fN / 0.159 fNa (ball–race; the N and a bias adds to the
+/// ellipsoidal law's 0.222 / 0.133, so [`Coarse`]'s torque bound 0.15 would not hold), 108
+/// M4F instructions per step (`Coarse`: 109). Without the feature, in `f64` and for
+/// [`Varying`] geometry it resolves to [`Coarse`]'s types, within the same bounds.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Rough;
 /// Budget: friction within 0.25 fN in force and 0.15 fNa in torque → [`Ellipsoid`] (measured
-/// 0.227 fN / 0.134 fNa; 109 M4F instructions per `f32` step of a fixed contact).
+/// 0.227 fN / 0.134 fNa; 109 M4F instructions per `f32` step of a fixed contact); N, a, b
+/// within [`NORMAL_BOUND`].
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Coarse;
 /// Budget: friction within 5e-4 fN in force and 5e-4 fNa in torque ("exact-grade") → [`Best`]
 /// (measured 4.9e-5 fN / 3.5e-6 fNa; 209–230 M4F instructions per `f32` step of a fixed
-/// contact, 1,574 of a varying one).
+/// contact, 1,574 of a varying one; with the feature `micromath` a varying `f32` contact takes
+/// `BestMicromath`: 2.8e-6 fN / 7.0e-7 fNa, 1,562 instructions); N, a, b within
+/// [`NORMAL_BOUND`].
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct ExactGrade;
 
-impl sealed::Sealed for Spin {}
-impl sealed::Sealed for NoSpin {}
+/// A scene's precision (sealed: `f32`, `f64`) and the micromath twins it admits. With the
+/// feature `micromath`, `f32` names the twins measured to pay in some scene; `f64` (where the
+/// twins are libm code) and every precision without the feature name the libm types.
+pub trait Precision: Real + sealed::Sealed {
+    /// [`Hertz`] with micromath's √h per step (`HertzMicromath<f32>`), or [`Hertz`].
+    type FastHertz: NormalLaw<Self> + From<Hertz<Self>> + Copy + core::fmt::Debug + PartialEq;
+    /// [`Best`]'s per-call form with micromath's `ln` (`BestMicromath`), or [`Best`].
+    type FastBest: FrictionLaw;
+}
 
-/// An error budget for the friction of a spinning contact: its bounds (max over e² ≤ 0.99,
-/// all slip directions and ratios, δ = 0, against the exact integrals) and the cheapest law
-/// measured to meet them.
+#[cfg(feature = "micromath")]
+impl Precision for f32 {
+    type FastHertz = crate::normal::HertzMicromath<f32>;
+    type FastBest = crate::friction::BestMicromath;
+}
+
+#[cfg(not(feature = "micromath"))]
+impl Precision for f32 {
+    type FastHertz = Hertz<f32>;
+    type FastBest = Best;
+}
+
+impl Precision for f64 {
+    type FastHertz = Hertz<f64>;
+    type FastBest = Best;
+}
+
+/// An error budget: its bounds (max over e² ≤ 0.99, all slip directions and ratios, δ = 0,
+/// against exact Hertz and the exact integrals) and the cheapest laws measured to meet them.
 pub trait Budget {
     /// Short name used in benchmark keys.
     const NAME: &'static str;
-    /// Bound on |F − F_exact| in units of fN.
+    /// Bound on the relative error of N, a and b.
+    const NORMAL: f64;
+    /// Bound on |F − F_exact| in units of fN, with spin.
     const FORCE: f64;
-    /// Bound on |T_z − T_exact| in units of fNa.
+    /// Bound on |T_z − T_exact| in units of fNa, with spin.
     const TORQUE: f64;
-    /// The cheapest law (in measured instructions per call) within the bounds.
+    /// Bound on |F − F_exact| (fN) and |T_z − T_exact| (fNa) without spin ([`Coulomb`]).
+    const NOSPIN: f64;
+    /// The normal law of a fixed contact (built from exact Hertz by `From`).
+    type Normal<T: Precision>: NormalLaw<T> + From<Hertz<T>> + Copy + core::fmt::Debug + PartialEq;
+    /// The friction law of a spinning fixed contact (its per-contact form is used).
     type SpinLaw: FrictionLaw;
+    /// The friction law of a spinning varying contact (its per-call form is used).
+    type VaryingSpinLaw<T: Precision>: FrictionLaw;
+}
+
+impl Budget for Rough {
+    const NAME: &'static str = "rough";
+    const NORMAL: f64 = ROUGH_NORMAL_BOUND;
+    const FORCE: f64 = 0.25;
+    const TORQUE: f64 = 0.17;
+    const NOSPIN: f64 = ROUGH_NORMAL_BOUND;
+    type Normal<T: Precision> = T::FastHertz;
+    type SpinLaw = Ellipsoid;
+    type VaryingSpinLaw<T: Precision> = Ellipsoid;
 }
 
 impl Budget for Coarse {
     const NAME: &'static str = "coarse";
+    const NORMAL: f64 = NORMAL_BOUND;
     const FORCE: f64 = 0.25;
     const TORQUE: f64 = 0.15;
+    const NOSPIN: f64 = NOSPIN_BOUND;
+    type Normal<T: Precision> = Hertz<T>;
     type SpinLaw = Ellipsoid;
+    type VaryingSpinLaw<T: Precision> = Ellipsoid;
 }
 
 impl Budget for ExactGrade {
     const NAME: &'static str = "exact";
+    const NORMAL: f64 = NORMAL_BOUND;
     const FORCE: f64 = 5e-4;
     const TORQUE: f64 = 5e-4;
+    const NOSPIN: f64 = NOSPIN_BOUND;
+    type Normal<T: Precision> = Hertz<T>;
     type SpinLaw = Best;
+    type VaryingSpinLaw<T: Precision> = T::FastBest;
 }
-
-// MICROMATH: a micromath-backed budget goes here (feature `micromath`, f32 only), e.g.
-// `#[cfg(feature = "micromath")] impl Budget for Micro { … type SpinLaw = <its law>; }`,
-// with bounds from its measured error — not assumed.
 
 /// Whether the contact spins: [`Spin`] takes the budget's law, [`NoSpin`] plain Coulomb.
 pub trait Motion: sealed::Sealed {
@@ -196,20 +298,20 @@ pub trait Motion: sealed::Sealed {
     const NAME: &'static str;
     /// Whether ω ≠ 0 occurs.
     const SPINS: bool;
-    /// The friction law for budget `B`.
-    type Law<B: Budget>: FrictionLaw;
+    /// The friction law, given the budget's law `L` for a spinning contact.
+    type Law<L: FrictionLaw>: FrictionLaw;
 }
 
 impl Motion for Spin {
     const NAME: &'static str = "spin";
     const SPINS: bool = true;
-    type Law<B: Budget> = B::SpinLaw;
+    type Law<L: FrictionLaw> = L;
 }
 
 impl Motion for NoSpin {
     const NAME: &'static str = "nospin";
     const SPINS: bool = false;
-    type Law<B: Budget> = Coulomb;
+    type Law<L: FrictionLaw> = Coulomb;
 }
 
 /// A scene declaration: patch `P`, geometry `G`, motion `S`, budget `B`, precision `T`. A
@@ -224,7 +326,9 @@ type Markers<P, G, S, B, T> = fn() -> (P, G, S, B, T);
 /// What a [`Scene`] resolves to.
 pub trait Select {
     /// The precision.
-    type Real: Real;
+    type Real: Precision;
+    /// The normal law chosen (a varying contact rebuilds [`Hertz`] every step).
+    type Normal: NormalLaw<Self::Real>;
     /// The friction law chosen.
     type Law: FrictionLaw;
     /// What the constructor needs of the geometry: [`Curvatures`] for a fixed contact,
@@ -233,17 +337,20 @@ pub trait Select {
     /// The contact type chosen, for damping law `D`; every one steps through [`Step`].
     type Contact<D: Damping<Self::Real>>: Step<Self::Real>;
     /// Short name of the geometry kind (benchmark keys): `sphere-plane`, `ball-race` or
-    /// `varying`; the key is `<GEOMETRY>-<Motion::NAME>[-<Budget::NAME>]`.
+    /// `varying`; the key is `<GEOMETRY>-<Motion::NAME>[-<Budget::NAME>]`, with `-micromath` appended where a
+    /// micromath twin was chosen.
     const GEOMETRY: &'static str;
     /// Whether the scene spins ([`Motion::SPINS`]).
     const SPINS: bool;
+    /// Bound on the relative error of N, a and b ([`Budget::NORMAL`]).
+    const NORMAL: f64;
     /// Bound on the friction force error (fN).
     const FORCE: f64;
     /// Bound on the drilling torque error (fNa).
     const TORQUE: f64;
 
     /// Build the contact. Errors: those of the geometry kind's constructor
-    /// ([`Contact::circular`], [`Contact::hertz`]; a varying contact cannot fail).
+    /// ([`Contact::circular_with`], [`Contact::hertz_with`]; a varying contact cannot fail).
     fn build<D: Damping<Self::Real>>(
         geometry: &Self::Geometry,
         estar: Modulus<Self::Real>,
@@ -282,27 +389,32 @@ impl<T: Real, D: Damping<T>, L: FrictionLaw> Step<T> for VaryingContact<T, D, L>
     }
 }
 
+/// The normal law a scene resolves to.
+pub type NormalOf<S> = <S as Select>::Normal;
 /// The friction law a scene resolves to.
 pub type LawOf<S> = <S as Select>::Law;
 /// The contact type a scene resolves to, with damping law `D` (default [`Undamped`](crate::normal::Undamped)).
 pub type ContactOf<S, D = crate::normal::Undamped> = <S as Select>::Contact<D>;
 
-/// One [`Select`] impl per geometry kind: patch, geometry, key name, constructor input, contact
-/// type (for damping law `$d`), the constructor body and the geometry input from curvatures.
+/// One [`Select`] impl per geometry kind: patch, geometry, key name, normal law, friction law
+/// for a spinning contact, constructor input, contact type (for damping law `$d`), the
+/// constructor body and the geometry input from curvatures.
 macro_rules! select {
-    ($p:ty, $g:ty, $name:literal, $geometry:ty,
+    ($p:ty, $g:ty, $name:literal, $normal:ty, $spin_law:ty, $geometry:ty,
      |$d:ident| $contact:ty,
      |$geo:pat_param, $estar:ident, $damping:ident, $friction:ident| $build:expr,
      |$c:pat_param| $of:expr) => {
-        impl<S: Motion, B: Budget, T: Real> Select for Scene<$p, $g, S, B, T> {
+        impl<S: Motion, B: Budget, T: Precision> Select for Scene<$p, $g, S, B, T> {
             type Real = T;
-            type Law = S::Law<B>;
+            type Normal = $normal;
+            type Law = S::Law<$spin_law>;
             type Geometry = $geometry;
             type Contact<$d: Damping<T>> = $contact;
             const GEOMETRY: &'static str = $name;
             const SPINS: bool = S::SPINS;
-            const FORCE: f64 = if S::SPINS { B::FORCE } else { NOSPIN_BOUND };
-            const TORQUE: f64 = if S::SPINS { B::TORQUE } else { NOSPIN_BOUND };
+            const NORMAL: f64 = B::NORMAL;
+            const FORCE: f64 = if S::SPINS { B::FORCE } else { B::NOSPIN };
+            const TORQUE: f64 = if S::SPINS { B::TORQUE } else { B::NOSPIN };
 
             fn build<$d: Damping<T>>(
                 $geo: &$geometry,
@@ -321,17 +433,17 @@ macro_rules! select {
     };
 }
 
-select!(Circular, Fixed, "sphere-plane", Curvatures<T>,
-    |D| Contact<T, Hertz<T>, D, S::Law<B>>,
-    |curvatures, estar, damping, friction| Contact::circular(curvatures, estar, damping, friction),
+select!(Circular, Fixed, "sphere-plane", B::Normal<T>, B::SpinLaw, Curvatures<T>,
+    |D| Contact<T, B::Normal<T>, D, S::Law<B::SpinLaw>>,
+    |curvatures, estar, damping, friction| Contact::circular_with(curvatures, estar, damping, friction),
     |c| *c);
 
-select!(Elliptic, Fixed, "ball-race", Curvatures<T>,
-    |D| Contact<T, Hertz<T>, D, S::Law<B>>,
-    |curvatures, estar, damping, friction| Contact::hertz::<Table>(curvatures, estar, damping, friction),
+select!(Elliptic, Fixed, "ball-race", B::Normal<T>, B::SpinLaw, Curvatures<T>,
+    |D| Contact<T, B::Normal<T>, D, S::Law<B::SpinLaw>>,
+    |curvatures, estar, damping, friction| Contact::hertz_with::<Table>(curvatures, estar, damping, friction),
     |c| *c);
 
-select!(Elliptic, Varying, "varying", (),
-    |D| VaryingContact<T, D, S::Law<B>>,
+select!(Elliptic, Varying, "varying", Hertz<T>, B::VaryingSpinLaw<T>, (),
+    |D| VaryingContact<T, D, S::Law<B::VaryingSpinLaw<T>>>,
     |_, estar, damping, friction| Ok(VaryingContact::new(estar, damping, friction)),
     |_| ());

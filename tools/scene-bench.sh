@@ -17,17 +17,24 @@ trap 'rm -rf "$tmp"' EXIT
     awk '$1 == "BENCH" && $2 == "scene" { sub(/^insns=/, "", $5); print $3 "," $4 "," $5 }' \
         >"$tmp/insns.csv"
 "$root/tools/flash-bench.sh" --stage scene | sed 's/^scene,//' >"$tmp/flash.csv"
+# Without the feature: every configuration (libm); with it: the f32 rows resolving to a
+# micromath twin (keys ending -micromath).
 (cd "$root" && cargo run --release --quiet --example scene_error) | tail -n +2 >"$tmp/err.csv"
+(cd "$root" && cargo run --release --quiet --features micromath --example scene_error) |
+    tail -n +2 >>"$tmp/err.csv"
 
 {
     echo "# contensou::select scene table (tools/scene-bench.sh). scene: the configuration"
-    echo "# (<geometry>-spin-<budget> or <geometry>-nospin; sphere-plane = Circular+Fixed,"
-    echo "# ball-race = Elliptic+Fixed, varying = Elliptic+Varying); contact, normal, law: what the"
-    echo "# declaration resolves to; insns: M4F instructions per step (QEMU, 64 mixed slips);"
+    echo "# (<geometry>-spin-<budget> or <geometry>-nospin[-rough]; sphere-plane = Circular+Fixed,"
+    echo "# ball-race = Elliptic+Fixed, varying = Elliptic+Varying; -micromath: what an f32"
+    echo "# declaration resolves to with the feature micromath, where that differs; rough rows"
+    echo "# without it = the coarse ones); contact, normal, law: what the declaration resolves to;"
+    echo "# insns: M4F instructions per step (QEMU, 64 mixed slips);"
     echo "# flash_bytes: .text+.rodata+.data the configuration adds to an empty firmware"
     echo "# (construction from curvatures + step); n_rel, a_rel: max relative error of N and a;"
     echo "# force_fn, torque_fna: max |F - F_exact|/(fN), |T - T_exact|/(fNa) against f64 Newton"
-    echo "# Hertz + the exact integrals (e2 <= 0.99, delta = 0); *_bound_*: the budget's bounds."
+    echo "# Hertz + the exact integrals (e2 <= 0.99, delta = 0); *_bound_*: the budget's bounds"
+    echo "# (N, a: 2e-6, rough 6.5e-2)."
     echo "scene,precision,contact,normal,law,insns,flash_bytes,n_rel,a_rel,force_fn,torque_fna,force_bound_fn,torque_bound_fna"
     awk -F, -v OFS=, '
         FILENAME == ARGV[1] { insns[$1 "," $2] = $3; next }

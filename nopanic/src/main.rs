@@ -16,6 +16,7 @@
 use core::hint::black_box;
 
 use contensou::Real;
+use contensou::select::Precision;
 use contensou::contact::{Contact, VaryingContact};
 use contensou::elliptic::{self, Agm, Method, Parameter, Theta, ThetaMicromath};
 use contensou::friction::{
@@ -69,12 +70,12 @@ macro_rules! probes {
         $(
             #[inline(never)]
             #[allow(clippy::too_many_arguments)]
-            fn $name<$T: Real>($($arg: $T),*) {
+            fn $name<$T: Precision>($($arg: $T),*) {
                 $(let $arg = black_box($arg);)*
                 let _ = black_box($body);
             }
         )*
-        fn run_all<R: Real>() {
+        fn run_all<R: Precision>() {
             // Every argument is a black-boxed value: the probes must hold for any.
             $( $name::<R>($(probes!(@arg $arg)),*); )*
         }
@@ -273,15 +274,24 @@ mod api {
             type Ball<T> = Scene<Circular, Fixed, Spin, Coarse, T>;
             type Race<T> = Scene<Elliptic, Fixed, Spin, ExactGrade, T>;
             type Wander<T> = Scene<Elliptic, Varying, NoSpin, Coarse, T>;
+            // Micromath's √h (f32) and Best's per-call twin (f32) where the feature resolves to them.
+            type Rolling<T> = Scene<Circular, Fixed, Spin, Rough, T>;
+            type Track<T> = Scene<Elliptic, Fixed, NoSpin, Rough, T>;
+            type Drift<T> = Scene<Elliptic, Varying, Spin, ExactGrade, T>;
+            let (Ok(f4), Ok(f5), Ok(f6)) = (Friction::new(f, f), Friction::new(f, f), Friction::new(f, f))
+            else { return };
             (
                 Ball::<T>::build(&Ball::<T>::geometry(&c), e, Undamped, f1).map(|k| k.step(&c, h, hdot, s)),
                 Race::<T>::build(&Race::<T>::geometry(&c), e, Undamped, f2).map(|k| k.step(&c, h, hdot, s)),
                 Wander::<T>::build(&Wander::<T>::geometry(&c), e, Undamped, f3).map(|k| k.step(&c, h, hdot, s)),
+                Rolling::<T>::build(&Rolling::<T>::geometry(&c), e, Undamped, f4).map(|k| k.step(&c, h, hdot, s)),
+                Track::<T>::build(&Track::<T>::geometry(&c), e, Undamped, f5).map(|k| k.step(&c, h, hdot, s)),
+                Drift::<T>::build(&Drift::<T>::geometry(&c), e, Undamped, f6).map(|k| k.step(&c, h, hdot, s)),
             )
         }
     }
 
-    pub(crate) fn run<T: Real>() {
+    pub(crate) fn run<T: Precision>() {
         run_all::<T>();
     }
 }

@@ -22,14 +22,19 @@ use core::hint::black_box as bb;
 
 use contensou::Real;
 use contensou::contact::{Contact, VaryingContact};
-use contensou::elliptic::{Agm, Integrals, Method, Parameter, Table as EllTable, Theta};
+use contensou::elliptic::{
+    Agm, Integrals, Method, Parameter, Table as EllTable, Theta, ThetaMicromath,
+};
 use contensou::friction::*;
 use contensou::geometry::Curvatures;
-use contensou::normal::{Fitted, Hertz, Modulus, NormalLaw, Undamped};
+use contensou::math::{Backend, Micromath};
+use contensou::normal::{Fitted, Hertz, HertzMicromath, Modulus, NormalLaw, Undamped};
 use contensou::scenes::integrate::{rk4, rk4_step};
 use contensou::scenes::tippe_top::{Params, TippeTop};
 use contensou::select::*;
-use contensou::shape::{Eccentricity, HamrockDowson, Linear, Newton, Ratio, Table};
+use contensou::shape::{
+    Eccentricity, HamrockDowson, HamrockDowsonMicromath, Linear, Newton, Ratio, Table,
+};
 use cortex_m_rt::entry;
 use panic_semihosting as _;
 
@@ -175,6 +180,14 @@ fn tippe_top(steps: usize) {
         bb(rk4(&top, 0.0, y, t(1e-5), steps, |_, _, _| {}));
     }
 }
+/// As [`scene`] for `Scene<Elliptic, Varying, _, _, T>` resolving to law `L` (used where the
+/// declaration resolves to a micromath twin here: this firmware enables the feature).
+fn scene_varying<T: Real, L: FrictionLaw>() {
+    let curv = curvatures::<T>();
+    bb(curv);
+    let c = VaryingContact::new(estar(), Undamped, friction::<T, L>());
+    bb(c.step(&curv, t(1e-6), T::ZERO, slip()));
+}
 fn scene<S: Select>() {
     let curv = if S::GEOMETRY == "sphere-plane" {
         ok(Curvatures::new(t(78.7), t(78.7)))
@@ -283,10 +296,31 @@ probes! {
     "scene,ball-race-nospin,f64" => scene::<Scene<Elliptic, Fixed, NoSpin, ExactGrade, f64>>();
     "scene,varying-spin-coarse,f32" => scene::<Scene<Elliptic, Varying, Spin, Coarse, f32>>();
     "scene,varying-spin-coarse,f64" => scene::<Scene<Elliptic, Varying, Spin, Coarse, f64>>();
-    "scene,varying-spin-exact,f32" => scene::<Scene<Elliptic, Varying, Spin, ExactGrade, f32>>();
+    // Without the feature `micromath` the declaration resolves to this (with it, to the
+    // `-micromath` row below).
+    "scene,varying-spin-exact,f32" => scene_varying::<f32, Best>();
     "scene,varying-spin-exact,f64" => scene::<Scene<Elliptic, Varying, Spin, ExactGrade, f64>>();
     "scene,varying-nospin,f32" => scene::<Scene<Elliptic, Varying, NoSpin, ExactGrade, f32>>();
     "scene,varying-nospin,f64" => scene::<Scene<Elliptic, Varying, NoSpin, ExactGrade, f64>>();
+    // The micromath backend (feature `micromath`, f32 only) and libm's ln, exp.
+    "core,ln-libm,f32" => bb(Real::ln(t::<f32>(2.0)));
+    "core,exp-libm,f32" => bb(Real::exp(t::<f32>(2.0)));
+    "core,sqrt-micromath,f32" => bb(Micromath::sqrt(t::<f32>(2.0)));
+    "core,ln-micromath,f32" => bb(Micromath::ln(t::<f32>(2.0)));
+    "core,exp-micromath,f32" => bb(Micromath::exp(t::<f32>(2.0)));
+    "core,ln-raw-micromath,f32" => bb(micromath::F32(t(2.0)).ln().0);
+    "elliptic,theta-micromath,f32" => elliptic::<f32, ThetaMicromath>();
+    "hertz,per_step-micromath,f32" => bb(HertzMicromath::from(hertz::<f32>()).patch(t(1e-6)));
+    "hertz,shape_hamrock-dowson-micromath,f32" => shape::<f32, HamrockDowsonMicromath>();
+    "friction,simplified-micromath,f32" => core::<f32, SimplifiedMicromath>();
+    "friction,ellipsoid-micromath,f32" => core::<f32, EllipsoidMicromath>();
+    "friction,coulomb-micromath,f32" => core::<f32, CoulombMicromath>();
+    "friction,best-micromath,f32" => core::<f32, BestMicromath>();
+    "scene,sphere-plane-spin-rough-micromath,f32" => scene::<Scene<Circular, Fixed, Spin, Rough, f32>>();
+    "scene,sphere-plane-nospin-rough-micromath,f32" => scene::<Scene<Circular, Fixed, NoSpin, Rough, f32>>();
+    "scene,ball-race-spin-rough-micromath,f32" => scene::<Scene<Elliptic, Fixed, Spin, Rough, f32>>();
+    "scene,ball-race-nospin-rough-micromath,f32" => scene::<Scene<Elliptic, Fixed, NoSpin, Rough, f32>>();
+    "scene,varying-spin-exact-micromath,f32" => scene::<Scene<Elliptic, Varying, Spin, ExactGrade, f32>>();
 }
 
 #[entry]
