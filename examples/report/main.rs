@@ -99,6 +99,62 @@ impl Out {
     }
 }
 
+/// The chart's points of a section: (method precision, QEMU instructions, max error over the
+/// charted components); rows without a QEMU count are left out.
+fn chart_points(s: &Section, rows: &[&Measured], qemu: &Keyed) -> Vec<(String, f64, f64)> {
+    rows.iter()
+        .filter_map(|r| {
+            let insns = lookup(qemu, &r.m)?;
+            // a zero error (exact on every reference point) is drawn at the chart's floor
+            let err = s
+                .chart
+                .iter()
+                .filter_map(|&j| r.max.get(j))
+                .fold(0.0, |a: f64, &b| a.max(b))
+                .max(1e-17);
+            Some((format!("{} {}", r.m.method, r.m.precision), insns, err))
+        })
+        .collect()
+}
+
+/// The Pareto front of chart points (no other point is both cheaper and more accurate), by
+/// rising cost.
+fn pareto_front(pts: &[(String, f64, f64)]) -> Vec<&(String, f64, f64)> {
+    let mut front: Vec<&(String, f64, f64)> = pts
+        .iter()
+        .filter(|p| {
+            !pts.iter()
+                .any(|q| q.1 <= p.1 && q.2 <= p.2 && (q.1 < p.1 || q.2 < p.2))
+        })
+        .collect();
+    front.sort_by(|a, b| a.1.total_cmp(&b.1));
+    front
+}
+
+/// "At a glance": per stage, the methods on the Pareto front with their cost and error.
+fn glance(md: &mut String, measured: &[Measured], qemu: &Keyed) {
+    md.push_str(
+        "\n## At a glance: the Pareto front of each stage\n\n\
+         The methods no other method beats on both M4F instructions and max error (computed \
+         from the tables below; pick the first one whose error your scene tolerates — or let \
+         [`contensou::select`](#scenes-the-cheapest-adequate-model-per-scene) pick it):\n\n\
+         | stage | Pareto front: method precision (instructions, max error), cheapest first |\n\
+         |---|---|\n",
+    );
+    for s in &SECTIONS {
+        let rows: Vec<&Measured> = measured.iter().filter(|r| r.m.section.id == s.id).collect();
+        let pts = chart_points(s, &rows, qemu);
+        let front: Vec<String> = pareto_front(&pts)
+            .iter()
+            .map(|(label, insns, err)| format!("{label} ({insns:.0}, {})", e(*err)))
+            .collect();
+        if !front.is_empty() {
+            let _ = writeln!(md, "| {} | {} |", s.title, front.join("; "));
+        }
+    }
+    md.push('\n');
+}
+
 fn section(
     out: &mut Out,
     s: &Section,
@@ -132,20 +188,7 @@ fn section(
         let _ = writeln!(md, "{line}");
     }
     md.push('\n');
-    let pts: Vec<(String, f64, f64)> = rows
-        .iter()
-        .filter_map(|r| {
-            let insns = lookup(qemu, &r.m)?;
-            // a zero error (exact on every reference point) is drawn at the chart's floor
-            let err = s
-                .chart
-                .iter()
-                .filter_map(|&j| r.max.get(j))
-                .fold(0.0, |a: f64, &b| a.max(b))
-                .max(1e-17);
-            Some((format!("{} {}", r.m.method, r.m.precision), insns, err))
-        })
-        .collect();
+    let pts = chart_points(s, rows, qemu);
     if pts.is_empty() {
         return;
     }
@@ -284,6 +327,7 @@ fn main() {
         );
     }
 
+    glance(&mut out.md, &measured, &qemu);
     out.md.push_str("\n## Error against cost, per stage\n\n");
     for s in &SECTIONS {
         let rows: Vec<&Measured> = measured.iter().filter(|r| r.m.section.id == s.id).collect();
