@@ -15,15 +15,19 @@ use std::fs;
 
 use contensou::Real;
 use contensou::elliptic::{Agm, Method, Parameter, Table as KeTable, Theta, paper_k_e};
+use contensou::friction::best::ramp_stiffness;
 use contensou::friction::exact::{self, SERIES_MIN_U};
-use contensou::friction::{Coulomb, Explicit, Friction};
+use contensou::friction::{Best, Constants, Coulomb, Explicit, Friction};
 use contensou::geometry::Curvatures;
 use contensou::normal::{Hertz, Modulus, NormalLaw, Volumetric};
 use contensou::shape::{Eccentricity, Linear, Newton, Ratio};
 
 #[path = "../host-tests/stability/shared.rs"]
 mod shared;
-use shared::{elliptic_rows, measured_step, rel, series, shape_rows};
+use shared::{
+    BestBlock, BestCase, best_case_step, best_stiffness_row, elliptic_rows, measured_step, rel,
+    series, shape_rows,
+};
 
 const OUT: &str = "docs/report/stability";
 
@@ -503,6 +507,107 @@ fn coulomb_chart() -> (Chart, String) {
     )
 }
 
+fn best_chart() -> (Chart, String) {
+    use std::f64::consts::{FRAC_PI_2, FRAC_PI_4, FRAC_PI_8};
+    let (mass, f, delta) = (0.006, 0.3, 1e-4);
+    let n = mass * 9.81;
+    // the step in units of mδ/(fN)
+    let unit = mass * delta / (f * n);
+    let mut rows = Vec::new();
+    let mut notes = Vec::new();
+    let (mut tight, mut loose, mut below): (f64, f64, f64) = (0.0, 0.0, f64::INFINITY);
+    let mut overstep: f64 = 0.0;
+    for m1 in [1.0, 0.5, 0.2, 0.1, 0.05, 0.01, 0.001] {
+        let e2 = 1.0 - m1;
+        let (_, vstar) = best_stiffness_row(m1).unwrap();
+        let k = Constants::from_parameter(Parameter::from_complement(m1).unwrap());
+        let mut cells = Vec::new();
+        let mut per_spin = [f64::INFINITY; 4];
+        for scheme in [Explicit::Euler, Explicit::Rk4] {
+            let h_star = Friction::<f64, Best>::new(f, delta)
+                .unwrap()
+                .stable_step(&k, mass, n, scheme);
+            let mut worst = f64::INFINITY;
+            for psi in [0.0, FRAC_PI_8, FRAC_PI_4, 3.0 * FRAC_PI_8, FRAC_PI_2] {
+                for (i, spin) in [0.0, 0.3, 1.0, 3.0].into_iter().enumerate() {
+                    let case = BestCase { e2, psi, spin };
+                    let (h, _, _) =
+                        best_case_step(&case, &[], f, delta, mass, n, scheme, 12, 2000, 30);
+                    worst = worst.min(h);
+                    loose = loose.max(h / h_star);
+                    if scheme == Explicit::Euler {
+                        per_spin[i] = per_spin[i].min(h / h_star);
+                    }
+                }
+            }
+            let case = BestCase {
+                e2,
+                psi: vstar[1].atan2(vstar[0]),
+                spin: 0.3,
+            };
+            let v = [0.3 * delta * vstar[0], 0.3 * delta * vstar[1]];
+            let (h, _, _) = best_case_step(&case, &[v], f, delta, mass, n, scheme, 0, 2000, 30);
+            worst = worst.min(h);
+            tight = tight.max(worst / h_star);
+            below = below.min(worst / h_star);
+            cells.push(Some(h_star / unit));
+            cells.push(Some(worst / unit));
+        }
+        // the block at rest with spin aω = 0.3δ (stiffness A), and the naive guess
+        let h_star =
+            Friction::<f64, Best>::new(f, delta)
+                .unwrap()
+                .stable_step(&k, mass, n, Explicit::Euler);
+        let rest = BestBlock::new(&k, f, delta, mass, n, 0.3 * delta).measured_step(
+            [0.0; 2],
+            [0.5e-6 * delta, 0.8e-6 * delta],
+            Explicit::Euler,
+            2000,
+            (0.5 * h_star, 16.0 * h_star),
+            30,
+        );
+        let naive = 2.0 / k.slope_x().max(2f64.sqrt());
+        overstep = overstep.max(ramp_stiffness(&k) * naive / 2.0);
+        cells.push(Some(rest / unit));
+        cells.push(Some(naive));
+        notes.push(format!(
+            "e² = {e2}: κ = {:.3}, measured/h* (Euler, min over ψ) at aω/δ = 0, 0.3, 1, 3: {:.3}, {:.3}, {:.3}, {:.3}",
+            ramp_stiffness(&k),
+            per_spin[0],
+            per_spin[1],
+            per_spin[2],
+            per_spin[3]
+        ));
+        rows.push((m1, cells));
+    }
+    for n in &notes {
+        println!("{n}");
+    }
+    (
+        Chart {
+            name: "best_step",
+            title: "best law (ramp below δ): largest stable explicit step against the patch shape (block, 2-D slip, fixed spin)",
+            x: "m₁ = 1 − e²",
+            y: "step h·fN/(mδ)",
+            xscale: "log",
+            yscale: "log",
+            columns: vec![
+                "Euler stable_step",
+                "Euler measured (stiffest case)",
+                "RK4 stable_step",
+                "RK4 measured (stiffest case)",
+                "Euler measured at rest (aω = 0.3δ)",
+                "Euler with κ = max(√2, A) (unsafe guess)",
+            ],
+            rows,
+        },
+        format!(
+            "h* = limit·mδ/(κfN), κ = 2.52 (circle) … 5.19 (e² = 0.99) … 25.5 (m₁ = 1e-12); measured over ψ ∈ [0, π/2] (5 directions + the derivation's stiffest), aω/δ ∈ {{0, 0.3, 1, 3}}, slips across the ramp, both schemes: every step ≥ h* (min {below:.4}·h*), the stiffest within {:.2} % of h*, the least stiff {loose:.1}·h* (h* is set by the sup: a case measures κ over its own stiffness, e.g. fN/δ without spin along an axis, A·fN/(aω) at rest with aω ≥ δ); the guess κ = max(√2, A) would overstep the stable step by up to {overstep:.2}×",
+            (tight - 1.0) * 100.0
+        ),
+    )
+}
+
 fn main() {
     fs::create_dir_all(OUT).unwrap();
     let (theta, s_theta) = theta_chart();
@@ -512,13 +617,14 @@ fn main() {
     let (lin, s_lin) = linear_chart();
     let (large, s_large) = large_u_chart();
     let (coul, s_coul) = coulomb_chart();
+    let (best, s_best) = best_chart();
     for c in [
-        &theta, &canc, &newton, &newton_it, &vol, &lin, &large, &coul,
+        &theta, &canc, &newton, &newton_it, &vol, &lin, &large, &coul, &best,
     ] {
         c.write();
     }
     for s in [
-        &s_theta, &s_canc, &s_newton, &s_vol, &s_lin, &s_large, &s_coul,
+        &s_theta, &s_canc, &s_newton, &s_vol, &s_lin, &s_large, &s_coul, &s_best,
     ] {
         println!("{s}\n");
     }
@@ -570,6 +676,14 @@ fn main() {
             "`Friction::<T, Coulomb>::stable_step(mass, n, Explicit)` (also for `Simplified`): limit·mδ/(fN); 0 for δ = 0",
             "stable_step_matches_the_measured_bisection, stable_step_edge_cases_are_total",
         ),
+        (
+            "`best` law's ramp below δ (`Friction::<T, Best>`, the default law)",
+            format!(
+                "δ → 0 (stiffness κ(e²)·fN/δ: the ℓ¹ ramp times the core's slope, largest with spin and slip together) — {s_best} (chart `best_step`)"
+            ),
+            "`Friction::<T, Best>::stable_step(&Constants, mass, n, Explicit)`: limit·mδ/(κfN), κ = `friction::best::ramp_stiffness` (closed form on the major axis × fitted off-axis factor, ≤ 0.35 % above the mpmath maximisation `tools/gen_best_stiffness.py`); 0 for δ = 0",
+            "best_ramp_stiffness_bounds_the_maximisation, best_stiffness_is_largest_inside_the_ramp_and_the_ellipse, best_stable_step_is_conservative_and_tight, best_stable_step_edge_cases_are_total",
+        ),
     ];
     let mut md = String::from(
         "<!-- generated by `cargo run --release --example stability`; do not edit -->\n\n\
@@ -588,7 +702,8 @@ fn main() {
     writeln!(
         md,
         "\nReferences: mpmath (`tools/gen_stability_ref.py` → `tools/data/stability_*.csv`), the \
-         crate's exact friction integrals (themselves checked against mpmath), and block \
+         crate's exact friction integrals (themselves checked against mpmath), \
+         `tools/gen_best_stiffness.py` (mpmath: κ of the `best` ramp), and block \
          integrations bisected for the stable step. Charts: `docs/report/stability/*.csv`."
     )
     .unwrap();

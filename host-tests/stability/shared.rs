@@ -2,7 +2,8 @@
 //! large-u series and the block-under-friction integrator whose stable step is bisected.
 #![allow(dead_code)]
 
-use contensou::friction::{Constants, Explicit, Friction, FrictionLaw, Slip};
+use contensou::elliptic::Parameter;
+use contensou::friction::{Best, BestContact, Constants, Explicit, Friction, FrictionLaw, Slip};
 
 /// Relative error.
 pub fn rel(got: f64, want: f64) -> f64 {
@@ -129,4 +130,243 @@ pub fn measured_step<L: FrictionLaw>(
         }
     }
     lo
+}
+
+// ---- the `best` law: 2-D block, fixed spin, held at a probe slip by a constant drive -----------
+
+/// A block of mass `mass` sliding under `Friction<f64, Best>` (prepared for `k`) at normal
+/// force `n`, with its spin held at a·ω = `aw` (a = 1 m, so ω = `aw` rad/s) and its in-plane
+/// velocity integrated. A constant drive −F(v_eq) makes `v_eq` an equilibrium (v_eq = 0: no
+/// drive, the block coming to rest).
+pub struct BestBlock {
+    pub law: Friction<f64, Best>,
+    pub contact: BestContact<f64>,
+    pub mass: f64,
+    pub n: f64,
+    pub aw: f64,
+}
+
+impl BestBlock {
+    pub fn new(k: &Constants<f64>, f: f64, delta: f64, mass: f64, n: f64, aw: f64) -> Self {
+        BestBlock {
+            law: Friction::new(f, delta).unwrap(),
+            contact: Best::prepare(k),
+            mass,
+            n,
+            aw,
+        }
+    }
+
+    /// The friction force on the block at velocity v.
+    pub fn force(&self, v: [f64; 2]) -> [f64; 2] {
+        let t = self.law.tangential_prepared(
+            &self.contact,
+            1.0,
+            self.n,
+            Slip::new(v[0], v[1], self.aw).unwrap(),
+        );
+        [t.fx, t.fy]
+    }
+
+    /// Does `scheme` at step h keep a perturbation of the equilibrium `v_eq` bounded? The
+    /// perturbation starts at `dv0` (|dv0| ≪ δ: the linearisation, unless v_eq = 0 without spin,
+    /// where the law is homogeneous along the ray and `dv0` is the block's whole velocity);
+    /// unstable if |v − v_eq| ever exceeds 10·|dv0|, stable if it does not within `steps`
+    /// steps and ends below |dv0| (a growth by (1 + 2η) per step reaches 10 within 2,000 steps
+    /// for η > 5.8e-4).
+    pub fn settles(
+        &self,
+        v_eq: [f64; 2],
+        dv0: [f64; 2],
+        h: f64,
+        scheme: Explicit,
+        steps: usize,
+    ) -> bool {
+        let f_eq = self.force(v_eq);
+        let inv_m = 1.0 / self.mass;
+        let acc = |v: [f64; 2]| {
+            let f = self.force(v);
+            [(f[0] - f_eq[0]) * inv_m, (f[1] - f_eq[1]) * inv_m]
+        };
+        let axpy = |v: [f64; 2], a: f64, d: [f64; 2]| [v[0] + a * d[0], v[1] + a * d[1]];
+        let size = |v: [f64; 2]| (v[0] - v_eq[0]).hypot(v[1] - v_eq[1]);
+        let d0 = dv0[0].hypot(dv0[1]);
+        let mut v = axpy(v_eq, 1.0, dv0);
+        for _ in 0..steps {
+            v = match scheme {
+                Explicit::Euler => axpy(v, h, acc(v)),
+                Explicit::Rk4 => {
+                    let k1 = acc(v);
+                    let k2 = acc(axpy(v, 0.5 * h, k1));
+                    let k3 = acc(axpy(v, 0.5 * h, k2));
+                    let k4 = acc(axpy(v, h, k3));
+                    let s = [
+                        k1[0] + 2.0 * k2[0] + 2.0 * k3[0] + k4[0],
+                        k1[1] + 2.0 * k2[1] + 2.0 * k3[1] + k4[1],
+                    ];
+                    axpy(v, h / 6.0, s)
+                }
+            };
+            let d = size(v);
+            if d > 10.0 * d0 || d.is_nan() {
+                return false;
+            }
+        }
+        size(v) < d0
+    }
+
+    /// The largest step at which [`BestBlock::settles`] holds, bisected (`halvings` times) in
+    /// [lo, hi].
+    #[allow(clippy::too_many_arguments)]
+    pub fn measured_step(
+        &self,
+        v_eq: [f64; 2],
+        dv0: [f64; 2],
+        scheme: Explicit,
+        steps: usize,
+        (mut lo, mut hi): (f64, f64),
+        halvings: usize,
+    ) -> f64 {
+        for _ in 0..halvings {
+            let mid = 0.5 * (lo + hi);
+            if self.settles(v_eq, dv0, mid, scheme, steps) {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        lo
+    }
+
+    /// Largest eigenvalue (Euler's |λ|²/Re λ for a complex pair) of the stiffness −∂F/∂v at v,
+    /// by one-sided differences (towards larger |v_x|, |v_y|), in units of fN/δ.
+    pub fn stiffness(&self, v: [f64; 2]) -> f64 {
+        let h = 1e-7 * self.law.delta();
+        let f0 = self.force(v);
+        let sx = if v[0] < 0.0 { -h } else { h };
+        let sy = if v[1] < 0.0 { -h } else { h };
+        let fx = self.force([v[0] + sx, v[1]]);
+        let fy = self.force([v[0], v[1] + sy]);
+        let k = [
+            [-(fx[0] - f0[0]) / sx, -(fy[0] - f0[0]) / sy],
+            [-(fx[1] - f0[1]) / sx, -(fy[1] - f0[1]) / sy],
+        ];
+        eig_euler(k) * self.law.delta() / (self.law.coefficient() * self.n)
+    }
+}
+
+/// Largest real eigenvalue of a 2×2 matrix, or |λ|²/Re λ (Euler's bound) for a complex pair.
+pub fn eig_euler(k: [[f64; 2]; 2]) -> f64 {
+    let tr = k[0][0] + k[1][1];
+    let det = k[0][0] * k[1][1] - k[0][1] * k[1][0];
+    let disc = 0.25 * tr * tr - det;
+    if disc >= 0.0 {
+        0.5 * tr + disc.sqrt()
+    } else {
+        (0.25 * tr * tr - disc) / (0.5 * tr)
+    }
+}
+
+/// One case of the `best` stability map: e², slip direction ψ, spin ratio aω/δ.
+pub struct BestCase {
+    pub e2: f64,
+    pub psi: f64,
+    pub spin: f64,
+}
+
+/// The probe slips of a case along the ray ψ (a = 1, δ given): rest, and `probes − 1` speeds
+/// spread over the ramp (s < δ) when aω < δ, else over |v_P| ≤ 2aω; without spin rest only.
+pub fn probe_speeds(case: &BestCase, delta: f64, probes: usize) -> Vec<f64> {
+    if case.spin == 0.0 {
+        // no spin: the ramped law is homogeneous of degree one, its Jacobian constant on the ray
+        return vec![0.0];
+    }
+    let aw = case.spin * delta;
+    let phi = case.psi.cos().abs() + case.psi.sin().abs();
+    let top = if aw < delta {
+        0.995 * (delta - aw) / phi
+    } else {
+        2.0 * aw
+    };
+    (0..probes)
+        .map(|j| top * j as f64 / (probes - 1).max(1) as f64)
+        .collect()
+}
+
+/// Measured stable step of a case for `scheme`: the smallest over the probe slips (`probes`,
+/// plus `extra` probe velocities), each bisected in [h*/2, 16·h*] (`halvings`) with `steps`
+/// steps per trial; a 1e-6·δ perturbation at ψ + 1 rad (generic: not an eigenvector of the
+/// stiffness at rest), or along ψ without spin. Returns (measured step, h* = `stable_step`, the stiffness in fN/δ
+/// predicted at the probe that set the measured step: the Jacobian's largest eigenvalue, or
+/// |cos ψ| + |sin ψ| without spin, where the ramped law is linear on the ray with a double
+/// eigenvalue that differences resolve poorly).
+#[allow(clippy::too_many_arguments)]
+pub fn best_case_step(
+    case: &BestCase,
+    extra: &[[f64; 2]],
+    f: f64,
+    delta: f64,
+    mass: f64,
+    n: f64,
+    scheme: Explicit,
+    probes: usize,
+    steps: usize,
+    halvings: usize,
+) -> (f64, f64, f64) {
+    let k = Constants::from_parameter(Parameter::new(case.e2).unwrap());
+    let block = BestBlock::new(&k, f, delta, mass, n, case.spin * delta);
+    let h_star = block.law.stable_step(&k, mass, n, scheme);
+    let (s, c) = case.psi.sin_cos();
+    // without spin at rest the perturbation is the block's whole velocity: along ψ
+    let turn = if case.spin == 0.0 { 0.0 } else { 1.0 };
+    let (s1, c1) = (case.psi + turn).sin_cos();
+    let dv0 = [1e-6 * delta * c1, 1e-6 * delta * s1];
+    let mut v_eqs: Vec<[f64; 2]> = probe_speeds(case, delta, probes)
+        .into_iter()
+        .map(|r| [r * c, r * s])
+        .collect();
+    v_eqs.extend_from_slice(extra);
+    let mut best = (f64::INFINITY, h_star, 0.0);
+    for v_eq in v_eqs {
+        let h = block.measured_step(
+            v_eq,
+            dv0,
+            scheme,
+            steps,
+            (0.5 * h_star, 16.0 * h_star),
+            halvings,
+        );
+        if h < best.0 {
+            let lam = if case.spin == 0.0 {
+                c.abs() + s.abs()
+            } else {
+                block.stiffness(v_eq)
+            };
+            best = (h, h_star, lam);
+        }
+    }
+    best
+}
+
+/// The stiffest slip of the derivation at one e² (`tools/data/best_stiffness.csv`, the row with
+/// m₁ within 1e-9 of `m1`): (κ, v_P/(aω)) — the maximiser in units of the spin speed.
+pub fn best_stiffness_row(m1: f64) -> Option<(f64, [f64; 2])> {
+    include_str!("../../tools/data/best_stiffness.csv")
+        .lines()
+        .skip(1)
+        .map(parse)
+        .find(|v| (v[0] - m1).abs() <= 1e-9)
+        .map(|v| (v[3], [v[4], v[5]]))
+}
+
+/// Every row of `tools/data/best_stiffness.csv`: (m₁, A, B, κ).
+pub fn best_stiffness_rows() -> Vec<[f64; 4]> {
+    include_str!("../../tools/data/best_stiffness.csv")
+        .lines()
+        .skip(1)
+        .map(|l| {
+            let v = parse(l);
+            [v[0], v[1], v[2], v[3]]
+        })
+        .collect()
 }

@@ -245,6 +245,11 @@ mod api {
             else { return };
             (co.stable_step(mass, n, Explicit::Euler), si.stable_step(mass, n, Explicit::Rk4))
         }
+        fn probe_best_stable_step<T>(m1, f, delta, mass, n) {
+            let (Ok(p), Ok(be)) = (Parameter::from_complement(m1), Friction::<T, Best>::new(f, delta))
+            else { return };
+            be.stable_step(&Constants::from_parameter(p), mass, n, Explicit::Rk4)
+        }
         // contact (other normal laws through from_parts)
         fn probe_contact_from_parts<T>(p, q, e, f, h, hdot, vx, vy, om) {
             let (Ok(c), Ok(e), Ok(fr), Ok(s)) =

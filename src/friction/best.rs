@@ -361,6 +361,58 @@ fn inside<T: Real>(q: &Quartic<T>, s: &SlipState<T>) -> Option<(Traction<T>, Bra
     ))
 }
 
+/// κ(e²): the largest stiffness of `best`'s ramped law in units of fN/δ — the supremum, over
+/// every slip direction and every spin ratio aω/δ ∈ [0, ∞), of the largest eigenvalue of the
+/// translational Jacobian −(δ/fN)·∂F/∂v_P. The stable explicit step
+/// ([`Friction::stable_step`](super::Friction::stable_step) for `Best`) is limit·mδ/(κ·fN).
+///
+/// # Formula
+///
+/// With D′ = (A − B)/m = −2c₂₂ (the quartic's coefficient; 3π/32 at m = 0), γ = √m₁:
+///
+/// ```text
+/// ρ* = A/(D′ + √(D′² + 3AD′)),   κ_axis = (1 + ρ*)(A − D′ρ*²),
+/// κ = κ_axis·(1 + γ^{3/2}·(0.3861 + 0.0259γ))
+/// ```
+///
+/// # Why
+///
+/// Below the slip scale (s = |v_Px| + |v_Py| + a|ω| < δ) the wrapper scales the core by s/δ,
+/// so F = −(fN/δ)·s·P(v, aω) with P the core's (−F_x, −F_y)/(fN): homogeneous of degree one,
+/// its Jacobian K = s·∂P/∂v + P·σᵀ (σ = the signs of v_P, from ∂s/∂v) depends on the direction
+/// of (v_P, aω) only. While the instantaneous centre lies inside the ellipse, P is the exact
+/// quartic's gradient, so K is a polynomial matrix in (X₀, Y₀) = (−v_Py, v_Px)/(aω). At rest
+/// with spin K = diag(A, B); without spin (pure translation) its eigenvalues are
+/// |cos ψ| + |sin ψ| ≤ √2 (the ℓ¹ slip scale); but the product s·P peaks between, with the IC
+/// at ≈ 0.66a on the diagonal for a circle (κ = 2.513 = 2.13·A) moving onto the major axis at
+/// ρ* a as e² → 1, where K is diagonal and its first eigenvalue is the closed form κ_axis
+/// (≈ (32/27)·A once A ≫ B). The fitted factor 1 + γ^{3/2}·(0.3861 + 0.0259γ) bounds the
+/// excess of the off-axis maximum (0 as e² → 1, 40.7 % at the circle). Past the ellipse and past the ramp
+/// (s ≥ δ: stiffness ≤ fN/s times the core's own, whose sup is lower) it is smaller, and the
+/// eigenvalues at the maximum are real (checked on the whole direction sphere with the exact
+/// law, `host-tests/stability.rs`). `best` is exact inside the ellipse, so its κ is the exact
+/// law's.
+///
+/// # Domain and accuracy
+///
+/// Every valid e² (m₁ ∈ [m₁_min, 1]); finite and ≥ 2.51. Against the maximisation of
+/// `tools/gen_best_stiffness.py` (mpmath; `tools/data/best_stiffness.csv`, m₁ from 1 to 1e-12):
+/// never below it (`f64`; `f32` to rounding), at most 0.35 % above (conservative). Values: 2.5185
+/// (circle), 2.7010 (e² = 0.5), 3.5015 (0.9), 5.1901 (0.99), 25.49 (m₁ = 1e-12). Cost: three
+/// square roots, a few multiplications and the quartic's constants (three divisions) —
+/// construction or host use, not per step.
+pub fn ramp_stiffness<T: Real>(k: &Constants<T>) -> T {
+    let q = Quartic::new(k);
+    let a = q.a;
+    // D′ = −k₂₂ > 0: the quartic's X₀²Y₀ coefficient, free of cancellation at small m.
+    let dp = -q.k22;
+    let rho = a / (dp + (dp * dp + T::from_f64(3.0) * a * dp).sqrt());
+    let axis = (T::ONE + rho) * (a - dp * rho * rho);
+    let gamma = k.m1().sqrt();
+    let fit = T::from_f64(0.3861) + T::from_f64(0.0259) * gamma;
+    axis * (T::ONE + gamma * gamma.sqrt() * fit)
+}
+
 impl Best {
     /// Measured max error against the exact integrals, e² ∈ [0, 0.99], all ψ, u ∈ [0, ∞]
     /// (`f64`; measured 1.8e-6, 7.4e-7): (force in fN, torque in fNa), asserted by
