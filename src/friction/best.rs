@@ -383,28 +383,33 @@ fn inside<T: Real>(q: &Quartic<T>, s: &SlipState<T>) -> Option<(Traction<T>, Bra
 /// of (v_P, aω) only. While the instantaneous centre lies inside the ellipse, P is the exact
 /// quartic's gradient, so K is a polynomial matrix in (X₀, Y₀) = (−v_Py, v_Px)/(aω). At rest
 /// with spin K = diag(A, B); without spin (pure translation) its eigenvalues are
-/// |cos ψ| + |sin ψ| ≤ √2 (the ℓ¹ slip scale); but the product s·P peaks between, with the IC
-/// at ≈ 0.66a on the diagonal for a circle (κ = 2.513 = 2.13·A) moving onto the major axis at
-/// ρ* a as e² → 1, where K is diagonal and its first eigenvalue is the closed form κ_axis
-/// (≈ (32/27)·A once A ≫ B). The fitted factor 1 + γ^{3/2}·(0.3861 + 0.0259γ) bounds the
-/// excess of the off-axis maximum (0 as e² → 1, 40.7 % at the circle). Past the ellipse and past the ramp
-/// (s ≥ δ: stiffness ≤ fN/s times the core's own, whose sup is lower) it is smaller, and the
-/// eigenvalues at the maximum are real (checked on the whole direction sphere with the exact
-/// law, `host-tests/stability.rs`). `best` is exact inside the ellipse, so its κ is the exact
+/// |cos ψ| + |sin ψ| ≤ √2 (the ℓ¹ slip scale). Neither is the maximum: s grows with the slip
+/// while the core's slope falls off slowly, and their product peaks in between — for a circle
+/// with the IC at 0.66a on a diagonal (κ = 2.5135 = 2.13·A), moving onto the major axis as
+/// e² → 1. On that axis (v_Px = 0) K is triangular and its first eigenvalue is
+/// (1 + ρ)(A − D′ρ²) at |X₀| = ρ, maximal at ρ*: the closed form κ_axis, the exact sup in the
+/// limit e² → 1 (≈ (32/27)·A once A ≫ B). The fitted factor 1 + γ^{3/2}·(0.3861 + 0.0259γ)
+/// bounds the excess of the off-axis maximum (0 as e² → 1, 40.7 % at the circle). With the IC
+/// outside the ellipse, and past the ramp (s ≥ δ: fN/s times the core's own stiffness, whose
+/// sup is lower), the stiffness is smaller: checked on the whole direction sphere, for the
+/// exact law and for `best` (`host-tests/stability.rs`; complex eigenvalue pairs, small, are
+/// counted by Euler's |λ|²/Re λ). `best` is exact inside the ellipse, so its κ is the exact
 /// law's.
 ///
 /// # Domain and accuracy
 ///
 /// Every valid e² (m₁ ∈ [m₁_min, 1]); finite and ≥ 2.51. Against the maximisation of
 /// `tools/gen_best_stiffness.py` (mpmath; `tools/data/best_stiffness.csv`, m₁ from 1 to 1e-12):
-/// never below it (`f64`; `f32` to rounding), at most 0.35 % above (conservative). Values: 2.5185
-/// (circle), 2.7010 (e² = 0.5), 3.5015 (0.9), 5.1901 (0.99), 25.49 (m₁ = 1e-12). Cost: three
-/// square roots, a few multiplications and the quartic's constants (three divisions) —
-/// construction or host use, not per step.
+/// never below it (`f64`; `f32` to rounding), at most 0.35 % above (conservative). Values:
+/// 2.522 (circle; exact sup 2.5135), 2.694 (e² = 0.5), 3.492 (0.9), 5.187 (0.99), 7.131 (0.999),
+/// 25.48 (m₁ = 1e-12). Cost: three square roots, four divisions (three in the quartic's
+/// constants) and a few multiplications — construction or host use, not per step; not yet
+/// measured on the Cortex-M4F.
 pub fn ramp_stiffness<T: Real>(k: &Constants<T>) -> T {
     let q = Quartic::new(k);
     let a = q.a;
-    // D′ = −k₂₂ > 0: the quartic's X₀²Y₀ coefficient, free of cancellation at small m.
+    // D′ = −k₂₂ = −2c₂₂ > 0 (c₂₂: the quartic's X₀²Y₀² coefficient), free of cancellation at
+    // small m.
     let dp = -q.k22;
     let rho = a / (dp + (dp * dp + T::from_f64(3.0) * a * dp).sqrt());
     let axis = (T::ONE + rho) * (a - dp * rho * rho);
