@@ -597,7 +597,7 @@ fn best_chart() -> (Chart, String) {
                 "RK4 stable_step",
                 "RK4 measured (stiffest case)",
                 "Euler measured at rest (aω = 0.3δ)",
-                "Euler with κ = max(√2, A) (unsafe guess)",
+                "Euler with κ = max(√2; A): the unsafe guess",
             ],
             rows,
         },
