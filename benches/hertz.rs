@@ -8,7 +8,7 @@ use std::time::Duration;
 
 use contensou::Real;
 use contensou::geometry::Curvatures;
-use contensou::normal::{Fitted, Hertz, Modulus, NormalLaw};
+use contensou::normal::{Fitted, Hertz, Modulus, NormalLaw, Volumetric};
 use contensou::shape::{Eccentricity, HamrockDowson, Linear, Newton, Ratio, Table};
 use criterion::{Criterion, criterion_group, criterion_main};
 
@@ -52,6 +52,13 @@ fn per_step<T: Real>(c: &mut Criterion) {
         b.iter(|| {
             i = (i + 1) & 3;
             let law = Fitted::clamped(&black_box(curvs[i]), estar);
+            black_box(law.patch(black_box(hs[i])))
+        })
+    });
+    c.bench_function(&format!("hertz/volumetric/{}", T::NAME), |b| {
+        b.iter(|| {
+            i = (i + 1) & 3;
+            let law = Volumetric::new(&black_box(curvs[i]), estar);
             black_box(law.patch(black_box(hs[i])))
         })
     });

@@ -441,7 +441,8 @@ impl<T: Real> NormalLaw<T> for HertzMicromath<T> {
 /// vs exact Hertz at equal h (`bench-results/hertz.md`), always low: −0.14% at g = P/Q = 0.77,
 /// −1.2% at 0.46, −4.7% at 0.22, −9.8% at 0.1, −30.3% at 0.01, −50.5% at 1e-3, −66.5% at
 /// 1e-4. Cost per step: as [`Hertz::patch`]; construction: one `sqrt` and one division, no
-/// elliptic integral.
+/// elliptic integral. Built from the curvatures and stepped every call (varying geometry):
+/// 52 M4F instructions (`f32`), 1,638 (`f64`), QEMU row `hertz,volumetric`.
 ///
 /// # Stated domain
 ///

@@ -36,7 +36,7 @@ for p in ("f32", "f64"):
     for m in ("agm", "theta", "table"):
         rows.append(("elliptic", m, p, fastest(f"kebd_{m}_{p}", 64)))
     # benches/hertz.rs: one call per iteration
-    for m in ("per_step", "table_each_step", "fitted_each_step", "shape_table", "shape_linear",
+    for m in ("per_step", "table_each_step", "fitted_each_step", "volumetric", "shape_table", "shape_linear",
               "shape_hamrock-dowson", "shape_newton"):
         rows.append(("hertz", m, p, fastest(f"hertz_{m}_{p}", 1)))
     # benches/friction.rs: the 64-state mixed set per iteration; `best-contact` is BestContact

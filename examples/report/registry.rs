@@ -61,7 +61,8 @@ pub const NORMAL: Section = Section {
     how: "the patch (a, b, N) at every row of `tools/data/hertz_ref.csv` (mpmath): relative \
           error of N and of a, b. `per_step`: geometry solved once (Newton), the step only; \
           `table_each_step`: e² by table from g every step; `fitted_each_step`: the fitted law \
-          from g every step; `volumetric`: the volumetric law (no QEMU row)",
+          from g every step; `volumetric`: the eccentricity-free volumetric law from the \
+          curvatures every step",
 };
 
 pub const FRICTION: Section = Section {
@@ -80,7 +81,8 @@ pub const FRICTION: Section = Section {
           and over every row (e² up to 1 − 1.5e-12). Laws in their per-contact form (`prepare` once per e²); `best-varying` is \
           `Best` re-deriving its coefficients every call. f32 skips the rows whose e² rounds \
           to 1 in f32 (outside its domain). `exact` is the library's reference \
-          quadrature (no QEMU row)",
+          quadrature, computed in f64 for both precisions (closed form inside the ellipse, \
+          64–192-node Gauss–Legendre outside: a reference path, not for the hot path)",
 };
 
 pub const WRENCH: Section = Section {

@@ -141,6 +141,8 @@ pub fn run(r: &Runner) {
     for_both::<Pade>(r);
     for_both::<Ellipsoid>(r);
     for_both::<Coulomb>(r);
+    // the reference path (adaptive quadrature: data-dependent, not for the hot path)
+    for_both::<Exact>(r);
     full::<f32, Simplified>(r);
     full::<f64, Simplified>(r);
     from_integrals::<f32>(r);

@@ -5,6 +5,8 @@
 //! - `table_each_step`: the eccentricity from g every step — `Table::shape` (c, m₁, K, E, B, D)
 //!   then `Hertz::from_shape(&curvatures, …).patch(h)` (a, b, N, p0); includes g = P/Q.
 //! - `fitted_each_step`: the eccentricity-free fitted law from g every step, then `patch(h)`.
+//! - `volumetric`: the eccentricity-free volumetric law from the curvatures every step, then
+//!   `patch(h)`.
 //! - `shape_<method>`: the shape alone from g (construction-time methods: newton, linear,
 //!   hamrock-dowson; table for comparison).
 //!
@@ -14,7 +16,9 @@
 use crate::harness::Runner;
 use contensou::Real;
 use contensou::geometry::Curvatures;
-use contensou::normal::{Fitted, Hertz, HertzMicromath, Modulus, NormalLaw, Patch};
+use contensou::normal::{
+    Fitted, Hertz, HertzMicromath, Modulus, NormalLaw, Patch, Volumetric,
+};
 use contensou::shape::{
     Eccentricity, HamrockDowson, HamrockDowsonMicromath, Linear, Newton, Ratio, Shape, Table,
 };
@@ -55,6 +59,12 @@ fn fitted_each_step<T: Real>(x: (Curvatures<T>, Modulus<T>, T)) -> Patch<T> {
 }
 
 #[inline(never)]
+fn volumetric_each_step<T: Real>(x: (Curvatures<T>, Modulus<T>, T)) -> Patch<T> {
+    let (curv, estar, h) = x;
+    Volumetric::new(&curv, estar).patch(h)
+}
+
+#[inline(never)]
 fn shape<M: Eccentricity, T: Real>(g: Ratio<T>) -> Shape<T> {
     M::shape(g)
 }
@@ -70,6 +80,7 @@ fn precision<T: Real>(r: &Runner) {
     r.bench("hertz", "per_step", T::NAME, &laws, per_step::<T>);
     r.bench("hertz", "table_each_step", T::NAME, &cases, table_each_step::<T>);
     r.bench("hertz", "fitted_each_step", T::NAME, &cases, fitted_each_step::<T>);
+    r.bench("hertz", "volumetric", T::NAME, &cases, volumetric_each_step::<T>);
     r.bench("hertz", "shape_table", T::NAME, &gs, shape::<Table, T>);
     r.bench("hertz", "shape_linear", T::NAME, &gs, shape::<Linear, T>);
     r.bench("hertz", "shape_hamrock-dowson", T::NAME, &gs, shape::<HamrockDowson, T>);

@@ -47,7 +47,9 @@
 //! the rounded `f64` one). Cost on the host (x86-64, release, criterion, e² = 0.687): ≈75 ns
 //! inside (mostly the AGM for K, E), ≈5 µs (u = 30) to ≈10 µs (u = 1.5) outside (each node two
 //! `sincos`, a square root and a `sinh`/`cosh` pair), 50 ns in the large-u branch; `f32` the
-//! same plus conversions. Not for the per-step hot path; no instruction count measured.
+//! same plus conversions. Not for the per-step hot path. Cortex-M4F (QEMU, the friction
+//! stage's 64-state mixed set at e² = 0.5): 424,014 instructions per call on average (`f32`;
+//! 424,118 `f64`: the same f64 soft-float code), against 107 for [`super::BestContact`].
 
 mod gauss;
 mod inside;

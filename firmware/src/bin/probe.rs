@@ -28,7 +28,7 @@ use contensou::elliptic::{
 use contensou::friction::*;
 use contensou::geometry::Curvatures;
 use contensou::math::{Backend, Micromath};
-use contensou::normal::{Fitted, Hertz, HertzMicromath, Modulus, NormalLaw, Undamped};
+use contensou::normal::{Fitted, Hertz, HertzMicromath, Modulus, NormalLaw, Undamped, Volumetric};
 use contensou::scenes::integrate::{rk4, rk4_step};
 use contensou::scenes::tippe_top::{Params, TippeTop};
 use contensou::select::*;
@@ -126,6 +126,9 @@ fn table_each_step<T: Real>() {
 }
 fn fitted_each_step<T: Real>() {
     bb(Fitted::clamped(&curvatures::<T>(), estar()).patch(t(1e-6)));
+}
+fn volumetric_each_step<T: Real>() {
+    bb(Volumetric::new(&curvatures::<T>(), estar()).patch(t(1e-6)));
 }
 fn shape<T: Real, M: Eccentricity>() {
     bb(M::shape(ok(Ratio::<T>::new(t(0.1)))));
@@ -241,6 +244,8 @@ probes! {
     "hertz,table_each_step,f64" => table_each_step::<f64>();
     "hertz,fitted_each_step,f32" => fitted_each_step::<f32>();
     "hertz,fitted_each_step,f64" => fitted_each_step::<f64>();
+    "hertz,volumetric,f32" => volumetric_each_step::<f32>();
+    "hertz,volumetric,f64" => volumetric_each_step::<f64>();
     "hertz,shape_table,f32" => shape::<f32, Table>();
     "hertz,shape_table,f64" => shape::<f64, Table>();
     "hertz,shape_linear,f32" => shape::<f32, Linear>();
@@ -257,6 +262,8 @@ probes! {
     "friction,ellipsoid,f64" => core::<f64, Ellipsoid>();
     "friction,coulomb,f32" => core::<f32, Coulomb>();
     "friction,coulomb,f64" => core::<f64, Coulomb>();
+    "friction,exact,f32" => core::<f32, Exact>();
+    "friction,exact,f64" => core::<f64, Exact>();
     "friction,simplified-dimensional,f32" => dimensional::<f32, Simplified>();
     "friction,simplified-dimensional,f64" => dimensional::<f64, Simplified>();
     "friction,constants-from-integrals,f32" => from_integrals::<f32>();
