@@ -214,7 +214,7 @@ impl Explicit {
 
 /// m·δ/(fN)·limit: the stable explicit step of a mass on a ramp of slope fN/δ (see
 /// [`Friction::stable_step`] for the edge cases). Total.
-fn ramp_step<T: Real>(f: T, delta: T, mass: T, n: T, scheme: Explicit) -> T {
+pub(super) fn ramp_step<T: Real>(f: T, delta: T, mass: T, n: T, scheme: Explicit) -> T {
     let fn_ = f * n;
     // `x > 0` is false for NaN: NaN mass → 0, NaN fN → MAX.
     match (mass > T::ZERO, fn_ > T::ZERO) {
