@@ -471,31 +471,22 @@ fn best_stiffness_is_largest_inside_the_ramp_and_the_ellipse() {
         let n = 24;
         let mut worst = [0.0f64; 2];
         for scale in [0.999, 1.001] {
-            for i in 0..=n {
-                let w = i as f64 / n as f64;
-                for j in 0..=n {
-                    let t = j as f64 / n as f64;
-                    let (x, y, w) = (
-                        scale * (1.0 - w) * t,
-                        scale * (1.0 - w) * (1.0 - t),
-                        scale * w,
-                    );
-                    let ramped = |vx: f64, vy: f64| {
-                        let s = vx.abs() + vy.abs() + w;
-                        let t = exact::traction(p, vx, vy, w);
-                        let r = (s / delta).min(1.0);
-                        [r * t.fx, r * t.fy]
-                    };
-                    let h = 1e-7;
-                    let (f0, fx, fy) = (ramped(x, y), ramped(x + h, y), ramped(x, y + h));
-                    let jac = [
-                        [-(fx[0] - f0[0]) / h, -(fy[0] - f0[0]) / h],
-                        [-(fx[1] - f0[1]) / h, -(fy[1] - f0[1]) / h],
-                    ];
-                    worst[0] = worst[0].max(eig_euler(jac));
-                    let b = shared::BestBlock { aw: w, ..best };
-                    worst[1] = worst[1].max(b.stiffness([x, y]));
-                }
+            for (x, y, w) in shared::octant(n, scale) {
+                let ramped = |vx: f64, vy: f64| {
+                    let s = vx.abs() + vy.abs() + w;
+                    let t = exact::traction(p, vx, vy, w);
+                    let r = (s / delta).min(1.0);
+                    [r * t.fx, r * t.fy]
+                };
+                let h = 1e-7;
+                let (f0, fx, fy) = (ramped(x, y), ramped(x + h, y), ramped(x, y + h));
+                let jac = [
+                    [-(fx[0] - f0[0]) / h, -(fy[0] - f0[0]) / h],
+                    [-(fx[1] - f0[1]) / h, -(fy[1] - f0[1]) / h],
+                ];
+                worst[0] = worst[0].max(eig_euler(jac));
+                let b = shared::BestBlock { aw: w, ..best };
+                worst[1] = worst[1].max(b.stiffness([x, y]));
             }
         }
         println!(
@@ -652,27 +643,17 @@ fn spin_stiffness_is_largest_inside_the_ramp_and_the_ellipse() {
         let n = 24;
         let mut worst = [0.0f64; 3];
         for scale in [0.999, 1.001] {
-            for i in 0..=n {
-                let w = i as f64 / n as f64;
-                for j in 0..=n {
-                    let t = j as f64 / n as f64;
-                    let (x, y, w) = (
-                        scale * (1.0 - w) * t,
-                        scale * (1.0 - w) * (1.0 - t),
-                        scale * w,
-                    );
-                    let ramped = |w: f64| {
-                        let s = x + y + w;
-                        (s.min(1.0)) * exact::traction(p, x, y, w).tz
-                    };
-                    let h = 1e-7;
-                    worst[0] = worst[0].max(-(ramped(w + h) - ramped(w)) / h);
-                    let b = shared::SpinBody::<Best>::new(&k, 1.0, 1.0, 1.0, 1.0, 1.0, [x, y]);
-                    worst[1] = worst[1].max(b.stiffness(w));
-                    let s =
-                        shared::SpinBody::<Simplified>::new(&k, 1.0, 1.0, 1.0, 1.0, 1.0, [x, y]);
-                    worst[2] = worst[2].max(s.stiffness(w));
-                }
+            for (x, y, w) in shared::octant(n, scale) {
+                let ramped = |w: f64| {
+                    let s = x + y + w;
+                    (s.min(1.0)) * exact::traction(p, x, y, w).tz
+                };
+                let h = 1e-7;
+                worst[0] = worst[0].max(-(ramped(w + h) - ramped(w)) / h);
+                let b = shared::SpinBody::<Best>::new(&k, 1.0, 1.0, 1.0, 1.0, 1.0, [x, y]);
+                worst[1] = worst[1].max(b.stiffness(w));
+                let s = shared::SpinBody::<Simplified>::new(&k, 1.0, 1.0, 1.0, 1.0, 1.0, [x, y]);
+                worst[2] = worst[2].max(s.stiffness(w));
             }
         }
         println!(

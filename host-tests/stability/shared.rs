@@ -71,6 +71,20 @@ pub fn series(m: f64, psi: f64, u: f64) -> [f64; 3] {
     ]
 }
 
+/// One step of `scheme` for the scalar ODE y' = acc(y).
+pub fn step1(scheme: Explicit, h: f64, y: f64, acc: impl Fn(f64) -> f64) -> f64 {
+    match scheme {
+        Explicit::Euler => y + h * acc(y),
+        Explicit::Rk4 => {
+            let k1 = acc(y);
+            let k2 = acc(y + 0.5 * h * k1);
+            let k3 = acc(y + 0.5 * h * k2);
+            let k4 = acc(y + h * k3);
+            y + h / 6.0 * (k1 + 2.0 * k2 + 2.0 * k3 + k4)
+        }
+    }
+}
+
 /// Does `scheme` at step h bring a block of mass `mass` (1-D, point contact, no spin, starting
 /// at v₀ = δ/10, inside the law's ramp) to rest under the library's friction law? Unstable if
 /// |v| ever exceeds 2v₀ or, with `sign_change`, if v ever changes sign (Euler's oscillation
@@ -92,16 +106,7 @@ pub fn comes_to_rest<L: FrictionLaw>(
     let v0 = 0.1 * law.delta();
     let mut v = v0;
     for _ in 0..2000 {
-        let next = match scheme {
-            Explicit::Euler => v + h * acc(v),
-            Explicit::Rk4 => {
-                let k1 = acc(v);
-                let k2 = acc(v + 0.5 * h * k1);
-                let k3 = acc(v + 0.5 * h * k2);
-                let k4 = acc(v + h * k3);
-                v + h / 6.0 * (k1 + 2.0 * k2 + 2.0 * k3 + k4)
-            }
-        };
+        let next = step1(scheme, h, v, acc);
         if (sign_change && next * v < 0.0) || next.abs() > 2.0 * v0 {
             return false;
         }
@@ -224,18 +229,12 @@ impl BestBlock {
         dv0: [f64; 2],
         scheme: Explicit,
         steps: usize,
-        (mut lo, mut hi): (f64, f64),
+        range: (f64, f64),
         halvings: usize,
     ) -> f64 {
-        for _ in 0..halvings {
-            let mid = 0.5 * (lo + hi);
-            if self.settles(v_eq, dv0, mid, scheme, steps) {
-                lo = mid;
-            } else {
-                hi = mid;
-            }
-        }
-        lo
+        bisect(range, halvings, |h| {
+            self.settles(v_eq, dv0, h, scheme, steps)
+        })
     }
 
     /// Largest eigenvalue (Euler's |λ|²/Re λ for a complex pair) of the stiffness −∂F/∂v at v,
@@ -253,6 +252,37 @@ impl BestBlock {
         ];
         eig_euler(k) * self.law.delta() / (self.law.coefficient() * self.n)
     }
+}
+
+/// The largest step in [lo, hi] at which `stable` holds, bisected `halvings` times (stable at
+/// `lo` and unstable at `hi` assumed): the returned step is below the threshold by at most
+/// (hi − lo)/2^halvings.
+pub fn bisect((mut lo, mut hi): (f64, f64), halvings: usize, stable: impl Fn(f64) -> bool) -> f64 {
+    for _ in 0..halvings {
+        let mid = 0.5 * (lo + hi);
+        if stable(mid) {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    lo
+}
+
+/// The first octant of the direction sphere |v_x| + |v_y| + a|ω| = `scale` on an
+/// (n + 1) × (n + 1) grid: (v_x, v_y, aω), all ≥ 0.
+pub fn octant(n: usize, scale: f64) -> impl Iterator<Item = (f64, f64, f64)> {
+    (0..=n).flat_map(move |i| {
+        let w = i as f64 / n as f64;
+        (0..=n).map(move |j| {
+            let t = j as f64 / n as f64;
+            (
+                scale * (1.0 - w) * t,
+                scale * (1.0 - w) * (1.0 - t),
+                scale * w,
+            )
+        })
+    })
 }
 
 /// Largest real eigenvalue of a 2×2 matrix, or |λ|²/Re λ (Euler's bound) for a complex pair.
@@ -427,16 +457,7 @@ impl<L: FrictionLaw> SpinBody<L> {
         let acc = |w: f64| (self.torque(w) - t_eq) * inv_i;
         let mut w = w_eq + dw0;
         for _ in 0..steps {
-            w = match scheme {
-                Explicit::Euler => w + h * acc(w),
-                Explicit::Rk4 => {
-                    let k1 = acc(w);
-                    let k2 = acc(w + 0.5 * h * k1);
-                    let k3 = acc(w + 0.5 * h * k2);
-                    let k4 = acc(w + h * k3);
-                    w + h / 6.0 * (k1 + 2.0 * k2 + 2.0 * k3 + k4)
-                }
-            };
+            w = step1(scheme, h, w, acc);
             let d = (w - w_eq).abs();
             if d > 10.0 * dw0.abs() || d.is_nan() {
                 return false;
@@ -453,18 +474,12 @@ impl<L: FrictionLaw> SpinBody<L> {
         dw0: f64,
         scheme: Explicit,
         steps: usize,
-        (mut lo, mut hi): (f64, f64),
+        range: (f64, f64),
         halvings: usize,
     ) -> f64 {
-        for _ in 0..halvings {
-            let mid = 0.5 * (lo + hi);
-            if self.settles(w_eq, dw0, mid, scheme, steps) {
-                lo = mid;
-            } else {
-                hi = mid;
-            }
-        }
-        lo
+        bisect(range, halvings, |h| {
+            self.settles(w_eq, dw0, h, scheme, steps)
+        })
     }
 
     /// −∂T_z/∂ω at ω by a one-sided difference (towards larger |ω|), in units of fN·a²/δ.
