@@ -39,8 +39,8 @@ macro_rules! simplified_spin_step_for {
             /// step h* keeps h·stiffness/I under the scheme's limit. It is conservative by 2×
             /// in pure spin (h = limit·5Iδ/(fN·a²) there). Not covered: the coupling with the
             /// translational degrees of freedom (F depends on ω, T_z on v_P): when v_P and ω
-            /// both move, take the smaller of this and [`Friction::stable_step`] as a guide,
-            /// not a bound.
+            /// both move, the smaller of this and [`Friction::stable_step`] is a guide, not a
+            /// bound (the joint limit can be shorter than both).
             ///
             /// # Edge cases and accuracy
             ///
@@ -104,8 +104,11 @@ macro_rules! best_spin_step_for {
             /// [`spin_stiffness`]). Past the ramp it is smaller. So h* holds for every slip
             /// direction and speed with v_P fixed; it is conservative by κ_T/C ≈ 1.9–2 in pure
             /// spin. Not covered: the coupling with the translational degrees of freedom (the
-            /// force depends on ω and the torque on v_P): when v_P and ω both move, take the
-            /// smaller of this and [`Friction::stable_step`] as a guide, not a bound.
+            /// force depends on ω and the torque on v_P): when v_P and ω both move, the smaller
+            /// of this and [`Friction::stable_step`] is a guide, not a bound — the joint limit
+            /// can be shorter than both (by ≈ 16 % for a circle with m·a²/I ≈ 2.5, where the
+            /// two limits are close, in an exploratory scan of the quartic's 3 × 3 Jacobian,
+            /// `tools/explore_coupled_step.py`; ≤ 4 % elsewhere on that scan).
             ///
             /// # Edge cases and accuracy
             ///
