@@ -457,11 +457,12 @@ pub fn ramp_stiffness<T: Real>(k: &Constants<T>) -> T {
 /// # Domain and accuracy
 ///
 /// Every valid e²; finite, ≥ C. Against the maximisation of `tools/gen_spin_stiffness.py`
-/// (mpmath; `tools/data/spin_stiffness.csv`, m₁ from 1 to 1e-12): within 1e-12 (`f64`) and 2e-6 (`f32`) relative, asserted by
-/// `host-tests/stability.rs`. Below m₁ ≈ 1e-5 the maximiser lies on the ellipse and the sphere
-/// check (e² ≤ 0.99) does not cover the outside there. Cost: ≈ 8,700 evaluations of a
-/// quintic and 130 sine–cosines — construction or host use, not per step; not measured on
-/// the Cortex-M4F.
+/// (mpmath; `tools/data/spin_stiffness.csv`, m₁ from 1 to 1e-12): measured within 7.5e-15
+/// (`f64`) and 1.9e-7 (`f32`) relative (asserted ≤ 1e-12 and ≤ 1e-6 by
+/// `host-tests/stability.rs`). Below m₁ ≈ 1e-5 the maximiser lies on the ellipse and the sphere
+/// check (e² ≤ 0.99) does not cover the outside there. Cost: ≈ 9,000 evaluations of a quintic
+/// and 133 sine–cosines (host ≈ 26 µs, `f32` or `f64`) — construction or host use, not per
+/// step; not measured on the Cortex-M4F.
 pub fn spin_stiffness<T: Real>(k: &Constants<T>) -> T {
     /// Grid points over θ; golden-section steps over θ and over ρ.
     const GRID: usize = 64;

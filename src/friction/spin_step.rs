@@ -100,10 +100,10 @@ macro_rules! best_spin_step_for {
             /// Below the slip scale s = |v_Px| + |v_Py| + a|ω| < δ the wrapper ramps the core
             /// by s/δ, so the torque's stiffness −∂T_z/∂ω is fN·a²/δ times a function of the
             /// slip direction: C in pure spin, largest (κ_T ≈ 1.9–2·C) with the instantaneous
-            /// centre inside the patch at ≈ 0.75–0.85 of the way to its edge (derivation in
-            /// [`spin_stiffness`]). Past the ramp it is smaller. So h* holds for every slip
-            /// direction and speed with v_P fixed; it is conservative by κ_T/C ≈ 1.9–2 in pure
-            /// spin. Not covered: the coupling with the translational degrees of freedom (the
+            /// centre inside the patch at ≈ 0.75–0.85 of the way to its edge (on it for
+            /// m₁ ≲ 1e-5; derivation in [`spin_stiffness`]). Past the ramp it is smaller. So h*
+            /// holds for every slip direction and speed with v_P fixed; it is conservative by
+            /// κ_T/C ≈ 1.9–2 in pure spin. Not covered: the coupling with the translational degrees of freedom (the
             /// force depends on ω and the torque on v_P): when v_P and ω both move, the smaller
             /// of this and [`Friction::stable_step`] is a guide, not a bound — the joint limit
             /// can be shorter than both (by ≈ 16 % for a circle with m·a²/I ≈ 2.5, where the
@@ -122,7 +122,7 @@ macro_rules! best_spin_step_for {
             /// schemes, the measured step is ≥ h*, equal to it within the bisection's
             /// resolution (1e-6) at the derivation's stiffest slip, κ_T/C = 1.90–1.97·h* in pure
             /// spin, 1.04–1.60·h* at a generic slip.
-            /// Cost: [`spin_stiffness`] (≈ 8,700 quintic evaluations) and a division
+            /// Cost: [`spin_stiffness`] (≈ 9,000 quintic evaluations, host ≈ 26 µs) and a division
             /// (construction/host use).
             pub fn stable_spin_step(
                 &self,
