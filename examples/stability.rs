@@ -15,9 +15,9 @@ use std::fs;
 
 use contensou::Real;
 use contensou::elliptic::{Agm, Method, Parameter, Table as KeTable, Theta, paper_k_e};
-use contensou::friction::best::ramp_stiffness;
+use contensou::friction::best::{ramp_stiffness, spin_stiffness};
 use contensou::friction::exact::{self, SERIES_MIN_U};
-use contensou::friction::{Best, Constants, Coulomb, Explicit, Friction};
+use contensou::friction::{Best, Constants, Coulomb, Explicit, Friction, Simplified};
 use contensou::geometry::Curvatures;
 use contensou::normal::{Hertz, Modulus, NormalLaw, Volumetric};
 use contensou::shape::{Eccentricity, Linear, Newton, Ratio};
@@ -26,7 +26,7 @@ use contensou::shape::{Eccentricity, Linear, Newton, Ratio};
 mod shared;
 use shared::{
     BestBlock, BestCase, best_case_step, best_stiffness_row, elliptic_rows, measured_step, rel,
-    series, shape_rows,
+    series, shape_rows, spin_probe_step, spin_probes,
 };
 
 const OUT: &str = "docs/report/stability";
@@ -608,6 +608,89 @@ fn best_chart() -> (Chart, String) {
     )
 }
 
+fn spin_chart() -> (Chart, String) {
+    let (f, delta, inertia, n) = (0.3, 1e-4, 1e-9, 0.06);
+    // the step in units of Iδ/(fN·a²), a = 1 m
+    let unit = inertia * delta / (f * n);
+    let mut rows = Vec::new();
+    let (mut tight, mut below): (f64, f64) = (0.0, f64::INFINITY);
+    let mut pure = [f64::INFINITY, 0.0f64];
+    let mut kt = Vec::new();
+    for m1 in [1.0, 0.5, 0.2, 0.1, 0.05, 0.01, 0.001] {
+        let e2 = 1.0 - m1;
+        let k = Constants::from_parameter(Parameter::from_complement(m1).unwrap());
+        let mut cells = Vec::new();
+        for is_best in [true, false] {
+            let mut pure_euler = 0.0;
+            for scheme in [Explicit::Euler, Explicit::Rk4] {
+                let h_star = if is_best {
+                    Friction::<f64, Best>::new(f, delta)
+                        .unwrap()
+                        .stable_spin_step(&k, 1.0, inertia, n, scheme)
+                } else {
+                    Friction::<f64, Simplified>::new(f, delta)
+                        .unwrap()
+                        .stable_spin_step(1.0, inertia, n, scheme)
+                };
+                let mut worst = f64::INFINITY;
+                for probe in spin_probes(is_best, e2, m1, delta) {
+                    let args = (f, delta, inertia, n);
+                    let (h, _) = if is_best {
+                        spin_probe_step::<Best>(&probe, &k, args, h_star, scheme, 2000, 30)
+                    } else {
+                        spin_probe_step::<Simplified>(&probe, &k, args, h_star, scheme, 2000, 30)
+                    };
+                    worst = worst.min(h);
+                    below = below.min(h / h_star);
+                    if probe.name == "pure spin" {
+                        pure = [pure[0].min(h / h_star), pure[1].max(h / h_star)];
+                        if scheme == Explicit::Euler {
+                            pure_euler = h;
+                        }
+                    }
+                }
+                tight = tight.max(worst / h_star);
+                cells.push(Some(h_star / unit));
+                cells.push(Some(worst / unit));
+            }
+            cells.push(Some(pure_euler / unit));
+        }
+        kt.push(spin_stiffness(&k));
+        rows.push((m1, cells));
+    }
+    (
+        Chart {
+            name: "spin_step",
+            title: "Spin about the normal (torque ramp below δ): largest stable explicit step against the patch shape (v_P held)",
+            x: "m₁ = 1 − e²",
+            y: "step h·fN·a²/(Iδ)",
+            xscale: "log",
+            yscale: "log",
+            columns: vec![
+                "best Euler stable_spin_step",
+                "best Euler measured (stiffest probe)",
+                "best RK4 stable_spin_step",
+                "best RK4 measured (stiffest probe)",
+                "best Euler measured in pure spin",
+                "simplified Euler stable_spin_step",
+                "simplified Euler measured (stiffest probe)",
+                "simplified RK4 stable_spin_step",
+                "simplified RK4 measured (stiffest probe)",
+                "simplified Euler measured in pure spin",
+            ],
+            rows,
+        },
+        format!(
+            "h* = limit·Iδ/(κ_T·fN·a²), κ_T = 2/5 (`simplified`, every e²) or `spin_stiffness` = {:.3} (circle) … {:.3} (e² = 0.999) for `best` (≈ 1.9–2·C, C·fN·a²/δ being the pure-spin ramp); measured for m₁ = 1 … 1e-3 (pure spin, a generic slip, the derivation's stiffest slip), both schemes: every step ≥ h* (min {below:.6}·h*), the stiffest probe within {:.2} % of h*; pure spin {:.3}–{:.3}·h*. Not covered: a body whose v_P and ω both move (the 3 × 3 coupled Jacobian)",
+            kt[0],
+            kt[kt.len() - 1],
+            (tight - 1.0) * 100.0,
+            pure[0],
+            pure[1]
+        ),
+    )
+}
+
 fn main() {
     fs::create_dir_all(OUT).unwrap();
     let (theta, s_theta) = theta_chart();
@@ -618,13 +701,14 @@ fn main() {
     let (large, s_large) = large_u_chart();
     let (coul, s_coul) = coulomb_chart();
     let (best, s_best) = best_chart();
+    let (spin, s_spin) = spin_chart();
     for c in [
-        &theta, &canc, &newton, &newton_it, &vol, &lin, &large, &coul, &best,
+        &theta, &canc, &newton, &newton_it, &vol, &lin, &large, &coul, &best, &spin,
     ] {
         c.write();
     }
     for s in [
-        &s_theta, &s_canc, &s_newton, &s_vol, &s_lin, &s_large, &s_coul, &s_best,
+        &s_theta, &s_canc, &s_newton, &s_vol, &s_lin, &s_large, &s_coul, &s_best, &s_spin,
     ] {
         println!("{s}\n");
     }
@@ -684,6 +768,14 @@ fn main() {
             "`Friction::<T, Best>::stable_step(&Constants, mass, n, Explicit)`: limit·mδ/(κfN), κ = `friction::best::ramp_stiffness` (closed form on the major axis × fitted off-axis factor, ≤ 0.35 % above the mpmath maximisation `tools/gen_best_stiffness.py`); 0 for δ = 0",
             "best_ramp_stiffness_bounds_the_maximisation, best_stiffness_is_largest_inside_the_ramp_and_the_ellipse, best_stable_step_is_conservative_and_tight, best_stable_step_edge_cases_are_total",
         ),
+        (
+            "Spin about the normal under the torque ramp (`Friction::<T, Simplified>`, `Friction::<T, Best>`)",
+            format!(
+                "δ → 0 (torque stiffness κ_T·fN·a²/δ, largest with spin and slip together) — {s_spin} (chart `spin_step`)"
+            ),
+            "`Friction::<T, Simplified>::stable_spin_step(a, inertia, n, Explicit)`: limit·5Iδ/(2fN·a²); `Friction::<T, Best>::stable_spin_step(&Constants, a, inertia, n, Explicit)`: limit·Iδ/(κ_T·fN·a²), κ_T = `friction::best::spin_stiffness` (maximised on the exact quartic, within 1e-13 of the mpmath maximisation `tools/gen_spin_stiffness.py`); `Coulomb`: no torque, `T::MAX`; 0 for δ = 0",
+            "spin_stiffness_matches_the_maximisation, spin_stiffness_is_largest_inside_the_ramp_and_the_ellipse, spin_stable_step_is_conservative_and_tight, spin_stable_step_edge_cases_are_total",
+        ),
     ];
     let mut md = String::from(
         "<!-- generated by `cargo run --release --example stability`; do not edit -->\n\n\
@@ -703,7 +795,8 @@ fn main() {
         md,
         "\nReferences: mpmath (`tools/gen_stability_ref.py` → `tools/data/stability_*.csv`), the \
          crate's exact friction integrals (themselves checked against mpmath), \
-         `tools/gen_best_stiffness.py` (mpmath: κ of the `best` ramp), and block \
+         `tools/gen_best_stiffness.py` (mpmath: κ of the `best` ramp), \
+         `tools/gen_spin_stiffness.py` (mpmath: κ_T of its torque), and block \
          integrations bisected for the stable step. Charts: `docs/report/stability/*.csv`."
     )
     .unwrap();

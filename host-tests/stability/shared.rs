@@ -71,6 +71,20 @@ pub fn series(m: f64, psi: f64, u: f64) -> [f64; 3] {
     ]
 }
 
+/// One step of `scheme` for the scalar ODE y' = acc(y).
+pub fn step1(scheme: Explicit, h: f64, y: f64, acc: impl Fn(f64) -> f64) -> f64 {
+    match scheme {
+        Explicit::Euler => y + h * acc(y),
+        Explicit::Rk4 => {
+            let k1 = acc(y);
+            let k2 = acc(y + 0.5 * h * k1);
+            let k3 = acc(y + 0.5 * h * k2);
+            let k4 = acc(y + h * k3);
+            y + h / 6.0 * (k1 + 2.0 * k2 + 2.0 * k3 + k4)
+        }
+    }
+}
+
 /// Does `scheme` at step h bring a block of mass `mass` (1-D, point contact, no spin, starting
 /// at v₀ = δ/10, inside the law's ramp) to rest under the library's friction law? Unstable if
 /// |v| ever exceeds 2v₀ or, with `sign_change`, if v ever changes sign (Euler's oscillation
@@ -92,16 +106,7 @@ pub fn comes_to_rest<L: FrictionLaw>(
     let v0 = 0.1 * law.delta();
     let mut v = v0;
     for _ in 0..2000 {
-        let next = match scheme {
-            Explicit::Euler => v + h * acc(v),
-            Explicit::Rk4 => {
-                let k1 = acc(v);
-                let k2 = acc(v + 0.5 * h * k1);
-                let k3 = acc(v + 0.5 * h * k2);
-                let k4 = acc(v + h * k3);
-                v + h / 6.0 * (k1 + 2.0 * k2 + 2.0 * k3 + k4)
-            }
-        };
+        let next = step1(scheme, h, v, acc);
         if (sign_change && next * v < 0.0) || next.abs() > 2.0 * v0 {
             return false;
         }
@@ -224,18 +229,12 @@ impl BestBlock {
         dv0: [f64; 2],
         scheme: Explicit,
         steps: usize,
-        (mut lo, mut hi): (f64, f64),
+        range: (f64, f64),
         halvings: usize,
     ) -> f64 {
-        for _ in 0..halvings {
-            let mid = 0.5 * (lo + hi);
-            if self.settles(v_eq, dv0, mid, scheme, steps) {
-                lo = mid;
-            } else {
-                hi = mid;
-            }
-        }
-        lo
+        bisect(range, halvings, |h| {
+            self.settles(v_eq, dv0, h, scheme, steps)
+        })
     }
 
     /// Largest eigenvalue (Euler's |λ|²/Re λ for a complex pair) of the stiffness −∂F/∂v at v,
@@ -253,6 +252,37 @@ impl BestBlock {
         ];
         eig_euler(k) * self.law.delta() / (self.law.coefficient() * self.n)
     }
+}
+
+/// The largest step in [lo, hi] at which `stable` holds, bisected `halvings` times (stable at
+/// `lo` and unstable at `hi` assumed): the returned step is below the threshold by at most
+/// (hi − lo)/2^halvings.
+pub fn bisect((mut lo, mut hi): (f64, f64), halvings: usize, stable: impl Fn(f64) -> bool) -> f64 {
+    for _ in 0..halvings {
+        let mid = 0.5 * (lo + hi);
+        if stable(mid) {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    lo
+}
+
+/// The first octant of the direction sphere |v_x| + |v_y| + a|ω| = `scale` on an
+/// (n + 1) × (n + 1) grid: (v_x, v_y, aω), all ≥ 0.
+pub fn octant(n: usize, scale: f64) -> impl Iterator<Item = (f64, f64, f64)> {
+    (0..=n).flat_map(move |i| {
+        let w = i as f64 / n as f64;
+        (0..=n).map(move |j| {
+            let t = j as f64 / n as f64;
+            (
+                scale * (1.0 - w) * t,
+                scale * (1.0 - w) * (1.0 - t),
+                scale * w,
+            )
+        })
+    })
 }
 
 /// Largest real eigenvalue of a 2×2 matrix, or |λ|²/Re λ (Euler's bound) for a complex pair.
@@ -369,4 +399,186 @@ pub fn best_stiffness_rows() -> Vec<[f64; 4]> {
             [v[0], v[1], v[2], v[3]]
         })
         .collect()
+}
+
+// ---- the spin about the normal: ω integrated, v_P held, ω held at a probe by a drive ---------
+
+/// A body spinning under `Friction<f64, L>` (prepared for its patch) with v_P held fixed and ω
+/// integrated: I·ω' = T_z(v_P, ω) − T_z(v_P, ω_eq), so that ω_eq is an equilibrium (ω_eq = 0
+/// with v_P = 0: no drive, the spin coming to rest).
+pub struct SpinBody<L: FrictionLaw> {
+    pub law: Friction<f64, L>,
+    pub prepared: L::Prepared<f64>,
+    pub a: f64,
+    pub inertia: f64,
+    pub n: f64,
+    pub v: [f64; 2],
+}
+
+impl<L: FrictionLaw> SpinBody<L> {
+    #[allow(clippy::too_many_arguments)]
+    pub fn new(
+        k: &Constants<f64>,
+        f: f64,
+        delta: f64,
+        a: f64,
+        inertia: f64,
+        n: f64,
+        v: [f64; 2],
+    ) -> Self {
+        SpinBody {
+            law: Friction::new(f, delta).unwrap(),
+            prepared: L::prepare(k),
+            a,
+            inertia,
+            n,
+            v,
+        }
+    }
+
+    /// The drilling torque at spin ω.
+    pub fn torque(&self, omega: f64) -> f64 {
+        self.law
+            .tangential_prepared(
+                &self.prepared,
+                self.a,
+                self.n,
+                Slip::new(self.v[0], self.v[1], omega).unwrap(),
+            )
+            .tz
+    }
+
+    /// Does `scheme` at step h bring a perturbation `dw0` of the equilibrium `w_eq` back? Unstable
+    /// if |ω − ω_eq| ever exceeds 10·|dw0|, stable if it does not within `steps` steps and ends
+    /// below |dw0|.
+    pub fn settles(&self, w_eq: f64, dw0: f64, h: f64, scheme: Explicit, steps: usize) -> bool {
+        let t_eq = self.torque(w_eq);
+        let inv_i = 1.0 / self.inertia;
+        let acc = |w: f64| (self.torque(w) - t_eq) * inv_i;
+        let mut w = w_eq + dw0;
+        for _ in 0..steps {
+            w = step1(scheme, h, w, acc);
+            let d = (w - w_eq).abs();
+            if d > 10.0 * dw0.abs() || d.is_nan() {
+                return false;
+            }
+        }
+        (w - w_eq).abs() < dw0.abs()
+    }
+
+    /// The largest step at which [`SpinBody::settles`] holds, bisected (`halvings` times) in
+    /// [lo, hi].
+    pub fn measured_step(
+        &self,
+        w_eq: f64,
+        dw0: f64,
+        scheme: Explicit,
+        steps: usize,
+        range: (f64, f64),
+        halvings: usize,
+    ) -> f64 {
+        bisect(range, halvings, |h| {
+            self.settles(w_eq, dw0, h, scheme, steps)
+        })
+    }
+
+    /// −∂T_z/∂ω at ω by a one-sided difference (towards larger |ω|), in units of fN·a²/δ.
+    pub fn stiffness(&self, omega: f64) -> f64 {
+        let h = 1e-7 * self.law.delta() / self.a;
+        let h = if omega < 0.0 { -h } else { h };
+        let k = -(self.torque(omega + h) - self.torque(omega)) / h;
+        k * self.law.delta() / (self.law.coefficient() * self.n * self.a * self.a)
+    }
+}
+
+/// The stiffest slip of the torque's derivation at one e² (`tools/data/spin_stiffness.csv`,
+/// the row with m₁ within 1e-9 of `m1`): (κ_T, C, (X, Y)) — the IC of the maximiser in units of a.
+pub fn spin_stiffness_row(m1: f64) -> Option<(f64, f64, [f64; 2])> {
+    spin_stiffness_rows()
+        .into_iter()
+        .find(|v| (v[0] - m1).abs() <= 1e-9)
+        .map(|v| (v[2], v[1], [v[3], v[4]]))
+}
+
+/// Every row of `tools/data/spin_stiffness.csv`: (m₁, C, κ_T, X, Y).
+pub fn spin_stiffness_rows() -> Vec<[f64; 5]> {
+    include_str!("../../tools/data/spin_stiffness.csv")
+        .lines()
+        .skip(1)
+        .map(|l| {
+            let v = parse(l);
+            [v[0], v[1], v[2], v[3], v[4]]
+        })
+        .collect()
+}
+
+/// One probe of the spin map: the held slip v_P and the equilibrium spin ω_eq (a = 1 m).
+pub struct SpinProbe {
+    pub name: &'static str,
+    pub v: [f64; 2],
+    pub omega: f64,
+}
+
+/// The spin probes of a law at one e² (δ given, a = 1): pure spin from rest, a generic slip,
+/// and the derivation's stiffest slip — for `simplified` just below the switch from its
+/// hyperbola to its plateau (a|ω| = 0.999·5Cv, v_P = (δ/2, 0)), for `best` the maximiser of
+/// `tools/data/spin_stiffness.csv` scaled into the ramp (s = δ/2).
+pub fn spin_probes(best: bool, e2: f64, m1: f64, delta: f64) -> Vec<SpinProbe> {
+    let k = Constants::from_parameter(Parameter::new(e2).unwrap());
+    let generic = SpinProbe {
+        name: "generic",
+        v: [0.2 * delta, 0.1 * delta],
+        omega: 0.3 * delta,
+    };
+    let stiffest = if best {
+        let (_, _, [x, y]) = spin_stiffness_row(m1).unwrap();
+        let w = 0.5 * delta / (1.0 + x + y);
+        // IC (X, Y) = (−v_Py, v_Px)/(aω)
+        SpinProbe {
+            name: "stiffest",
+            v: [y * w, -x * w],
+            omega: w,
+        }
+    } else {
+        let v = 0.5 * delta;
+        SpinProbe {
+            name: "stiffest",
+            v: [v, 0.0],
+            omega: 0.999 * 5.0 * k.spin_torque() * v,
+        }
+    };
+    vec![
+        SpinProbe {
+            name: "pure spin",
+            v: [0.0, 0.0],
+            omega: 0.0,
+        },
+        generic,
+        stiffest,
+    ]
+}
+
+/// Measured stable step of a spin probe (a = 1 m) for `scheme`, bisected in [h*/2, 16·h*]
+/// (`halvings`, `steps` steps per trial, perturbation 1e-6·δ/a): (measured, stiffness at the
+/// probe in fN·a²/δ).
+#[allow(clippy::too_many_arguments)]
+pub fn spin_probe_step<L: FrictionLaw>(
+    probe: &SpinProbe,
+    k: &Constants<f64>,
+    (f, delta, inertia, n): (f64, f64, f64, f64),
+    h_star: f64,
+    scheme: Explicit,
+    steps: usize,
+    halvings: usize,
+) -> (f64, f64) {
+    let body = SpinBody::<L>::new(k, f, delta, 1.0, inertia, n, probe.v);
+    let h = body.measured_step(
+        probe.omega,
+        1e-6 * delta,
+        scheme,
+        steps,
+        (0.5 * h_star, 16.0 * h_star),
+        halvings,
+    );
+    (h, body.stiffness(probe.omega))
 }

@@ -250,6 +250,22 @@ mod api {
             else { return };
             be.stable_step(&Constants::from_parameter(p), mass, n, Explicit::Rk4)
         }
+        fn probe_stable_spin_step<T>(m1, f, delta, a, inertia, n) {
+            let (Ok(p), Ok(be), Ok(si), Ok(co)) = (
+                Parameter::from_complement(m1),
+                Friction::<T, Best>::new(f, delta),
+                Friction::<T, Simplified>::new(f, delta),
+                Friction::<T, Coulomb>::new(f, delta),
+            ) else { return };
+            (
+                be.stable_spin_step(&Constants::from_parameter(p), a, inertia, n, Explicit::Rk4),
+                si.stable_spin_step(a, inertia, n, Explicit::Euler),
+                co.stable_spin_step(a, inertia, n, Explicit::Euler),
+            )
+        }
+        fn probe_spin_stiffness<T>(m1) {
+            Parameter::from_complement(m1).map(|p| friction::best::spin_stiffness(&Constants::from_parameter(p)))
+        }
         // contact (other normal laws through from_parts)
         fn probe_contact_from_parts<T>(p, q, e, f, h, hdot, vx, vy, om) {
             let (Ok(c), Ok(e), Ok(fr), Ok(s)) =

@@ -214,7 +214,7 @@ impl Explicit {
 
 /// m·δ/(fN)·limit: the stable explicit step of a mass on a ramp of slope fN/δ (see
 /// [`Friction::stable_step`] for the edge cases). Total.
-fn ramp_step<T: Real>(f: T, delta: T, mass: T, n: T, scheme: Explicit) -> T {
+pub(super) fn ramp_step<T: Real>(f: T, delta: T, mass: T, n: T, scheme: Explicit) -> T {
     let fn_ = f * n;
     // `x > 0` is false for NaN: NaN mass → 0, NaN fN → MAX.
     match (mass > T::ZERO, fn_ > T::ZERO) {
@@ -245,10 +245,11 @@ macro_rules! stable_step_for {
             /// δ → 0 the law becomes Coulomb's sign law, for which no explicit step is stable.
             /// For the translational degrees of freedom spin only widens the ramp (`simplified`
             /// uses the spin-induced width aω/A, aω/B where it exceeds δ), so h* holds for
-            /// every ω. Not covered: the rotational step of `simplified`'s regularized torque
-            /// (stiffness dT/dω = fN·a²/(5δ) below aω = 5Cδ, so h < limit·5Iδ/(fN·a²) for an
-            /// inertia I), and the laws that ignore δ (`pade`, `ellipsoid`, `exact`: at ω = 0
-            /// Coulomb's sign law, no stable explicit step).
+            /// every ω. The rotational step is a separate limit: `Simplified`'s regularized
+            /// torque has stiffness −dT/dω up to 2fN·a²/(5δ) (fN·a²/(5δ) in pure spin), see
+            /// `stable_spin_step` (`Coulomb` has no torque). Not covered: the laws that ignore
+            /// δ (`pade`, `ellipsoid`, `exact`: at ω = 0 Coulomb's sign law, no stable explicit
+            /// step), and the coupling of translation and spin when both move.
             ///
             /// # Edge cases and accuracy
             ///
@@ -293,8 +294,10 @@ macro_rules! best_stable_step_for {
             /// holds for every slip direction and every fixed spin; it is conservative by the
             /// ratio of κ to the stiffness where a given motion actually settles (e.g. ×κ/A at
             /// rest with spin aω < δ, ×κ/(|cos ψ| + |sin ψ|) for a block at rest without
-            /// spin). Not covered: the rotational (spin) degree of freedom, whose torque ramp
-            /// has its own stiffness ∝ fN·a²/δ. The laws that ignore δ and have no ramp
+            /// spin). The rotational (spin) degree of freedom has its own limit: the torque
+            /// ramp's stiffness is up to κ_T·fN·a²/δ, see `stable_spin_step` and
+            /// [`spin_stiffness`](super::best::spin_stiffness). Not covered: the coupling of
+            /// translation and spin when both move. The laws that ignore δ and have no ramp
             /// (`pade`, `ellipsoid`, `exact`) are Coulomb's sign law at ω = 0: no stable
             /// explicit step (see `stable_step` of `Coulomb` and `Simplified`, whose ramp
             /// stiffness is fN/δ).

@@ -38,6 +38,7 @@ pub mod pade;
 pub mod reference;
 pub mod simplified;
 pub mod slip;
+mod spin_step;
 
 pub use best::{Best, BestContact};
 pub use constants::Constants;
