@@ -162,6 +162,12 @@ impl<T: Real> Patch<T> {
 /// A damping law: the total normal force from the elastic force and (h, ḣ). ḣ > 0 is
 /// compression (approach growing). The result is clamped to ≥ 0 by the caller (no adhesion).
 pub trait Damping<T> {
+    /// `true` only for a law whose [`Damping::force`] returns `elastic` unchanged
+    /// ([`Undamped`]): [`NormalLaw::damped_patch`] then returns the elastic patch as it is,
+    /// with no force call and no clamp (a normal law's elastic force is already ≥ 0, see
+    /// [`Patch::n`]). Default `false`.
+    const ELASTIC: bool = false;
+
     /// Total normal force before clamping, given the elastic force `elastic` = k_H h^{3/2}.
     fn force(&self, elastic: T, h: T, hdot: T) -> T;
 }
@@ -171,6 +177,8 @@ pub trait Damping<T> {
 pub struct Undamped;
 
 impl<T: Real> Damping<T> for Undamped {
+    const ELASTIC: bool = true;
+
     #[inline(always)]
     fn force(&self, elastic: T, _h: T, _hdot: T) -> T {
         elastic
@@ -267,7 +275,7 @@ pub trait NormalLaw<T: Real> {
     #[inline]
     fn damped_patch<D: Damping<T>>(&self, h: T, hdot: T, damping: &D) -> Patch<T> {
         let mut patch = self.patch(h);
-        if !patch.is_empty() {
+        if !D::ELASTIC && !patch.is_empty() {
             patch.n = damping.force(patch.n, h, hdot).max(T::ZERO);
         }
         patch

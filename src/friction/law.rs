@@ -148,7 +148,8 @@ impl<T: Real, L: FrictionLaw> Friction<T, L> {
         n: T,
         slip: Slip<T>,
     ) -> Tangential<T, L::Branch> {
-        self.scaled(a, n, slip, |s| L::traction(k, s))
+        let (a, fn_, state) = self.normalise(a, n, slip);
+        scale(a, fn_, L::traction(k, &state))
     }
 
     /// [`Friction::tangential`] with the law's per-contact form `p` (from
@@ -161,32 +162,45 @@ impl<T: Real, L: FrictionLaw> Friction<T, L> {
         n: T,
         slip: Slip<T>,
     ) -> Tangential<T, L::Branch> {
-        self.scaled(a, n, slip, |s| L::traction_prepared(p, s))
+        let (a, fn_, state) = self.normalise(a, n, slip);
+        scale(a, fn_, L::traction_prepared(p, &state))
     }
 
-    /// Normalise the slip, evaluate the dimensionless `core`, scale by fN and fNa.
+    /// The clamped a, fN (after the ramp) and the normalised slip. The core is called by the
+    /// caller, not through a closure, so that it inlines into the step.
     #[inline(always)]
-    fn scaled(
-        &self,
-        a: T,
-        n: T,
-        slip: Slip<T>,
-        core: impl FnOnce(&SlipState<T>) -> (Traction<T>, L::Branch),
-    ) -> Tangential<T, L::Branch> {
+    fn normalise(&self, a: T, n: T, slip: Slip<T>) -> (T, T, SlipState<T>) {
         // `x > 0` is false for NaN: both clamps map NaN to 0.
         let a = if a > T::ZERO { a } else { T::ZERO };
         let mut fn_ = if n > T::ZERO { self.f * n } else { T::ZERO };
-        let state = SlipState::from_clamped(slip, a, self.delta);
-        if L::RAMP_BELOW_DELTA && state.d() > T::ONE {
-            fn_ /= state.d();
+        if !L::RAMP_BELOW_DELTA {
+            return (a, fn_, SlipState::from_clamped(slip, a, self.delta));
         }
-        let (t, branch) = core(&state);
-        Tangential {
-            fx: fn_ * t.fx,
-            fy: fn_ * t.fy,
-            tz: fn_ * a * t.tz,
-            branch,
+        let (aw, s) = SlipState::scale_of(slip, a);
+        // The ramp min(1, s/δ), tested before the division (δ > s ⇔ d > 1 up to rounding).
+        if self.delta > s {
+            fn_ = ramped(fn_, s, self.delta);
         }
+        (a, fn_, SlipState::from_scale(slip, aw, s, self.delta))
+    }
+}
+
+/// fN·s/δ for s < δ: the ramp below δ, out of line so that its division is not hoisted onto
+/// the common path (s ≥ δ). 0 ≤ s < δ, so the factor lies in [0, 1).
+#[cold]
+#[inline(never)]
+fn ramped<T: Real>(fn_: T, s: T, delta: T) -> T {
+    fn_ * (s / delta)
+}
+
+/// Scale the dimensionless traction by fN and fNa.
+#[inline(always)]
+fn scale<T: Real, B>(a: T, fn_: T, (t, branch): (Traction<T>, B)) -> Tangential<T, B> {
+    Tangential {
+        fx: fn_ * t.fx,
+        fy: fn_ * t.fy,
+        tz: fn_ * a * t.tz,
+        branch,
     }
 }
 

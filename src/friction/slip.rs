@@ -58,12 +58,28 @@ impl<T: Real> Slip<T> {
     }
 }
 
+/// s = |vx| + |vy| + |aw| (≥ 0, or +∞ if |aw| overflowed).
+#[inline(always)]
+fn l1<T: Real>(vx: T, vy: T, aw: T) -> T {
+    vx.abs() + vy.abs() + aw.abs()
+}
+
+/// δ/s + `T::MIN_POSITIVE`: the floor of [`SlipState::d`] as one multiply-add (`vmla.f32` on
+/// the M4F) instead of a compare and a select. It equals max(δ/s, `MIN_POSITIVE`) up to one
+/// rounding wherever δ/s ≥ 2^24·`MIN_POSITIVE` (2e-31 in `f32`), and lies within
+/// `MIN_POSITIVE` of it below: a difference of 1e-38 (`f32`) in a width whose only job there
+/// is to be > 0.
+#[inline(always)]
+fn floored<T: Real>(d: T) -> T {
+    d + T::MIN_POSITIVE
+}
+
 /// The slip in the friction core's homogeneous form (see the [module docs](self)):
 /// (x, y, w) = (v_Px, v_Py, aω)/s and d = δ/s with s = |v_Px| + |v_Py| + a|ω|.
 ///
 /// Invariants: x, y, w lie in [−1, 1] with max(|x|, |y|, |w|) ≥ 1/3, or all three are 0 (no
-/// slip); d ≥ `T::MIN_POSITIVE` (the smallest normal number), possibly +∞
-/// (δ > 0 at a vanishing slip speed). The floor means δ = 0 acts as a regularization width of
+/// slip); d = δ/s + `T::MIN_POSITIVE` ≥ `T::MIN_POSITIVE` (the smallest normal number),
+/// possibly +∞ (δ > 0 at a vanishing slip speed). The floor means δ = 0 acts as a regularization width of
 /// 1e-38·s (`f32`) or 2e-308·s (`f64`), far below rounding; it spares the laws a test for
 /// 0/0 at rest.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -83,10 +99,25 @@ impl<T: Real> SlipState<T> {
         Self::from_clamped(slip, a.max(T::ZERO), delta.max(T::ZERO))
     }
 
-    /// [`SlipState::from_slip`] for a ≥ 0 and δ ≥ 0 already checked (the per-step path).
+    /// [`SlipState::from_slip`] for a ≥ 0 and δ ≥ 0 already checked.
     #[inline(always)]
     pub(crate) fn from_clamped(slip: Slip<T>, a: T, delta: T) -> Self {
         Self::normalised(slip.vx, slip.vy, a * slip.omega, delta)
+    }
+
+    /// The per-step path in two halves, for a ≥ 0 already checked: (aω, s) first, so that the
+    /// wrapper can test s against δ before the division; then [`SlipState::from_scale`].
+    #[inline(always)]
+    pub(crate) fn scale_of(slip: Slip<T>, a: T) -> (T, T) {
+        let aw = a * slip.omega;
+        (aw, l1(slip.vx, slip.vy, aw))
+    }
+
+    /// The state from (aω, s) = [`SlipState::scale_of`]`(slip, a)` and δ ≥ 0: the same as
+    /// [`SlipState::from_clamped`]`(slip, a, delta)`.
+    #[inline(always)]
+    pub(crate) fn from_scale(slip: Slip<T>, aw: T, s: T, delta: T) -> Self {
+        Self::divided(slip.vx, slip.vy, aw, s, delta)
     }
 
     /// The dimensionless state of the paper's figures: v_P = u·aω·(cos ψ, sin ψ) with ω > 0 and
@@ -123,15 +154,21 @@ impl<T: Real> SlipState<T> {
     /// product of finite a and ω), δ ≥ 0 finite.
     #[inline(always)]
     fn normalised(vx: T, vy: T, aw: T, delta: T) -> Self {
-        let s = vx.abs() + vy.abs() + aw.abs();
-        if s >= T::MIN_POSITIVE && s <= T::MAX {
+        Self::divided(vx, vy, aw, l1(vx, vy, aw), delta)
+    }
+
+    /// [`SlipState::normalised`] with s = |vx| + |vy| + |aw| given.
+    #[inline(always)]
+    fn divided(vx: T, vy: T, aw: T, s: T, delta: T) -> Self {
+        // MIN_POSITIVE ≤ s ≤ MAX (s is ≥ 0 or +∞), one integer test on the bits.
+        if s.is_positive_normal() {
             // 1/s is finite for every normal s.
             let inv = T::ONE / s;
             SlipState {
                 x: vx * inv,
                 y: vy * inv,
                 w: aw * inv,
-                d: larger(delta * inv, T::MIN_POSITIVE),
+                d: floored(delta * inv),
             }
         } else {
             Self::unusual(vx, vy, aw, delta)
@@ -156,7 +193,7 @@ impl<T: Real> SlipState<T> {
                 x: vx / m,
                 y: vy / m,
                 w: aw / m,
-                d: larger(delta / m, T::MIN_POSITIVE),
+                d: floored(delta / m),
             }
         } else {
             SlipState {
@@ -183,7 +220,8 @@ impl<T: Real> SlipState<T> {
     pub fn w(&self) -> T {
         self.w
     }
-    /// max(δ/s, `T::MIN_POSITIVE`) (> 0, may be +∞)
+    /// δ/s + `T::MIN_POSITIVE` (≥ `MIN_POSITIVE`, may be +∞; = max(δ/s, `MIN_POSITIVE`) up to
+    /// rounding)
     #[inline(always)]
     pub fn d(&self) -> T {
         self.d
