@@ -244,6 +244,13 @@ fn non_negative_damping<T: Real>(x: T) -> Result<T, Error> {
 
 /// A normal-force law with its per-geometry constants folded in. All methods are total.
 pub trait NormalLaw<T: Real> {
+    /// `true` only if [`NormalLaw::patch`] (and [`NormalLaw::damped_patch`]) never return a
+    /// negative or NaN `a` or `n`, for any h (every law of this crate: a = a′√h, N = k_H·h·√h
+    /// with a′, k_H > 0 for h > 0, zeros otherwise). [`crate::contact::Contact::wrench`] then
+    /// skips the friction wrapper's clamps of a and N, which could only change such values.
+    /// Default `false` (the clamps stay).
+    const NON_NEGATIVE: bool = false;
+
     /// The patch at approach h: a square root and four multiplies. h ≤ 0 → [`Patch::empty`].
     fn patch(&self, h: T) -> Patch<T>;
 
@@ -360,6 +367,8 @@ impl<T: Real> Hertz<T> {
 }
 
 impl<T: Real> NormalLaw<T> for Hertz<T> {
+    const NON_NEGATIVE: bool = true;
+
     #[inline]
     fn patch(&self, h: T) -> Patch<T> {
         self.patch_with::<Libm>(h)
@@ -428,6 +437,8 @@ impl<T: Real> From<Hertz<T>> for HertzMicromath<T> {
 
 #[cfg(feature = "micromath")]
 impl<T: Real> NormalLaw<T> for HertzMicromath<T> {
+    const NON_NEGATIVE: bool = true;
+
     #[inline]
     fn patch(&self, h: T) -> Patch<T> {
         self.0.patch_with::<crate::math::Micromath>(h)
@@ -489,6 +500,8 @@ impl<T: Real> Volumetric<T> {
 }
 
 impl<T: Real> NormalLaw<T> for Volumetric<T> {
+    const NON_NEGATIVE: bool = true;
+
     #[inline]
     fn patch(&self, h: T) -> Patch<T> {
         self.0.patch(h)
@@ -565,6 +578,8 @@ impl<T: Real> Fitted<T> {
 }
 
 impl<T: Real> NormalLaw<T> for Fitted<T> {
+    const NON_NEGATIVE: bool = true;
+
     #[inline]
     fn patch(&self, h: T) -> Patch<T> {
         self.0.patch(h)

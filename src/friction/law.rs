@@ -148,7 +148,7 @@ impl<T: Real, L: FrictionLaw> Friction<T, L> {
         n: T,
         slip: Slip<T>,
     ) -> Tangential<T, L::Branch> {
-        let (a, fn_, state) = self.normalise(a, n, slip);
+        let (a, fn_, state) = self.normalise::<true>(a, n, slip);
         scale(a, fn_, L::traction(k, &state))
     }
 
@@ -162,17 +162,51 @@ impl<T: Real, L: FrictionLaw> Friction<T, L> {
         n: T,
         slip: Slip<T>,
     ) -> Tangential<T, L::Branch> {
-        let (a, fn_, state) = self.normalise(a, n, slip);
+        let (a, fn_, state) = self.normalise::<true>(a, n, slip);
         scale(a, fn_, L::traction_prepared(p, &state))
     }
 
-    /// The clamped a, fN (after the ramp) and the normalised slip. The core is called by the
+    /// [`Friction::tangential_prepared`] for a ≥ 0 and N ≥ 0 known not to be NaN (a
+    /// [`crate::normal::NormalLaw::NON_NEGATIVE`] law's patch): the same result without the
+    /// clamps.
+    #[inline(always)]
+    pub(crate) fn tangential_prepared_non_negative(
+        &self,
+        p: &L::Prepared<T>,
+        a: T,
+        n: T,
+        slip: Slip<T>,
+    ) -> Tangential<T, L::Branch> {
+        let (a, fn_, state) = self.normalise::<false>(a, n, slip);
+        scale(a, fn_, L::traction_prepared(p, &state))
+    }
+
+    /// [`Friction::tangential`] for a ≥ 0 and N ≥ 0 known not to be NaN: the same result
+    /// without the clamps.
+    #[inline(always)]
+    pub(crate) fn tangential_non_negative(
+        &self,
+        k: &Constants<T>,
+        a: T,
+        n: T,
+        slip: Slip<T>,
+    ) -> Tangential<T, L::Branch> {
+        let (a, fn_, state) = self.normalise::<false>(a, n, slip);
+        scale(a, fn_, L::traction(k, &state))
+    }
+
+    /// The clamped a (if `CLAMP`), fN (after the ramp) and the normalised slip. The core is called by the
     /// caller, not through a closure, so that it inlines into the step.
     #[inline(always)]
-    fn normalise(&self, a: T, n: T, slip: Slip<T>) -> (T, T, SlipState<T>) {
-        // `x > 0` is false for NaN: both clamps map NaN to 0.
-        let a = if a > T::ZERO { a } else { T::ZERO };
-        let mut fn_ = if n > T::ZERO { self.f * n } else { T::ZERO };
+    fn normalise<const CLAMP: bool>(&self, a: T, n: T, slip: Slip<T>) -> (T, T, SlipState<T>) {
+        // `x > 0` is false for NaN: both clamps map NaN to 0. Without `CLAMP` the caller
+        // guarantees a ≥ 0 and N ≥ 0 (no NaN), where the clamps change nothing.
+        let a = if !CLAMP || a > T::ZERO { a } else { T::ZERO };
+        let mut fn_ = if !CLAMP || n > T::ZERO {
+            self.f * n
+        } else {
+            T::ZERO
+        };
         if !L::RAMP_BELOW_DELTA {
             return (a, fn_, SlipState::from_clamped(slip, a, self.delta));
         }
