@@ -36,6 +36,7 @@
 //! # Ok::<(), contensou::Error>(())
 //! ```
 
+use crate::friction::law::{PerCall, PerContact};
 use crate::friction::{Best, Constants, Friction, FrictionLaw, Slip, Tangential};
 use crate::geometry::Curvatures;
 use crate::normal::{Damping, Hertz, Modulus, NormalLaw, Patch};
@@ -191,12 +192,9 @@ impl<T: Real, N: NormalLaw<T>, D: Damping<T>, L: FrictionLaw> Contact<T, N, D, L
     #[inline(always)]
     pub fn wrench(&self, h: T, hdot: T, slip: Slip<T>) -> Wrench<T, L::Branch> {
         let patch = self.normal.damped_patch(h, hdot, &self.damping);
-        let (f, p) = (&self.friction, &self.prepared);
-        let t = if N::NON_NEGATIVE {
-            f.tangential_prepared_non_negative(p, patch.a, patch.n, slip)
-        } else {
-            f.tangential_prepared(p, patch.a, patch.n, slip)
-        };
+        let core = PerContact::<T, L>(&self.prepared);
+        let clamp = !N::NON_NEGATIVE;
+        let t = (self.friction).tangential_with(core, clamp, patch.a, patch.n, slip);
         wrench_of(patch, t)
     }
 
@@ -253,10 +251,9 @@ impl<T: Real, D: Damping<T>, L: FrictionLaw> VaryingContact<T, D, L> {
         let normal = Hertz::from_shape(curvatures, &shape, self.estar);
         let constants = Constants::from_shape(&shape);
         let patch = normal.damped_patch(h, hdot, &self.damping);
-        // Hertz is `NON_NEGATIVE`: a, N ≥ 0 with no NaN.
-        let t = self
-            .friction
-            .tangential_non_negative(&constants, patch.a, patch.n, slip);
+        // Hertz is `NON_NEGATIVE`: a, N ≥ 0 with no NaN, no clamps.
+        let core = PerCall(&constants);
+        let t = (self.friction).tangential_with(core, false, patch.a, patch.n, slip);
         wrench_of(patch, t)
     }
 }

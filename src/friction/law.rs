@@ -148,8 +148,7 @@ impl<T: Real, L: FrictionLaw> Friction<T, L> {
         n: T,
         slip: Slip<T>,
     ) -> Tangential<T, L::Branch> {
-        let (a, fn_, state) = self.normalise::<true>(a, n, slip);
-        scale(a, fn_, L::traction(k, &state))
+        self.tangential_with(PerCall(k), true, a, n, slip)
     }
 
     /// [`Friction::tangential`] with the law's per-contact form `p` (from
@@ -162,60 +161,76 @@ impl<T: Real, L: FrictionLaw> Friction<T, L> {
         n: T,
         slip: Slip<T>,
     ) -> Tangential<T, L::Branch> {
-        let (a, fn_, state) = self.normalise::<true>(a, n, slip);
-        scale(a, fn_, L::traction_prepared(p, &state))
+        self.tangential_with(PerContact(p), true, a, n, slip)
     }
 
-    /// [`Friction::tangential_prepared`] for a ≥ 0 and N ≥ 0 known not to be NaN (a
-    /// [`crate::normal::NormalLaw::NON_NEGATIVE`] law's patch): the same result without the
-    /// clamps.
+    /// The per-step call with the core `core`; `clamp = false` (a constant at every call site)
+    /// is for a caller that guarantees a ≥ 0 and N ≥ 0, neither NaN (the patch of a
+    /// [`crate::normal::NormalLaw::NON_NEGATIVE`] law), where the clamps change nothing.
+    ///
+    /// The core is a trait call (inlined), not a closure: a closure holding `best`'s core was
+    /// left out of line, with the slip state passed through memory.
     #[inline(always)]
-    pub(crate) fn tangential_prepared_non_negative(
+    pub(crate) fn tangential_with(
         &self,
-        p: &L::Prepared<T>,
+        core: impl Core<T, L>,
+        clamp: bool,
         a: T,
         n: T,
         slip: Slip<T>,
     ) -> Tangential<T, L::Branch> {
-        let (a, fn_, state) = self.normalise::<false>(a, n, slip);
-        scale(a, fn_, L::traction_prepared(p, &state))
-    }
-
-    /// [`Friction::tangential`] for a ≥ 0 and N ≥ 0 known not to be NaN: the same result
-    /// without the clamps.
-    #[inline(always)]
-    pub(crate) fn tangential_non_negative(
-        &self,
-        k: &Constants<T>,
-        a: T,
-        n: T,
-        slip: Slip<T>,
-    ) -> Tangential<T, L::Branch> {
-        let (a, fn_, state) = self.normalise::<false>(a, n, slip);
-        scale(a, fn_, L::traction(k, &state))
-    }
-
-    /// The clamped a (if `CLAMP`), fN (after the ramp) and the normalised slip. The core is called by the
-    /// caller, not through a closure, so that it inlines into the step.
-    #[inline(always)]
-    fn normalise<const CLAMP: bool>(&self, a: T, n: T, slip: Slip<T>) -> (T, T, SlipState<T>) {
-        // `x > 0` is false for NaN: both clamps map NaN to 0. Without `CLAMP` the caller
-        // guarantees a ≥ 0 and N ≥ 0 (no NaN), where the clamps change nothing.
-        let a = if !CLAMP || a > T::ZERO { a } else { T::ZERO };
-        let mut fn_ = if !CLAMP || n > T::ZERO {
+        // `x > 0` is false for NaN: both clamps map NaN to 0.
+        let a = if !clamp || a > T::ZERO { a } else { T::ZERO };
+        let mut fn_ = if !clamp || n > T::ZERO {
             self.f * n
         } else {
             T::ZERO
         };
-        if !L::RAMP_BELOW_DELTA {
-            return (a, fn_, SlipState::from_clamped(slip, a, self.delta));
+        let state = if L::RAMP_BELOW_DELTA {
+            let (aw, s) = SlipState::scale_of(slip, a);
+            // The ramp min(1, s/δ), tested before the division (δ > s ⇔ d > 1 up to
+            // rounding).
+            if self.delta > s {
+                fn_ = ramped(fn_, s, self.delta);
+            }
+            SlipState::from_scale(slip, aw, s, self.delta)
+        } else {
+            SlipState::from_clamped(slip, a, self.delta)
+        };
+        let (t, branch) = core.eval(&state);
+        Tangential {
+            fx: fn_ * t.fx,
+            fy: fn_ * t.fy,
+            tz: fn_ * a * t.tz,
+            branch,
         }
-        let (aw, s) = SlipState::scale_of(slip, a);
-        // The ramp min(1, s/δ), tested before the division (δ > s ⇔ d > 1 up to rounding).
-        if self.delta > s {
-            fn_ = ramped(fn_, s, self.delta);
-        }
-        (a, fn_, SlipState::from_scale(slip, aw, s, self.delta))
+    }
+}
+
+/// A law's dimensionless core with what it reads besides the slip state (for
+/// [`Friction::tangential_with`]).
+pub(crate) trait Core<T: Real, L: FrictionLaw> {
+    /// [`FrictionLaw::traction`] or [`FrictionLaw::traction_prepared`].
+    fn eval(self, s: &SlipState<T>) -> (Traction<T>, L::Branch);
+}
+
+/// The per-call core: [`FrictionLaw::traction`] on the shape's constants.
+pub(crate) struct PerCall<'a, T>(pub(crate) &'a Constants<T>);
+
+/// The per-contact core: [`FrictionLaw::traction_prepared`] on the law's prepared form.
+pub(crate) struct PerContact<'a, T: Real, L: FrictionLaw>(pub(crate) &'a L::Prepared<T>);
+
+impl<T: Real, L: FrictionLaw> Core<T, L> for PerCall<'_, T> {
+    #[inline(always)]
+    fn eval(self, s: &SlipState<T>) -> (Traction<T>, L::Branch) {
+        L::traction(self.0, s)
+    }
+}
+
+impl<T: Real, L: FrictionLaw> Core<T, L> for PerContact<'_, T, L> {
+    #[inline(always)]
+    fn eval(self, s: &SlipState<T>) -> (Traction<T>, L::Branch) {
+        L::traction_prepared(self.0, s)
     }
 }
 
@@ -225,17 +240,6 @@ impl<T: Real, L: FrictionLaw> Friction<T, L> {
 #[inline(never)]
 fn ramped<T: Real>(fn_: T, s: T, delta: T) -> T {
     fn_ * (s / delta)
-}
-
-/// Scale the dimensionless traction by fN and fNa.
-#[inline(always)]
-fn scale<T: Real, B>(a: T, fn_: T, (t, branch): (Traction<T>, B)) -> Tangential<T, B> {
-    Tangential {
-        fx: fn_ * t.fx,
-        fy: fn_ * t.fy,
-        tz: fn_ * a * t.tz,
-        branch,
-    }
 }
 
 /// An explicit one-step integrator, for [`Friction::stable_step`]: its stability limit on the

@@ -64,22 +64,12 @@ fn l1<T: Real>(vx: T, vy: T, aw: T) -> T {
     vx.abs() + vy.abs() + aw.abs()
 }
 
-/// δ/s + `T::MIN_POSITIVE`: the floor of [`SlipState::d`] as one multiply-add (`vmla.f32` on
-/// the M4F) instead of a compare and a select. It equals max(δ/s, `MIN_POSITIVE`) up to one
-/// rounding wherever δ/s ≥ 2^24·`MIN_POSITIVE` (2e-31 in `f32`), and lies within
-/// `MIN_POSITIVE` of it below: a difference of 1e-38 (`f32`) in a width whose only job there
-/// is to be > 0.
-#[inline(always)]
-fn floored<T: Real>(d: T) -> T {
-    d + T::MIN_POSITIVE
-}
-
 /// The slip in the friction core's homogeneous form (see the [module docs](self)):
 /// (x, y, w) = (v_Px, v_Py, aω)/s and d = δ/s with s = |v_Px| + |v_Py| + a|ω|.
 ///
 /// Invariants: x, y, w lie in [−1, 1] with max(|x|, |y|, |w|) ≥ 1/3, or all three are 0 (no
-/// slip); d = δ/s + `T::MIN_POSITIVE` ≥ `T::MIN_POSITIVE` (the smallest normal number),
-/// possibly +∞ (δ > 0 at a vanishing slip speed). The floor means δ = 0 acts as a regularization width of
+/// slip); d ≥ `T::MIN_POSITIVE` (the smallest normal number), possibly +∞
+/// (δ > 0 at a vanishing slip speed). The floor means δ = 0 acts as a regularization width of
 /// 1e-38·s (`f32`) or 2e-308·s (`f64`), far below rounding; it spares the laws a test for
 /// 0/0 at rest.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -168,7 +158,7 @@ impl<T: Real> SlipState<T> {
                 x: vx * inv,
                 y: vy * inv,
                 w: aw * inv,
-                d: floored(delta * inv),
+                d: larger(delta * inv, T::MIN_POSITIVE),
             }
         } else {
             Self::unusual(vx, vy, aw, delta)
@@ -193,7 +183,7 @@ impl<T: Real> SlipState<T> {
                 x: vx / m,
                 y: vy / m,
                 w: aw / m,
-                d: floored(delta / m),
+                d: larger(delta / m, T::MIN_POSITIVE),
             }
         } else {
             SlipState {
@@ -220,8 +210,7 @@ impl<T: Real> SlipState<T> {
     pub fn w(&self) -> T {
         self.w
     }
-    /// δ/s + `T::MIN_POSITIVE` (≥ `MIN_POSITIVE`, may be +∞; = max(δ/s, `MIN_POSITIVE`) up to
-    /// rounding)
+    /// max(δ/s, `T::MIN_POSITIVE`) (> 0, may be +∞)
     #[inline(always)]
     pub fn d(&self) -> T {
         self.d
