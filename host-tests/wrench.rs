@@ -6,7 +6,7 @@ use contensou::Real;
 use contensou::contact::{Contact, VaryingContact};
 use contensou::friction::{Best, Exact, Friction, FrictionLaw, Simplified, Slip};
 use contensou::geometry::{Curvatures, Race};
-use contensou::normal::{CompressionDamping, Modulus, Undamped};
+use contensou::normal::{CompressionDamping, Hertz, Modulus, Undamped};
 use contensou::shape::Newton;
 use std::f64::consts::PI;
 
@@ -209,4 +209,66 @@ fn full_wrench_is_passive_and_finite() {
     passive_sweep::<f32, Simplified>();
     passive_sweep::<f64, Best>();
     passive_sweep::<f32, Best>();
+}
+
+include!("../benches/friction_set.rs");
+include!("../benches/wrench_set.rs");
+
+/// `Contact::wrench` skips the friction wrapper's clamps of a and N for a `NON_NEGATIVE`
+/// normal law, and the patch's damping for `Undamped` (`Damping::ELASTIC`): the step must
+/// equal, bit for bit, the public clamped call on the same patch, over contact loss, tiny and
+/// huge approaches and every slip kind, for both law forms and both dampings.
+fn unclamped_step_is_the_clamped_call<T: Real, L: FrictionLaw>() {
+    use contensou::normal::NormalLaw;
+    // The wrench benchmarks' scene (209 bearing, inner race), here with δ > 0.
+    let (curv, ..) = wrench_scene::<T, L>();
+    let estar = Modulus::new(T::from_f64(1.142857e11)).unwrap();
+    let friction = Friction::<T, L>::new(T::from_f64(0.07), T::from_f64(1e-4)).unwrap();
+    let plain = Contact::hertz::<Newton>(&curv, estar, Undamped, friction).unwrap();
+    let damper = CompressionDamping::new(T::from_f64(0.5)).unwrap();
+    let damped = Contact::hertz::<Newton>(&curv, estar, damper, friction).unwrap();
+    let hertz = Hertz::new::<Newton>(&curv, estar).unwrap();
+    let hs = [-1e-6, 0.0, 1e-40, 1e-30, 1e-12, 5e-6, 1e-3, 1e10];
+    let vs = [0.0, 1e-40, -3e-5, 1e-4, 0.02, -7.0, 1e30];
+    let ws = [0.0, -1e-20, 3.0, 100.0, -1e25];
+    for &h in &hs {
+        for &hdot in &[0.0, -2.0, 1e3] {
+            for &vx in &vs {
+                for &vy in &vs {
+                    for &w in &ws {
+                        let (h, hdot) = (T::from_f64(h), T::from_f64(hdot));
+                        let slip =
+                            Slip::new(T::from_f64(vx), T::from_f64(vy), T::from_f64(w)).unwrap();
+                        let got = plain.wrench(h, hdot, slip);
+                        assert_eq!(got.patch, hertz.patch(h), "Undamped patch at h = {h:?}");
+                        for (c, got) in [
+                            (plain.prepared(), got),
+                            (damped.prepared(), damped.wrench(h, hdot, slip)),
+                        ] {
+                            let p = got.patch;
+                            let want = friction.tangential_prepared(c, p.a, p.n, slip);
+                            let same =
+                                |x: T, y: T| x == y || (x.to_f64().is_nan() && y.to_f64().is_nan());
+                            assert!(
+                                same(got.fx, want.fx)
+                                    && same(got.fy, want.fy)
+                                    && same(got.tz, want.tz),
+                                "{} h = {h:?} ḣ = {hdot:?} slip = {slip:?}: {got:?} vs {want:?}",
+                                L::NAME
+                            );
+                            assert_eq!(got.branch, want.branch);
+                        }
+                    }
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn unclamped_step_equals_the_clamped_call() {
+    unclamped_step_is_the_clamped_call::<f32, Simplified>();
+    unclamped_step_is_the_clamped_call::<f32, Best>();
+    unclamped_step_is_the_clamped_call::<f64, Simplified>();
+    unclamped_step_is_the_clamped_call::<f64, Best>();
 }

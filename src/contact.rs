@@ -36,6 +36,7 @@
 //! # Ok::<(), contensou::Error>(())
 //! ```
 
+use crate::friction::law::{PerCall, PerContact};
 use crate::friction::{Best, Constants, Friction, FrictionLaw, Slip, Tangential};
 use crate::geometry::Curvatures;
 use crate::normal::{Damping, Hertz, Modulus, NormalLaw, Patch};
@@ -59,17 +60,10 @@ pub struct Wrench<T, B> {
     pub branch: B,
 }
 
-/// Normal law + damping + friction law: the step shared by both contact forms.
+/// The wrench from the step's patch and its friction (shared by both contact forms; the
+/// calls are made inline by each form, no closure, so that the friction core inlines).
 #[inline(always)]
-fn step<T: Real, N: NormalLaw<T>, D: Damping<T>, B>(
-    normal: &N,
-    damping: &D,
-    h: T,
-    hdot: T,
-    tangential: impl FnOnce(&Patch<T>) -> Tangential<T, B>,
-) -> Wrench<T, B> {
-    let patch = normal.damped_patch(h, hdot, damping);
-    let t = tangential(&patch);
+fn wrench_of<T: Real, B>(patch: Patch<T>, t: Tangential<T, B>) -> Wrench<T, B> {
     Wrench {
         n: patch.n,
         fx: t.fx,
@@ -195,12 +189,13 @@ impl<T: Real, N: NormalLaw<T>, D: Damping<T>, L: FrictionLaw> Contact<T, N, D, L
     }
 
     /// One step: approach h (m), its rate ḣ (m/s), slip → the wrench on B from A. Total.
-    #[inline]
+    #[inline(always)]
     pub fn wrench(&self, h: T, hdot: T, slip: Slip<T>) -> Wrench<T, L::Branch> {
-        step(&self.normal, &self.damping, h, hdot, |patch| {
-            self.friction
-                .tangential_prepared(&self.prepared, patch.a, patch.n, slip)
-        })
+        let patch = self.normal.damped_patch(h, hdot, &self.damping);
+        let core = PerContact::<T, L>(&self.prepared);
+        let clamp = !N::NON_NEGATIVE;
+        let t = (self.friction).tangential_with(core, clamp, patch.a, patch.n, slip);
+        wrench_of(patch, t)
     }
 
     /// The normal law (for its stiffness, energy and inverse).
@@ -255,8 +250,10 @@ impl<T: Real, D: Damping<T>, L: FrictionLaw> VaryingContact<T, D, L> {
         let shape = shape::Table::shape(Ratio::clamped(curvatures.ratio()));
         let normal = Hertz::from_shape(curvatures, &shape, self.estar);
         let constants = Constants::from_shape(&shape);
-        step(&normal, &self.damping, h, hdot, |patch| {
-            self.friction.tangential(&constants, patch.a, patch.n, slip)
-        })
+        let patch = normal.damped_patch(h, hdot, &self.damping);
+        // Hertz is `NON_NEGATIVE`: a, N ≥ 0 with no NaN, no clamps.
+        let core = PerCall(&constants);
+        let t = (self.friction).tangential_with(core, false, patch.a, patch.n, slip);
+        wrench_of(patch, t)
     }
 }

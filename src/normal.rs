@@ -162,6 +162,12 @@ impl<T: Real> Patch<T> {
 /// A damping law: the total normal force from the elastic force and (h, ḣ). ḣ > 0 is
 /// compression (approach growing). The result is clamped to ≥ 0 by the caller (no adhesion).
 pub trait Damping<T> {
+    /// `true` only for a law whose [`Damping::force`] returns `elastic` unchanged
+    /// ([`Undamped`]): [`NormalLaw::damped_patch`] then returns the elastic patch as it is,
+    /// with no force call and no clamp (a normal law's elastic force is already ≥ 0, see
+    /// [`Patch::n`]). Default `false`.
+    const ELASTIC: bool = false;
+
     /// Total normal force before clamping, given the elastic force `elastic` = k_H h^{3/2}.
     fn force(&self, elastic: T, h: T, hdot: T) -> T;
 }
@@ -171,6 +177,8 @@ pub trait Damping<T> {
 pub struct Undamped;
 
 impl<T: Real> Damping<T> for Undamped {
+    const ELASTIC: bool = true;
+
     #[inline(always)]
     fn force(&self, elastic: T, _h: T, _hdot: T) -> T {
         elastic
@@ -236,6 +244,13 @@ fn non_negative_damping<T: Real>(x: T) -> Result<T, Error> {
 
 /// A normal-force law with its per-geometry constants folded in. All methods are total.
 pub trait NormalLaw<T: Real> {
+    /// `true` only if [`NormalLaw::patch`] (and [`NormalLaw::damped_patch`]) never return a
+    /// negative or NaN `a` or `n`, for any h (every law of this crate: a = a′√h, N = k_H·h·√h
+    /// with a′, k_H > 0 for h > 0, zeros otherwise). [`crate::contact::Contact::wrench`] then
+    /// skips the friction wrapper's clamps of a and N, which could only change such values.
+    /// Default `false` (the clamps stay).
+    const NON_NEGATIVE: bool = false;
+
     /// The patch at approach h: a square root and four multiplies. h ≤ 0 → [`Patch::empty`].
     fn patch(&self, h: T) -> Patch<T>;
 
@@ -267,7 +282,7 @@ pub trait NormalLaw<T: Real> {
     #[inline]
     fn damped_patch<D: Damping<T>>(&self, h: T, hdot: T, damping: &D) -> Patch<T> {
         let mut patch = self.patch(h);
-        if !patch.is_empty() {
+        if !D::ELASTIC && !patch.is_empty() {
             patch.n = damping.force(patch.n, h, hdot).max(T::ZERO);
         }
         patch
@@ -352,6 +367,8 @@ impl<T: Real> Hertz<T> {
 }
 
 impl<T: Real> NormalLaw<T> for Hertz<T> {
+    const NON_NEGATIVE: bool = true;
+
     #[inline]
     fn patch(&self, h: T) -> Patch<T> {
         self.patch_with::<Libm>(h)
@@ -420,6 +437,8 @@ impl<T: Real> From<Hertz<T>> for HertzMicromath<T> {
 
 #[cfg(feature = "micromath")]
 impl<T: Real> NormalLaw<T> for HertzMicromath<T> {
+    const NON_NEGATIVE: bool = true;
+
     #[inline]
     fn patch(&self, h: T) -> Patch<T> {
         self.0.patch_with::<crate::math::Micromath>(h)
@@ -482,6 +501,8 @@ impl<T: Real> Volumetric<T> {
 }
 
 impl<T: Real> NormalLaw<T> for Volumetric<T> {
+    const NON_NEGATIVE: bool = true;
+
     #[inline]
     fn patch(&self, h: T) -> Patch<T> {
         self.0.patch(h)
@@ -558,6 +579,8 @@ impl<T: Real> Fitted<T> {
 }
 
 impl<T: Real> NormalLaw<T> for Fitted<T> {
+    const NON_NEGATIVE: bool = true;
+
     #[inline]
     fn patch(&self, h: T) -> Patch<T> {
         self.0.patch(h)

@@ -125,6 +125,10 @@ pub trait Real:
     fn floor(self) -> Self;
     /// Neither infinite nor NaN.
     fn is_finite(self) -> bool;
+    /// `MIN_POSITIVE ≤ x ≤ MAX`: positive, normal and finite (false for 0, subnormals, ∞, NaN
+    /// and every negative number). One unsigned compare on the bits: on the M4F four
+    /// instructions, where the float range test takes eight.
+    fn is_positive_normal(self) -> bool;
 
     /// x², for readability.
     #[inline(always)]
@@ -252,6 +256,13 @@ macro_rules! impl_real {
             fn is_finite(self) -> bool {
                 $t::is_finite(self)
             }
+            #[inline(always)]
+            fn is_positive_normal(self) -> bool {
+                // The positive normal numbers are the bit patterns from MIN_POSITIVE up to
+                // MAX; every other value wraps or lands at or past +∞'s pattern.
+                let lo = $t::MIN_POSITIVE.to_bits();
+                self.to_bits().wrapping_sub(lo) < $t::INFINITY.to_bits() - lo
+            }
         }
     };
 }
@@ -316,5 +327,26 @@ mod tests {
         assert_eq!(Real::clamp_to(f64::NAN, 0.0, 1.0), 0.0);
         assert_eq!(Real::trunc_usize(-3.0f32), 0);
         assert_eq!(Real::trunc_usize(f64::NAN), 0);
+    }
+
+    #[test]
+    fn positive_normal_is_the_normal_range() {
+        for x in [f32::MIN_POSITIVE, 1.0, f32::MAX, f32::MIN_POSITIVE * 1.5] {
+            assert!(Real::is_positive_normal(x), "{x}");
+        }
+        let below = f32::from_bits(f32::MIN_POSITIVE.to_bits() - 1);
+        for x in [
+            0.0,
+            -0.0,
+            below,
+            f32::INFINITY,
+            f32::NAN,
+            -1.0,
+            -f32::MIN_POSITIVE,
+        ] {
+            assert!(!Real::is_positive_normal(x), "{x}");
+        }
+        assert!(Real::is_positive_normal(f64::MAX) && Real::is_positive_normal(f64::MIN_POSITIVE));
+        assert!(!Real::is_positive_normal(f64::INFINITY) && !Real::is_positive_normal(5e-324));
     }
 }

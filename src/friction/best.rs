@@ -66,9 +66,9 @@
 //! e² = 0.5; the rig's 8-instruction call floor included):
 //! [`BestContact::traction`] **107 instructions** on average (63 inside … 172 outside;
 //! `simplified`: 66, so 1.62× on average, 2.6× worst on the set; 125 on the same set at
-//! e² = 0.99, worst 174); the dimensional `Friction::<f32, Best>::tangential_prepared` 180
-//! (`simplified`'s `tangential` 125); the full wrench `Contact::wrench` with fixed geometry 231
-//! (164 with `simplified`); [`BestContact::new`] ([`FrictionLaw::prepare`]) 19,281 once per
+//! e² = 0.99, worst 174); the dimensional `Friction::<f32, Best>::tangential_prepared` 144
+//! (`simplified`'s `tangential` 122); the full wrench `Contact::wrench` with fixed geometry 182
+//! (144 with `simplified`); [`BestContact::new`] ([`FrictionLaw::prepare`]) 19,281 once per
 //! contact; the per-call form [`Best`]`::traction` (e² changing every call) 1,324 on average,
 //! 3,103 worst (the 693-term series is summed per call). `f64` (soft float): 5,931 / 87,114 per
 //! call. Flash: the table is 7 × 9 × 11 `f32` = 2,772 bytes (+ 64 bytes of series);

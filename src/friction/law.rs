@@ -137,9 +137,11 @@ impl<T: Real, L: FrictionLaw> Friction<T, L> {
     /// N ≤ 0 (or NaN) gives the zero wrench (no contact, no adhesion); `a` ≤ 0 (or NaN) is a
     /// point contact (no spin effect, no torque). Total: finite output for finite `a` and `n`.
     /// Cost: the law's core plus a normalisation (two additions, one division, four
-    /// multiplications) and five multiplications: 125 instructions for
+    /// multiplications, an integer range test) and five multiplications: 122 instructions for
     /// `Friction::<f32, Simplified>` on the Cortex-M4F (QEMU stage `friction`, method
-    /// `simplified-dimensional`, with the branch; the core alone is 66).
+    /// `simplified-dimensional`, with the branch; the core alone is 66, without its branch).
+    /// A law with [`FrictionLaw::RAMP_BELOW_DELTA`] adds a compare of s with δ (the ramp's
+    /// division only below δ): `Friction::<f32, Best>::tangential_prepared` 144.
     #[inline(always)]
     pub fn tangential(
         &self,
@@ -148,7 +150,7 @@ impl<T: Real, L: FrictionLaw> Friction<T, L> {
         n: T,
         slip: Slip<T>,
     ) -> Tangential<T, L::Branch> {
-        self.scaled(a, n, slip, |s| L::traction(k, s))
+        self.tangential_with(PerCall(k), true, a, n, slip)
     }
 
     /// [`Friction::tangential`] with the law's per-contact form `p` (from
@@ -161,26 +163,43 @@ impl<T: Real, L: FrictionLaw> Friction<T, L> {
         n: T,
         slip: Slip<T>,
     ) -> Tangential<T, L::Branch> {
-        self.scaled(a, n, slip, |s| L::traction_prepared(p, s))
+        self.tangential_with(PerContact(p), true, a, n, slip)
     }
 
-    /// Normalise the slip, evaluate the dimensionless `core`, scale by fN and fNa.
+    /// The per-step call with the core `core`; `clamp = false` (a constant at every call site)
+    /// is for a caller that guarantees a ≥ 0 and N ≥ 0, neither NaN (the patch of a
+    /// [`crate::normal::NormalLaw::NON_NEGATIVE`] law), where the clamps change nothing.
+    ///
+    /// The core is a trait call (inlined), not a closure: a closure holding `best`'s core was
+    /// left out of line, with the slip state passed through memory.
     #[inline(always)]
-    fn scaled(
+    pub(crate) fn tangential_with(
         &self,
+        core: impl Core<T, L>,
+        clamp: bool,
         a: T,
         n: T,
         slip: Slip<T>,
-        core: impl FnOnce(&SlipState<T>) -> (Traction<T>, L::Branch),
     ) -> Tangential<T, L::Branch> {
         // `x > 0` is false for NaN: both clamps map NaN to 0.
-        let a = if a > T::ZERO { a } else { T::ZERO };
-        let mut fn_ = if n > T::ZERO { self.f * n } else { T::ZERO };
-        let state = SlipState::from_clamped(slip, a, self.delta);
-        if L::RAMP_BELOW_DELTA && state.d() > T::ONE {
-            fn_ /= state.d();
-        }
-        let (t, branch) = core(&state);
+        let a = if !clamp || a > T::ZERO { a } else { T::ZERO };
+        let mut fn_ = if !clamp || n > T::ZERO {
+            self.f * n
+        } else {
+            T::ZERO
+        };
+        let state = if L::RAMP_BELOW_DELTA {
+            let (aw, s) = SlipState::scale_of(slip, a);
+            // The ramp min(1, s/δ), tested before the division (δ > s ⇔ d > 1 up to
+            // rounding).
+            if self.delta > s {
+                fn_ = ramped(fn_, s, self.delta);
+            }
+            SlipState::from_scale(slip, aw, s, self.delta)
+        } else {
+            SlipState::from_clamped(slip, a, self.delta)
+        };
+        let (t, branch) = core.eval(&state);
         Tangential {
             fx: fn_ * t.fx,
             fy: fn_ * t.fy,
@@ -188,6 +207,41 @@ impl<T: Real, L: FrictionLaw> Friction<T, L> {
             branch,
         }
     }
+}
+
+/// A law's dimensionless core with what it reads besides the slip state (for
+/// [`Friction::tangential_with`]).
+pub(crate) trait Core<T: Real, L: FrictionLaw> {
+    /// [`FrictionLaw::traction`] or [`FrictionLaw::traction_prepared`].
+    fn eval(self, s: &SlipState<T>) -> (Traction<T>, L::Branch);
+}
+
+/// The per-call core: [`FrictionLaw::traction`] on the shape's constants.
+pub(crate) struct PerCall<'a, T>(pub(crate) &'a Constants<T>);
+
+/// The per-contact core: [`FrictionLaw::traction_prepared`] on the law's prepared form.
+pub(crate) struct PerContact<'a, T: Real, L: FrictionLaw>(pub(crate) &'a L::Prepared<T>);
+
+impl<T: Real, L: FrictionLaw> Core<T, L> for PerCall<'_, T> {
+    #[inline(always)]
+    fn eval(self, s: &SlipState<T>) -> (Traction<T>, L::Branch) {
+        L::traction(self.0, s)
+    }
+}
+
+impl<T: Real, L: FrictionLaw> Core<T, L> for PerContact<'_, T, L> {
+    #[inline(always)]
+    fn eval(self, s: &SlipState<T>) -> (Traction<T>, L::Branch) {
+        L::traction_prepared(self.0, s)
+    }
+}
+
+/// fN·s/δ for s < δ: the ramp below δ, out of line so that its division is not hoisted onto
+/// the common path (s ≥ δ). 0 ≤ s < δ, so the factor lies in [0, 1).
+#[cold]
+#[inline(never)]
+fn ramped<T: Real>(fn_: T, s: T, delta: T) -> T {
+    fn_ * (s / delta)
 }
 
 /// An explicit one-step integrator, for [`Friction::stable_step`]: its stability limit on the

@@ -46,7 +46,7 @@
 //! call including the 8-instruction call floor of the QEMU rig (stage `friction`); `f64`
 //! (soft float) ≈2,300. Host (x86-64): ≈6–12 ns. The dimensional call
 //! [`Friction::tangential`](super::Friction::tangential) (normalisation + core + scaling):
-//! 125 instructions (`f32`).
+//! 122 instructions (`f32`).
 
 use super::{Constants, FrictionLaw, SlipState, Traction, larger as max};
 use crate::Real;

@@ -58,6 +58,12 @@ impl<T: Real> Slip<T> {
     }
 }
 
+/// s = |vx| + |vy| + |aw| (≥ 0, or +∞ if |aw| overflowed).
+#[inline(always)]
+fn l1<T: Real>(vx: T, vy: T, aw: T) -> T {
+    vx.abs() + vy.abs() + aw.abs()
+}
+
 /// The slip in the friction core's homogeneous form (see the [module docs](self)):
 /// (x, y, w) = (v_Px, v_Py, aω)/s and d = δ/s with s = |v_Px| + |v_Py| + a|ω|.
 ///
@@ -83,10 +89,25 @@ impl<T: Real> SlipState<T> {
         Self::from_clamped(slip, a.max(T::ZERO), delta.max(T::ZERO))
     }
 
-    /// [`SlipState::from_slip`] for a ≥ 0 and δ ≥ 0 already checked (the per-step path).
+    /// [`SlipState::from_slip`] for a ≥ 0 and δ ≥ 0 already checked.
     #[inline(always)]
     pub(crate) fn from_clamped(slip: Slip<T>, a: T, delta: T) -> Self {
         Self::normalised(slip.vx, slip.vy, a * slip.omega, delta)
+    }
+
+    /// The per-step path in two halves, for a ≥ 0 already checked: (aω, s) first, so that the
+    /// wrapper can test s against δ before the division; then [`SlipState::from_scale`].
+    #[inline(always)]
+    pub(crate) fn scale_of(slip: Slip<T>, a: T) -> (T, T) {
+        let aw = a * slip.omega;
+        (aw, l1(slip.vx, slip.vy, aw))
+    }
+
+    /// The state from (aω, s) = [`SlipState::scale_of`]`(slip, a)` and δ ≥ 0: the same as
+    /// [`SlipState::from_clamped`]`(slip, a, delta)`.
+    #[inline(always)]
+    pub(crate) fn from_scale(slip: Slip<T>, aw: T, s: T, delta: T) -> Self {
+        Self::divided(slip.vx, slip.vy, aw, s, delta)
     }
 
     /// The dimensionless state of the paper's figures: v_P = u·aω·(cos ψ, sin ψ) with ω > 0 and
@@ -123,8 +144,14 @@ impl<T: Real> SlipState<T> {
     /// product of finite a and ω), δ ≥ 0 finite.
     #[inline(always)]
     fn normalised(vx: T, vy: T, aw: T, delta: T) -> Self {
-        let s = vx.abs() + vy.abs() + aw.abs();
-        if s >= T::MIN_POSITIVE && s <= T::MAX {
+        Self::divided(vx, vy, aw, l1(vx, vy, aw), delta)
+    }
+
+    /// [`SlipState::normalised`] with s = |vx| + |vy| + |aw| given.
+    #[inline(always)]
+    fn divided(vx: T, vy: T, aw: T, s: T, delta: T) -> Self {
+        // MIN_POSITIVE ≤ s ≤ MAX (s is ≥ 0 or +∞), one integer test on the bits.
+        if s.is_positive_normal() {
             // 1/s is finite for every normal s.
             let inv = T::ONE / s;
             SlipState {
