@@ -203,7 +203,7 @@ impl<T: Real, L: FrictionLaw> Friction<T, L> {
         Tangential {
             fx: fn_ * t.fx,
             fy: fn_ * t.fy,
-            tz: fn_ * a * t.tz,
+            tz: fn_ * (a * t.tz),
             branch,
         }
     }
