@@ -194,7 +194,9 @@ impl<T: Real, N: NormalLaw<T>, D: Damping<T>, L: FrictionLaw> Contact<T, N, D, L
         let patch = self.normal.damped_patch(h, hdot, &self.damping);
         let core = PerContact::<T, L>(&self.prepared);
         let clamp = !N::NON_NEGATIVE;
-        let t = (self.friction).tangential_with(core, clamp, patch.a, patch.n, slip);
+        let t = self
+            .friction
+            .tangential_with(core, clamp, patch.a, patch.n, slip);
         wrench_of(patch, t)
     }
 
@@ -251,9 +253,11 @@ impl<T: Real, D: Damping<T>, L: FrictionLaw> VaryingContact<T, D, L> {
         let normal = Hertz::from_shape(curvatures, &shape, self.estar);
         let constants = Constants::from_shape(&shape);
         let patch = normal.damped_patch(h, hdot, &self.damping);
-        // Hertz is `NON_NEGATIVE`: a, N ≥ 0 with no NaN, no clamps.
         let core = PerCall(&constants);
-        let t = (self.friction).tangential_with(core, false, patch.a, patch.n, slip);
+        let clamp = !<Hertz<T> as NormalLaw<T>>::NON_NEGATIVE;
+        let t = self
+            .friction
+            .tangential_with(core, clamp, patch.a, patch.n, slip);
         wrench_of(patch, t)
     }
 }
