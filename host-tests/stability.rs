@@ -545,13 +545,7 @@ fn best_stable_step_is_conservative_and_tight() {
         }
         lines
     };
-    let all: Vec<_> = std::thread::scope(|s| {
-        let hs: Vec<_> = [(0.0, 1.0), (0.5, 0.5), (0.9, 0.1), (0.99, 0.01)]
-            .map(|(e2, m1)| s.spawn(move || run(e2, m1)))
-            .into_iter()
-            .collect();
-        hs.into_iter().flat_map(|h| h.join().unwrap()).collect()
-    });
+    let all: Vec<_> = per_shape(run);
     for (name, ratio, vs_pred) in &all {
         println!("{name}: measured/h* {ratio:.4}, measured/predicted {vs_pred:.4}");
         // conservative, and loose at most by κ over the case's own stiffness (largest: the
@@ -733,13 +727,7 @@ fn spin_stable_step_is_conservative_and_tight() {
         }
         lines
     };
-    let all: Vec<_> = std::thread::scope(|s| {
-        let hs: Vec<_> = [(0.0, 1.0), (0.5, 0.5), (0.9, 0.1), (0.99, 0.01)]
-            .map(|(e2, m1)| s.spawn(move || run(e2, m1)))
-            .into_iter()
-            .collect();
-        hs.into_iter().flat_map(|h| h.join().unwrap()).collect()
-    });
+    let all: Vec<_> = per_shape(run);
     for (name, ratio, vs_pred, vs_derived) in &all {
         println!(
             "{name}: measured/h* {ratio:.5}, measured/predicted {vs_pred:.5}, stiffness vs derived {vs_derived:?}"
@@ -823,4 +811,17 @@ fn spin_stable_step_edge_cases_are_total() {
     }
     let k = Constants::from_parameter(Parameter::<f64>::from_complement(1e-12).unwrap());
     assert!(spin_stiffness(&k).is_finite());
+}
+
+/// `run(e², m₁)` for the four patch shapes the step tests cover, one thread each; their lines
+/// in shape order.
+fn per_shape<R: Send>(run: impl Fn(f64, f64) -> Vec<R> + Sync) -> Vec<R> {
+    let run = &run;
+    std::thread::scope(|s| {
+        let hs: Vec<_> = [(0.0, 1.0), (0.5, 0.5), (0.9, 0.1), (0.99, 0.01)]
+            .map(|(e2, m1)| s.spawn(move || run(e2, m1)))
+            .into_iter()
+            .collect();
+        hs.into_iter().flat_map(|h| h.join().unwrap()).collect()
+    })
 }
