@@ -47,7 +47,7 @@ fn documented() -> Vec<String> {
 #[test]
 fn readme_table_lists_every_variant() {
     let (d, r) = (declared(), documented());
-    assert_eq!(d.len(), 9, "variants parsed from src/error.rs: {d:?}");
+    assert_eq!(d.len(), 11, "variants parsed from src/error.rs: {d:?}");
     assert_eq!(d, r, "src/error.rs vs README Errors table");
 }
 
@@ -169,9 +169,22 @@ fn each_variant<T: Real>() {
         let r = Curvatures::ball_race(x(d), x(rg), x(dm), x(0.0), Race::Inner);
         assert_eq!(r.unwrap_err(), lnp, "ball_race({d}, {rg}, {dm})");
     }
+    // RegularizationSpeedNegative: δ < 0 (δ = 0 is allowed).
     assert_eq!(
         Friction::<T, Simplified>::new(x(0.1), x(-1e-3)).unwrap_err(),
-        lnp
+        Error::RegularizationSpeedNegative
+    );
+    assert!(Friction::<T, Simplified>::new(x(0.1), x(0.0)).is_ok());
+
+    // CurvaturesNotOrdered: `ordered` refuses P > Q (where `new` swaps them).
+    assert_eq!(
+        Curvatures::ordered(x(2.0), x(1.0)).unwrap_err(),
+        Error::CurvaturesNotOrdered
+    );
+    assert_eq!(Curvatures::ordered(x(0.0), x(1.0)), cnp);
+    assert_eq!(
+        Curvatures::ordered(x(1.0), x(2.0)),
+        Curvatures::new(x(1.0), x(2.0))
     );
     // …but a negative signed radius is a concave body, not an error.
     assert!(Principal::sphere(x(-1.0)).is_ok());
@@ -200,11 +213,13 @@ fn messages_are_nonempty_and_name_the_input() {
     for v in [
         Error::EllipticParameterOutOfDomain,
         Error::CurvatureNotPositive,
+        Error::CurvaturesNotOrdered,
         Error::CurvatureRatioOutOfRange,
         Error::ModulusNotPositive,
         Error::PoissonRatioOutOfRange,
         Error::FrictionCoefficientNegative,
         Error::LengthNotPositive,
+        Error::RegularizationSpeedNegative,
         Error::DampingNegative,
     ] {
         assert!(!v.as_str().is_empty() && v.to_string() == v.as_str());

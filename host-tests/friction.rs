@@ -532,7 +532,7 @@ fn dimensional_wrapper_validates_and_scales() {
     );
     assert_eq!(
         Friction::<f64, Coulomb>::new(0.3, -1e-3).unwrap_err(),
-        Error::LengthNotPositive
+        Error::RegularizationSpeedNegative
     );
     assert_eq!(
         Friction::<f64, Coulomb>::new(0.3, f64::NAN).unwrap_err(),

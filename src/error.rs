@@ -14,9 +14,14 @@ pub enum Error {
     /// Elliptic parameter m outside the supported domain `[0, 1 − m₁_min]`
     /// (`m₁_min` = 1e-12 for `f64`, 2⁻²⁴ for `f32`), or m₁ = 1 − m outside `[m₁_min, 1]`.
     EllipticParameterOutOfDomain,
-    /// A sum of principal curvatures (P + Q, or P or Q itself) that must be positive is ≤ 0:
-    /// the bodies are not locally convex towards each other (no Hertz contact).
+    /// A curvature that must be positive is ≤ 0 — P or Q itself (`Curvatures::new`), or a sum
+    /// of two bodies' curvatures (`sphere_sphere`, `ball_race`, `from_bodies`): the bodies are
+    /// not locally convex towards each other (no Hertz contact).
     CurvatureNotPositive,
+    /// Curvatures given in a fixed frame with P > Q where that frame requires P ≤ Q (x must be
+    /// the major axis: `Curvatures::ordered`, the wrench contract of [`crate::dynamic`]).
+    /// [`crate::geometry::Curvatures::new`] instead swaps them and reports the major-axis angle.
+    CurvaturesNotOrdered,
     /// Curvature ratio g = P/Q outside the supported range of the eccentricity solver
     /// (below `shape::Ratio::MIN` = 1e-4), or, for `normal::Volumetric::checked`, below that
     /// law's stated domain g ≥ 0.5.
@@ -27,8 +32,11 @@ pub enum Error {
     PoissonRatioOutOfRange,
     /// Friction coefficient f < 0.
     FrictionCoefficientNegative,
-    /// A length (radius, semi-axis, regularization width) that must be positive is ≤ 0.
+    /// A length (radius, diameter, pitch diameter, groove radius) that must be positive is ≤ 0.
     LengthNotPositive,
+    /// The friction regularization speed δ (m/s) is negative (δ = 0 is allowed: no
+    /// regularization).
+    RegularizationSpeedNegative,
     /// A damping coefficient is negative.
     DampingNegative,
 }
@@ -38,13 +46,23 @@ impl Error {
     pub const fn as_str(&self) -> &'static str {
         match self {
             Error::NonFinite(_) => "input must be finite",
-            Error::EllipticParameterOutOfDomain => "elliptic parameter m outside [0, 1 - m1_min]",
-            Error::CurvatureNotPositive => "curvature sum must be positive",
-            Error::CurvatureRatioOutOfRange => "curvature ratio P/Q outside the solver's range",
+            Error::EllipticParameterOutOfDomain => {
+                "elliptic parameter m outside [0, 1 - m1_min] (m1_min = 1e-12 in f64, 2^-24 in f32)"
+            }
+            Error::CurvatureNotPositive => {
+                "curvature must be positive (P and Q, or the sum of the two bodies' curvatures)"
+            }
+            Error::CurvaturesNotOrdered => "curvatures must satisfy P <= Q (x is the major axis)",
+            Error::CurvatureRatioOutOfRange => {
+                "curvature ratio P/Q below the solver's range (g >= 1e-4; volumetric law: g >= 0.5)"
+            }
             Error::ModulusNotPositive => "elastic modulus must be positive",
             Error::PoissonRatioOutOfRange => "Poisson's ratio outside (-1, 0.5]",
             Error::FrictionCoefficientNegative => "friction coefficient is negative",
             Error::LengthNotPositive => "length must be positive",
+            Error::RegularizationSpeedNegative => {
+                "regularization speed delta must be >= 0 (m/s; 0 = no regularization)"
+            }
             Error::DampingNegative => "damping coefficient is negative",
         }
     }

@@ -114,6 +114,20 @@ impl<T: Real> Curvatures<T> {
         }
     }
 
+    /// From the coefficients of z = p x² + q y² in a frame whose x must already be the major
+    /// axis (0 < p ≤ q): nothing is swapped, [`major_angle`](Self::major_angle) is 0. This is
+    /// the form of the wrench contract (`P,Q,…` columns; [`crate::dynamic`]).
+    ///
+    /// Errors: [`Error::NonFinite`]; [`Error::CurvaturesNotOrdered`] if p > q;
+    /// [`Error::CurvatureNotPositive`] if p ≤ 0.
+    pub fn ordered(p: T, q: T) -> Result<Self, Error> {
+        let (p, q) = (finite(p, "P")?, finite(q, "Q")?);
+        if p > q {
+            return Err(Error::CurvaturesNotOrdered);
+        }
+        Self::new(p, q)
+    }
+
     /// From two bodies' principal curvatures and the angle `omega` (rad) from body A's first
     /// principal direction to body B's. See the module docs for the formula.
     ///

@@ -42,6 +42,7 @@
 pub mod contact;
 #[cfg(feature = "defmt")]
 mod defmt_impls;
+pub mod dynamic;
 pub mod elliptic;
 pub mod error;
 pub mod friction;

@@ -101,8 +101,8 @@ pub struct Friction<T, L = super::Best> {
 impl<T: Real, L: FrictionLaw> Friction<T, L> {
     /// From the friction coefficient `f` ≥ 0 and the regularization speed `delta` ≥ 0 (m/s).
     /// Errors: [`Error::NonFinite`] (`"f"`, `"delta"`) for NaN or ±∞,
-    /// [`Error::FrictionCoefficientNegative`] for f < 0, [`Error::LengthNotPositive`] for
-    /// δ < 0 (δ = 0 is allowed and means no regularization).
+    /// [`Error::FrictionCoefficientNegative`] for f < 0, [`Error::RegularizationSpeedNegative`]
+    /// for δ < 0 (δ = 0 is allowed and means no regularization).
     pub fn new(f: T, delta: T) -> Result<Self, Error> {
         let f = finite(f, "f")?;
         let delta = finite(delta, "delta")?;
@@ -110,7 +110,7 @@ impl<T: Real, L: FrictionLaw> Friction<T, L> {
             return Err(Error::FrictionCoefficientNegative);
         }
         if delta < T::ZERO {
-            return Err(Error::LengthNotPositive);
+            return Err(Error::RegularizationSpeedNegative);
         }
         Ok(Friction {
             f,

@@ -1,0 +1,404 @@
+//! The wrench contract with the friction law and the contact form chosen **at run time**: the
+//! one definition that `contact_eval wrench`, the C API (`capi/`) and the Python package
+//! (`python/`) share, so that each can be checked against the others bit for bit.
+//!
+//! Everything else in the crate picks methods by generics, so that a program links only what
+//! it uses. A shell that reads the law from a command line, a C call or a Python string cannot:
+//! [`DynContact`] holds one of the generic contacts in an enum and dispatches per call (one
+//! `match`; the arm is the generic code itself, so the numbers are those of the generic call).
+//! It links every law. Firmware that knows its law at compile time uses
+//! [`crate::contact::Contact`] directly.
+//!
+//! # The contract
+//!
+//! | columns | meaning (crate conventions, SI) |
+//! |---|---|
+//! | `P,Q` | relative surface z = P x² + Q y², **0 < P ≤ Q** so that x is the major axis (P > Q is [`Error::CurvaturesNotOrdered`], never swapped); P/Q ≥ 1e-4 ([`Error::CurvatureRatioOutOfRange`], never clamped) |
+//! | `estar` | effective modulus E* (Pa) |
+//! | `cd` | Hunt–Crossley c_d (s/m), N = k_H h^{3/2}(1 + (3/2)c_d ḣ); 0 = undamped (bit for bit) |
+//! | `f,delta` | friction coefficient, regularization speed δ (m/s, 0 allowed) |
+//! | `h,hdot` | approach (m; ≤ 0 is contact loss) and its rate (m/s; > 0 compression) |
+//! | `vx,vy,omega` | slip of B relative to A at the patch centre in the contact frame (m/s), spin about z (rad/s) |
+//! | → `N,Fx,Fy,Tz,a,b,e2` | normal force, friction force, drilling torque on B from A; semi-axes; e² |
+//!
+//! Forms ([`Form`]): `fixed` builds a [`Contact`] with the exact eccentricity
+//! ([`shape::Newton`]) once; `varying` is a [`VaryingContact`], the eccentricity and every
+//! shape constant by [`shape::Table`] at each step. Laws ([`Law`]): `best` (the default),
+//! `simplified`, `pade`, `ellipsoid`, `coulomb`.
+//!
+//! # Example
+//!
+//! ```
+//! use contensou::dynamic::{DynContact, Form, Law, Spec, Step};
+//!
+//! let spec = Spec { p: 50.0_f64, q: 50.0, estar: 1.15e11, cd: 0.0, f: 0.1, delta: 1e-4 };
+//! let contact = DynContact::new(&spec, Law::from_name("best").unwrap(), Form::Fixed)?;
+//! let w = contact.wrench(&Step { h: 1e-6, hdot: 0.0, vx: 0.01, vy: 0.0, omega: 50.0 })?;
+//! assert!(w.n > 0.0 && w.fx < 0.0 && w.tz < 0.0);
+//!
+//! // Every invalid input names its column.
+//! let bad = Spec { p: 60.0, ..spec };
+//! let e = DynContact::new(&bad, Law::Best, Form::Fixed).unwrap_err();
+//! assert_eq!((e.column, e.error), ("P", contensou::Error::CurvaturesNotOrdered));
+//! # Ok::<(), contensou::dynamic::Invalid>(())
+//! ```
+
+use core::fmt;
+
+use crate::contact::{Contact, VaryingContact, Wrench};
+use crate::error::finite;
+use crate::friction::{Best, Coulomb, Ellipsoid, Friction, FrictionLaw, Pade, Simplified, Slip};
+use crate::geometry::Curvatures;
+use crate::normal::{Hertz, HuntCrossley, Modulus};
+use crate::shape::{self, Ratio};
+use crate::{Error, Real};
+
+/// The contract's input columns, in order (contact columns, then step columns).
+pub const INPUTS: [&str; 11] = [
+    "P", "Q", "estar", "cd", "f", "delta", "h", "hdot", "vx", "vy", "omega",
+];
+
+/// The contract's output columns, in order ([`Output::to_array`]).
+pub const OUTPUTS: [&str; 7] = ["N", "Fx", "Fy", "Tz", "a", "b", "e2"];
+
+/// A friction law, by name ([`FrictionLaw::NAME`]).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum Law {
+    /// [`Best`], the exact-grade default.
+    #[default]
+    Best,
+    /// [`Simplified`], the paper's model.
+    Simplified,
+    /// [`Pade`].
+    Pade,
+    /// [`Ellipsoid`].
+    Ellipsoid,
+    /// [`Coulomb`] (point contact: no drilling torque).
+    Coulomb,
+}
+
+impl Law {
+    /// Every law, the default first.
+    pub const ALL: [Law; 5] = [
+        Law::Best,
+        Law::Simplified,
+        Law::Pade,
+        Law::Ellipsoid,
+        Law::Coulomb,
+    ];
+
+    /// The law's name: `"best"`, `"simplified"`, `"pade"`, `"ellipsoid"`, `"coulomb"`.
+    pub const fn name(self) -> &'static str {
+        match self {
+            Law::Best => Best::NAME,
+            Law::Simplified => Simplified::NAME,
+            Law::Pade => Pade::NAME,
+            Law::Ellipsoid => Ellipsoid::NAME,
+            Law::Coulomb => Coulomb::NAME,
+        }
+    }
+
+    /// The law of that name ([`Law::name`]); `None` for any other string.
+    pub fn from_name(name: &str) -> Option<Self> {
+        Law::ALL.into_iter().find(|l| l.name() == name)
+    }
+}
+
+/// How the shape is obtained: once at construction, or by table at every step.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum Form {
+    /// A [`Contact`]: exact eccentricity ([`shape::Newton`]) solved once.
+    #[default]
+    Fixed,
+    /// A [`VaryingContact`]: eccentricity and shape constants by [`shape::Table`] each step.
+    Varying,
+}
+
+impl Form {
+    /// Both forms, the default first.
+    pub const ALL: [Form; 2] = [Form::Fixed, Form::Varying];
+
+    /// `"fixed"` or `"varying"`.
+    pub const fn name(self) -> &'static str {
+        match self {
+            Form::Fixed => "fixed",
+            Form::Varying => "varying",
+        }
+    }
+
+    /// The form of that name ([`Form::name`]); `None` for any other string.
+    pub fn from_name(name: &str) -> Option<Self> {
+        Form::ALL.into_iter().find(|f| f.name() == name)
+    }
+}
+
+/// The contact columns `P,Q,estar,cd,f,delta` (see the module docs).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Spec<T> {
+    /// P (1/m), 0 < P ≤ Q.
+    pub p: T,
+    /// Q (1/m).
+    pub q: T,
+    /// E* (Pa).
+    pub estar: T,
+    /// Hunt–Crossley c_d (s/m) ≥ 0; 0 = undamped.
+    pub cd: T,
+    /// Friction coefficient f ≥ 0.
+    pub f: T,
+    /// Regularization speed δ (m/s) ≥ 0.
+    pub delta: T,
+}
+
+/// The step columns `h,hdot,vx,vy,omega` (see the module docs).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Step<T> {
+    /// Approach h (m).
+    pub h: T,
+    /// ḣ (m/s), > 0 compression.
+    pub hdot: T,
+    /// v_Px (m/s), along the major axis.
+    pub vx: T,
+    /// v_Py (m/s).
+    pub vy: T,
+    /// ω (rad/s) about the normal.
+    pub omega: T,
+}
+
+/// The output columns `N,Fx,Fy,Tz,a,b,e2`.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Output<T> {
+    /// N (N).
+    pub n: T,
+    /// F_x (N).
+    pub fx: T,
+    /// F_y (N).
+    pub fy: T,
+    /// T_z (N·m).
+    pub tz: T,
+    /// Major semi-axis a (m); 0 without contact.
+    pub a: T,
+    /// Minor semi-axis b (m).
+    pub b: T,
+    /// e² of the patch (also without contact: the geometry's).
+    pub e2: T,
+}
+
+impl<T: Copy> Output<T> {
+    /// The values in [`OUTPUTS`] order.
+    pub fn to_array(&self) -> [T; 7] {
+        [self.n, self.fx, self.fy, self.tz, self.a, self.b, self.e2]
+    }
+}
+
+impl<T: Copy, B> From<Wrench<T, B>> for Output<T> {
+    fn from(w: Wrench<T, B>) -> Self {
+        Output {
+            n: w.n,
+            fx: w.fx,
+            fy: w.fy,
+            tz: w.tz,
+            a: w.patch.a,
+            b: w.patch.b,
+            e2: w.patch.e2,
+        }
+    }
+}
+
+/// A rejected input: the contract column it came from and the crate's error.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Invalid {
+    /// The column ([`INPUTS`]) whose value was rejected.
+    pub column: &'static str,
+    /// Why.
+    pub error: Error,
+}
+
+impl fmt::Display for Invalid {
+    /// `"<column>: <reason>"` (the reason is [`Error::as_str`]).
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{}: {}", self.column, self.error.as_str())
+    }
+}
+
+impl core::error::Error for Invalid {}
+
+/// Tags an error with the column it came from.
+fn at<V>(column: &'static str, r: Result<V, Error>) -> Result<V, Invalid> {
+    r.map_err(|error| Invalid { column, error })
+}
+
+type Fixed<T, L> = Contact<T, Hertz<T>, HuntCrossley<T>, L>;
+type Varying<T, L> = VaryingContact<T, HuntCrossley<T>, L>;
+
+/// One law's contact in either form.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Formed<T: Real, L: FrictionLaw> {
+    Fixed(Fixed<T, L>),
+    Varying(Varying<T, L>),
+}
+
+impl<T: Real, L: FrictionLaw> Formed<T, L> {
+    fn new(
+        form: Form,
+        curvatures: &Curvatures<T>,
+        estar: Modulus<T>,
+        damping: HuntCrossley<T>,
+        friction: Friction<T, L>,
+    ) -> Result<Self, Invalid> {
+        Ok(match form {
+            Form::Fixed => Formed::Fixed(at(
+                "P",
+                Contact::hertz::<shape::Newton>(curvatures, estar, damping, friction),
+            )?),
+            Form::Varying => Formed::Varying(VaryingContact::new(estar, damping, friction)),
+        })
+    }
+
+    #[inline]
+    fn wrench(&self, curvatures: &Curvatures<T>, h: T, hdot: T, slip: Slip<T>) -> Output<T> {
+        match self {
+            Formed::Fixed(c) => c.wrench(h, hdot, slip).into(),
+            Formed::Varying(c) => c.wrench(curvatures, h, hdot, slip).into(),
+        }
+    }
+}
+
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum ByLaw<T: Real> {
+    Best(Formed<T, Best>),
+    Simplified(Formed<T, Simplified>),
+    Pade(Formed<T, Pade>),
+    Ellipsoid(Formed<T, Ellipsoid>),
+    Coulomb(Formed<T, Coulomb>),
+}
+
+/// A validated contact of the contract, its law and form chosen at run time. Per step,
+/// [`DynContact::wrench`] validates the step columns and returns exactly what the generic
+/// contact returns.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct DynContact<T: Real> {
+    spec: Spec<T>,
+    curvatures: Curvatures<T>,
+    law: Law,
+    form: Form,
+    contact: ByLaw<T>,
+}
+
+impl<T: Real> DynContact<T> {
+    /// Validates the contact columns and builds the contact. Errors name the column:
+    /// `P`/`Q` ([`Error::NonFinite`], [`Error::CurvaturesNotOrdered`],
+    /// [`Error::CurvatureNotPositive`], [`Error::CurvatureRatioOutOfRange`] — the ratio is
+    /// reported on `P`), `estar` ([`Error::ModulusNotPositive`]), `cd`
+    /// ([`Error::DampingNegative`]), `f` ([`Error::FrictionCoefficientNegative`]), `delta`
+    /// ([`Error::RegularizationSpeedNegative`]); any NaN or ±∞ is [`Error::NonFinite`].
+    pub fn new(spec: &Spec<T>, law: Law, form: Form) -> Result<Self, Invalid> {
+        let curvatures = curvatures_of(spec.p, spec.q)?;
+        let estar = at("estar", Modulus::new(spec.estar))?;
+        let damping = at("cd", HuntCrossley::new(spec.cd))?;
+        let f = at("f", finite(spec.f, "f"))?;
+        let delta = at("delta", finite(spec.delta, "delta"))?;
+        macro_rules! build {
+            ($variant:ident) => {{
+                let friction = Friction::new(f, delta).map_err(|error| Invalid {
+                    column: if matches!(error, Error::RegularizationSpeedNegative) {
+                        "delta"
+                    } else {
+                        "f"
+                    },
+                    error,
+                })?;
+                ByLaw::$variant(Formed::new(form, &curvatures, estar, damping, friction)?)
+            }};
+        }
+        let contact = match law {
+            Law::Best => build!(Best),
+            Law::Simplified => build!(Simplified),
+            Law::Pade => build!(Pade),
+            Law::Ellipsoid => build!(Ellipsoid),
+            Law::Coulomb => build!(Coulomb),
+        };
+        Ok(DynContact {
+            spec: *spec,
+            curvatures,
+            law,
+            form,
+            contact,
+        })
+    }
+
+    /// One step: validates `h, hdot, vx, vy, omega` (finite; any NaN or ±∞ is
+    /// [`Error::NonFinite`] naming the column) and returns the wrench of the generic contact.
+    #[inline]
+    pub fn wrench(&self, step: &Step<T>) -> Result<Output<T>, Invalid> {
+        let h = at("h", finite(step.h, "h"))?;
+        let hdot = at("hdot", finite(step.hdot, "hdot"))?;
+        let vx = at("vx", finite(step.vx, "vx"))?;
+        let vy = at("vy", finite(step.vy, "vy"))?;
+        let omega = at("omega", finite(step.omega, "omega"))?;
+        let slip = at("vx", Slip::new(vx, vy, omega))?;
+        let c = &self.curvatures;
+        Ok(match &self.contact {
+            ByLaw::Best(x) => x.wrench(c, h, hdot, slip),
+            ByLaw::Simplified(x) => x.wrench(c, h, hdot, slip),
+            ByLaw::Pade(x) => x.wrench(c, h, hdot, slip),
+            ByLaw::Ellipsoid(x) => x.wrench(c, h, hdot, slip),
+            ByLaw::Coulomb(x) => x.wrench(c, h, hdot, slip),
+        })
+    }
+
+    /// New curvatures (same validation as [`DynContact::new`]). For [`Form::Varying`] this is
+    /// the per-step update (no rebuild); a [`Form::Fixed`] contact is rebuilt (the construction
+    /// cost: an eccentricity solve and, for `best`, its per-contact tables). On error the
+    /// contact is unchanged.
+    pub fn set_curvatures(&mut self, p: T, q: T) -> Result<(), Invalid> {
+        let spec = Spec { p, q, ..self.spec };
+        match self.form {
+            Form::Varying => {
+                self.curvatures = curvatures_of(p, q)?;
+                self.spec = spec;
+            }
+            Form::Fixed => *self = DynContact::new(&spec, self.law, self.form)?,
+        }
+        Ok(())
+    }
+
+    /// The contact columns it was built from (after [`DynContact::set_curvatures`], the new P, Q).
+    pub fn spec(&self) -> &Spec<T> {
+        &self.spec
+    }
+
+    /// The friction law.
+    pub fn law(&self) -> Law {
+        self.law
+    }
+
+    /// The form.
+    pub fn form(&self) -> Form {
+        self.form
+    }
+}
+
+/// One row of the contract: builds the contact and evaluates one step (the per-row form of
+/// `contact_eval wrench`; a loop should build a [`DynContact`] once instead).
+pub fn wrench<T: Real>(
+    spec: &Spec<T>,
+    law: Law,
+    form: Form,
+    step: &Step<T>,
+) -> Result<Output<T>, Invalid> {
+    DynContact::new(spec, law, form)?.wrench(step)
+}
+
+/// Validated, ordered curvatures with P/Q in the solvers' range (both forms: nothing clamped).
+fn curvatures_of<T: Real>(p: T, q: T) -> Result<Curvatures<T>, Invalid> {
+    let column = if p.is_finite() { "Q" } else { "P" };
+    let curvatures = Curvatures::ordered(p, q).map_err(|error| Invalid {
+        column: match error {
+            Error::NonFinite(_) => column,
+            _ => "P",
+        },
+        error,
+    })?;
+    at("P", Ratio::of(&curvatures))?;
+    Ok(curvatures)
+}
