@@ -44,6 +44,7 @@ pub mod contact;
 mod defmt_impls;
 pub mod elliptic;
 pub mod error;
+pub mod frame;
 pub mod friction;
 pub mod geometry;
 mod hw_sqrt;
