@@ -37,7 +37,7 @@
 //! ```
 
 use crate::friction::law::{PerCall, PerContact};
-use crate::friction::{Best, Constants, Friction, FrictionLaw, Slip, Tangential};
+use crate::friction::{Best, Constants, Explicit, Friction, FrictionLaw, Slip, Tangential};
 use crate::geometry::Curvatures;
 use crate::normal::{Damping, Hertz, Modulus, NormalLaw, Patch};
 use crate::shape::{self, Eccentricity, Ratio, Shape};
@@ -87,6 +87,7 @@ pub struct Contact<T: Real, N, D, L: FrictionLaw = Best> {
     damping: D,
     friction: Friction<T, L>,
     prepared: L::Prepared<T>,
+    constants: Constants<T>,
 }
 
 impl<T: Real, D: Damping<T>, L: FrictionLaw> Contact<T, Hertz<T>, D, L> {
@@ -185,6 +186,7 @@ impl<T: Real, N: NormalLaw<T>, D: Damping<T>, L: FrictionLaw> Contact<T, N, D, L
             damping,
             friction,
             prepared: L::prepare(&constants),
+            constants,
         }
     }
 
@@ -208,6 +210,58 @@ impl<T: Real, N: NormalLaw<T>, D: Damping<T>, L: FrictionLaw> Contact<T, N, D, L
     /// The friction law's per-contact form (for most laws the shape's [`Constants`]).
     pub fn prepared(&self) -> &L::Prepared<T> {
         &self.prepared
+    }
+
+    /// The patch shape's friction constants (e², A, B, C, …), for every law.
+    pub fn constants(&self) -> &Constants<T> {
+        &self.constants
+    }
+
+    /// The friction law `L`'s coefficient and regularization speed.
+    pub fn friction(&self) -> &Friction<T, L> {
+        &self.friction
+    }
+
+    /// The largest stable step of an explicit `scheme` for the slip, for an effective `mass`
+    /// (kg) at normal force `n` (N): [`Friction::stable_step`] with this contact's shape, the
+    /// same call for every law. **`mass` is the effective mass at the contact point**: 2m/7
+    /// for a solid ball of mass m rolling on its surface, not m (see
+    /// [`Friction::stable_step`]). Host/construction use (for `Best` it evaluates
+    /// [`ramp_stiffness`](crate::friction::best::ramp_stiffness)).
+    ///
+    /// ```
+    /// use contensou::contact::Contact;
+    /// use contensou::friction::{Explicit, Friction};
+    /// use contensou::geometry::Curvatures;
+    /// use contensou::normal::{Modulus, Undamped};
+    /// use contensou::shape::Newton;
+    ///
+    /// // A steel ball, R = 10 mm, m = 32.7 g, on a plane: f = 0.1, δ = 1e-4 m/s, N = mg.
+    /// let (r, m) = (10e-3, 32.67e-3);
+    /// let contact = Contact::hertz::<Newton>(
+    ///     &Curvatures::sphere_plane(r)?,
+    ///     Modulus::new(1.1538e11)?,
+    ///     Undamped,
+    ///     Friction::<f64>::new(0.1, 1e-4)?,
+    /// )?;
+    /// let h_slip = contact.stable_step(2.0 * m / 7.0, m * 9.81, Explicit::Euler);
+    /// let a = 2.75e-5; // the patch radius at that load (m)
+    /// let h_spin = contact.stable_spin_step(a, 0.4 * m * r * r, m * 9.81, Explicit::Euler);
+    /// assert!(h_slip > 1e-5 && h_slip < 3e-5 && h_spin > 1e-3);
+    /// # Ok::<(), contensou::Error>(())
+    /// ```
+    pub fn stable_step(&self, mass: T, n: T, scheme: Explicit) -> T {
+        self.friction.stable_step(&self.constants, mass, n, scheme)
+    }
+
+    /// The largest stable step of an explicit `scheme` for the spin about the normal, for an
+    /// effective moment of inertia `inertia` (kg·m², about the normal) at major semi-axis `a`
+    /// (m) and normal force `n` (N): [`Friction::stable_spin_step`] with this contact's shape,
+    /// the same call for every law. Host/construction use (for `Best` it evaluates
+    /// [`spin_stiffness`](crate::friction::best::spin_stiffness), ≈ 26 µs).
+    pub fn stable_spin_step(&self, a: T, inertia: T, n: T, scheme: Explicit) -> T {
+        self.friction
+            .stable_spin_step(&self.constants, a, inertia, n, scheme)
     }
 }
 

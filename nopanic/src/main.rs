@@ -243,7 +243,8 @@ mod api {
             let (Ok(co), Ok(si)) =
                 (Friction::<T, Coulomb>::new(f, delta), Friction::<T, Simplified>::new(f, delta))
             else { return };
-            (co.stable_step(mass, n, Explicit::Euler), si.stable_step(mass, n, Explicit::Rk4))
+            let k = Constants::circle();
+            (co.stable_step(&k, mass, n, Explicit::Euler), si.stable_step(&k, mass, n, Explicit::Rk4))
         }
         fn probe_best_stable_step<T>(m1, f, delta, mass, n) {
             let (Ok(p), Ok(be)) = (Parameter::from_complement(m1), Friction::<T, Best>::new(f, delta))
@@ -257,10 +258,11 @@ mod api {
                 Friction::<T, Simplified>::new(f, delta),
                 Friction::<T, Coulomb>::new(f, delta),
             ) else { return };
+            let k = Constants::from_parameter(p);
             (
-                be.stable_spin_step(&Constants::from_parameter(p), a, inertia, n, Explicit::Rk4),
-                si.stable_spin_step(a, inertia, n, Explicit::Euler),
-                co.stable_spin_step(a, inertia, n, Explicit::Euler),
+                be.stable_spin_step(&k, a, inertia, n, Explicit::Rk4),
+                si.stable_spin_step(&k, a, inertia, n, Explicit::Euler),
+                co.stable_spin_step(&k, a, inertia, n, Explicit::Euler),
             )
         }
         fn probe_spin_stiffness<T>(m1) {
