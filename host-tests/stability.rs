@@ -405,8 +405,14 @@ fn stable_step_edge_cases_are_total() {
     assert_eq!(law.stable_step(&Constants::circle(), -1.0, 1.0, e), 0.0);
     assert_eq!(law.stable_step(&Constants::circle(), f32::NAN, 1.0, e), 0.0);
     assert_eq!(law.stable_step(&Constants::circle(), 1.0, 0.0, e), f32::MAX);
-    assert_eq!(law.stable_step(&Constants::circle(), 1.0, f32::NAN, e), f32::MAX);
-    assert_eq!(law.stable_step(&Constants::circle(), f32::MAX, 1e-30, e), f32::MAX);
+    assert_eq!(
+        law.stable_step(&Constants::circle(), 1.0, f32::NAN, e),
+        f32::MAX
+    );
+    assert_eq!(
+        law.stable_step(&Constants::circle(), f32::MAX, 1e-30, e),
+        f32::MAX
+    );
     assert_eq!(
         Friction::<f32, Coulomb>::new(0.0, 1e-4)
             .unwrap()
@@ -839,21 +845,34 @@ fn stable_steps_have_one_signature_and_come_from_a_contact() {
     fn steps<L: FrictionLaw>(k: &Constants<f64>, a: f64, n: f64) -> (f64, f64) {
         let law = Friction::<f64, L>::new(0.3, 1e-4).unwrap();
         let e = Explicit::Euler;
-        (law.stable_step(k, 2.0, n, e), law.stable_spin_step(k, a, 3.0, n, e))
+        (
+            law.stable_step(k, 2.0, n, e),
+            law.stable_spin_step(k, a, 3.0, n, e),
+        )
     }
     let k = Constants::<f64>::circle();
     for (name, s) in [
-        ("pade", steps::<Pade> as fn(&Constants<f64>, f64, f64) -> (f64, f64)),
+        (
+            "pade",
+            steps::<Pade> as fn(&Constants<f64>, f64, f64) -> (f64, f64),
+        ),
         ("ellipsoid", steps::<Ellipsoid>),
         ("exact", steps::<Exact>),
     ] {
         assert_eq!(s(&k, 0.5, 1.0), (0.0, 0.0), "{name}");
         assert_eq!(s(&k, 0.5, 0.0), (f64::MAX, f64::MAX), "{name}: no contact");
-        assert_eq!(s(&k, 0.0, 1.0).1, f64::MAX, "{name}: point contact, no torque");
+        assert_eq!(
+            s(&k, 0.0, 1.0).1,
+            f64::MAX,
+            "{name}: point contact, no torque"
+        );
     }
     // Closed forms: h* = 2mδ/(κfN), 2Iδ/(κ_T·fN·a²).
     let want = |kappa: f64, kappa_t: f64| {
-        (2.0 * 2.0 * 1e-4 / (kappa * 0.3), 2.0 * 3.0 * 1e-4 / (kappa_t * 0.3 * 0.25))
+        (
+            2.0 * 2.0 * 1e-4 / (kappa * 0.3),
+            2.0 * 3.0 * 1e-4 / (kappa_t * 0.3 * 0.25),
+        )
     };
     let rel2 = |(a, b): (f64, f64), (c, d): (f64, f64)| rel(a, c).max(rel(b, d));
     assert!(rel2(steps::<Simplified>(&k, 0.5, 1.0), want(1.0, 0.4)) < 1e-15);

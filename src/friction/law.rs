@@ -364,10 +364,10 @@ impl<T: Real, L: FrictionLaw> Friction<T, L> {
 /// The step for a law with no ramp: 0 where friction acts, `T::MAX` where it does not
 /// (fN ≤ 0 or NaN), 0 for an invalid `mass` (as [`ramp_step`]). Total.
 pub(super) fn no_ramp_step<T: Real>(f: T, mass: T, n: T) -> T {
-    if mass > T::ZERO && !(f * n > T::ZERO) {
-        T::MAX
-    } else {
-        T::ZERO
+    // `x > 0` is false for NaN: NaN mass → 0, NaN fN → MAX.
+    match (mass > T::ZERO, f * n > T::ZERO) {
+        (true, false) => T::MAX,
+        _ => T::ZERO,
     }
 }
 

@@ -75,12 +75,23 @@ impl<T: Real, L: FrictionLaw> Friction<T, L> {
         scheme: Explicit,
     ) -> T {
         match L::spin_ramp(k) {
-            Some(kappa) => {
-                spin_ramp_step(self.coefficient() * kappa, a, self.delta(), inertia, n, scheme)
+            Some(kappa) => spin_ramp_step(
+                self.coefficient() * kappa,
+                a,
+                self.delta(),
+                inertia,
+                n,
+                scheme,
+            ),
+            None => {
+                // A point contact (a ≤ 0 or NaN) has no torque: no limit.
+                let f = if a > T::ZERO {
+                    self.coefficient()
+                } else {
+                    T::ZERO
+                };
+                no_ramp_step(f, inertia, n)
             }
-            // A point contact (a ≤ 0 or NaN) has no torque: no limit.
-            None if !(a > T::ZERO) => no_ramp_step(T::ZERO, inertia, n),
-            None => no_ramp_step(self.coefficient(), inertia, n),
         }
     }
 }

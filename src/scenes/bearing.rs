@@ -249,7 +249,8 @@ impl<T: Real, C: RaceLaw<T>> Bearing<T, C> {
     /// Errors: those of [`Geometry::curvatures`].
     pub fn new(g: &Geometry<T>, inner: C, outer: C) -> Result<Self, Error> {
         let half = T::HALF;
-        let axis = |race| -> Result<MajorAxis<T>, Error> { Ok(MajorAxis::of(&g.curvatures(race)?)) };
+        let axis =
+            |race| -> Result<MajorAxis<T>, Error> { Ok(MajorAxis::of(&g.curvatures(race)?)) };
         Ok(Bearing {
             inner: Raceway {
                 centre_radius: (g.pitch_diameter - g.ball_diameter) * half + g.inner_groove,
