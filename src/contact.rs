@@ -81,6 +81,33 @@ fn wrench_of<T: Real, B>(patch: Patch<T>, t: Tangential<T, B>) -> Wrench<T, B> {
 ///
 /// Cost per step (f32, Cortex-M4F, Hertz + undamped): `bench-results/qemu.csv`, stage `wrench`,
 /// method `fixed` ([`crate::friction::Simplified`]) and `fixed-best` ([`Best`]).
+///
+/// The wrench comes back in the contact frame (x the major axis, z from A into B, on body B;
+/// see [`crate::guide`]); [`crate::frame::Frame`] turns it into world loads.
+///
+/// # Example
+///
+/// ```
+/// use contensou::contact::Contact;
+/// use contensou::friction::{Friction, Slip};
+/// use contensou::geometry::Curvatures;
+/// use contensou::normal::{HuntCrossley, Material, Modulus};
+///
+/// // A 5 mm steel ball on a steel plate: a circle, so no eccentricity method is linked.
+/// let steel = Material::new(2.1e11, 0.3)?;
+/// let contact = Contact::circular(
+///     &Curvatures::sphere_plane(5e-3)?,
+///     Modulus::of(steel, steel)?,
+///     HuntCrossley::new(1.0)?, // restitution ≈ 1 − c_d·v
+///     Friction::<f64>::new(0.2, 1e-4)?, // the default law, `Best`
+/// )?;
+/// // Per step: approach 1 µm, compressing at 1 mm/s, sliding along x at 5 cm/s, no spin.
+/// let w = contact.wrench(1e-6, 1e-3, Slip::new(0.05, 0.0, 0.0)?);
+/// assert!(w.n > 0.0 && (w.fx + 0.2 * w.n).abs() < 1e-9 * w.n); // F = −fN: full sliding
+/// assert_eq!((w.fy, w.tz), (0.0, 0.0));
+/// assert_eq!(contact.wrench(-1e-6, 0.0, Slip::new(0.05, 0.0, 0.0)?).n, 0.0); // apart
+/// # Ok::<(), contensou::Error>(())
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Contact<T: Real, N, D, L: FrictionLaw = Best> {
     normal: N,
@@ -275,6 +302,36 @@ impl<T: Real, N: NormalLaw<T>, D: Damping<T>, L: FrictionLaw> Contact<T, N, D, L
 ///
 /// The friction law defaults to [`Best`], evaluated in its per-call form (nothing precomputed,
 /// e² may change every call).
+///
+/// # Example
+///
+/// A contact point wandering over a body of varying curvature: this step's [`Curvatures`] go
+/// into the call, and this step's major axis into the frame (it turns by 90° where P and Q
+/// cross; the world force does not jump, see [`crate::frame`]).
+///
+/// ```
+/// use contensou::contact::VaryingContact;
+/// use contensou::frame::{Frame, MajorAxis};
+/// use contensou::friction::Friction;
+/// use contensou::geometry::Curvatures;
+/// use contensou::normal::{Modulus, Undamped};
+///
+/// let contact = VaryingContact::new(Modulus::new(1.15e11)?, Undamped, Friction::<f64>::new(0.1, 1e-4)?);
+/// let (v_rel, w_rel) = ([0.02, 0.01, 0.0], [0.0, 0.0, 30.0]); // world, B relative to A at P
+/// let mut previous: Option<[f64; 3]> = None;
+/// for step in 0..5 {
+///     // Curvature along the world x changes from 40 to 60 1/m; across it stays 50 1/m.
+///     let curv = Curvatures::new(40.0 + 5.0 * step as f64, 50.0)?;
+///     let frame = Frame::new([0.0, 0.0, 1.0], [1.0, 0.0, 0.0], MajorAxis::of(&curv));
+///     let w = contact.wrench(&curv, 1e-6, 0.0, frame.slip(v_rel, w_rel)?);
+///     let force = frame.force(&w);
+///     if let Some(f) = previous {
+///         assert!((force[0] - f[0]).abs() < 0.05 * w.n); // no jump at P = Q (step 2)
+///     }
+///     previous = Some(force);
+/// }
+/// # Ok::<(), contensou::Error>(())
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct VaryingContact<T, D, L = Best> {
     estar: Modulus<T>,

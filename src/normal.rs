@@ -80,6 +80,21 @@ impl<T: Real> Material<T> {
 }
 
 /// The effective (contact) modulus E* (Pa), validated: finite and > 0.
+///
+/// # Example
+///
+/// ```
+/// use contensou::normal::{Material, Modulus};
+///
+/// // Steel on steel: E* = E/(2(1 − ν²)).
+/// let steel = Material::new(2.1e11_f64, 0.3)?;
+/// let estar = Modulus::of(steel, steel)?;
+/// assert!((estar.get() / (2.1e11 / (2.0 * (1.0 - 0.09))) - 1.0).abs() < 1e-12);
+/// // Given directly, e.g. wood (E = 9.1e9 Pa, ν = 0.3) on a rigid floor: E* = E/(1 − ν²).
+/// let wood = Modulus::new(9.1e9_f64 / (1.0 - 0.09))?;
+/// assert!((wood.get() - 1e10).abs() < 1.0 && Modulus::<f64>::new(0.0).is_err());
+/// # Ok::<(), contensou::Error>(())
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Modulus<T>(T);
 

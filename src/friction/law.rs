@@ -110,6 +110,25 @@ pub struct Tangential<T, B> {
 /// per-step [`Friction::tangential`] is total.
 ///
 /// The law defaults to [`crate::friction::Best`], the exact-grade fast law.
+///
+/// # Example
+///
+/// ```
+/// use contensou::friction::{Constants, Explicit, Friction, Simplified, Slip};
+///
+/// // f = 0.3, regularization speed δ = 1e-4 m/s; the default law `Best`, and the paper's.
+/// let best = Friction::<f64>::new(0.3, 1e-4)?;
+/// let paper = Friction::<f64, Simplified>::new(0.3, 1e-4)?;
+/// // On a circular patch (a = 0.1 mm, N = 10 N): pure spin gives the torque −(3π/16)·fN·a.
+/// let k = Constants::circle();
+/// let t = best.tangential(&k, 1e-4, 10.0, Slip::new(0.0, 0.0, 50.0)?);
+/// assert!((t.tz / (-3.0 * std::f64::consts::PI / 16.0 * 0.3 * 10.0 * 1e-4) - 1.0).abs() < 1e-5);
+/// assert!(paper.tangential(&k, 1e-4, 10.0, Slip::new(0.0, 0.0, 50.0)?).tz < 0.0);
+/// // The explicit step the regularization allows (effective mass 1 g).
+/// assert!(best.stable_step(&k, 1e-3, 10.0, Explicit::Euler) > 0.0);
+/// assert!(Friction::<f64>::new(-0.1, 0.0).is_err()); // f < 0
+/// # Ok::<(), contensou::Error>(())
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Friction<T, L = super::Best> {
     f: T,
