@@ -24,7 +24,7 @@
 //! ω_n² = (dN/dh)/m). `host-tests/ball_on_plane.rs` asserts the figures within 1 %.
 
 use contensou::contact::Contact;
-use contensou::frame::{Frame, MajorAxis, point_velocity};
+use contensou::frame::{ContactFrame, Frame, MajorAxis, point_velocity};
 use contensou::friction::{Explicit, Friction};
 use contensou::geometry::Curvatures;
 use contensou::normal::{Material, Modulus, NormalLaw, Undamped};

@@ -4,7 +4,7 @@
 //! curvatures cross (e² = 0, the major axis jumps by 90°).
 
 use contensou::contact::Contact;
-use contensou::frame::{Frame, MajorAxis, Vector, point_velocity};
+use contensou::frame::{ContactFrame, Frame, MajorAxis, Vector, WorldAxes, point_velocity};
 use contensou::friction::{Friction, Simplified};
 use contensou::geometry::{Curvatures, Principal};
 use contensou::normal::{Modulus, Undamped};
@@ -312,5 +312,23 @@ fn continuous_across_the_crossing_from_bodies() {
         let eps = d / 100.0;
         let jump = norm([fp[0] - fm[0], fp[1] - fm[1], 0.0]) / fnm;
         assert!(jump <= 0.6 * eps, "d = {d}: jump {jump} fN");
+    }
+}
+
+/// `WorldAxes` is `Frame::new(+z, +x, ALONG)` without the arithmetic: the same slip, ḣ and loads.
+#[test]
+fn world_axes_is_the_upright_frame() {
+    let mut rng = Rng(99);
+    let upright = Frame::new([0.0, 0.0, 1.0], [1.0, 0.0, 0.0], MajorAxis::ALONG);
+    let c = contact(50.0, 50.0);
+    for _ in 0..200 {
+        let (v, w, arm) = (rng.vector(), rng.vector().map(|c| 100.0 * c), rng.vector());
+        let (s1, s2) = (upright.slip(v, w).unwrap(), WorldAxes.slip(v, w).unwrap());
+        assert_eq!(s1, s2);
+        assert_eq!(upright.approach_rate(v), WorldAxes.approach_rate(v));
+        let wr = c.wrench(1e-6, 0.0, s1);
+        assert_eq!(upright.on_b(&wr, arm), WorldAxes.on_b(&wr, arm));
+        assert_eq!(upright.on_a(&wr, arm), WorldAxes.on_a(&wr, arm));
+        assert_eq!(upright.to_contact(v), WorldAxes.to_contact(v));
     }
 }

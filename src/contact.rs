@@ -311,7 +311,7 @@ impl<T: Real, N: NormalLaw<T>, D: Damping<T>, L: FrictionLaw> Contact<T, N, D, L
 ///
 /// ```
 /// use contensou::contact::VaryingContact;
-/// use contensou::frame::{Frame, MajorAxis};
+/// use contensou::frame::{ContactFrame, Frame, MajorAxis};
 /// use contensou::friction::Friction;
 /// use contensou::geometry::Curvatures;
 /// use contensou::normal::{Modulus, Undamped};

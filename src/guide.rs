@@ -28,7 +28,9 @@
 //!   and the angle ([`frame::MajorAxis`], cos/sin, so firmware needs no trigonometry).
 //! - A circle (sphere on plane, sphere on sphere) has every tangent as a major axis: any
 //!   tangent will do, e.g. the world x projected on the tangent plane
-//!   ([`frame::Frame::from_reference`]).
+//!   ([`frame::Frame::from_reference`]). A floor whose normal is the world +z (and a circle,
+//!   or a major axis along world x) needs no frame arithmetic at all: [`frame::WorldAxes`].
+//! - The conversions are the methods of the [`frame::ContactFrame`] trait (import it).
 //! - Where the curvatures cross (P = Q, e² = 0) the major axis jumps by 90°; the world force
 //!   does not (see [`frame`], "Where the curvatures cross"): convert back to the world with the
 //!   same frame you used for the slip, and nothing jumps.
@@ -79,7 +81,7 @@
 //!
 //! ```
 //! use contensou::contact::Contact;
-//! use contensou::frame::{Frame, MajorAxis, point_velocity};
+//! use contensou::frame::{ContactFrame, Frame, MajorAxis, point_velocity};
 //! use contensou::friction::Friction;
 //! use contensou::geometry::Curvatures;
 //! use contensou::normal::{Material, Modulus, NormalLaw, Undamped};
@@ -149,10 +151,12 @@
 //! [`frame::Frame`]: crate::frame::Frame
 //! [`frame::MajorAxis`]: crate::frame::MajorAxis
 //! [`frame::Load`]: crate::frame::Load
+//! [`frame::WorldAxes`]: crate::frame::WorldAxes
+//! [`frame::ContactFrame`]: crate::frame::ContactFrame
 //! [`frame::Frame::from_reference`]: crate::frame::Frame::from_reference
-//! [`frame::Frame::approach_rate`]: crate::frame::Frame::approach_rate
-//! [`frame::Frame::on_b`]: crate::frame::Frame::on_b
-//! [`frame::Frame::on_a`]: crate::frame::Frame::on_a
+//! [`frame::Frame::approach_rate`]: crate::frame::ContactFrame::approach_rate
+//! [`frame::Frame::on_b`]: crate::frame::ContactFrame::on_b
+//! [`frame::Frame::on_a`]: crate::frame::ContactFrame::on_a
 //! [`friction::Slip::new`]: crate::friction::Slip::new
 //! [`friction::Friction::new`]: crate::friction::Friction::new
 //! [`normal::Damping`]: crate::normal::Damping

@@ -22,7 +22,7 @@ use crate::{Error, Real};
 ///
 /// [`Slip::new`] is the only constructor: it rejects NaN and ±∞, so every `Slip` is finite and
 /// the per-step friction call that takes it is total. From two bodies' world velocities:
-/// [`crate::frame::Frame::slip`].
+/// [`crate::frame::ContactFrame::slip`].
 ///
 /// # Example
 ///

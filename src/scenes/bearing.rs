@@ -26,7 +26,7 @@
 use super::integrate::Ode;
 use super::rigid::Vec3;
 use crate::contact::{Contact, Wrench};
-use crate::frame::{Frame, MajorAxis, point_velocity};
+use crate::frame::{ContactFrame, Frame, MajorAxis, point_velocity};
 use crate::friction::{FrictionLaw, Slip};
 use crate::geometry::{Curvatures, Race};
 use crate::normal::{HuntCrossley, NormalLaw};

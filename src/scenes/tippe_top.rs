@@ -34,7 +34,7 @@
 use super::integrate::Ode;
 use super::rigid::{Quat, Vec3, euler_rate};
 use crate::contact::Contact;
-use crate::frame::{Frame, MajorAxis, point_velocity};
+use crate::frame::{ContactFrame, WorldAxes, point_velocity};
 use crate::friction::{Friction, FrictionLaw};
 use crate::geometry::Curvatures;
 use crate::normal::{Hertz, HuntCrossley, Modulus, NormalLaw};
@@ -146,7 +146,9 @@ impl<T: Real, L: FrictionLaw> Sphere<T, L> {
         // G → P, P the floor point under the centre; the floor is at rest.
         let arm = [to_centre.x, to_centre.y, -r.z];
         let vp = point_velocity(v.into(), w.into(), arm);
-        let floor = floor_frame();
+        // The floor's contact frame is the world's: z up (floor = body A, top = body B), x the
+        // world x (the patch is a circle: any tangent is a major axis).
+        let floor = WorldAxes;
         // Non-finite only if the state is: then no friction (the step is rejected anyway).
         let slip = floor.slip(vp, w.into()).unwrap_or_default();
         let wr = self.contact.wrench(h, floor.approach_rate(vp), slip);
@@ -159,14 +161,6 @@ impl<T: Real, L: FrictionLaw> Sphere<T, L> {
             energy: self.contact.normal().energy(h),
         }
     }
-}
-
-/// The floor's contact frame: z the world vertical (floor = body A, top = body B), x the world
-/// x (the patch is a circle: any tangent is a major axis).
-#[inline(always)]
-fn floor_frame<T: Real>() -> Frame<T> {
-    let (o, i) = (T::ZERO, T::ONE);
-    Frame::new([o, o, i], [i, o, o], MajorAxis::ALONG)
 }
 
 /// The tippe top with friction law `L` (see the [module docs](self)).
