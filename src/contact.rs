@@ -43,7 +43,10 @@ use crate::normal::{Damping, Hertz, Modulus, NormalLaw, Patch};
 use crate::shape::{self, Eccentricity, Ratio, Shape};
 use crate::{Error, Real};
 
-/// The contact wrench on body B from body A, in the contact frame (SI).
+/// The contact wrench on body B from body A, in the contact frame (SI): x the major axis, y the
+/// minor axis, z the normal from A into B. N, F_x, F_y act at the patch centre P; T_z is a couple
+/// about z. Body A receives the opposite. [`crate::frame`] turns it into a world force and a
+/// torque about each body's centre of mass (see [`crate::guide`]).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Wrench<T, B> {
     /// Normal force N ≥ 0 (N), along +z (from A into B).
@@ -218,6 +221,11 @@ impl<T: Real, N: NormalLaw<T>, D: Damping<T>, L: FrictionLaw> Contact<T, N, D, L
     }
 
     /// One step: approach h (m), its rate ḣ (m/s), slip → the wrench on B from A. Total.
+    ///
+    /// h > 0 is overlap (h ≤ 0: apart, the zero wrench); **ḣ > 0 is compression** (read only by
+    /// the damping law); the slip is B's velocity relative to A at the patch centre P and the
+    /// relative spin about the normal, in the contact frame (x the major axis, z from A into B).
+    /// From two bodies' states and back to world loads: [`crate::frame`], [`crate::guide`].
     #[inline(always)]
     pub fn wrench(&self, h: T, hdot: T, slip: Slip<T>) -> Wrench<T, L::Branch> {
         let patch = self.normal.damped_patch(h, hdot, &self.damping);
@@ -351,7 +359,8 @@ impl<T: Real, D: Damping<T>, L: FrictionLaw> VaryingContact<T, D, L> {
     }
 
     /// One step at this step's curvatures. P/Q below the table's range (1e-4) is clamped to
-    /// it. Total.
+    /// it. Total. h, ḣ (> 0: compression) and the slip as in [`Contact::wrench`]; the contact
+    /// frame's x is this step's major axis ([`crate::frame::MajorAxis::of`] these curvatures).
     #[inline]
     pub fn wrench(
         &self,

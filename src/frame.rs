@@ -17,6 +17,13 @@
 //! x = cos φ·t₁ + sin φ·t₂,    y = z × x = −sin φ·t₁ + cos φ·t₂.
 //! ```
 //!
+//! With [`Curvatures`], t₁ is the direction its constructor measured from and φ its
+//! [`Curvatures::major_angle`] ([`MajorAxis::of`]): the (x′, y′) of [`Curvatures::new`]
+//! (φ = 0 or π/2, taken exactly), body A's first principal direction for
+//! [`Curvatures::from_bodies`] (then measure its ω in the same sense, from t₁ towards t₂), the
+//! rolling direction for [`Curvatures::ball_race`]. φ and φ + π give the same ellipse (the
+//! frame turned by π about z, the same world loads).
+//!
 //! # Into the contact frame
 //!
 //! With v_rel the velocity of B's material point at P minus A's (world; [`point_velocity`]
