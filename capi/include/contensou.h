@@ -121,8 +121,10 @@ typedef struct {
 typedef uint32_t contensou_race;
 
 // Caller-owned storage of one `float` contact: opaque, [`CONTENSOU_CONTACT_F32_SIZE`] bytes,
-// 8-byte aligned. Initialised by `contensou_contact_new_f32`; plain data (may be copied with
-// `memcpy` or assignment); no destructor.
+// 8-byte aligned. Initialised by `contensou_contact_new_f32`: other calls on storage it did
+// not initialise (zeroed, as static memory is) return `CONTENSOU_STATUS_NOT_INITIALIZED`.
+// Plain data (may be copied with `memcpy` or assignment); no destructor. No global state:
+// `contensou_contact_wrench_f32` only reads the contact, so threads may share one.
 typedef struct {
   // Opaque.
   uint64_t opaque[130];

@@ -82,8 +82,10 @@ pub const CONTENSOU_CONTACT_F64_SIZE: usize = 2072;
 pub const CONTENSOU_CONTACT_ALIGN: usize = 8;
 
 /// Caller-owned storage of one `float` contact: opaque, [`CONTENSOU_CONTACT_F32_SIZE`] bytes,
-/// 8-byte aligned. Initialised by `contensou_contact_new_f32`; plain data (may be copied with
-/// `memcpy` or assignment); no destructor.
+/// 8-byte aligned. Initialised by `contensou_contact_new_f32`: other calls on storage it did
+/// not initialise (zeroed, as static memory is) return `CONTENSOU_STATUS_NOT_INITIALIZED`.
+/// Plain data (may be copied with `memcpy` or assignment); no destructor. No global state:
+/// `contensou_contact_wrench_f32` only reads the contact, so threads may share one.
 #[repr(C)]
 #[derive(Debug)]
 pub struct contensou_contact_f32 {
