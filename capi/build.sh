@@ -39,6 +39,25 @@ if [[ -f examples/wrench_eval.c ]]; then
         target/release/libcontensou_capi.a -lpthread -ldl -lm -o target/release/wrench_eval
 fi
 
+echo "capi: tests/errors.c (the error paths from C), plain and under ASan + UBSan"
+san=(-fsanitize=address,undefined -fno-sanitize-recover=all)
+gcc -std=c99 -Wall -Wextra -Werror -pedantic -Iinclude tests/errors.c target/release/libcontensou_capi.a \
+    -lpthread -ldl -lm -o target/release/errors
+target/release/errors
+gcc -std=c99 -g "${san[@]}" -Iinclude tests/errors.c target/release/libcontensou_capi.a \
+    -lpthread -ldl -lm -o target/release/errors-san
+target/release/errors-san
+echo "capi: tests/errors.c against the cdylib (which exports the contensou_* functions only)"
+gcc -std=c99 -Wall -Wextra -Werror -pedantic -Iinclude tests/errors.c -Ltarget/release -lcontensou_capi \
+    -Wl,-rpath,"$PWD/target/release" -o target/release/errors-dylib
+target/release/errors-dylib
+if nm -D --defined-only target/release/libcontensou_capi.so | awk '{ print $3 }' | grep -v '^contensou_'; then
+    echo "capi: the cdylib exports symbols outside contensou_* (above)" >&2
+    exit 1
+fi
+gcc -std=c99 -g "${san[@]}" -Iinclude examples/wrench_eval.c target/release/libcontensou_capi.a \
+    -lpthread -ldl -lm -o target/release/wrench_eval-san
+
 echo "capi: the README's C example compiles (C99 and C++17) and runs"
 readme="$(mktemp -d)"
 awk '/^## From C/ { s = 1 } s && /^```c$/ { p = 1; next } p && /^```$/ { exit } p' ../README.md >"$readme/readme.c"

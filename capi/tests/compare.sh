@@ -7,7 +7,7 @@
 # the same rows before it. Usage: capi/tests/compare.sh (after capi/build.sh, or it builds).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-[[ -x target/release/wrench_eval ]] || ./build.sh --no-check
+[[ -x target/release/wrench_eval && -x target/release/wrench_eval-san ]] || ./build.sh --no-check
 cargo build --release --quiet --example bits
 bits=target/release/examples/bits
 c=target/release/wrench_eval
@@ -36,6 +36,19 @@ for precision in f32 f64; do
     done
 done
 echo "compare: $rows rows × $runs runs (5 laws × 2 forms × 2 precisions): C = Rust bit for bit"
+
+# The C side under AddressSanitizer + UndefinedBehaviorSanitizer (built by build.sh): clean
+# on every row, and the same output.
+for precision in f32 f64; do
+    for form in fixed varying; do
+        opts=(--law best --form "$form" --precision "$precision")
+        target/release/wrench_eval-san "${opts[@]}" <"$work/rows.csv" >"$work/san.csv" ||
+            { echo "compare: the sanitized C twin failed for ${opts[*]}" >&2; exit 1; }
+        "$c" "${opts[@]}" <"$work/rows.csv" | cmp -s - "$work/san.csv" ||
+            { echo "compare: the sanitized C twin prints other values for ${opts[*]}" >&2; exit 1; }
+    done
+done
+echo "compare: the C twin is clean under ASan + UBSan (best, both forms and precisions)"
 
 "$bits" bad >"$work/bad.tsv"
 kinds=0
