@@ -10,8 +10,6 @@
 #ifndef CONTENSOU_H
 #define CONTENSOU_H
 
-/* Generated with cbindgen:0.24.3 */
-
 #include <stddef.h>
 #include <stdint.h>
 
