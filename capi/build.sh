@@ -1,0 +1,40 @@
+#!/usr/bin/env bash
+# Builds the C API (run from anywhere):
+#   host:  capi/target/release/libcontensou_capi.a (staticlib) and .so (cdylib),
+#          capi/target/release/wrench_eval (the C twin of `contact_eval wrench`)
+#   MCU:   capi/target/thumbv7em-none-eabihf/release/libcontensou_capi.a
+# and checks that the committed header is what cbindgen generates and that it compiles as
+# C99 and C++17 with -Wall -Wextra -Werror -pedantic. `--no-check` skips the header checks.
+set -euo pipefail
+cd "$(dirname "$0")"
+check=1
+[[ "${1:-}" == "--no-check" ]] && check=0
+
+if ((check)); then
+    echo "capi: header is cbindgen's (cbindgen.toml)"
+    generated="$(mktemp)"
+    cbindgen --quiet --config cbindgen.toml --output "$generated"
+    if ! diff -u include/contensou.h "$generated"; then
+        echo "capi: include/contensou.h is stale: run \`cbindgen --config cbindgen.toml --output include/contensou.h\` in capi/" >&2
+        exit 1
+    fi
+    rm -f "$generated"
+    echo "capi: header compiles as C99 and C++17 (-Wall -Wextra -Werror -pedantic)"
+    probe="$(mktemp -d)"
+    printf '#include "contensou.h"\nint main(void) { return (int)sizeof(contensou_contact_f64) == CONTENSOU_CONTACT_F64_SIZE ? 0 : 1; }\n' >"$probe/h.c"
+    cp "$probe/h.c" "$probe/h.cpp"
+    gcc -std=c99 -Wall -Wextra -Werror -pedantic -Iinclude -c "$probe/h.c" -o "$probe/c.o"
+    g++ -std=c++17 -Wall -Wextra -Werror -pedantic -Iinclude -c "$probe/h.cpp" -o "$probe/cpp.o"
+    rm -rf "$probe"
+fi
+
+echo "capi: host staticlib + cdylib"
+cargo build --release --lib
+echo "capi: thumbv7em-none-eabihf staticlib"
+cargo rustc --release --lib --target thumbv7em-none-eabihf --crate-type staticlib
+
+if [[ -f examples/wrench_eval.c ]]; then
+    echo "capi: examples/wrench_eval.c against the host staticlib"
+    gcc -std=c99 -O2 -Wall -Wextra -Werror -pedantic -Iinclude examples/wrench_eval.c \
+        target/release/libcontensou_capi.a -lpthread -ldl -lm -o target/release/wrench_eval
+fi
