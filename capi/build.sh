@@ -29,7 +29,7 @@ if ((check)); then
 fi
 
 echo "capi: host staticlib + cdylib"
-cargo build --release --lib
+cargo rustc --release --lib --crate-type staticlib,cdylib
 echo "capi: thumbv7em-none-eabihf staticlib"
 cargo rustc --release --lib --target thumbv7em-none-eabihf --crate-type staticlib
 

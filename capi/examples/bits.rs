@@ -12,8 +12,8 @@ use std::io::{BufRead, Write};
 use std::process::ExitCode;
 use std::str::FromStr;
 
+use contensou::dynamic::{self, DynContact, Form, Law, Spec, Step, INPUTS, OUTPUTS};
 use contensou::Real;
-use contensou::dynamic::{self, DynContact, Form, INPUTS, Law, OUTPUTS, Spec, Step};
 
 /// splitmix64: a fixed, portable stream.
 struct Rng(u64);
@@ -35,7 +35,11 @@ impl Rng {
     }
     fn signed(&mut self, lo: f64, hi: f64) -> f64 {
         let x = self.log(lo, hi);
-        if self.next() & 1 == 0 { x } else { -x }
+        if self.next() & 1 == 0 {
+            x
+        } else {
+            -x
+        }
     }
     fn pick(&mut self, xs: &[f64]) -> f64 {
         xs[(self.next() % xs.len() as u64) as usize]
@@ -51,7 +55,10 @@ macro_rules! pick {
 }
 
 fn row(v: &[f64; 11]) -> String {
-    v.iter().map(|x| format!("{x:e}")).collect::<Vec<_>>().join(",")
+    v.iter()
+        .map(|x| format!("{x:e}"))
+        .collect::<Vec<_>>()
+        .join(",")
 }
 
 fn generate() {
@@ -59,18 +66,46 @@ fn generate() {
     println!("{}", INPUTS.join(","));
     // Hand-picked states: shapes, contact loss, zero slip/spin, δ = 0, f = 0, extremes.
     let fixed: [[f64; 11]; 12] = [
-        [50.0, 50.0, 1.15e11, 0.0, 0.1, 1e-4, 1e-6, 0.0, 0.01, 0.0, 50.0],
-        [2e-4 * 60.0, 60.0, 1.15e11, 0.2, 0.3, 0.0, 1e-6, 0.1, 0.0, 0.0, 0.0],
+        [
+            50.0, 50.0, 1.15e11, 0.0, 0.1, 1e-4, 1e-6, 0.0, 0.01, 0.0, 50.0,
+        ],
+        [
+            2e-4 * 60.0,
+            60.0,
+            1.15e11,
+            0.2,
+            0.3,
+            0.0,
+            1e-6,
+            0.1,
+            0.0,
+            0.0,
+            0.0,
+        ],
         [10.0, 50.0, 2e11, 0.0, 0.0, 1e-4, -1e-6, 0.0, 1.0, 1.0, 1.0],
         [10.0, 50.0, 2e11, 0.1, 0.1, 1e-4, 0.0, -0.5, 1.0, 1.0, 1.0],
         [1.0, 1.0, 1e7, 0.5, 1.0, 1.0, 1e-3, -1.0, 0.0, 0.0, 1e3],
-        [30.0, 40.0, 1e30, 0.0, 0.1, 1e-4, 1e-30, 0.0, 1e-30, -1e-30, 1e-30],
-        [30.0, 40.0, 1e3, 0.0, 0.1, 1e-4, 1e-2, 0.0, 1e30, -1e30, 1e30],
-        [1e-20, 1e-17, 1.15e11, 0.0, 0.1, 1e-4, 1e-6, 0.0, 0.01, 0.0, 50.0],
-        [1e20, 1e20, 1.15e11, 0.0, 0.1, 1e-4, 1e-12, 0.0, 0.01, 0.0, 50.0],
-        [50.0, 50.0, 1.15e11, 0.0, 0.1, 1e-4, 1e-6, 1e3, 0.01, 0.0, 50.0],
-        [50.0, 50.0, 1.15e11, 1e3, 0.1, 1e-4, 1e-6, -1e3, 0.0, 0.0, -50.0],
-        [50.0, 50.0, 1.15e11, 0.0, 0.1, 1e-4, 1e-6, 0.0, -0.0, -0.0, -0.0],
+        [
+            30.0, 40.0, 1e30, 0.0, 0.1, 1e-4, 1e-30, 0.0, 1e-30, -1e-30, 1e-30,
+        ],
+        [
+            30.0, 40.0, 1e3, 0.0, 0.1, 1e-4, 1e-2, 0.0, 1e30, -1e30, 1e30,
+        ],
+        [
+            1e-20, 1e-17, 1.15e11, 0.0, 0.1, 1e-4, 1e-6, 0.0, 0.01, 0.0, 50.0,
+        ],
+        [
+            1e20, 1e20, 1.15e11, 0.0, 0.1, 1e-4, 1e-12, 0.0, 0.01, 0.0, 50.0,
+        ],
+        [
+            50.0, 50.0, 1.15e11, 0.0, 0.1, 1e-4, 1e-6, 1e3, 0.01, 0.0, 50.0,
+        ],
+        [
+            50.0, 50.0, 1.15e11, 1e3, 0.1, 1e-4, 1e-6, -1e3, 0.0, 0.0, -50.0,
+        ],
+        [
+            50.0, 50.0, 1.15e11, 0.0, 0.1, 1e-4, 1e-6, 0.0, -0.0, -0.0, -0.0,
+        ],
     ];
     for v in &fixed {
         println!("{}", row(v));
@@ -83,13 +118,22 @@ fn generate() {
         let delta = pick!(rng, 0.0, rng.log(1e-6, 1e-1), rng.log(1e-6, 1e-1));
         for _ in 0..8 {
             let q = rng.log(1e-1, 1e4);
-            let g = pick!(rng, 1.0, rng.log(2e-4, 1.0), rng.log(2e-4, 1.0), rng.log(0.5, 1.0));
+            let g = pick!(
+                rng,
+                1.0,
+                rng.log(2e-4, 1.0),
+                rng.log(2e-4, 1.0),
+                rng.log(0.5, 1.0)
+            );
             let h = pick!(rng, -1e-6, 0.0, rng.log(1e-12, 1e-3), rng.log(1e-9, 1e-4));
             let hdot = pick!(rng, 0.0, rng.signed(1e-6, 1.0));
             let vx = pick!(rng, 0.0, rng.signed(1e-9, 10.0), rng.signed(1e-6, 1.0));
             let vy = pick!(rng, 0.0, rng.signed(1e-9, 10.0), rng.signed(1e-6, 1.0));
             let omega = pick!(rng, 0.0, rng.signed(1e-3, 1e4), rng.signed(1e-1, 1e3));
-            println!("{}", row(&[g * q, q, estar, cd, f, delta, h, hdot, vx, vy, omega]));
+            println!(
+                "{}",
+                row(&[g * q, q, estar, cd, f, delta, h, hdot, vx, vy, omega])
+            );
         }
     }
 }
@@ -169,33 +213,59 @@ fn check<T: FromStr + Real>(a: &str, b: &str) -> ExitCode {
 }
 
 /// The stand-in for `contact_eval wrench`: same columns, options and messages' row numbers.
-fn eval<T: FromStr + Real + std::fmt::Display + std::fmt::LowerExp>(law: Law, form: Form) -> ExitCode {
+fn eval<T: FromStr + Real + std::fmt::Display + std::fmt::LowerExp>(
+    law: Law,
+    form: Form,
+) -> ExitCode {
     let stdin = std::io::stdin();
     let mut out = std::io::BufWriter::new(std::io::stdout().lock());
     let mut lines = stdin.lock().lines();
-    if lines.next().map(|l| l.ok()).flatten().as_deref().map(str::trim) != Some(&INPUTS.join(",")) {
+    if lines.next().and_then(|l| l.ok()).as_deref().map(str::trim) != Some(&INPUTS.join(",")) {
         eprintln!("bits eval: bad header");
         return ExitCode::from(1);
     }
     let _ = writeln!(out, "{},{}", INPUTS.join(","), OUTPUTS.join(","));
     for (i, line) in lines.enumerate() {
         let row = i + 1;
-        let Ok(line) = line else { return ExitCode::from(1) };
+        let Ok(line) = line else {
+            return ExitCode::from(1);
+        };
         if line.trim().is_empty() {
             continue;
         }
         let fields: Vec<&str> = line.split(',').map(str::trim).collect();
-        let v: Vec<T> = fields.iter().filter_map(|f| f.parse::<T>().ok()).filter(|x| x.partial_cmp(x).is_some()).collect();
+        let v: Vec<T> = fields
+            .iter()
+            .filter_map(|f| f.parse::<T>().ok())
+            .filter(|x| x.partial_cmp(x).is_some())
+            .collect();
         if fields.len() != INPUTS.len() || v.len() != INPUTS.len() {
             let _ = out.flush();
             eprintln!("bits eval: row {row}: not a number or wrong field count");
             return ExitCode::from(1);
         }
-        let spec = Spec { p: v[0], q: v[1], estar: v[2], cd: v[3], f: v[4], delta: v[5] };
-        let step = Step { h: v[6], hdot: v[7], vx: v[8], vy: v[9], omega: v[10] };
+        let spec = Spec {
+            p: v[0],
+            q: v[1],
+            estar: v[2],
+            cd: v[3],
+            f: v[4],
+            delta: v[5],
+        };
+        let step = Step {
+            h: v[6],
+            hdot: v[7],
+            vx: v[8],
+            vy: v[9],
+            omega: v[10],
+        };
         match DynContact::new(&spec, law, form).and_then(|c| c.wrench(&step)) {
             Ok(w) => {
-                let all: Vec<String> = v.iter().chain(&w.to_array()).map(|x| format!("{x:e}")).collect();
+                let all: Vec<String> = v
+                    .iter()
+                    .chain(&w.to_array())
+                    .map(|x| format!("{x:e}"))
+                    .collect();
                 let _ = writeln!(out, "{}", all.join(","));
             }
             Err(e) => {
@@ -211,7 +281,12 @@ fn eval<T: FromStr + Real + std::fmt::Display + std::fmt::LowerExp>(law: Law, fo
 
 fn main() -> ExitCode {
     let args: Vec<String> = std::env::args().skip(1).collect();
-    let arg = |name: &str| args.iter().position(|a| a == name).and_then(|i| args.get(i + 1)).map(String::as_str);
+    let arg = |name: &str| {
+        args.iter()
+            .position(|a| a == name)
+            .and_then(|i| args.get(i + 1))
+            .map(String::as_str)
+    };
     match args.first().map(String::as_str) {
         Some("gen") => generate(),
         Some("bad") => bad(),

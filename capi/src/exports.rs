@@ -147,7 +147,13 @@ pub unsafe extern "C" fn contensou_curvatures_ball_race_f32(
     unsafe {
         shell::curvatures(out, || {
             let race = shell::race(race)?;
-            Ok(Curvatures::ball_race(ball_diameter, groove_radius, pitch_diameter, contact_angle, race)?)
+            Ok(Curvatures::ball_race(
+                ball_diameter,
+                groove_radius,
+                pitch_diameter,
+                contact_angle,
+                race,
+            )?)
         })
     }
 }
@@ -168,7 +174,13 @@ pub unsafe extern "C" fn contensou_curvatures_ball_race_f64(
     unsafe {
         shell::curvatures(out, || {
             let race = shell::race(race)?;
-            Ok(Curvatures::ball_race(ball_diameter, groove_radius, pitch_diameter, contact_angle, race)?)
+            Ok(Curvatures::ball_race(
+                ball_diameter,
+                groove_radius,
+                pitch_diameter,
+                contact_angle,
+                race,
+            )?)
         })
     }
 }

@@ -32,6 +32,7 @@ mod shell;
 pub mod status;
 pub mod types;
 
+pub use exports::*;
 pub use status::contensou_status;
 pub use types::*;
 

@@ -1,7 +1,7 @@
 //! The generic bodies of the exported functions: pointer checks, type conversion, error
 //! mapping. No formula: every number comes from `contensou`.
 
-use core::ffi::{CStr, c_char};
+use core::ffi::{c_char, CStr};
 
 use contensou::dynamic::{self, DynContact, Form, Invalid, Law, Spec, Step};
 use contensou::geometry::{Curvatures, Race};
@@ -157,10 +157,22 @@ pub(crate) unsafe fn contact_new<T: Precision>(
         let s = unsafe { read(spec) }.map_err(bare)?;
         let law = law(law_value).map_err(bare)?;
         let form = form(form_value).map_err(bare)?;
-        let spec = Spec { p: s.p, q: s.q, estar: s.estar, cd: s.cd, f: s.f, delta: s.delta };
+        let spec = Spec {
+            p: s.p,
+            q: s.q,
+            estar: s.estar,
+            cd: s.cd,
+            f: s.f,
+            delta: s.delta,
+        };
         let contact = DynContact::new(&spec, law, form).map_err(invalid)?;
         // SAFETY: checked non-NULL and aligned; the slot fits (types.rs).
-        unsafe { storage.cast::<Slot<T>>().write(Slot { tag: T::TAG, contact }) };
+        unsafe {
+            storage.cast::<Slot<T>>().write(Slot {
+                tag: T::TAG,
+                contact,
+            })
+        };
         Ok(())
     })();
     // SAFETY: caller's contract.
@@ -204,9 +216,23 @@ pub(crate) unsafe fn contact_wrench<T: Precision>(
         // SAFETY: caller's contract.
         let s = unsafe { read(step) }.map_err(bare)?;
         check(out).map_err(bare)?;
-        let step = Step { h: s.h, hdot: s.hdot, vx: s.vx, vy: s.vy, omega: s.omega };
+        let step = Step {
+            h: s.h,
+            hdot: s.hdot,
+            vx: s.vx,
+            vy: s.vy,
+            omega: s.omega,
+        };
         let w = slot.contact.wrench(&step).map_err(invalid)?;
-        let w = contensou_wrench { n: w.n, fx: w.fx, fy: w.fy, tz: w.tz, a: w.a, b: w.b, e2: w.e2 };
+        let w = contensou_wrench {
+            n: w.n,
+            fx: w.fx,
+            fy: w.fy,
+            tz: w.tz,
+            a: w.a,
+            b: w.b,
+            e2: w.e2,
+        };
         // SAFETY: caller's contract.
         unsafe { write(out, w) }.map_err(bare)
     })();
@@ -225,7 +251,11 @@ pub(crate) unsafe fn curvatures<T: Precision>(
     status((|| {
         check(out)?;
         let c = make()?;
-        let v = contensou_curvatures { p: c.p(), q: c.q(), major_angle: c.major_angle() };
+        let v = contensou_curvatures {
+            p: c.p(),
+            q: c.q(),
+            major_angle: c.major_angle(),
+        };
         // SAFETY: caller's contract.
         unsafe { write(out, v) }
     })())
@@ -305,8 +335,17 @@ pub(crate) fn form_code(form: Form) -> contensou_form {
 const COLUMN_NAMES: [&CStr; 11] = {
     use dynamic::INPUTS as I;
     [
-        c_str!(I[0]), c_str!(I[1]), c_str!(I[2]), c_str!(I[3]), c_str!(I[4]), c_str!(I[5]),
-        c_str!(I[6]), c_str!(I[7]), c_str!(I[8]), c_str!(I[9]), c_str!(I[10]),
+        c_str!(I[0]),
+        c_str!(I[1]),
+        c_str!(I[2]),
+        c_str!(I[3]),
+        c_str!(I[4]),
+        c_str!(I[5]),
+        c_str!(I[6]),
+        c_str!(I[7]),
+        c_str!(I[8]),
+        c_str!(I[9]),
+        c_str!(I[10]),
     ]
 };
 

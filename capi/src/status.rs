@@ -3,7 +3,7 @@
 //! Codes 1–11 map one to one to the variants of [`contensou::Error`] (their messages are
 //! [`contensou::Error::as_str`]); codes from 100 are the C boundary's own.
 
-use core::ffi::{CStr, c_char};
+use core::ffi::{c_char, CStr};
 
 use contensou::Error;
 
@@ -139,7 +139,9 @@ impl contensou_status {
             S::NullPointer => c_str!("a pointer parameter is NULL"),
             S::Misaligned => c_str!("a pointer parameter is misaligned for its type"),
             S::NotInitialized => {
-                c_str!("contact storage not initialised by contensou_contact_new_* of this precision")
+                c_str!(
+                    "contact storage not initialised by contensou_contact_new_* of this precision"
+                )
             }
             S::InvalidLaw => c_str!("invalid contensou_law value"),
             S::InvalidForm => c_str!("invalid contensou_form value"),

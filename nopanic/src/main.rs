@@ -1,6 +1,7 @@
 //! Link-time no-panic proof for `contensou` on `thumbv7em-none-eabihf` (issue 8).
 //!
-//! `main` calls every public constructor and evaluation entry point, in `f32` and `f64`, on
+//! `main` calls every public constructor and evaluation entry point, in `f32` and `f64`, and
+//! every function the C API exports (`capi.rs`, crate `contensou-capi`), on
 //! inputs the optimiser cannot see (`black_box`), and black-boxes every output. The panic
 //! handler calls `contensou_panic_path_survived`, a function that is declared but never
 //! defined: if any panic path survives optimisation (opt-level 3, fat LTO, one codegen unit,
@@ -32,6 +33,8 @@ use contensou::shape::{
     self, Eccentricity, HamrockDowson, HamrockDowsonMicromath, Linear, Newton, Ratio,
 };
 use cortex_m_rt::entry;
+
+mod capi;
 
 #[cfg(not(feature = "locate"))]
 unsafe extern "Rust" {
@@ -373,6 +376,7 @@ fn main() -> ! {
     api::run::<f64>();
     mm_laws::run();
     mm_api::run();
+    capi::run();
     loop {
         core::hint::spin_loop();
     }
