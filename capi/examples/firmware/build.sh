@@ -16,6 +16,9 @@ mkdir -p "$out"
 # The Rust staticlib (release: opt-level 3, fat LTO, panic = abort; see capi/Cargo.toml), with
 # the Rust rig's pinned compiler (firmware/rust-toolchain.toml) so that C and Rust rows compare.
 chan="$(sed -n 's/^channel *= *"\(.*\)"/\1/p' "$root/firmware/rust-toolchain.toml")"
+rustup toolchain list | grep -q "^$chan" || rustup toolchain install "$chan" --profile minimal
+rustup target list --installed --toolchain "$chan" | grep -q '^thumbv7em-none-eabihf$' ||
+    rustup target add --toolchain "$chan" thumbv7em-none-eabihf
 (cd "$capi" && cargo "+$chan" rustc --release --quiet --lib --target thumbv7em-none-eabihf \
     --crate-type staticlib)
 lib="$capi/target/thumbv7em-none-eabihf/release/libcontensou_capi.a"
