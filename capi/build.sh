@@ -38,3 +38,14 @@ if [[ -f examples/wrench_eval.c ]]; then
     gcc -std=c99 -O2 -Wall -Wextra -Werror -pedantic -Iinclude examples/wrench_eval.c \
         target/release/libcontensou_capi.a -lpthread -ldl -lm -o target/release/wrench_eval
 fi
+
+echo "capi: the README's C example compiles (C99 and C++17) and runs"
+readme="$(mktemp -d)"
+awk '/^## From C/ { s = 1 } s && /^```c$/ { p = 1; next } p && /^```$/ { exit } p' ../README.md >"$readme/readme.c"
+grep -q contensou_contact_wrench_f32 "$readme/readme.c"
+gcc -std=c99 -Wall -Wextra -Werror -pedantic -Iinclude "$readme/readme.c" target/release/libcontensou_capi.a \
+    -lpthread -ldl -lm -o "$readme/readme"
+cp "$readme/readme.c" "$readme/readme.cpp"
+g++ -std=c++17 -Wall -Wextra -Werror -pedantic -Iinclude -c "$readme/readme.cpp" -o "$readme/readme.o"
+"$readme/readme"
+rm -rf "$readme"

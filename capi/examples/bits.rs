@@ -5,14 +5,11 @@
 //!   P, Q so that the C twin takes its `set_curvatures` path in the varying form);
 //! - `bits bad` prints rows each ending in one bad row, `KIND<TAB>row`, for the error paths;
 //! - `bits check f32|f64 A.csv B.csv` parses every field of both outputs in that precision
-//!   and requires the same bits (and the same header and row count);
-//! - `bits eval [--law L] [--form F] [--precision P]`: a stand-in for `contact_eval wrench`
-//!   over `contensou::dynamic` (used until the CLI has its `wrench` subcommand).
-use std::io::{BufRead, Write};
+//!   and requires the same bits (and the same header and row count).
 use std::process::ExitCode;
 use std::str::FromStr;
 
-use contensou::dynamic::{self, DynContact, Form, Law, Spec, Step, INPUTS, OUTPUTS};
+use contensou::dynamic::{INPUTS, OUTPUTS};
 use contensou::Real;
 
 /// splitmix64: a fixed, portable stream.
@@ -111,7 +108,7 @@ fn generate() {
         println!("{}", row(v));
     }
     // Random blocks: one contact spec, then 8 steps that also move P, Q (per-step update).
-    for _ in 0..250 {
+    for _ in 0..1250 {
         let estar = rng.log(1e6, 1e12);
         let cd = pick!(rng, 0.0, 0.0, rng.log(1e-3, 10.0));
         let f = pick!(rng, 0.0, rng.log(1e-3, 1.0), rng.log(1e-3, 1.0));
@@ -212,81 +209,8 @@ fn check<T: FromStr + Real>(a: &str, b: &str) -> ExitCode {
     ExitCode::SUCCESS
 }
 
-/// The stand-in for `contact_eval wrench`: same columns, options and messages' row numbers.
-fn eval<T: FromStr + Real + std::fmt::Display + std::fmt::LowerExp>(
-    law: Law,
-    form: Form,
-) -> ExitCode {
-    let stdin = std::io::stdin();
-    let mut out = std::io::BufWriter::new(std::io::stdout().lock());
-    let mut lines = stdin.lock().lines();
-    if lines.next().and_then(|l| l.ok()).as_deref().map(str::trim) != Some(&INPUTS.join(",")) {
-        eprintln!("bits eval: bad header");
-        return ExitCode::from(1);
-    }
-    let _ = writeln!(out, "{},{}", INPUTS.join(","), OUTPUTS.join(","));
-    for (i, line) in lines.enumerate() {
-        let row = i + 1;
-        let Ok(line) = line else {
-            return ExitCode::from(1);
-        };
-        if line.trim().is_empty() {
-            continue;
-        }
-        let fields: Vec<&str> = line.split(',').map(str::trim).collect();
-        let v: Vec<T> = fields
-            .iter()
-            .filter_map(|f| f.parse::<T>().ok())
-            .filter(|x| x.partial_cmp(x).is_some())
-            .collect();
-        if fields.len() != INPUTS.len() || v.len() != INPUTS.len() {
-            let _ = out.flush();
-            eprintln!("bits eval: row {row}: not a number or wrong field count");
-            return ExitCode::from(1);
-        }
-        let spec = Spec {
-            p: v[0],
-            q: v[1],
-            estar: v[2],
-            cd: v[3],
-            f: v[4],
-            delta: v[5],
-        };
-        let step = Step {
-            h: v[6],
-            hdot: v[7],
-            vx: v[8],
-            vy: v[9],
-            omega: v[10],
-        };
-        match DynContact::new(&spec, law, form).and_then(|c| c.wrench(&step)) {
-            Ok(w) => {
-                let all: Vec<String> = v
-                    .iter()
-                    .chain(&w.to_array())
-                    .map(|x| format!("{x:e}"))
-                    .collect();
-                let _ = writeln!(out, "{}", all.join(","));
-            }
-            Err(e) => {
-                let _ = out.flush();
-                eprintln!("bits eval: row {row}: {e}");
-                return ExitCode::from(1);
-            }
-        }
-    }
-    let _ = dynamic::wrench::<T>; // the per-row form is the same computation
-    ExitCode::SUCCESS
-}
-
 fn main() -> ExitCode {
     let args: Vec<String> = std::env::args().skip(1).collect();
-    let arg = |name: &str| {
-        args.iter()
-            .position(|a| a == name)
-            .and_then(|i| args.get(i + 1))
-            .map(String::as_str)
-    };
     match args.first().map(String::as_str) {
         Some("gen") => generate(),
         Some("bad") => bad(),
@@ -296,20 +220,8 @@ fn main() -> ExitCode {
                 _ => check::<f64>(&args[2], &args[3]),
             };
         }
-        Some("eval") => {
-            let (Some(law), Some(form)) = (
-                Law::from_name(arg("--law").unwrap_or("best")),
-                Form::from_name(arg("--form").unwrap_or("fixed")),
-            ) else {
-                return ExitCode::from(2);
-            };
-            return match arg("--precision").unwrap_or("f64") {
-                "f32" => eval::<f32>(law, form),
-                _ => eval::<f64>(law, form),
-            };
-        }
         _ => {
-            eprintln!("usage: bits gen | bad | check f32|f64 A B | eval [--law L] [--form F] [--precision P]");
+            eprintln!("usage: bits gen | bad | check f32|f64 A B");
             return ExitCode::from(2);
         }
     }

@@ -53,12 +53,14 @@ static int split(char *line, char *fields[COLUMNS]) {
     }
 }
 
-/* A field as a number: the whole field must parse, and NaN is refused (as contact_eval). */
-static int parse(const char *field, double *out, int f32) {
+/* A field as a number: NULL if it parses (the whole field), else why not (as contact_eval:
+ * NaN is refused). */
+static const char *parse(const char *field, double *out, int f32) {
     char *end;
-    if (*field == '\0') return 0;
+    if (*field == '\0') return "not a number";
     if (f32) *out = strtof(field, &end); else *out = strtod(field, &end);
-    return *end == '\0' && *out == *out;
+    if (*end != '\0') return "not a number";
+    return *out == *out ? NULL : "not a number (NaN)";
 }
 
 static int fail_row(long row, const char *column, const char *value, contensou_status s) {
@@ -117,9 +119,10 @@ int main(int argc, char **argv) {
             return 1;
         }
         for (k = 0; k < COLUMNS; k++) {
-            if (!parse(fields[k], &v[k], f32)) {
-                fprintf(stderr, "wrench_eval: row %ld: %s = %s: not a number\n", row,
-                        contensou_column_name((contensou_column)k), fields[k]);
+            const char *why = parse(fields[k], &v[k], f32);
+            if (why) {
+                fprintf(stderr, "wrench_eval: row %ld: %s = %s: %s\n", row,
+                        contensou_column_name((contensou_column)k), fields[k], why);
                 return 1;
             }
         }

@@ -12,16 +12,10 @@ cargo build --release --quiet --example bits
 bits=target/release/examples/bits
 c=target/release/wrench_eval
 
-# The reference: the CLI's `wrench` subcommand when the repository has it, else the stand-in
-# over contensou::dynamic in examples/bits.rs.
+# The reference: the CLI's `wrench` subcommand (src/bin/contact_eval).
+(cd .. && cargo build --release --quiet --bin contact_eval)
+ref=(../target/release/contact_eval wrench)
 header="P,Q,estar,cd,f,delta,h,hdot,vx,vy,omega"
-if [[ -d ../src/bin/contact_eval ]] && (cd .. && cargo build --release --quiet --bin contact_eval) &&
-    printf '%s\n' "$header" | ../target/release/contact_eval wrench >/dev/null 2>&1; then
-    ref=(../target/release/contact_eval wrench)
-else
-    echo "compare: contact_eval has no wrench subcommand here: the stand-in \`bits eval\` is the reference"
-    ref=("$bits" eval)
-fi
 
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
@@ -64,10 +58,18 @@ for kind in $(cut -f1 "$work/bad.tsv" | uniq); do
             echo "compare: bad row '$kind' ($precision): C says '$row_c', Rust '$row_r', expected row 4" >&2
             exit 1
         fi
-        grep -q 'status [0-9]' "$work/c.err" || [[ "$kind" =~ ^(nan|text|empty|fields)$ ]] ||
+        # The same message (row, column, reason), but for the program's name, the C twin's
+        # status code and the value (the C twin echoes the field, the CLI its shortest float).
+        msg_c="$(sed -e 's/^wrench_eval: //' -e 's/ (status [0-9]*)$//' -e 's/ = [^:]*:/ = _:/' "$work/c.err")"
+        msg_r="$(sed -e 's/^contact_eval: //' -e 's/ = [^:]*:/ = _:/' "$work/rust.err")"
+        if [[ "$msg_c" != "$msg_r" ]]; then
+            printf 'compare: bad row %s (%s): messages differ:\n  C:    %s\n  Rust: %s\n' "$kind" "$precision" "$msg_c" "$msg_r" >&2
+            exit 1
+        fi
+        grep -q ' (status [0-9]*)$' "$work/c.err" || [[ "$kind" =~ ^(nan|text|empty|fields)$ ]] ||
             { echo "compare: C message of '$kind' has no status code: $(cat "$work/c.err")" >&2; exit 1; }
         "$bits" check "$precision" "$work/c.csv" "$work/rust.csv" >/dev/null
     done
     kinds=$((kinds + 1))
 done
-echo "compare: $kinds kinds of bad row: both stop at row 4, exit 1, same rows before it"
+echo "compare: $kinds kinds of bad row: both stop at row 4 with the same message, exit 1, same rows before it"
