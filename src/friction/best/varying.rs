@@ -5,10 +5,10 @@
 //! c_j(e², z) = R_j(s, z) + c_j(0)·(1 − z²) + c_j(1)·z², s = m₁^¼ = √γ:
 //! the ends are exact and computed here (c_j(0) from the quartic on the ellipse, c_j(1) from
 //! u = ∞: (1, 0, 1, 0, −0.4/(1 + γ), 0.4(1 − γ), 0)); the remainder R_j is the 4-point
-//! Lagrange interpolation in s over the table's uniform nodes (the cell's nodes j − 1 … j + 2,
-//! one-sided in the end cells; continuous in s, exact at the nodes), each node holding a cubic
-//! piece in z. Fixed cost: two truncations, four weights, 4 × 7 cubics, no data-dependent
-//! loop. Below the table (m₁ < 0.01, e² > 0.99) s is clamped to its first node: e² = 0.99's
+//! 3-point Lagrange (quadratic) interpolation in s over the table's 21 uniform nodes (the
+//! cell's nodes j … j + 2, j − 1 … j + 1 in the last cell; continuous in s, exact at the
+//! nodes), each node holding 12 cubic pieces in z. Fixed cost: two truncations, three
+//! weights, 3 × 7 cubics, no data-dependent loop. Below the table (m₁ < 0.01, e² > 0.99) s is clamped to its first node: e² = 0.99's
 //! remainder between the exact ends — the fallback of the series form, error documented in
 //! the [module docs](super).
 
@@ -26,19 +26,12 @@ pub(super) fn coefficients<T: Real>(q: &Quartic<T>, gamma: T, z: T) -> [T; 7] {
         .max(T::ZERO)
         .min(T::from_usize(NS));
     let j = x.trunc_usize().min(NS - 1);
-    // first node of the 4-point stencil: j − 1, kept inside [0, NS − 3]
-    let j0 = j.saturating_sub(1).min(NS - 3);
+    // first node of the 3-point stencil: j, kept inside [0, NS − 2] (t ∈ [0, 1], or [1, 2] in
+    // the last cell)
+    let j0 = j.min(NS - 2);
     let t = x - T::from_usize(j0);
-    let one = T::ONE;
-    let (t1, t2, t3) = (t - one, t - T::TWO, t - T::from_f64(3.0));
-    let (t01, t23) = (t * t1, t2 * t3);
-    let sixth = T::from_f64(1.0 / 6.0);
-    let w = [
-        -sixth * t1 * t23,
-        T::HALF * t * t23,
-        -T::HALF * t01 * t3,
-        sixth * t01 * t2,
-    ];
+    let (t1, t2) = (t - T::ONE, t - T::TWO);
+    let w = [T::HALF * t1 * t2, -t * t2, T::HALF * t * t1];
     let zn = z * T::from_usize(NZ);
     let i = zn.trunc_usize().min(NZ - 1);
     let r = zn - T::from_usize(i);
@@ -50,7 +43,7 @@ pub(super) fn coefficients<T: Real>(q: &Quartic<T>, gamma: T, z: T) -> [T; 7] {
         }
     }
     let ends0 = q.boundary(gamma);
-    let g4 = T::from_f64(0.4);
+    let (one, g4) = (T::ONE, T::from_f64(0.4));
     let ends1 = [
         one,
         T::ZERO,
