@@ -73,13 +73,13 @@
 //!     budget selects it; build `Contact<_, _, _, Simplified>` directly to reproduce the paper.
 //!     The ellipsoidal law ignores δ (Coulomb's sign law at ω = 0).
 //!   - [`ExactGrade`] (≤ 5e-4 fN, ≤ 5e-4 fNa) → [`Best`] (measured 5.2e-5 fN / 4.1e-6 fNa in
-//!     the per-contact form a [`Fixed`] contact precomputes, 2.0e-6 / 8.7e-7 per call for
-//!     [`Varying`]). With the feature `micromath` a [`Varying`] `f32` contact takes
-//!     `BestMicromath` (the per-call form with micromath's `ln`: 2.8e-6 fN / 7.0e-7 fNa in the
-//!     scene, 1,539 instructions per step against 1,550). A [`Fixed`] contact keeps [`Best`]:
-//!     its per-contact [`crate::friction::BestContact`] calls no `ln` and is far cheaper than
-//!     any per-call form.
-//!
+//!     the per-contact form a [`Fixed`] contact precomputes, 1.4e-5 fN / 1.9e-6 fNa in the
+//!     per-step flash-table form a [`Varying`] contact calls: 521 M4F instructions per `f32`
+//!     wrench on average, 750 on the worst input an input search found, against 1,950 / 3,310
+//!     for the per-call series it replaced). The per-step form calls no `ln`, so no micromath
+//!     twin pays there any more: with the feature `micromath` a [`Varying`] `f32` contact keeps
+//!     [`Best`] too (`BestMicromath`, the series with micromath's `ln`, measured 1,539 per step).
+
 //! The micromath twins are used exactly where the budget admits their measured error *and*
 //! they were measured cheaper in the scene (`bench-results/micromath.md` has each twin's
 //! figures); the others (its `sqrt` in the friction laws, `HamrockDowsonMicromath`) cost more
@@ -205,9 +205,8 @@ pub struct Rough;
 pub struct Coarse;
 /// Budget: friction within 5e-4 fN in force and 5e-4 fNa in torque ("exact-grade") → [`Best`]
 /// (measured 4.9e-5 fN / 3.5e-6 fNa; 161–182 M4F instructions per `f32` step of a fixed
-/// contact, 1,550 of a varying one; with the feature `micromath` a varying `f32` contact takes
-/// `BestMicromath`: 2.8e-6 fN / 7.0e-7 fNa, 1,539 instructions); N, a, b within
-/// [`NORMAL_BOUND`].
+/// contact; a varying one takes `Best`'s per-step flash-table form: 1.4e-5 fN / 1.9e-6 fNa,
+/// 521 instructions per wrench on the `wrench` set); N, a, b within [`NORMAL_BOUND`].
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct ExactGrade;
 
@@ -217,14 +216,15 @@ pub struct ExactGrade;
 pub trait Precision: Real + sealed::Sealed {
     /// [`Hertz`] with micromath's √h per step (`HertzMicromath<f32>`), or [`Hertz`].
     type FastHertz: NormalLaw<Self> + From<Hertz<Self>> + Copy + core::fmt::Debug + PartialEq;
-    /// [`Best`]'s per-call form with micromath's `ln` (`BestMicromath`), or [`Best`].
+    /// The spin law of a varying exact-grade contact: [`Best`] (its per-step flash-table form
+    /// calls no `ln`, so `BestMicromath`, the series with micromath's `ln`, no longer pays).
     type FastBest: FrictionLaw;
 }
 
 #[cfg(feature = "micromath")]
 impl Precision for f32 {
     type FastHertz = crate::normal::HertzMicromath<f32>;
-    type FastBest = crate::friction::BestMicromath;
+    type FastBest = Best;
 }
 
 #[cfg(not(feature = "micromath"))]

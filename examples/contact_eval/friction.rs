@@ -5,7 +5,8 @@ use std::process::ExitCode;
 use contensou::Real;
 use contensou::elliptic::Parameter;
 use contensou::friction::{
-    Best, Constants, Coulomb, Ellipsoid, Exact, FrictionLaw, Pade, Simplified, SlipState, Traction,
+    Best, BestSeries, Constants, Coulomb, Ellipsoid, Exact, FrictionLaw, Pade, Simplified,
+    SlipState, Traction,
 };
 
 use crate::{Options, run_csv};
@@ -27,11 +28,13 @@ pub fn run(options: &Options) -> Result<ExitCode, String> {
         "best" => eval::<f64, Best>(),
         "best-varying" if f32 => eval_per_call::<f32, Best>(),
         "best-varying" => eval_per_call::<f64, Best>(),
+        "best-series" if f32 => eval_per_call::<f32, BestSeries>(),
+        "best-series" => eval_per_call::<f64, BestSeries>(),
         "exact" if f32 => eval::<f32, Exact>(),
         "exact" => eval::<f64, Exact>(),
         other => {
             return Err(format!(
-                "unknown model `{other}` for friction (exact, simplified, pade, ellipsoid, coulomb, best, best-varying)"
+                "unknown model `{other}` for friction (exact, simplified, pade, ellipsoid, coulomb, best, best-varying, best-series)"
             ));
         }
     })
