@@ -79,7 +79,7 @@
 //!     for the per-call series it replaced). The per-step form calls no `ln`, so no micromath
 //!     twin pays there any more: with the feature `micromath` a [`Varying`] `f32` contact keeps
 //!     [`Best`] too (`BestMicromath`, the series with micromath's `ln`, measured 1,539 per step).
-
+//!
 //! The micromath twins are used exactly where the budget admits their measured error *and*
 //! they were measured cheaper in the scene (`bench-results/micromath.md` has each twin's
 //! figures); the others (its `sqrt` in the friction laws, `HamrockDowsonMicromath`) cost more
@@ -110,17 +110,18 @@
 //! | ball-race-spin-exact | `Elliptic, Fixed, Spin, ExactGrade` | [`Contact`], Hertz, `Table` once, [`Best`] | 182 / 14700 | 8757 / 29908 | 1.7e-07 / 4.9e-05 / 3.4e-06 |
 //! | ball-race-nospin | `Elliptic, Fixed, NoSpin, _` | [`Contact`], Hertz, `Table` once, [`Coulomb`] | 107 / 3868 | 3063 / 11904 | 1.7e-07 / 1.9e-07 / 0 |
 //! | varying-spin-coarse | `Elliptic, Varying, Spin, Coarse` | [`VaryingContact`], Hertz, `Table` per step, [`Ellipsoid`] | 232 / 3964 | 9422 / 11688 | 2.6e-07 / 2.2e-01 / 1.3e-01 |
-//! | varying-spin-exact | `Elliptic, Varying, Spin, ExactGrade` | [`VaryingContact`], Hertz, `Table` per step, [`Best`] | 1550 / 12264 | 98867 / 25452 | 2.6e-07 / 2.1e-06 / 6.4e-07 |
+//! | varying-spin-exact | `Elliptic, Varying, Spin, ExactGrade` | [`VaryingContact`], Hertz, `Table` per step, [`Best`] (per-step flash table) | 440 / 34248 | 25156 / 44944 | 2.6e-07 / 2.1e-06 / 6.4e-07 |
 //! | varying-nospin | `Elliptic, Varying, NoSpin, _` | [`VaryingContact`], Hertz, `Table` per step, [`Coulomb`] | 242 / 4016 | 9268 / 11696 | 2.6e-07 / 2.9e-07 / 0 |
 //! | sphere-plane-spin-rough-micromath | `Circular, Fixed, Spin, Rough` | [`Contact`], `HertzMicromath` from `Hertz::circular`, [`Ellipsoid`] | 86 / 1104 | — | 6.1e-02 / 1.2e-01 / 1.3e-01 |
 //! | sphere-plane-nospin-rough-micromath | `Circular, Fixed, NoSpin, Rough` | [`Contact`], `HertzMicromath` from `Hertz::circular`, [`Coulomb`] | 106 / 1152 | — | 6.1e-02 / 6.1e-02 / 0 |
 //! | ball-race-spin-rough-micromath | `Elliptic, Fixed, Spin, Rough` | [`Contact`], `HertzMicromath`, `Table` once, [`Ellipsoid`] | 86 / 3828 | — | 6.1e-02 / 2.3e-01 / 1.6e-01 |
 //! | ball-race-nospin-rough-micromath | `Elliptic, Fixed, NoSpin, Rough` | [`Contact`], `HertzMicromath`, `Table` once, [`Coulomb`] | 106 / 3864 | — | 6.1e-02 / 6.1e-02 / 0 |
-//! | varying-spin-exact-micromath | `Elliptic, Varying, Spin, ExactGrade` | [`VaryingContact`], Hertz, `Table` per step, `BestMicromath` | 1539 / 12284 | — | 2.6e-07 / 2.8e-06 / 6.9e-07 |
+//! | varying-spin-exact-micromath | `Elliptic, Varying, Spin, ExactGrade` | [`VaryingContact`], Hertz, `Table` per step, [`Best`] (as without the feature) | 440 / 34248 | — | 2.6e-07 / 2.1e-06 / 6.4e-07 |
 //!
 //! Instructions include the rig's 8-instruction call floor; `f64` is soft float on the M4F.
-//! The [`Best`] rows' flash includes its 2.8 KB (`f32`) coefficient table and, for a fixed
-//! contact, [`crate::friction::BestContact::new`]. N is exact in closed form for the circle
+//! The [`Best`] rows' flash includes, for a fixed contact, its 2.8 KB (`f32`) coefficient
+//! table and [`crate::friction::BestContact::new`], for a varying one the 28.2 KB per-step
+//! table (e² interpolated) instead. N is exact in closed form for the circle
 //! (the `f32` figure is rounding); F and T_z of the `Coarse` rows are the ellipsoidal law's
 //! own error, worst at the thinnest patch (e² = 0.989–0.99). The `-micromath` rows are what
 //! an `f32` declaration resolves to with the feature `micromath`, where that differs (`f64`

@@ -61,7 +61,10 @@ pub fn exact_grid() -> Vec<Vec<Option<Traction<f64>>>> {
 pub fn maps<L: FrictionLaw>(
     dir: &Path,
     exact: &[Vec<Option<Traction<f64>>>],
-) -> Result<Maps, Box<dyn std::error::Error>> {
+) -> Result<Maps, Box<dyn std::error::Error>>
+where
+    L::Prepared<f64>: 'static,
+{
     maps_of(dir, exact, L::NAME, |k| {
         let p = L::prepare(k);
         Box::new(move |s| L::traction_prepared(&p, s).0)

@@ -118,7 +118,8 @@ fn best_worst(r: &Runner) {
     let varying = VaryingContact::new(estar, Undamped, friction);
     let h = 5e-6_f32;
     let q = 100.0_f32;
-    let psis = [0.0, 0.0131, 0.41, 0.7854, 1.2, 1.5708, 1.9, 2.6, 3.1416, 3.9, 4.71239, 5.5];
+    use core::f32::consts::{FRAC_PI_2, FRAC_PI_4, PI};
+    let psis = [0.0, 0.0131, 0.41, FRAC_PI_4, 1.2, FRAC_PI_2, 1.9, 2.6, PI, 3.9, 1.5 * PI, 5.5];
     let mut worst: Option<(VaryingInput<'_, T, Best>, u32)> = None;
     let curvs: [Curvatures<T>; 20] = core::array::from_fn(|i| {
         let g = libm::powf(10.0, -4.0 * i as f32 / 19.0);

@@ -118,17 +118,18 @@ impl FrictionLaw for BestSeries {
     }
 }
 
-/// [`Best`]'s per-call form with micromath's `ln` for the series' λ = 1 + log₁₀ m₁ (feature
+/// [`BestSeries`] with micromath's `ln` for the series' λ = 1 + log₁₀ m₁ (feature
 /// `micromath`; `f32` only, libm for `f64`). The square roots stay [`Real::sqrt`] (the
 /// confocal coordinates need them exact). [`FrictionLaw::prepare`] gives the [`Constants`]
-/// unchanged: the per-contact form of `best` is [`BestContact`], which calls no `ln`.
+/// unchanged: the per-contact form of `best` is [`BestContact`](super::BestContact), which
+/// calls no `ln`.
 ///
-/// Formula, domain, branches: as [`Best`]; `f64` is [`Best`]. Measured max error against the
-/// exact integrals (`f32`, the 4,329 states of host-tests/micromath.rs, asserted there):
-/// **2.6e-6 fN / 8.9e-7 fNa** ([`Best`]: 2.0e-6 / 8.8e-7 on the same set), so above
-/// [`Best::ERROR`]'s force figure but far inside issue 5's 5e-4. Cost: M4F **1,297**
-/// instructions on average (`f32`; [`Best`] per call 1,324), host ≈ 195 ns (as [`Best`] within
-/// noise). Marginal: 2 % fewer instructions, only where e² changes every call.
+/// Formula, domain, branches: as [`BestSeries`]; `f64` is [`BestSeries`]. Measured max error
+/// against the exact integrals (`f32`, the 4,329 states of host-tests/micromath.rs, asserted
+/// there): **2.6e-6 fN / 8.9e-7 fNa** ([`BestSeries`]: 2.0e-6 / 8.8e-7 on the same set). Cost:
+/// M4F **1,298** instructions on average (`f32`; [`BestSeries`] 1,324), host ≈ 195 ns. No
+/// longer chosen anywhere: [`Best`](super::Best)'s per-step flash-table form calls no `ln` and
+/// costs 271.
 #[cfg(feature = "micromath")]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct BestMicromath;
