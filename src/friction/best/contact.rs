@@ -13,7 +13,7 @@ const PIECES: usize = 8;
 
 /// The `best` law for one contact shape (e² fixed): the quartic's constants and the seven
 /// outside coefficients as 8 cubic pieces in z, built once by [`BestContact::new`]
-/// (see the [module docs](self)).
+/// (see the [module docs](crate::friction::best)).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct BestContact<T> {
     quartic: Quartic<T>,

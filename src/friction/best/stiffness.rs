@@ -7,7 +7,7 @@ use crate::friction::{Constants, larger};
 /// κ(e²): the largest stiffness of `best`'s ramped law in units of fN/δ — the supremum, over
 /// every slip direction and every spin ratio aω/δ ∈ [0, ∞), of the largest eigenvalue of the
 /// translational Jacobian −(δ/fN)·∂F/∂v_P. The stable explicit step
-/// ([`Friction::stable_step`](super::Friction::stable_step) for `Best`) is limit·mδ/(κ·fN).
+/// ([`Friction::stable_step`](crate::friction::Friction::stable_step) for `Best`) is limit·mδ/(κ·fN).
 ///
 /// # Formula
 ///
@@ -64,7 +64,7 @@ pub fn ramp_stiffness<T: Real>(k: &Constants<T>) -> T {
 /// κ_T(e²): the largest torque stiffness of `best`'s ramped law in units of fN·a²/δ — the
 /// supremum, over every slip direction and every spin ratio aω/δ, of −(δ/(fN·a²))·∂T_z/∂ω
 /// with v_P held fixed. The stable explicit step for the spin
-/// ([`Friction::stable_spin_step`](super::Friction::stable_spin_step) for `Best`) is
+/// ([`Friction::stable_spin_step`](crate::friction::Friction::stable_spin_step) for `Best`) is
 /// limit·Iδ/(κ_T·fN·a²).
 ///
 /// # Formula
