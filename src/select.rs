@@ -110,13 +110,13 @@
 //! | ball-race-spin-exact | `Elliptic, Fixed, Spin, ExactGrade` | [`Contact`], Hertz, `Table` once, [`Best`] | 182 / 14700 | 8757 / 29908 | 1.7e-07 / 4.9e-05 / 3.4e-06 |
 //! | ball-race-nospin | `Elliptic, Fixed, NoSpin, _` | [`Contact`], Hertz, `Table` once, [`Coulomb`] | 107 / 3868 | 3063 / 11904 | 1.7e-07 / 1.9e-07 / 0 |
 //! | varying-spin-coarse | `Elliptic, Varying, Spin, Coarse` | [`VaryingContact`], Hertz, `Table` per step, [`Ellipsoid`] | 232 / 3964 | 9422 / 11688 | 2.6e-07 / 2.2e-01 / 1.3e-01 |
-//! | varying-spin-exact | `Elliptic, Varying, Spin, ExactGrade` | [`VaryingContact`], Hertz, `Table` per step, [`Best`] (per-step flash table) | 440 / 34248 | 25156 / 44944 | 2.6e-07 / 2.1e-06 / 6.4e-07 |
+//! | varying-spin-exact | `Elliptic, Varying, Spin, ExactGrade` | [`VaryingContact`], Hertz, `Table` per step, [`Best`] (per-step flash table) | 440 / 34248 | 25156 / 44944 | 2.6e-07 / 1.4e-05 / 1.5e-06 |
 //! | varying-nospin | `Elliptic, Varying, NoSpin, _` | [`VaryingContact`], Hertz, `Table` per step, [`Coulomb`] | 242 / 4016 | 9268 / 11696 | 2.6e-07 / 2.9e-07 / 0 |
 //! | sphere-plane-spin-rough-micromath | `Circular, Fixed, Spin, Rough` | [`Contact`], `HertzMicromath` from `Hertz::circular`, [`Ellipsoid`] | 86 / 1104 | — | 6.1e-02 / 1.2e-01 / 1.3e-01 |
 //! | sphere-plane-nospin-rough-micromath | `Circular, Fixed, NoSpin, Rough` | [`Contact`], `HertzMicromath` from `Hertz::circular`, [`Coulomb`] | 106 / 1152 | — | 6.1e-02 / 6.1e-02 / 0 |
 //! | ball-race-spin-rough-micromath | `Elliptic, Fixed, Spin, Rough` | [`Contact`], `HertzMicromath`, `Table` once, [`Ellipsoid`] | 86 / 3828 | — | 6.1e-02 / 2.3e-01 / 1.6e-01 |
 //! | ball-race-nospin-rough-micromath | `Elliptic, Fixed, NoSpin, Rough` | [`Contact`], `HertzMicromath`, `Table` once, [`Coulomb`] | 106 / 3864 | — | 6.1e-02 / 6.1e-02 / 0 |
-//! | varying-spin-exact-micromath | `Elliptic, Varying, Spin, ExactGrade` | [`VaryingContact`], Hertz, `Table` per step, [`Best`] (as without the feature) | 440 / 34248 | — | 2.6e-07 / 2.1e-06 / 6.4e-07 |
+//! | varying-spin-exact-micromath | `Elliptic, Varying, Spin, ExactGrade` | [`VaryingContact`], Hertz, `Table` per step, [`Best`] (as without the feature) | 440 / 34248 | — | 2.6e-07 / 1.4e-05 / 1.5e-06 |
 //!
 //! Instructions include the rig's 8-instruction call floor; `f64` is soft float on the M4F.
 //! The [`Best`] rows' flash includes, for a fixed contact, its 2.8 KB (`f32`) coefficient
