@@ -129,6 +129,15 @@ impl<T: Real> Curvatures<T> {
     /// Errors: [`Error::NonFinite`] for any non-finite input; [`Error::CurvatureNotPositive`]
     /// if the bodies are not locally convex towards each other (P ≤ 0: no Hertz contact).
     pub fn from_bodies(a: Principal<T>, b: Principal<T>, omega: T) -> Result<Self, Error> {
+        // the same order of checks as before the per-step form existed: curvatures, then ω
+        for (k, name) in [
+            (a.k1, "body A k1"),
+            (a.k2, "body A k2"),
+            (b.k1, "body B k1"),
+            (b.k2, "body B k2"),
+        ] {
+            finite(k, name)?;
+        }
         let omega = finite(omega, "omega")?;
         let (s, c) = omega.sin_cos();
         Self::from_bodies_cos_sin(a, b, c, s)
