@@ -769,6 +769,12 @@ fn main() {
             "best_ramp_stiffness_bounds_the_maximisation, best_stiffness_is_largest_inside_the_ramp_and_the_ellipse, best_stable_step_is_conservative_and_tight, best_stable_step_edge_cases_are_total",
         ),
         (
+            "`best`'s per-step form (`Best::traction`, the flash table with e² interpolated: what `VaryingContact` calls) under the same ramp",
+            "δ → 0 as the per-contact form: it is the exact quartic inside the ellipse, and outside (within 1.4e-5 fN of exact) its stiffness stays below κ(e²) (measured ≤ 0.9992·κ on 20,000 random slips inside the ramp, e² at the table's nodes and between)".to_string(),
+            "the same `Friction::<T, Best>::stable_step` (κ = `ramp_stiffness`, a property of the quartic)",
+            "best_ramp_stiffness_bounds_the_per_step_form",
+        ),
+        (
             "Spin about the normal under the torque ramp (`Friction::<T, Simplified>`, `Friction::<T, Best>`)",
             format!(
                 "δ → 0 (torque stiffness κ_T·fN·a²/δ, largest with spin and slip together) — {s_spin} (chart `spin_step`)"

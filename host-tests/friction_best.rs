@@ -7,7 +7,9 @@
 use contensou::Real;
 use contensou::elliptic::Parameter;
 use contensou::friction::best::Branch;
-use contensou::friction::{Best, BestContact, Constants, FrictionLaw, SlipState, Traction, exact};
+use contensou::friction::{
+    Best, BestContact, BestSeries, Constants, FrictionLaw, SlipState, Traction, exact,
+};
 
 /// Error bound of issue 5 (fN for the force, fNa for the torque).
 const BOUND: f64 = 5e-4;
@@ -135,8 +137,21 @@ fn per_call_error_against_exact() {
         Box::new(move |s| Best::traction(&k, s).0)
     });
     report("Best f32", &e32);
+    for e in [&e64, &e32] {
+        assert!(e.force <= Best::ERROR.0 && e.torque <= Best::ERROR.1);
+    }
+    let e64 = max_error::<f64>(|k| {
+        let k = *k;
+        Box::new(move |s| BestSeries::traction(&k, s).0)
+    });
+    report("BestSeries f64", &e64);
+    let e32 = max_error::<f32>(|k| {
+        let k = *k;
+        Box::new(move |s| BestSeries::traction(&k, s).0)
+    });
+    report("BestSeries f32", &e32);
     assert!(e32.force <= BOUND && e32.torque <= BOUND);
-    assert!(e64.force <= Best::ERROR.0 && e64.torque <= Best::ERROR.1);
+    assert!(e64.force <= BestSeries::ERROR.0 && e64.torque <= BestSeries::ERROR.1);
 }
 
 /// splitmix64

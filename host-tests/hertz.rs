@@ -516,3 +516,97 @@ fn fitted_law_stated_errors() {
         assert!(w[0] <= 4e-5 && w[1] <= 6e-5 && w[2] <= 1.5e-5, "{w:?}");
     }
 }
+
+/// The per-step geometry `Curvatures::from_bodies_cos_sin` (no trigonometry, no f64) against
+/// `from_bodies` at the same angle (f64), in f32 against f64, and the major axis an
+/// eigenvector for P of the gap form; (cos, sin) need not be normalised.
+#[test]
+fn geometry_from_cos_sin_matches_from_bodies() {
+    let mut seed = 7u64;
+    let mut unit = || {
+        seed = seed
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        (seed >> 11) as f64 / (1u64 << 53) as f64
+    };
+    let mut worst = (0.0f64, 0.0f64, 0.0f64);
+    let mut n = 0;
+    for _ in 0..20_000 {
+        let k = |u: f64| 10f64.powf(4.0 * u - 1.0);
+        let ka = [k(unit()), k(unit()) * if unit() < 0.2 { -0.3 } else { 1.0 }];
+        let kb = [k(unit()), if unit() < 0.1 { 0.0 } else { k(unit()) }];
+        let w = (unit() - 0.5) * 7.0;
+        let (a, b) = (
+            Principal {
+                k1: ka[0],
+                k2: ka[1],
+            },
+            Principal {
+                k1: kb[0],
+                k2: kb[1],
+            },
+        );
+        let scale = 0.5 + 3.0 * unit();
+        let c64 = Curvatures::from_bodies_cos_sin(a, b, scale * w.cos(), scale * w.sin());
+        let r64 = Curvatures::from_bodies(a, b, w);
+        let (c64, r64) = match (c64, r64) {
+            (Ok(c), Ok(r)) => (c, r),
+            (Err(e), Err(f)) => {
+                assert_eq!(e, f);
+                continue;
+            }
+            (c, r) => panic!("{c:?} vs {r:?}"),
+        };
+        n += 1;
+        assert!(rel(c64.p(), r64.p()) < 1e-9 && rel(c64.q(), r64.q()) < 1e-12);
+        let (ct, st) = c64.major_axis();
+        assert!((ct * ct + st * st - 1.0).abs() < 1e-14 && ct >= 0.0);
+        // eigenvector for P of the gap form (when the patch is not a circle)
+        let z = |x: f64, y: f64| {
+            let s = |k: [f64; 2], phi: f64| {
+                let (u, v) = (
+                    x * phi.cos() + y * phi.sin(),
+                    -x * phi.sin() + y * phi.cos(),
+                );
+                0.5 * (k[0] * u * u + k[1] * v * v)
+            };
+            s(ka, 0.0) + s(kb, w)
+        };
+        if rel(c64.p(), c64.q()) > 1e-6 {
+            worst.0 = worst.0.max(rel(z(ct, st), c64.p()) * c64.p() / c64.q());
+        }
+        let c32 = Curvatures::<f32>::from_bodies_cos_sin(
+            Principal {
+                k1: ka[0] as f32,
+                k2: ka[1] as f32,
+            },
+            Principal {
+                k1: kb[0] as f32,
+                k2: kb[1] as f32,
+            },
+            (scale * w.cos()) as f32,
+            (scale * w.sin()) as f32,
+        );
+        if let Ok(c32) = c32 {
+            if c64.p() / c64.q() > 1e-3 {
+                worst.1 = worst.1.max(rel(f64::from(c32.ratio()), c64.ratio()));
+            }
+            worst.2 = worst.2.max(rel(f64::from(c32.q()), c64.q()));
+        }
+    }
+    println!(
+        "from_cos_sin: {n} contacts; eigen residual {:.1e} (of Q), f32 ratio {:.1e}, f32 Q {:.1e}",
+        worst.0, worst.1, worst.2
+    );
+    assert!(n > 10_000);
+    assert!(worst.0 < 1e-12 && worst.1 < 1e-3 && worst.2 < 1e-5);
+    assert!(
+        Curvatures::from_bodies_cos_sin(
+            Principal::<f32>::sphere(0.01).unwrap(),
+            Principal::plane(),
+            0.0,
+            0.0
+        )
+        .is_err()
+    );
+}

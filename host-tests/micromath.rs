@@ -12,7 +12,7 @@
 
 use contensou::elliptic::{Integrals, Method, Parameter, Theta, ThetaMicromath};
 use contensou::friction::{
-    Best, BestMicromath, Constants, Coulomb, CoulombMicromath, Ellipsoid, EllipsoidMicromath,
+    BestMicromath, BestSeries, Constants, Coulomb, CoulombMicromath, Ellipsoid, EllipsoidMicromath,
     FrictionLaw, Simplified, SimplifiedMicromath, SlipState, Traction, exact,
 };
 use contensou::geometry::Curvatures;
@@ -406,7 +406,7 @@ fn friction_laws() {
     assert!(dev.0 < 0.0573 && dev.1 < 0.022);
     assert!(m.force.0 < 0.22 && m.torque.0 < 0.125 && m.max_force <= 1.0);
     assert!(m.force.1 < 0.045 && m.torque.1 < 9e-3, "ellipsoid median");
-    let (m, dev) = compare::<Best, BestMicromath>(&set);
+    let (m, dev) = compare::<BestSeries, BestMicromath>(&set);
     assert!(dev.0 < 3e-6 && dev.1 < 3e-7);
     assert!(m.force.0 < 3e-6 && m.torque.0 < 1e-6, "best");
 }

@@ -14,12 +14,9 @@ use contensou::select::*;
 
 include!("select_set.rs");
 
-/// The law of a varying exact-grade `f32` contact: `Best`, or with the feature `micromath`
-/// its per-call twin with micromath's `ln`.
-#[cfg(not(feature = "micromath"))]
+/// The law of a varying exact-grade `f32` contact: `Best` (its per-step flash-table form),
+/// with or without the feature `micromath`.
 type VaryingBestF32 = Best;
-#[cfg(feature = "micromath")]
-type VaryingBestF32 = contensou::friction::BestMicromath;
 
 /// `ContactOf<S, D>` is `C` and `LawOf<S>` is `L`.
 fn resolves<S: Select + 'static, D: Damping<S::Real> + 'static, C: 'static, L: 'static>()
@@ -153,8 +150,8 @@ fn rough_without_a_twin_is_coarse() {
     }
 }
 
-/// Without the feature a varying exact-grade `f32` contact takes `Best`; with it,
-/// `BestMicromath` (`f64` keeps `Best` either way, a fixed contact keeps `Best`).
+/// A varying exact-grade contact takes `Best` with or without the feature `micromath` (its
+/// per-step form calls no `ln`), as a fixed one does.
 #[test]
 fn varying_exact_law_by_feature() {
     type U = Undamped;

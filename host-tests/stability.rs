@@ -904,3 +904,63 @@ fn stable_steps_have_one_signature_and_come_from_a_contact() {
     );
     assert!(contact.stable_step(2.0, 3.0, e) < 2.785 * 2.0 * 1e-4 / (0.3 * 3.0 * 2.52));
 }
+
+// ---- best's per-step form (flash table, what VaryingContact calls) under the ramp ----------
+
+/// The stable explicit step of `Friction::<T, Best>` (κ(e²) = `ramp_stiffness`, derived on the
+/// exact quartic) holds for the per-step form too: inside the ramp (S < δ) the largest
+/// eigenvalue of the translational Jacobian −(δ/fN)·∂F/∂v_P (complex pairs by |λ|²/Re λ), by
+/// central differences at random slip directions with the IC inside and outside the ellipse,
+/// never exceeds κ.
+#[test]
+fn best_ramp_stiffness_bounds_the_per_step_form() {
+    use contensou::friction::Slip;
+    let mut seed = 77u64;
+    let mut unit = || {
+        seed = seed
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        (seed >> 11) as f64 / (1u64 << 53) as f64
+    };
+    // the per-step table's nodes in s = m₁^¼ (tools/gen_best_varying_table.py: 20 cells)
+    let node_e2 = |x: f64| {
+        let s = 0.1f64.sqrt() + (1.0 - 0.1f64.sqrt()) * x / 20.0;
+        (1.0 - s.powi(4)).max(0.0)
+    };
+    let law = Friction::<f64, Best>::new(1.0, 1.0).unwrap();
+    let mut worst = 0.0f64;
+    for i in 0..20_000 {
+        let e2 = if i % 4 == 0 {
+            node_e2((unit() * 20.0).round())
+        } else {
+            0.99 * unit()
+        };
+        let k = Constants::from_parameter(Parameter::new(e2).unwrap());
+        let kappa = ramp_stiffness(&k);
+        // a direction (vx, vy, aω) with S = |vx| + |vy| + |aω| = 0.5 (inside the ramp)
+        let (a, b, c) = (unit() - 0.5, unit() - 0.5, unit() * 0.5 + 1e-3);
+        let s = 0.5 / (a.abs() + b.abs() + c);
+        let (vx, vy, w) = (a * s, b * s, c * s);
+        let f = |vx: f64, vy: f64| {
+            let t = law.tangential(&k, 1.0, 1.0, Slip::new(vx, vy, w).unwrap());
+            (t.fx, t.fy)
+        };
+        let h = 1e-7;
+        let (px, mx) = (f(vx + h, vy), f(vx - h, vy));
+        let (py, my) = (f(vx, vy + h), f(vx, vy - h));
+        let j = [
+            [-(px.0 - mx.0) / (2.0 * h), -(py.0 - my.0) / (2.0 * h)],
+            [-(px.1 - mx.1) / (2.0 * h), -(py.1 - my.1) / (2.0 * h)],
+        ];
+        let (tr, det) = (j[0][0] + j[1][1], j[0][0] * j[1][1] - j[0][1] * j[1][0]);
+        let disc = 0.25 * tr * tr - det;
+        let lam = if disc >= 0.0 {
+            0.5 * tr + disc.sqrt()
+        } else {
+            det / (0.5 * tr)
+        };
+        worst = worst.max(lam / kappa);
+    }
+    println!("largest per-step stiffness / κ(e²): {worst:.4}");
+    assert!(worst <= 1.0 + 1e-4, "{worst}");
+}

@@ -20,7 +20,9 @@
 //!
 //! # Cost
 //!
-//! Construction only: one `hypot`, one `atan2`, one `sin_cos` and a division.
+//! [`Curvatures::from_bodies`]: one `sin_cos`, then [`Curvatures::from_bodies_cos_sin`]: four
+//! square roots at most, three or four divisions, no trigonometric function and nothing in `f64`
+//! (per-step use in `f32` on the Cortex-M4F).
 
 use crate::error::finite;
 use crate::{Error, Real};
@@ -120,7 +122,9 @@ pub enum Race {
 pub struct Curvatures<T> {
     p: T,
     q: T,
-    major_angle: T,
+    /// cos, sin of the angle to the major axis (angle in (−π/2, π/2], so cos ≥ 0)
+    major_cos: T,
+    major_sin: T,
 }
 
 impl<T: Real> Curvatures<T> {
@@ -130,13 +134,18 @@ impl<T: Real> Curvatures<T> {
     /// Errors: [`Error::NonFinite`]; [`Error::CurvatureNotPositive`] if min(p, q) ≤ 0.
     pub fn new(p: T, q: T) -> Result<Self, Error> {
         let (p, q) = (finite(p, "P")?, finite(q, "Q")?);
-        let (p, q, major_angle) = if p <= q {
-            (p, q, T::ZERO)
+        let (p, q, major_cos, major_sin) = if p <= q {
+            (p, q, T::ONE, T::ZERO)
         } else {
-            (q, p, T::FRAC_PI_2)
+            (q, p, T::ZERO, T::ONE)
         };
         if p > T::ZERO {
-            Ok(Curvatures { p, q, major_angle })
+            Ok(Curvatures {
+                p,
+                q,
+                major_cos,
+                major_sin,
+            })
         } else {
             Err(Error::CurvatureNotPositive)
         }
@@ -162,40 +171,98 @@ impl<T: Real> Curvatures<T> {
     /// Errors: [`Error::NonFinite`] for any non-finite input; [`Error::CurvatureNotPositive`]
     /// if the bodies are not locally convex towards each other (P ≤ 0: no Hertz contact).
     pub fn from_bodies(a: Principal<T>, b: Principal<T>, omega: T) -> Result<Self, Error> {
-        let (ka1, ka2) = (finite(a.k1, "body A k1")?, finite(a.k2, "body A k2")?);
-        let (kb1, kb2) = (finite(b.k1, "body B k1")?, finite(b.k2, "body B k2")?);
+        // the same order of checks as before the per-step form existed: curvatures, then ω
+        for (k, name) in [
+            (a.k1, "body A k1"),
+            (a.k2, "body A k2"),
+            (b.k1, "body B k1"),
+            (b.k2, "body B k2"),
+        ] {
+            finite(k, name)?;
+        }
         let omega = finite(omega, "omega")?;
         let (s, c) = omega.sin_cos();
+        Self::from_bodies_cos_sin(a, b, c, s)
+    }
+
+    /// [`Curvatures::from_bodies`] with the angle ω from body A's first principal direction to
+    /// body B's given as (cos ω, sin ω) — the per-step form for a geometry that changes every
+    /// step: no trigonometric function, no `atan`, no `hypot`, nothing in `f64` (in `f32` on
+    /// the Cortex-M4F: square roots as `vsqrt.f32`, three divisions; the flash probe
+    /// `wrench,table_each_step-best-from-bodies,f32` fails CI if any `f64` soft-float routine
+    /// is linked). (cos ω, sin ω) need not be normalised: any non-zero multiple gives the same
+    /// result. The major-axis direction is kept as its cosine and sine
+    /// ([`Curvatures::major_axis`]); [`Curvatures::major_angle`] computes the angle on demand.
+    ///
+    /// Same formula as [`Curvatures::from_bodies`]; the eigen-direction by half-angle formulas
+    /// from cos 2θ = −(M₁₁ − M₂₂)/(2r), sin 2θ = −M₁₂/r, r = √((M₁₁ − M₂₂)²/4 + M₁₂²) (r
+    /// scaled by max(|M₁₁ − M₂₂|/2, |M₁₂|) so that it cannot overflow).
+    ///
+    /// Errors: [`Error::NonFinite`] for any non-finite input; [`Error::LengthNotPositive`] if
+    /// (cos ω, sin ω) = (0, 0) (or its square underflows); [`Error::CurvatureNotPositive`] if
+    /// the bodies are not locally convex towards each other (P ≤ 0: no Hertz contact).
+    pub fn from_bodies_cos_sin(
+        a: Principal<T>,
+        b: Principal<T>,
+        cos_omega: T,
+        sin_omega: T,
+    ) -> Result<Self, Error> {
+        let (ka1, ka2) = (finite(a.k1, "body A k1")?, finite(a.k2, "body A k2")?);
+        let (kb1, kb2) = (finite(b.k1, "body B k1")?, finite(b.k2, "body B k2")?);
+        let (c, s) = (
+            finite(cos_omega, "cos omega")?,
+            finite(sin_omega, "sin omega")?,
+        );
+        let n2 = c * c + s * s;
+        if !positive(n2) || !n2.is_finite() {
+            return Err(Error::LengthNotPositive);
+        }
         let half = T::HALF;
-        let mxx = half * (ka1 + kb1 * c * c + kb2 * s * s);
-        let myy = half * (ka2 + kb1 * s * s + kb2 * c * c);
-        let mxy = half * (kb1 - kb2) * s * c;
+        // ½·(c², s², sc)/(c² + s²): the rotation's entries for a normalised direction
+        let hn = half / n2;
+        let (cc, ss, sc) = (hn * c * c, hn * s * s, hn * s * c);
+        let mxx = half * ka1 + kb1 * cc + kb2 * ss;
+        let myy = half * ka2 + kb1 * ss + kb2 * cc;
+        let mxy = (kb1 - kb2) * sc;
         let d = half * (mxx - myy);
-        let r = d.hypot(mxy);
+        let big = d.abs().max(mxy.abs());
+        let (dn, mn) = if big > T::ZERO {
+            (d / big, mxy / big)
+        } else {
+            (T::ZERO, T::ZERO)
+        };
+        // √(dn² + mn²) ∈ [1, √2] (or 0 for a circle): r = big·rn without overflow
+        let rn = (dn * dn + mn * mn).sqrt();
+        let r = big * rn;
         let q = half * (mxx + myy) + r;
-        if !positive(q) {
+        if !positive(q) || !q.is_finite() {
             return Err(Error::CurvatureNotPositive);
         }
         let p = (mxx * myy - mxy * mxy) / q;
         if !positive(p) || !p.is_finite() {
             return Err(Error::CurvatureNotPositive);
         }
-        // Eigenvector of the larger eigenvalue Q at φ = ½·atan2(2M₁₂, M₁₁ − M₂₂); the major
-        // axis (eigenvalue P) is perpendicular to it. A circle (r = 0) reports 0.
-        let major_angle = if r > T::ZERO {
-            let phi = half * mxy.atan2(d);
-            if phi > T::ZERO {
-                phi - T::FRAC_PI_2
+        // The major axis θ ∈ (−π/2, π/2] (eigenvector of P, perpendicular to Q's):
+        // cos 2θ = −dn/rn, sin 2θ = −mn/rn. A circle (r = 0) reports θ = 0.
+        let (major_cos, major_sin) = if rn > T::ZERO {
+            if dn <= T::ZERO {
+                // cos θ = √((1 + cos 2θ)/2) ≥ √½: no cancellation
+                let ct = (half * (rn - dn) / rn).sqrt();
+                (ct, -mn / (T::TWO * rn * ct))
             } else {
-                phi + T::FRAC_PI_2
+                // |sin θ| = √((1 − cos 2θ)/2) ≥ √½; the sign of sin 2θ (θ = π/2 if M₁₂ = 0)
+                let st = (half * (rn + dn) / rn).sqrt();
+                let st = if mn > T::ZERO { -st } else { st };
+                (-mn / (T::TWO * rn * st), st)
             }
         } else {
-            T::ZERO
+            (T::ONE, T::ZERO)
         };
         Ok(Curvatures {
             p: p.min(q),
             q,
-            major_angle,
+            major_cos,
+            major_sin,
         })
     }
 
@@ -287,9 +354,18 @@ impl<T: Real> Curvatures<T> {
 
     /// Angle (rad, in (−π/2, π/2]) from body A's first principal direction (or the frame of
     /// [`Curvatures::new`]) to the major axis x of the contact frame. 0 for a circle.
-    #[inline(always)]
+    /// Computed from [`Curvatures::major_axis`] (one `atan2`): call it at construction
+    /// time, not per step; per step use the cosine and sine.
     pub fn major_angle(&self) -> T {
-        self.major_angle
+        self.major_sin.atan2(self.major_cos)
+    }
+
+    /// (cos θ, sin θ) of the angle θ ∈ (−π/2, π/2] of [`Curvatures::major_angle`]: the major
+    /// axis x of the contact frame in body A's principal frame (or the frame of
+    /// [`Curvatures::new`]); cos θ ≥ 0. (1, 0) for a circle.
+    #[inline(always)]
+    pub fn major_axis(&self) -> (T, T) {
+        (self.major_cos, self.major_sin)
     }
 
     /// Gaussian radius R_e = 1/(2√(PQ)) (m): the radius of the sphere-on-plane contact with

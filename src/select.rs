@@ -73,12 +73,12 @@
 //!     budget selects it; build `Contact<_, _, _, Simplified>` directly to reproduce the paper.
 //!     The ellipsoidal law ignores δ (Coulomb's sign law at ω = 0).
 //!   - [`ExactGrade`] (≤ 5e-4 fN, ≤ 5e-4 fNa) → [`Best`] (measured 5.2e-5 fN / 4.1e-6 fNa in
-//!     the per-contact form a [`Fixed`] contact precomputes, 2.0e-6 / 8.7e-7 per call for
-//!     [`Varying`]). With the feature `micromath` a [`Varying`] `f32` contact takes
-//!     `BestMicromath` (the per-call form with micromath's `ln`: 2.8e-6 fN / 7.0e-7 fNa in the
-//!     scene, 1,539 instructions per step against 1,550). A [`Fixed`] contact keeps [`Best`]:
-//!     its per-contact [`crate::friction::BestContact`] calls no `ln` and is far cheaper than
-//!     any per-call form.
+//!     the per-contact form a [`Fixed`] contact precomputes, 1.4e-5 fN / 1.9e-6 fNa in the
+//!     per-step flash-table form a [`Varying`] contact calls: 521 M4F instructions per `f32`
+//!     wrench on average, 750 on the worst input an input search found, against 1,950 / 3,310
+//!     for the per-call series it replaced). The per-step form calls no `ln`, so no micromath
+//!     twin pays there any more: with the feature `micromath` a [`Varying`] `f32` contact keeps
+//!     [`Best`] too (`BestMicromath`, the series with micromath's `ln`, measured 1,539 per step).
 //!
 //! The micromath twins are used exactly where the budget admits their measured error *and*
 //! they were measured cheaper in the scene (`bench-results/micromath.md` has each twin's
@@ -110,17 +110,18 @@
 //! | ball-race-spin-exact | `Elliptic, Fixed, Spin, ExactGrade` | [`Contact`], Hertz, `Table` once, [`Best`] | 182 / 14700 | 8757 / 29908 | 1.7e-07 / 4.9e-05 / 3.4e-06 |
 //! | ball-race-nospin | `Elliptic, Fixed, NoSpin, _` | [`Contact`], Hertz, `Table` once, [`Coulomb`] | 107 / 3868 | 3063 / 11904 | 1.7e-07 / 1.9e-07 / 0 |
 //! | varying-spin-coarse | `Elliptic, Varying, Spin, Coarse` | [`VaryingContact`], Hertz, `Table` per step, [`Ellipsoid`] | 232 / 3964 | 9422 / 11688 | 2.6e-07 / 2.2e-01 / 1.3e-01 |
-//! | varying-spin-exact | `Elliptic, Varying, Spin, ExactGrade` | [`VaryingContact`], Hertz, `Table` per step, [`Best`] | 1550 / 12264 | 98867 / 25452 | 2.6e-07 / 2.1e-06 / 6.4e-07 |
+//! | varying-spin-exact | `Elliptic, Varying, Spin, ExactGrade` | [`VaryingContact`], Hertz, `Table` per step, [`Best`] (per-step flash table) | 440 / 34248 | 25156 / 44944 | 2.6e-07 / 1.4e-05 / 1.5e-06 |
 //! | varying-nospin | `Elliptic, Varying, NoSpin, _` | [`VaryingContact`], Hertz, `Table` per step, [`Coulomb`] | 242 / 4016 | 9268 / 11696 | 2.6e-07 / 2.9e-07 / 0 |
 //! | sphere-plane-spin-rough-micromath | `Circular, Fixed, Spin, Rough` | [`Contact`], `HertzMicromath` from `Hertz::circular`, [`Ellipsoid`] | 86 / 1104 | — | 6.1e-02 / 1.2e-01 / 1.3e-01 |
 //! | sphere-plane-nospin-rough-micromath | `Circular, Fixed, NoSpin, Rough` | [`Contact`], `HertzMicromath` from `Hertz::circular`, [`Coulomb`] | 106 / 1152 | — | 6.1e-02 / 6.1e-02 / 0 |
 //! | ball-race-spin-rough-micromath | `Elliptic, Fixed, Spin, Rough` | [`Contact`], `HertzMicromath`, `Table` once, [`Ellipsoid`] | 86 / 3828 | — | 6.1e-02 / 2.3e-01 / 1.6e-01 |
 //! | ball-race-nospin-rough-micromath | `Elliptic, Fixed, NoSpin, Rough` | [`Contact`], `HertzMicromath`, `Table` once, [`Coulomb`] | 106 / 3864 | — | 6.1e-02 / 6.1e-02 / 0 |
-//! | varying-spin-exact-micromath | `Elliptic, Varying, Spin, ExactGrade` | [`VaryingContact`], Hertz, `Table` per step, `BestMicromath` | 1539 / 12284 | — | 2.6e-07 / 2.8e-06 / 6.9e-07 |
+//! | varying-spin-exact-micromath | `Elliptic, Varying, Spin, ExactGrade` | [`VaryingContact`], Hertz, `Table` per step, [`Best`] (as without the feature) | 440 / 34248 | — | 2.6e-07 / 1.4e-05 / 1.5e-06 |
 //!
 //! Instructions include the rig's 8-instruction call floor; `f64` is soft float on the M4F.
-//! The [`Best`] rows' flash includes its 2.8 KB (`f32`) coefficient table and, for a fixed
-//! contact, [`crate::friction::BestContact::new`]. N is exact in closed form for the circle
+//! The [`Best`] rows' flash includes, for a fixed contact, its 2.8 KB (`f32`) coefficient
+//! table and [`crate::friction::BestContact::new`], for a varying one the 28.2 KB per-step
+//! table (e² interpolated) instead. N is exact in closed form for the circle
 //! (the `f32` figure is rounding); F and T_z of the `Coarse` rows are the ellipsoidal law's
 //! own error, worst at the thinnest patch (e² = 0.989–0.99). The `-micromath` rows are what
 //! an `f32` declaration resolves to with the feature `micromath`, where that differs (`f64`
@@ -205,9 +206,8 @@ pub struct Rough;
 pub struct Coarse;
 /// Budget: friction within 5e-4 fN in force and 5e-4 fNa in torque ("exact-grade") → [`Best`]
 /// (measured 4.9e-5 fN / 3.5e-6 fNa; 161–182 M4F instructions per `f32` step of a fixed
-/// contact, 1,550 of a varying one; with the feature `micromath` a varying `f32` contact takes
-/// `BestMicromath`: 2.8e-6 fN / 7.0e-7 fNa, 1,539 instructions); N, a, b within
-/// [`NORMAL_BOUND`].
+/// contact; a varying one takes `Best`'s per-step flash-table form: 1.4e-5 fN / 1.9e-6 fNa,
+/// 521 instructions per wrench on the `wrench` set); N, a, b within [`NORMAL_BOUND`].
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct ExactGrade;
 
@@ -217,14 +217,15 @@ pub struct ExactGrade;
 pub trait Precision: Real + sealed::Sealed {
     /// [`Hertz`] with micromath's √h per step (`HertzMicromath<f32>`), or [`Hertz`].
     type FastHertz: NormalLaw<Self> + From<Hertz<Self>> + Copy + core::fmt::Debug + PartialEq;
-    /// [`Best`]'s per-call form with micromath's `ln` (`BestMicromath`), or [`Best`].
+    /// The spin law of a varying exact-grade contact: [`Best`] (its per-step flash-table form
+    /// calls no `ln`, so `BestMicromath`, the series with micromath's `ln`, no longer pays).
     type FastBest: FrictionLaw;
 }
 
 #[cfg(feature = "micromath")]
 impl Precision for f32 {
     type FastHertz = crate::normal::HertzMicromath<f32>;
-    type FastBest = crate::friction::BestMicromath;
+    type FastBest = Best;
 }
 
 #[cfg(not(feature = "micromath"))]

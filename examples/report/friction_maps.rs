@@ -61,12 +61,42 @@ pub fn exact_grid() -> Vec<Vec<Option<Traction<f64>>>> {
 pub fn maps<L: FrictionLaw>(
     dir: &Path,
     exact: &[Vec<Option<Traction<f64>>>],
+) -> Result<Maps, Box<dyn std::error::Error>>
+where
+    L::Prepared<f64>: 'static,
+{
+    maps_of(dir, exact, L::NAME, |k| {
+        let p = L::prepare(k);
+        Box::new(move |s| L::traction_prepared(&p, s).0)
+    })
+}
+
+/// The maps of `best`'s per-step form (`Best::traction`, the flash table with e² interpolated:
+/// what `VaryingContact` calls), named `best-varying`.
+pub fn maps_per_step(
+    dir: &Path,
+    exact: &[Vec<Option<Traction<f64>>>],
+) -> Result<Maps, Box<dyn std::error::Error>> {
+    maps_of(dir, exact, "best-varying", |k| {
+        let k = *k;
+        Box::new(move |s| Best::traction(&k, s).0)
+    })
+}
+
+type Law = Box<dyn Fn(&SlipState<f64>) -> Traction<f64>>;
+
+/// Force and torque error maps of the law `build` makes per e² (f64): two PNGs.
+fn maps_of(
+    dir: &Path,
+    exact: &[Vec<Option<Traction<f64>>>],
+    name: &'static str,
+    build: impl Fn(&Constants<f64>) -> Law,
 ) -> Result<Maps, Box<dyn std::error::Error>> {
     let mut force = Vec::new();
     let mut torque = Vec::new();
     let (mut fmax, mut tmax) = (0.0f64, 0.0f64);
     for (&e2, want) in MAP_E2.iter().zip(exact) {
-        let p = L::prepare(&constants(e2));
+        let law = build(&constants(e2));
         let mut fc = Vec::new();
         let mut tc = Vec::new();
         for ((x0, x1, y0, y1), want) in cells().into_iter().zip(want) {
@@ -74,7 +104,7 @@ pub fn maps<L: FrictionLaw>(
             else {
                 continue;
             };
-            let (ef, et) = traction_error(&L::traction_prepared(&p, &s).0, w);
+            let (ef, et) = traction_error(&law(&s), w);
             fmax = fmax.max(ef);
             tmax = tmax.max(et);
             fc.push((x0, x1, y0, y1, ef));
@@ -100,16 +130,13 @@ pub fn maps<L: FrictionLaw>(
         ("force", "|ΔF|/(fN)", &force),
         ("torque", "|ΔT_z|/(fNa)", &torque),
     ] {
-        let name = format!("friction-map-{}-{what}.png", L::NAME);
-        let title = format!(
-            "{}: {what} error against the exact integrals (f64)",
-            L::NAME
-        );
-        plot::heatmaps(&dir.join(&name), &title, x, y, unit, panels)?;
-        files.push(name);
+        let file = format!("friction-map-{name}-{what}.png");
+        let title = format!("{name}: {what} error against the exact integrals (f64)");
+        plot::heatmaps(&dir.join(&file), &title, x, y, unit, panels)?;
+        files.push(file);
     }
     Ok(Maps {
-        law: L::NAME,
+        law: name,
         files,
         max_force: fmax,
         max_torque: tmax,
@@ -191,6 +218,7 @@ pub fn all_maps(dir: &Path) -> Result<Vec<Maps>, Box<dyn std::error::Error>> {
     let exact = exact_grid();
     Ok(vec![
         maps::<Best>(dir, &exact)?,
+        maps_per_step(dir, &exact)?,
         maps::<Simplified>(dir, &exact)?,
         maps::<Pade>(dir, &exact)?,
         maps::<Ellipsoid>(dir, &exact)?,

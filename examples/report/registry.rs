@@ -79,7 +79,8 @@ pub const FRICTION: Section = Section {
           integrals; e² from 0 to 1 − 1.5e-12, u from 0 to ∞): |ΔF| = |(ΔF_x, ΔF_y)| in fN and |ΔT_z| \
           in fNa (ΔF, ΔT_z in the tables), over e² ≤ 0.99 (the range `best` is fitted on; the chart) \
           and over every row (e² up to 1 − 1.5e-12). Laws in their per-contact form (`prepare` once per e²); `best-varying` is \
-          `Best` re-deriving its coefficients every call. f32 skips the rows whose e² rounds \
+          `Best`'s per-step form (its coefficients from the flash table with e² interpolated, \
+          every call: what `VaryingContact` calls). f32 skips the rows whose e² rounds \
           to 1 in f32 (outside its domain). `exact` is the library's reference \
           quadrature, computed in f64 for both precisions (closed form inside the ellipse, \
           64–192-node Gauss–Legendre outside: a reference path, not for the hot path)",

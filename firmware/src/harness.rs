@@ -80,4 +80,19 @@ impl Runner {
             total
         );
     }
+
+    /// The most expensive input of `inputs` for `f` (per-call instructions, overhead
+    /// subtracted) and its count: one step of an input search (call it per chunk of candidates,
+    /// keep the largest, then [`Runner::bench`] it alone to print its row).
+    #[allow(dead_code)] // the main firmware only (the `scenes` binary shares this file)
+    pub fn costliest<I: Copy, O>(&self, inputs: &[I], f: fn(I) -> O) -> Option<(I, u32)> {
+        let mut worst: Option<(I, u32)> = None;
+        for &x in inputs {
+            let (_, _, n) = measure(f, &[x], self.overhead);
+            if worst.is_none_or(|(_, w)| n > w) {
+                worst = Some((x, n));
+            }
+        }
+        worst
+    }
 }

@@ -21,7 +21,7 @@ use contensou::select::Precision;
 use contensou::contact::{Contact, VaryingContact};
 use contensou::elliptic::{self, Agm, Method, Parameter, Theta, ThetaMicromath};
 use contensou::friction::{
-    self, Best, BestMicromath, Constants, Coulomb, CoulombMicromath, Ellipsoid, EllipsoidMicromath,
+    self, Best, BestMicromath, BestSeries, Constants, Coulomb, CoulombMicromath, Ellipsoid, EllipsoidMicromath,
     Exact, Explicit, Friction, FrictionLaw, Pade, Simplified, SimplifiedMicromath, Slip, SlipState,
 };
 use contensou::geometry::{Curvatures, Principal, Race};
@@ -135,6 +135,7 @@ law_probes! {
     Coulomb: probe_tangential_coulomb, probe_core_coulomb, probe_contact_wrench_coulomb, probe_varying_wrench_coulomb;
     Exact: probe_tangential_exact, probe_core_exact, probe_contact_wrench_exact, probe_varying_wrench_exact;
     Best: probe_tangential_best, probe_core_best, probe_contact_wrench_best, probe_varying_wrench_best;
+    BestSeries: probe_tangential_best_series, probe_core_best_series, probe_contact_wrench_best_series, probe_varying_wrench_best_series;
 }
 
 /// The rest of the API, one probe per entry point.
@@ -159,6 +160,10 @@ mod api {
         }
         fn probe_curvatures_from_bodies<T>(a1, a2, b1, b2, om) {
             Curvatures::from_bodies(Principal { k1: a1, k2: a2 }, Principal { k1: b1, k2: b2 }, om)
+        }
+        fn probe_curvatures_from_bodies_cos_sin<T>(a1, a2, b1, b2, c, sn) {
+            Curvatures::from_bodies_cos_sin(Principal { k1: a1, k2: a2 }, Principal { k1: b1, k2: b2 }, c, sn)
+                .map(|c| (c.major_axis(), c.major_angle()))
         }
         fn probe_curvatures_sphere_plane<T>(r) { Curvatures::sphere_plane(r) }
         fn probe_curvatures_sphere_sphere<T>(ra, rb) { Curvatures::sphere_sphere(ra, rb) }

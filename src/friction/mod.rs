@@ -40,7 +40,7 @@ pub mod simplified;
 pub mod slip;
 mod spin_step;
 
-pub use best::{Best, BestContact};
+pub use best::{Best, BestContact, BestSeries};
 pub use constants::Constants;
 pub use coulomb::Coulomb;
 pub use ellipsoid::Ellipsoid;

@@ -26,7 +26,7 @@ use contensou::elliptic::{
     Agm, Integrals, Method, Parameter, Table as EllTable, Theta, ThetaMicromath,
 };
 use contensou::friction::*;
-use contensou::geometry::Curvatures;
+use contensou::geometry::{Curvatures, Principal};
 use contensou::math::{Backend, Micromath};
 use contensou::normal::{Fitted, Hertz, HertzMicromath, Modulus, NormalLaw, Undamped, Volumetric};
 use contensou::scenes::integrate::{rk4, rk4_step};
@@ -174,6 +174,28 @@ fn varying<T: Real, L: FrictionLaw>() {
     ));
     bb(c.wrench(&curvatures(), t(1e-6), T::ZERO, slip()));
 }
+/// The per-step geometry (two bodies' curvatures, the angle as cos/sin) and the varying
+/// wrench with `Best`, all `f32`: tools/flash-bench.sh fails if this links `f64` soft float.
+fn varying_from_bodies() {
+    let c = bb(VaryingContact::new(
+        estar::<f32>(),
+        Undamped,
+        friction::<f32, Best>(),
+    ));
+    let (a, b) = bb((
+        Principal {
+            k1: t(38.2),
+            k2: t(-151.5),
+        },
+        Principal {
+            k1: t(157.5),
+            k2: t(125.0),
+        },
+    ));
+    if let Ok(curv) = Curvatures::from_bodies_cos_sin(a, b, bb(t(0.8)), bb(t(0.6))) {
+        bb(c.wrench(&curv, t(1e-6), 0.0, slip()));
+    }
+}
 fn tippe_top(steps: usize) {
     let top: TippeTop<f32, Simplified> = ok(TippeTop::new(&Params::paper(), friction()));
     let y = top.initial_state(t(0.1), t(180.0));
@@ -286,6 +308,8 @@ probes! {
     "wrench,fixed-best,f64" => fixed::<f64, Best>();
     "wrench,table_each_step-best,f32" => varying::<f32, Best>();
     "wrench,table_each_step-best,f64" => varying::<f64, Best>();
+    "wrench,table_each_step-best-worst,f32" => varying::<f32, Best>();
+    "wrench,table_each_step-best-from-bodies,f32" => varying_from_bodies();
     "scene,tippe_top_step,f32" => tippe_top(1);
     "scene,tippe_top_step_two_contacts,f32" => tippe_top(1);
     "scene,tippe_top_10ms,f32" => tippe_top(1_000);

@@ -7,7 +7,7 @@ use std::process::ExitCode;
 use contensou::Real;
 use contensou::elliptic::Parameter;
 use contensou::friction::{
-    Best, Constants, Coulomb, Ellipsoid, Exact, Friction, FrictionLaw, Pade, Simplified, SlipState,
+    Best, BestSeries, Constants, Coulomb, Ellipsoid, Exact, Friction, FrictionLaw, Pade, Simplified, SlipState,
     Traction,
 };
 
@@ -24,8 +24,13 @@ pub const MODELS: &[Model] = &[
     },
     Model {
         name: "best-varying",
-        about: "best, per-call form (nothing precomputed: the shape varies every call)",
+        about: "best, per-step form (one flash table, e2 interpolated: the shape varies every call)",
         run: per_call::<Best>,
+    },
+    Model {
+        name: "best-series",
+        about: "best, the per-call fitted series (the per-step form's predecessor and fallback)",
+        run: per_call::<BestSeries>,
     },
     Model {
         name: "simplified",

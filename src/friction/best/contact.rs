@@ -1,0 +1,99 @@
+//! [`BestContact`]: `best` for one contact shape, its series interpolated once into cubic
+//! pieces in z.
+
+use super::quartic::Quartic;
+use super::series::Series;
+use super::{Branch, assemble, bounded, confocal, inside};
+use crate::Real;
+use crate::friction::{Constants, SlipState, Traction, larger};
+use crate::math::Libm;
+
+/// Number of cubic pieces in z of [`BestContact`].
+const PIECES: usize = 8;
+
+/// The `best` law for one contact shape (e² fixed): the quartic's constants and the seven
+/// outside coefficients as 8 cubic pieces in z, built once by [`BestContact::new`]
+/// (see the [module docs](crate::friction::best)).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct BestContact<T> {
+    quartic: Quartic<T>,
+    m: T,
+    g1: T,
+    /// `pieces[i][j]`: cubic in r = 8z − i of coefficient j (monomial, r ∈ [0, 1]).
+    pieces: [[[T; 4]; 7]; PIECES],
+}
+
+impl<T: Real> BestContact<T> {
+    /// Measured max error against the exact integrals, e² ∈ [0, 0.99], all ψ, u ∈ [0, ∞]
+    /// (`f64`): (force in fN, torque in fNa). See `host-tests/friction_best.rs`.
+    pub const ERROR: (f64, f64) = (5.5e-5, 4.5e-6);
+
+    /// From the patch constants: sums the fitted series at this e² and interpolates them at
+    /// the Chebyshev–Lobatto nodes r ∈ {0, 1/4, 3/4, 1} of each of 8 pieces. Total.
+    pub fn new(k: &Constants<T>) -> Self {
+        let quartic = Quartic::new(k);
+        let gamma = k.m1().sqrt();
+        let series = Series::new::<Libm>(k, &quartic, gamma);
+        let mut pieces = [[[T::ZERO; 4]; 7]; PIECES];
+        let n = T::from_usize(PIECES);
+        let nodes = [0.0, 0.25, 0.75, 1.0];
+        // Inverse Vandermonde of the nodes: monomial coefficients from node values.
+        let inv: [[f64; 4]; 4] = [
+            [1.0, 0.0, 0.0, 0.0],
+            [-19.0 / 3.0, 8.0, -8.0 / 3.0, 1.0],
+            [32.0 / 3.0, -56.0 / 3.0, 40.0 / 3.0, -16.0 / 3.0],
+            [-16.0 / 3.0, 32.0 / 3.0, -32.0 / 3.0, 16.0 / 3.0],
+        ];
+        let half = series.at(T::HALF / n);
+        for (i, piece) in pieces.iter_mut().enumerate() {
+            let vals = nodes.map(|r| series.at((T::from_usize(i) + T::from_f64(r)) / n));
+            for (j, cubic) in piece.iter_mut().enumerate() {
+                // Coefficient j at the four nodes (`get` keeps the build provably panic-free).
+                let col = vals.map(|v| v.get(j).copied().unwrap_or(T::ZERO));
+                for (cp, row) in cubic.iter_mut().zip(inv.iter()) {
+                    *cp = row
+                        .iter()
+                        .zip(col.iter())
+                        .fold(T::ZERO, |acc, (&w, &v)| acc + T::from_f64(w) * v);
+                }
+                // exact at the left end, and at the right end up to one rounding of the sum
+                // (the inverse Vandermonde's entries up to 56/3 would amplify rounding).
+                let [c0, c1, c2, _] = *cubic;
+                cubic[0] = col[0];
+                cubic[3] = col[3] - c0 - c1 - c2;
+                if i == 0 {
+                    // At the ellipse the coefficients grow like z² (zero slope): keep it, so
+                    // the law has no √-like onset there. c₀ + c₂r² + c₃r³ through r = 1/2, 1.
+                    let half_j = half.get(j).copied().unwrap_or(T::ZERO);
+                    let (h, e) = (half_j - col[0], col[3] - col[0]);
+                    let eight = T::from_f64(8.0);
+                    cubic[1] = T::ZERO;
+                    cubic[3] = T::TWO * e - eight * h;
+                    cubic[2] = e - cubic[3];
+                }
+            }
+        }
+        BestContact {
+            quartic,
+            m: k.m(),
+            g1: T::ONE + gamma,
+            pieces,
+        }
+    }
+
+    /// The dimensionless traction (F/(fN), T_z/(fNa)) and the branch for a slip state.
+    /// Total: finite output for every state.
+    #[inline(always)]
+    pub fn traction(&self, s: &SlipState<T>) -> (Traction<T>, Branch) {
+        if let Some(r) = inside(&self.quartic, s) {
+            return r;
+        }
+        let (c, sn, tau, one_minus) = confocal(self.m, self.g1, s.x(), s.y(), s.w());
+        let zn = larger(one_minus, T::ZERO).sqrt() * T::from_usize(PIECES);
+        let i = zn.trunc_usize().min(PIECES - 1);
+        let r = zn - T::from_usize(i);
+        let piece = &self.pieces[i];
+        let co = piece.map(|p| p[0] + r * (p[1] + r * (p[2] + r * p[3])));
+        (bounded(assemble(c, sn, tau, &co)), Branch::Outside)
+    }
+}
