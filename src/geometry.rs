@@ -128,6 +128,21 @@ impl<T: Real> Curvatures<T> {
         let mxx = half * (ka1 + kb1 * c * c + kb2 * s * s);
         let myy = half * (ka2 + kb1 * s * s + kb2 * c * c);
         let mxy = half * (kb1 - kb2) * s * c;
+        Self::from_quadratic(mxx, myy, mxy)
+    }
+
+    /// From the gap's quadratic form z = M₁₁x² + 2M₁₂xy + M₂₂y² in some frame (x, y): P and Q
+    /// its eigenvalues, [`major_angle`](Self::major_angle) the angle from x to the eigenvector
+    /// of P (module docs). For a body whose curvature matrix at the contact is known directly
+    /// (e.g. an ellipsoid on a plane, [`crate::scenes`]). Cost: one `hypot`, one `atan2`, one
+    /// division.
+    ///
+    /// Errors: [`Error::NonFinite`]; [`Error::CurvatureNotPositive`] if the form is not
+    /// positive definite (P ≤ 0: no Hertz contact).
+    pub fn from_quadratic(mxx: T, myy: T, mxy: T) -> Result<Self, Error> {
+        let (mxx, myy) = (finite(mxx, "M11")?, finite(myy, "M22")?);
+        let mxy = finite(mxy, "M12")?;
+        let half = T::HALF;
         let d = half * (mxx - myy);
         let r = d.hypot(mxy);
         let q = half * (mxx + myy) + r;
