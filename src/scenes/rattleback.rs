@@ -199,7 +199,7 @@ impl<T: Real, L: FrictionLaw> Rattleback<T, L> {
         let mut inv_axes2 = [T::ZERO; 3];
         for ((a2, inv), a) in axes2.iter_mut().zip(inv_axes2.iter_mut()).zip(p.semi_axes) {
             let a = crate::error::finite(a, "semi-axis")?;
-            if !(a > T::ZERO) {
+            if a <= T::ZERO {
                 return Err(Error::LengthNotPositive);
             }
             *a2 = a * a;
