@@ -33,9 +33,15 @@ const F: f64 = 0.3;
 const DELTA: f64 = 1e-3;
 const TILT_DEG: f64 = 0.5;
 const SPIN: f64 = 2.0;
-const H: f64 = 1e-4;
+/// RK4 step (s); `RATTLEBACK_H` overrides it (the step-size check in the README).
+fn step() -> f64 {
+    std::env::var("RATTLEBACK_H")
+        .ok()
+        .and_then(|h| h.parse().ok())
+        .unwrap_or(1e-4)
+}
 const T_END: f64 = 20.0;
-const SAMPLE: usize = 100; // steps: every 10 ms
+const SAMPLE: usize = 100; // steps of 0.1 ms: every 10 ms
 
 struct Run {
     law: &'static str,
@@ -84,10 +90,10 @@ fn run<L: FrictionLaw>(law: &'static str, direction: &'static str, spin0: f64) -
         &rb,
         0.0,
         y0,
-        H,
-        (T_END / H).round() as usize,
+        step(),
+        (T_END / step()).round() as usize,
         |i, t, y| {
-            if i % SAMPLE == 0 {
+            if i % ((SAMPLE as f64 * 1e-4 / step()).round() as usize).max(1) == 0 {
                 rows.push((t, rb.probe(y)));
             }
         },
@@ -121,8 +127,8 @@ fn main() {
     }
     let p = Params::<f64>::kane_levinson();
     println!(
-        "Kane–Levinson rattleback: δ = {:.5} rad, I = {:?} kg·m², E* = {:e} Pa, f = {F}, δ_v = {DELTA} m/s, ω₀ = ±{SPIN} rad/s, tilt {TILT_DEG}°, RK4 h = {H} s, T = {T_END} s",
-        p.skew, p.inertia, p.estar
+        "Kane–Levinson rattleback: δ = {:.5} rad, I = {:?} kg·m², E* = {:e} Pa, f = {F}, δ_v = {DELTA} m/s, ω₀ = ±{SPIN} rad/s, tilt {TILT_DEG}°, RK4 h = {} s, T = {T_END} s",
+        p.skew, p.inertia, p.estar, step()
     );
     let laws = [
         both::<Best>("best"),
