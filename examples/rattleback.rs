@@ -128,7 +128,10 @@ fn main() {
     let p = Params::<f64>::kane_levinson();
     println!(
         "Kane–Levinson rattleback: δ = {:.5} rad, I = {:?} kg·m², E* = {:e} Pa, f = {F}, δ_v = {DELTA} m/s, ω₀ = ±{SPIN} rad/s, tilt {TILT_DEG}°, RK4 h = {} s, T = {T_END} s",
-        p.skew, p.inertia, p.estar, step()
+        p.skew,
+        p.inertia,
+        p.estar,
+        step()
     );
     let laws = [
         both::<Best>("best"),

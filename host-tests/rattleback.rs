@@ -74,15 +74,31 @@ fn geometry_matches_the_independent_mpmath_reference() {
         let rel = |a: f64, b: f64| (a - b).abs() / b.abs();
         let arm = px.hypot(py).max(1e-3);
         assert!(rel(g.h, h) < 1e-9, "{line}: h {} vs {h}", g.h);
-        assert!((g.lowest.x - px).abs() / arm < 1e-9, "{line}: x {}", g.lowest.x);
-        assert!((g.lowest.y - py).abs() / arm < 1e-9, "{line}: y {}", g.lowest.y);
+        assert!(
+            (g.lowest.x - px).abs() / arm < 1e-9,
+            "{line}: x {}",
+            g.lowest.x
+        );
+        assert!(
+            (g.lowest.y - py).abs() / arm < 1e-9,
+            "{line}: y {}",
+            g.lowest.y
+        );
         assert_eq!((g.arm.x, g.arm.y, g.arm.z), (g.lowest.x, g.lowest.y, -zg));
         let c = g.curvatures;
         assert!(rel(c.p(), p) < 1e-9, "{line}: P {} vs {p}", c.p());
         assert!(rel(c.q(), q) < 1e-9, "{line}: Q {} vs {q}", c.q());
         let phi2 = 2.0 * c.major_angle();
-        assert!((phi2.cos() - c2).abs() < 1e-9, "{line}: cos 2φ {}", phi2.cos());
-        assert!((phi2.sin() - s2).abs() < 1e-9, "{line}: sin 2φ {}", phi2.sin());
+        assert!(
+            (phi2.cos() - c2).abs() < 1e-9,
+            "{line}: cos 2φ {}",
+            phi2.cos()
+        );
+        assert!(
+            (phi2.sin() - s2).abs() < 1e-9,
+            "{line}: sin 2φ {}",
+            phi2.sin()
+        );
         cases += 1;
     }
     assert_eq!(cases, 7);
@@ -98,12 +114,18 @@ fn coulomb_reverses_the_unstable_spin_only_and_energy_never_increases() {
     assert!(t.is_some_and(|t| (1.5..3.5).contains(&t)), "{t:?}");
     assert_energy_never_increases(&unstable);
     // Rolling, not sliding: the friction ratio stays below f.
-    let peak = unstable.iter().map(|r| r.1.friction_ratio).fold(0.0, f64::max);
+    let peak = unstable
+        .iter()
+        .map(|r| r.1.friction_ratio)
+        .fold(0.0, f64::max);
     assert!(peak < 0.95 * F, "{peak}");
 
     let steady = run::<Coulomb>(&p, 2.0, 4.0);
     assert!(reversal(&steady, 2.0).is_none());
-    assert!(steady.iter().all(|(_, p)| p.spin > 1.0), "the steady spin drops below 1 rad/s");
+    assert!(
+        steady.iter().all(|(_, p)| p.spin > 1.0),
+        "the steady spin drops below 1 rad/s"
+    );
     assert_energy_never_increases(&steady);
 }
 
@@ -114,7 +136,10 @@ fn sphere_like_body_without_skew_never_reverses() {
         let rows = run::<Coulomb>(&p, spin, 3.0);
         assert!(reversal(&rows, spin).is_none(), "ω₀ = {spin}");
         // The spin keeps its sign (it only decays, by rolling friction into rocking).
-        let min = rows.iter().map(|r| r.1.spin * spin.signum()).fold(f64::MAX, f64::min);
+        let min = rows
+            .iter()
+            .map(|r| r.1.spin * spin.signum())
+            .fold(f64::MAX, f64::min);
         assert!(min > 0.2 * spin.abs(), "ω₀ = {spin}: spin down to {min}");
         assert_energy_never_increases(&rows);
     }
@@ -133,11 +158,9 @@ fn contensou_drilling_torque_stalls_the_spin_without_reversal() {
 
 #[test]
 fn f32_rk4_step_stays_finite_and_on_the_floor() {
-    let rb = Rattleback::<f32, Best>::new(
-        &Params::kane_levinson(),
-        Friction::new(0.3, 1e-3).unwrap(),
-    )
-    .unwrap();
+    let rb =
+        Rattleback::<f32, Best>::new(&Params::kane_levinson(), Friction::new(0.3, 1e-3).unwrap())
+            .unwrap();
     let y0 = rb.initial_state(0.5f32.to_radians(), -2.0);
     let e0 = rb.probe(&y0).energy;
     let y = rk4(&rb, 0.0, y0, 1e-4, 2_000, |_, _, _| {});
@@ -145,4 +168,33 @@ fn f32_rk4_step_stays_finite_and_on_the_floor() {
     assert!(y.iter().all(|v| v.is_finite()));
     assert!(p.n > 5.0 && p.n < 15.0, "{}", p.n);
     assert!(p.energy <= e0 * (1.0 + 1e-4), "{} vs {e0}", p.energy);
+}
+
+#[test]
+fn from_quadratic_matches_from_bodies_and_rejects_indefinite_forms() {
+    use contensou::Error;
+    use contensou::geometry::{Curvatures, Principal};
+    // A plane (A) against body B with κ = (4, 1) turned by 0.3 rad: M = ½R diag(4, 1)Rᵀ.
+    let (s, c) = 0.3f64.sin_cos();
+    let (k1, k2) = (4.0, 1.0);
+    let m = (
+        0.5 * (k1 * c * c + k2 * s * s),
+        0.5 * (k1 * s * s + k2 * c * c),
+        0.5 * (k1 - k2) * s * c,
+    );
+    let q = Curvatures::from_quadratic(m.0, m.1, m.2).unwrap();
+    let b = Curvatures::from_bodies(Principal::plane(), Principal { k1, k2 }, 0.3).unwrap();
+    assert_eq!(q, b);
+    assert!((q.p() - 0.5).abs() < 1e-15 && (q.q() - 2.0).abs() < 1e-15);
+    // The major axis (curvature 1) is perpendicular to the stiff direction at 0.3 rad.
+    assert!((q.major_angle() - (0.3 - std::f64::consts::FRAC_PI_2)).abs() < 1e-15);
+    assert_eq!(
+        Curvatures::from_quadratic(1.0, -1.0, 0.0),
+        Err(Error::CurvatureNotPositive)
+    );
+    assert_eq!(
+        Curvatures::from_quadratic(1.0, 1.0, 1.0),
+        Err(Error::CurvatureNotPositive)
+    );
+    assert!(Curvatures::from_quadratic(f64::NAN, 1.0, 0.0).is_err());
 }

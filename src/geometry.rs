@@ -134,7 +134,7 @@ impl<T: Real> Curvatures<T> {
     /// From the gap's quadratic form z = M₁₁x² + 2M₁₂xy + M₂₂y² in some frame (x, y): P and Q
     /// its eigenvalues, [`major_angle`](Self::major_angle) the angle from x to the eigenvector
     /// of P (module docs). For a body whose curvature matrix at the contact is known directly
-    /// (e.g. an ellipsoid on a plane, [`crate::scenes`]). Cost: one `hypot`, one `atan2`, one
+    /// (e.g. an ellipsoid on a plane, `scenes::rattleback`). Cost: one `hypot`, one `atan2`, one
     /// division.
     ///
     /// Errors: [`Error::NonFinite`]; [`Error::CurvatureNotPositive`] if the form is not

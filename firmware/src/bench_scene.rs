@@ -75,7 +75,13 @@ pub fn run(r: &Runner) {
         tippe_top_step,
     );
 
-    r.bench("scene", "tippe_top_10ms", "f32", &[(&top, y0)], tippe_top_10ms);
+    r.bench(
+        "scene",
+        "tippe_top_10ms",
+        "f32",
+        &[(&top, y0)],
+        tippe_top_10ms,
+    );
 
     let celt = Celt::new(
         &rattleback::Params::kane_levinson(),
