@@ -6,6 +6,9 @@
 //! cargo run --release --features scenes --example rattleback -- DIR  # into DIR
 //! ```
 //!
+//! `RATTLEBACK_H` (s) and `RATTLEBACK_ESTAR` (Pa) override the step and E* (README: step and
+//! stiffness checks).
+//!
 //! Writes `rattleback_summary.csv` (`law,direction,reversal_s,stall_s,peak_rock_rad,
 //! final_spin,energy_start,energy_end`, empty fields when there is none) and one labelled PNG
 //! of ω·ẑ(t) per law (`rattleback_<law>.png`, both directions).
@@ -78,12 +81,18 @@ impl Run {
     }
 }
 
+/// Kane & Levinson's body; `RATTLEBACK_ESTAR` overrides E* (Pa) for the stiffness study.
+fn params() -> Params<f64> {
+    let p = Params::kane_levinson();
+    let estar = std::env::var("RATTLEBACK_ESTAR")
+        .ok()
+        .and_then(|e| e.parse().ok())
+        .unwrap_or(p.estar);
+    Params { estar, ..p }
+}
+
 fn run<L: FrictionLaw>(law: &'static str, direction: &'static str, spin0: f64) -> Run {
-    let rb = Rattleback::new(
-        &Params::kane_levinson(),
-        Friction::<f64, L>::new(F, DELTA).unwrap(),
-    )
-    .unwrap();
+    let rb = Rattleback::new(&params(), Friction::<f64, L>::new(F, DELTA).unwrap()).unwrap();
     let y0 = rb.initial_state(TILT_DEG.to_radians(), spin0);
     let mut rows = vec![(0.0, rb.probe(&y0))];
     rk4(
@@ -125,7 +134,7 @@ fn main() {
     if register_font("sans-serif", FontStyle::Normal, DEJAVU).is_err() {
         eprintln!("rattleback: the committed font did not load; the charts will lack text");
     }
-    let p = Params::<f64>::kane_levinson();
+    let p = params();
     println!(
         "Kane–Levinson rattleback: δ = {:.5} rad, I = {:?} kg·m², E* = {:e} Pa, f = {F}, δ_v = {DELTA} m/s, ω₀ = ±{SPIN} rad/s, tilt {TILT_DEG}°, RK4 h = {} s, T = {T_END} s",
         p.skew,
