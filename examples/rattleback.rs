@@ -16,7 +16,8 @@
 //! Start (Kane & Levinson 1982): roll = pitch = 0.5°, rolling (the contact point at rest),
 //! the static approach. Spin ω₀ = ∓2 rad/s instead of their 5 rad/s: with the compliant contact
 //! and f = 0.3, rolling at 5 rad/s needs more than f (the friction ratio saturates within
-//! 0.1 s and the body slides), at 2 rad/s the peak |F_t|/N is 0.23–0.25 < f (printed per run).
+//! 0.1 s and the body slides), at 2 rad/s the peak |F_t|/N is 0.23–0.25 < f (printed per
+//! run; the `Ellipsoid` law touches f briefly).
 //! Friction f = 0.3, δ = 1 mm/s; RK4, h = 0.1 ms (h·ω ≈ 0.25 for the 400 Hz contact mode and
 //! ≈ 0.45 for the friction regularisation), 20 s.
 //!

@@ -44,7 +44,7 @@
 //!
 //! - Energy ½m|Ġ|² + ½ωᵀIω + m g G_z + (2/5)k_H h^{5/2}, k_H the Hertz constant of the current
 //!   curvatures. Friction and damping dissipate; the elastic term is a potential only at fixed
-//!   curvature, the error of that is O(N·h·Δk/k) ≈ 1e-7 of the energy here.
+//!   curvature; the error of that is O(N·h·Δk/k), below the 1e-6·E₀ that the tests allow.
 //! - Spin ω·ẑ (rad/s, world vertical component), pitch = asin(a₁-axis · ẑ) (the long axis'
 //!   elevation), roll = asin(a₂-axis · ẑ) (rad).
 
