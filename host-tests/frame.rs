@@ -4,7 +4,7 @@
 //! curvatures cross (e² = 0, the major axis jumps by 90°).
 
 use contensou::contact::Contact;
-use contensou::frame::{Frame, MajorAxis, Vector, point_velocity};
+use contensou::frame::{ContactFrame, Frame, MajorAxis, Vector, WorldAxes, point_velocity};
 use contensou::friction::{Friction, Simplified};
 use contensou::geometry::{Curvatures, Principal};
 use contensou::normal::{Modulus, Undamped};
@@ -76,7 +76,11 @@ fn axes_by_hand() {
     // Normal up, reference world x, major axis at 30°: x = (cos 30°, sin 30°, 0),
     // y = (−sin 30°, cos 30°, 0).
     let (c, s) = (0.75f64.sqrt(), 0.5);
-    let f = Frame::new([0.0, 0.0, 1.0], [1.0, 0.0, 0.0], MajorAxis::from_angle(PI / 6.0));
+    let f = Frame::new(
+        [0.0, 0.0, 1.0],
+        [1.0, 0.0, 0.0],
+        MajorAxis::from_angle(PI / 6.0),
+    );
     assert!(close(f.x(), [c, s, 0.0], 1e-15));
     assert!(close(f.y(), [-s, c, 0.0], 1e-15));
     assert_eq!(f.z(), [0.0, 0.0, 1.0]);
@@ -128,7 +132,13 @@ fn frames_are_orthonormal_and_right_handed() {
         let axis = MajorAxis::from_angle(PI * rng.next());
         let f = Frame::from_reference(n, rng.vector(), axis);
         let (x, y, z) = (f.x(), f.y(), f.z());
-        for (u, v, want) in [(x, x, 1.0), (y, y, 1.0), (x, y, 0.0), (x, z, 0.0), (y, z, 0.0)] {
+        for (u, v, want) in [
+            (x, x, 1.0),
+            (y, y, 1.0),
+            (x, y, 0.0),
+            (x, z, 0.0),
+            (y, z, 0.0),
+        ] {
             assert!((dot(u, v) - want).abs() < 1e-14);
         }
         assert!(close(cross(x, y), z, 1e-14));
@@ -183,9 +193,8 @@ fn power_of_the_loads_and_passivity() {
         // Bodies: centres' velocities, angular velocities, arms centre → P.
         let (va, wa, arm_a) = (rng.vector(), rng.vector().map(|c| 50.0 * c), rng.vector());
         let (vb, wb, arm_b) = (rng.vector(), rng.vector().map(|c| 50.0 * c), rng.vector());
-        let v_rel = [0, 1, 2].map(|i| {
-            point_velocity(vb, wb, arm_b)[i] - point_velocity(va, wa, arm_a)[i]
-        });
+        let v_rel =
+            [0, 1, 2].map(|i| point_velocity(vb, wb, arm_b)[i] - point_velocity(va, wa, arm_a)[i]);
         let w_rel = [0, 1, 2].map(|i| wb[i] - wa[i]);
         let hdot = f.approach_rate(v_rel);
         let w = c.wrench(1e-6, hdot, f.slip(v_rel, w_rel).unwrap());
@@ -194,7 +203,10 @@ fn power_of_the_loads_and_passivity() {
         let friction = power + w.n * hdot;
         let direct = w.fx * dot(v_rel, f.x()) + w.fy * dot(v_rel, f.y()) + w.tz * dot(w_rel, f.z());
         let scale = w.n * (norm(v_rel) + norm(w_rel));
-        assert!((friction - direct).abs() <= 1e-12 * scale, "{friction} vs {direct}");
+        assert!(
+            (friction - direct).abs() <= 1e-12 * scale,
+            "{friction} vs {direct}"
+        );
         assert!(friction <= 1e-12 * scale, "friction power {friction} > 0");
     }
 }
@@ -300,5 +312,23 @@ fn continuous_across_the_crossing_from_bodies() {
         let eps = d / 100.0;
         let jump = norm([fp[0] - fm[0], fp[1] - fm[1], 0.0]) / fnm;
         assert!(jump <= 0.6 * eps, "d = {d}: jump {jump} fN");
+    }
+}
+
+/// `WorldAxes` is `Frame::new(+z, +x, ALONG)` without the arithmetic: the same slip, ḣ and loads.
+#[test]
+fn world_axes_is_the_upright_frame() {
+    let mut rng = Rng(99);
+    let upright = Frame::new([0.0, 0.0, 1.0], [1.0, 0.0, 0.0], MajorAxis::ALONG);
+    let c = contact(50.0, 50.0);
+    for _ in 0..200 {
+        let (v, w, arm) = (rng.vector(), rng.vector().map(|c| 100.0 * c), rng.vector());
+        let (s1, s2) = (upright.slip(v, w).unwrap(), WorldAxes.slip(v, w).unwrap());
+        assert_eq!(s1, s2);
+        assert_eq!(upright.approach_rate(v), WorldAxes.approach_rate(v));
+        let wr = c.wrench(1e-6, 0.0, s1);
+        assert_eq!(upright.on_b(&wr, arm), WorldAxes.on_b(&wr, arm));
+        assert_eq!(upright.on_a(&wr, arm), WorldAxes.on_a(&wr, arm));
+        assert_eq!(upright.to_contact(v), WorldAxes.to_contact(v));
     }
 }

@@ -17,6 +17,13 @@
 //! x = cos φ·t₁ + sin φ·t₂,    y = z × x = −sin φ·t₁ + cos φ·t₂.
 //! ```
 //!
+//! With [`Curvatures`], t₁ is the direction its constructor measured from and φ its
+//! [`Curvatures::major_angle`] ([`MajorAxis::of`]): the (x′, y′) of [`Curvatures::new`]
+//! (φ = 0 or π/2, taken exactly), body A's first principal direction for
+//! [`Curvatures::from_bodies`] (then measure its ω in the same sense, from t₁ towards t₂), the
+//! rolling direction for [`Curvatures::ball_race`]. φ and φ + π give the same ellipse (the
+//! frame turned by π about z, the same world loads).
+//!
 //! # Into the contact frame
 //!
 //! With v_rel the velocity of B's material point at P minus A's (world; [`point_velocity`]
@@ -37,7 +44,8 @@
 //! ```
 //!
 //! and body A receives the opposite force and, about its own point C_A, (P − C_A) × (−F) − T_z·z
-//! ([`Frame::on_a`]).
+//! ([`ContactFrame::on_b`], [`ContactFrame::on_a`]; the conversions are the [`ContactFrame`]
+//! trait's, for [`Frame`] and [`WorldAxes`]).
 //!
 //! # Where the curvatures cross (e² = 0)
 //!
@@ -54,16 +62,21 @@
 //!
 //! # Cost
 //!
-//! [`Frame::new`]: 6 multiplies, 3 fused into adds, a cross product (no division, no root).
-//! [`Frame::from_reference`] adds the projection and one square root and division. Each
-//! conversion is a few dot or cross products. No panic, no allocation; finite input gives a
-//! finite output.
+//! [`Frame::new`]: a cross product and two scaled sums (18 multiplies, 9 additions; no division,
+//! no root); [`Frame::from_reference`] adds the projection, a square root and a division. The
+//! slip is two dot products (three with ḣ), the load on a body a 3 × 3 product, a cross product
+//! and a scaled add. Measured on the Cortex-M4F (QEMU instructions per call, frame built in the
+//! call, `bench-results/qemu.csv` stage `frame`): `Frame::new` + slip + ḣ **77** (`f32`; 4,490
+//! `f64`, soft float), `Frame::new` + [`ContactFrame::on_b`] **68** (`f32`; 5,515 `f64`), against
+//! 182 for the wrench itself ([`crate::contact::Contact::wrench`], `Best`). Where the contact
+//! frame is the world frame (a floor under the body), [`WorldAxes`] does the same with no
+//! arithmetic. No panic, no allocation; finite input gives a finite output.
 //!
 //! # Example
 //!
 //! ```
 //! use contensou::contact::Contact;
-//! use contensou::frame::{Frame, MajorAxis, point_velocity};
+//! use contensou::frame::{ContactFrame, Frame, MajorAxis, point_velocity};
 //! use contensou::friction::Friction;
 //! use contensou::geometry::Curvatures;
 //! use contensou::normal::{Modulus, Undamped};
@@ -236,62 +249,121 @@ impl<T: Real> Frame<T> {
     pub fn z(&self) -> Vector<T> {
         self.z
     }
+}
 
-    /// A world vector's components in the contact frame.
-    #[inline(always)]
-    pub fn to_contact(&self, v: Vector<T>) -> Vector<T> {
-        [dot(v, self.x), dot(v, self.y), dot(v, self.z)]
-    }
+/// The conversions every contact frame offers: [`Frame`] (any orientation) and [`WorldAxes`]
+/// (the world axes themselves) implement the four primitives, and the slip, ḣ and the loads
+/// follow from them once, here.
+pub trait ContactFrame<T: Real> {
+    /// A world vector's components in the contact frame (along x, y, z).
+    fn to_contact(&self, v: Vector<T>) -> Vector<T>;
 
     /// A contact-frame vector (components along x, y, z) in the world.
-    #[inline(always)]
-    pub fn to_world(&self, c: Vector<T>) -> Vector<T> {
-        let [cx, cy, cz] = c;
-        add(add(scale(self.x, cx), scale(self.y, cy)), scale(self.z, cz))
-    }
+    fn to_world(&self, c: Vector<T>) -> Vector<T>;
+
+    /// The normal component v·z of a world vector.
+    fn normal_part(&self, v: Vector<T>) -> T;
+
+    /// The world vector s·z.
+    fn along_normal(&self, s: T) -> Vector<T>;
 
     /// The slip from the relative velocity at P, `v_rel` = v_B(P) − v_A(P), and the relative
     /// angular velocity `w_rel` = ω_B − ω_A (world vectors): v_P = (v_rel·x, v_rel·y),
     /// ω = w_rel·z. Errors: [`Error::NonFinite`] (from [`Slip::new`]) if a component is not
     /// finite.
-    #[inline]
-    pub fn slip(&self, v_rel: Vector<T>, w_rel: Vector<T>) -> Result<Slip<T>, Error> {
-        Slip::new(dot(v_rel, self.x), dot(v_rel, self.y), dot(w_rel, self.z))
+    #[inline(always)]
+    fn slip(&self, v_rel: Vector<T>, w_rel: Vector<T>) -> Result<Slip<T>, Error> {
+        let [vx, vy, _] = self.to_contact(v_rel);
+        Slip::new(vx, vy, self.normal_part(w_rel))
     }
 
     /// ḣ = −v_rel·z, the rate of the approach (ḣ > 0: the bodies move into each other,
-    /// compression), from the same `v_rel` as [`Frame::slip`].
+    /// compression), from the same `v_rel` as [`ContactFrame::slip`].
     #[inline(always)]
-    pub fn approach_rate(&self, v_rel: Vector<T>) -> T {
-        -dot(v_rel, self.z)
+    fn approach_rate(&self, v_rel: Vector<T>) -> T {
+        -self.normal_part(v_rel)
     }
 
     /// The wrench's force in the world: F = F_x·x + F_y·y + N·z, on body B.
     #[inline(always)]
-    pub fn force<B>(&self, w: &Wrench<T, B>) -> Vector<T> {
+    fn force<B>(&self, w: &Wrench<T, B>) -> Vector<T> {
         self.to_world([w.fx, w.fy, w.n])
     }
 
     /// The load on body B: the force F at P and the torque (P − C) × F + T_z·z about the point
     /// C with `arm` = P − C (world; e.g. C = B's centre of mass).
-    #[inline]
-    pub fn on_b<B>(&self, w: &Wrench<T, B>, arm: Vector<T>) -> Load<T> {
+    #[inline(always)]
+    fn on_b<B>(&self, w: &Wrench<T, B>, arm: Vector<T>) -> Load<T> {
         let force = self.force(w);
         Load {
             force,
-            torque: add(cross(arm, force), scale(self.z, w.tz)),
+            torque: add(cross(arm, force), self.along_normal(w.tz)),
         }
     }
 
     /// The load on body A (the reaction): −F at P and (P − C_A) × (−F) − T_z·z about the point
     /// C_A with `arm` = P − C_A (world; e.g. A's centre of mass).
-    #[inline]
-    pub fn on_a<B>(&self, w: &Wrench<T, B>, arm: Vector<T>) -> Load<T> {
+    #[inline(always)]
+    fn on_a<B>(&self, w: &Wrench<T, B>, arm: Vector<T>) -> Load<T> {
         let Load { force, torque } = self.on_b(w, arm);
         Load {
             force: force.map(|c| -c),
             torque: torque.map(|c| -c),
         }
+    }
+}
+
+impl<T: Real> ContactFrame<T> for Frame<T> {
+    #[inline(always)]
+    fn to_contact(&self, v: Vector<T>) -> Vector<T> {
+        [dot(v, self.x), dot(v, self.y), dot(v, self.z)]
+    }
+
+    #[inline(always)]
+    fn to_world(&self, c: Vector<T>) -> Vector<T> {
+        let [cx, cy, cz] = c;
+        add(add(scale(self.x, cx), scale(self.y, cy)), scale(self.z, cz))
+    }
+
+    #[inline(always)]
+    fn normal_part(&self, v: Vector<T>) -> T {
+        dot(v, self.z)
+    }
+
+    #[inline(always)]
+    fn along_normal(&self, s: T) -> Vector<T> {
+        scale(self.z, s)
+    }
+}
+
+/// The contact frame that **is** the world frame: normal z = world +z (body A a horizontal
+/// floor below body B), major axis x = world x (or any, for a circular patch). The same
+/// conversions as `Frame::new([0, 0, 1], [1, 0, 0], MajorAxis::ALONG)` with no arithmetic:
+/// floats cannot drop a multiplication by 0 or 1 (NaN, ∞ and −0 forbid it), so the general
+/// frame costs its dot products even there (measured: 68 more Cortex-M4F instructions per
+/// sphere in the tippe top's step, f32). Equal results (`host-tests/frame.rs`).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct WorldAxes;
+
+impl<T: Real> ContactFrame<T> for WorldAxes {
+    #[inline(always)]
+    fn to_contact(&self, v: Vector<T>) -> Vector<T> {
+        v
+    }
+
+    #[inline(always)]
+    fn to_world(&self, c: Vector<T>) -> Vector<T> {
+        c
+    }
+
+    #[inline(always)]
+    fn normal_part(&self, v: Vector<T>) -> T {
+        v[2]
+    }
+
+    #[inline(always)]
+    fn along_normal(&self, s: T) -> Vector<T> {
+        [T::ZERO, T::ZERO, s]
     }
 }
 

@@ -244,7 +244,8 @@ mod api {
             let (Ok(co), Ok(si)) =
                 (Friction::<T, Coulomb>::new(f, delta), Friction::<T, Simplified>::new(f, delta))
             else { return };
-            (co.stable_step(mass, n, Explicit::Euler), si.stable_step(mass, n, Explicit::Rk4))
+            let k = Constants::circle();
+            (co.stable_step(&k, mass, n, Explicit::Euler), si.stable_step(&k, mass, n, Explicit::Rk4))
         }
         fn probe_best_stable_step<T>(m1, f, delta, mass, n) {
             let (Ok(p), Ok(be)) = (Parameter::from_complement(m1), Friction::<T, Best>::new(f, delta))
@@ -258,10 +259,32 @@ mod api {
                 Friction::<T, Simplified>::new(f, delta),
                 Friction::<T, Coulomb>::new(f, delta),
             ) else { return };
+            let k = Constants::from_parameter(p);
             (
-                be.stable_spin_step(&Constants::from_parameter(p), a, inertia, n, Explicit::Rk4),
-                si.stable_spin_step(a, inertia, n, Explicit::Euler),
-                co.stable_spin_step(a, inertia, n, Explicit::Euler),
+                be.stable_spin_step(&k, a, inertia, n, Explicit::Rk4),
+                si.stable_spin_step(&k, a, inertia, n, Explicit::Euler),
+                co.stable_spin_step(&k, a, inertia, n, Explicit::Euler),
+            )
+        }
+        // the frame helper, and the stable steps from a built contact
+        fn probe_frame<T>(nx, ny, nz, rx, ry, rz, c, s, v, e, h) {
+            use contensou::frame::{ContactFrame, Frame, MajorAxis, WorldAxes, point_velocity};
+            let (Ok(curv), Ok(e), Ok(fr)) = (Curvatures::new(nx, ny), Modulus::new(e), Friction::<T, Best>::new(c, s))
+            else { return };
+            let Ok(contact) = Contact::hertz::<Newton>(&curv, e, Undamped, fr) else { return };
+            let frame = Frame::from_reference([nx, ny, nz], [rx, ry, rz], MajorAxis::of(&curv));
+            let other = Frame::new([nx, ny, nz], [rx, ry, rz], MajorAxis::from_cos_sin(c, s));
+            let vel = point_velocity([v, rx, ry], [rz, c, s], [nx, ny, nz]);
+            let Ok(slip) = frame.slip(vel, [s, c, v]) else { return };
+            let w = contact.wrench(h, frame.approach_rate(vel), slip);
+            (
+                frame.on_b(&w, vel),
+                other.on_a(&w, vel),
+                WorldAxes.on_b(&w, vel),
+                WorldAxes.slip(vel, vel),
+                other.to_contact(vel),
+                contact.stable_step(v, h, Explicit::Euler),
+                contact.stable_spin_step(c, s, h, Explicit::Rk4),
             )
         }
         fn probe_spin_stiffness<T>(m1) {
