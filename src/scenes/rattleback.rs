@@ -51,7 +51,7 @@
 use super::integrate::Ode;
 use super::rigid::{Quat, Vec3, euler_rate};
 use crate::contact::VaryingContact;
-use crate::frame::{Frame, Load, MajorAxis, point_velocity};
+use crate::frame::{ContactFrame, Frame, Load, MajorAxis, point_velocity};
 use crate::friction::{Friction, FrictionLaw};
 use crate::geometry::Curvatures;
 use crate::normal::{Hertz, HuntCrossley, Modulus, NormalLaw};
@@ -333,22 +333,21 @@ impl<T: Real, L: FrictionLaw> Rattleback<T, L> {
         // frame `Curvatures::from_quadratic` measured the major angle in).
         let z = [T::ZERO, T::ZERO, T::ONE];
         let frame = Frame::new(z, [T::ONE, T::ZERO, T::ZERO], MajorAxis::of(&g.curvatures));
-        let (arm, w) = ([g.arm.x, g.arm.y, g.arm.z], [w.x, w.y, w.z]);
+        let (arm, w) = (g.arm.into(), w.into());
         // The floor is at rest: v_rel is the rattleback's material point at P.
-        let v_rel = point_velocity([v.x, v.y, v.z], w, arm);
+        let v_rel = point_velocity(v.into(), w, arm);
         // Non-finite only if the state is: then no friction (the step is rejected anyway).
         let slip = frame.slip(v_rel, w).unwrap_or_default();
         let wr = self
             .contact
             .wrench(&g.curvatures, g.h, frame.approach_rate(v_rel), slip);
         let Load { force, torque } = frame.on_b(&wr, arm);
-        let vec = |[x, y, z]: [T; 3]| Vec3::new(x, y, z);
         (
             ContactState {
                 h: g.h,
                 n: wr.n,
-                force: vec(force),
-                torque: vec(torque),
+                force: force.into(),
+                torque: torque.into(),
             },
             g,
         )
