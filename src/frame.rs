@@ -146,21 +146,16 @@ impl<T: Real> MajorAxis<T> {
         MajorAxis { cos, sin }
     }
 
-    /// The major axis of `curvatures`, [`Curvatures::major_angle`] from the frame its
-    /// constructor measured in (body A's first principal direction, or the (x′, y′) of
-    /// [`Curvatures::new`]), which is then the reference tangent. The two angles that
-    /// [`Curvatures::new`] reports, 0 and π/2, give exactly [`MajorAxis::ALONG`] and
-    /// [`MajorAxis::ACROSS`].
+    /// The major axis of `curvatures` ([`Curvatures::major_axis`]: cos, sin of
+    /// [`Curvatures::major_angle`] as the constructor computed them, no trigonometry here),
+    /// measured from the frame its constructor worked in (body A's first principal direction,
+    /// or the (x′, y′) of [`Curvatures::new`]), which is then the reference tangent. The two
+    /// angles that [`Curvatures::new`] reports, 0 and π/2, give exactly [`MajorAxis::ALONG`]
+    /// and [`MajorAxis::ACROSS`].
     #[inline]
     pub fn of(curvatures: &Curvatures<T>) -> Self {
-        let phi = curvatures.major_angle();
-        if phi == T::ZERO {
-            Self::ALONG
-        } else if phi == T::FRAC_PI_2 {
-            Self::ACROSS
-        } else {
-            Self::from_angle(phi)
-        }
+        let (cos, sin) = curvatures.major_axis();
+        MajorAxis { cos, sin }
     }
 
     /// cos φ.

@@ -224,6 +224,25 @@ impl<T: Real> Curvatures<T> {
         let mxx = half * ka1 + kb1 * cc + kb2 * ss;
         let myy = half * ka2 + kb1 * ss + kb2 * cc;
         let mxy = (kb1 - kb2) * sc;
+        Self::eigen(mxx, myy, mxy)
+    }
+
+    /// From the gap's quadratic form z = M₁₁x² + 2M₁₂xy + M₂₂y² in some frame (x, y): P and Q
+    /// its eigenvalues, [`major_angle`](Self::major_angle) the angle from x to the eigenvector
+    /// of P (module docs). For a body whose curvature matrix at the contact is known directly
+    /// (e.g. an ellipsoid on a plane, `scenes::rattleback`). Cost: two divisions, two square roots (no trigonometry).
+    ///
+    /// Errors: [`Error::NonFinite`]; [`Error::CurvatureNotPositive`] if the form is not
+    /// positive definite (P ≤ 0: no Hertz contact).
+    pub fn from_quadratic(mxx: T, myy: T, mxy: T) -> Result<Self, Error> {
+        let (mxx, myy) = (finite(mxx, "M11")?, finite(myy, "M22")?);
+        let mxy = finite(mxy, "M12")?;
+        Self::eigen(mxx, myy, mxy)
+    }
+
+    /// P, Q and the major axis of a validated-finite quadratic form (M₁₁, M₂₂, M₁₂).
+    fn eigen(mxx: T, myy: T, mxy: T) -> Result<Self, Error> {
+        let half = T::HALF;
         let d = half * (mxx - myy);
         let big = d.abs().max(mxy.abs());
         let (dn, mn) = if big > T::ZERO {

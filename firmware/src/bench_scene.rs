@@ -8,10 +8,15 @@
 //!   in by 0.17 µm (both contacts active: the worst case), 16 spins.
 //! - `tippe_top_10ms`: the whole 10 ms from the paper's start, 1,000 steps in one call; ×100
 //!   gives instructions per simulated second.
+//! - `rattleback_step`: one RK4 step of the rattleback (`scenes::rattleback`, Kane–Levinson
+//!   body, default law `Best`, f = 0.3, δ = 1 mm/s, h = 0.1 ms): 4 right-hand sides, each the
+//!   closed-form ellipsoid geometry + `VaryingContact` (shape table per call) + frame mapping;
+//!   16 states along the first 0.16 s of the unstable start (ω₀ = −2 rad/s, 0.5° rock).
 
 use crate::harness::Runner;
-use contensou::friction::{Friction, Simplified};
+use contensou::friction::{Best, Friction, Simplified};
 use contensou::scenes::integrate::{rk4, rk4_step};
+use contensou::scenes::rattleback::{self, Rattleback};
 use contensou::scenes::tippe_top::{Params, State, TippeTop};
 
 type Top = TippeTop<f32, Simplified>;
@@ -26,6 +31,14 @@ fn tippe_top_step(x: (&Top, State<f32>)) -> State<f32> {
 #[inline(never)]
 fn tippe_top_10ms(x: (&Top, State<f32>)) -> State<f32> {
     rk4(x.0, 0.0, x.1, H, STEPS_10MS, |_, _, _| {})
+}
+
+type Celt = Rattleback<f32, Best>;
+const H_CELT: f32 = 1e-4;
+
+#[inline(never)]
+fn rattleback_step(x: (&Celt, rattleback::State<f32>)) -> rattleback::State<f32> {
+    rk4_step(x.0, 0.0, &x.1, H_CELT)
 }
 
 pub fn run(r: &Runner) {
@@ -62,5 +75,27 @@ pub fn run(r: &Runner) {
         tippe_top_step,
     );
 
-    r.bench("scene", "tippe_top_10ms", "f32", &[(&top, y0)], tippe_top_10ms);
+    r.bench(
+        "scene",
+        "tippe_top_10ms",
+        "f32",
+        &[(&top, y0)],
+        tippe_top_10ms,
+    );
+
+    let celt = Celt::new(
+        &rattleback::Params::kane_levinson(),
+        Friction::new(0.3, 1e-3).expect("valid f and δ"),
+    )
+    .expect("Kane–Levinson's parameters are valid");
+    let y0 = celt.initial_state(0.5 * core::f32::consts::PI / 180.0, -2.0);
+    let mut along = [(&celt, y0); 16];
+    let mut k = 1;
+    rk4(&celt, 0.0, y0, H_CELT, 1_600, |i, _, y| {
+        if i % 100 == 0 && k < 16 {
+            along[k] = (&celt, *y);
+            k += 1;
+        }
+    });
+    r.bench("scene", "rattleback_step", "f32", &along, rattleback_step);
 }

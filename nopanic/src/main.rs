@@ -165,6 +165,7 @@ mod api {
             Curvatures::from_bodies_cos_sin(Principal { k1: a1, k2: a2 }, Principal { k1: b1, k2: b2 }, c, sn)
                 .map(|c| (c.major_axis(), c.major_angle()))
         }
+        fn probe_curvatures_from_quadratic<T>(mxx, myy, mxy) { Curvatures::from_quadratic(mxx, myy, mxy) }
         fn probe_curvatures_sphere_plane<T>(r) { Curvatures::sphere_plane(r) }
         fn probe_curvatures_sphere_sphere<T>(ra, rb) { Curvatures::sphere_sphere(ra, rb) }
         fn probe_curvatures_ball_race<T>(d, rg, dm, alpha) {

@@ -5,10 +5,12 @@
 //! - [`integrate`]: fixed-step RK4 (MCU) and adaptive Dormand–Prince 5(4) (host reference).
 //! - [`tippe_top`]: the tippe top of the paper's §5 with Hertz + damping + a friction law.
 //! - [`bearing`]: a deep-groove ball bearing, balls in Hertz + friction contact with both races.
+//! - [`rattleback`]: the rattleback (celt), an ellipsoid whose contact geometry changes every step.
 //!
 //! All `no_std`, allocation-free, generic over [`Real`](crate::Real).
 
 pub mod bearing;
 pub mod integrate;
+pub mod rattleback;
 pub mod rigid;
 pub mod tippe_top;

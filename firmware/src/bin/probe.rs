@@ -30,6 +30,7 @@ use contensou::geometry::{Curvatures, Principal};
 use contensou::math::{Backend, Micromath};
 use contensou::normal::{Fitted, Hertz, HertzMicromath, Modulus, NormalLaw, Undamped, Volumetric};
 use contensou::scenes::integrate::{rk4, rk4_step};
+use contensou::scenes::rattleback::Rattleback;
 use contensou::scenes::tippe_top::{Params, TippeTop};
 use contensou::select::*;
 use contensou::shape::{
@@ -196,6 +197,15 @@ fn varying_from_bodies() {
         bb(c.wrench(&curv, t(1e-6), 0.0, slip()));
     }
 }
+
+fn rattleback_step() {
+    let celt: Rattleback<f32, Best> = ok(Rattleback::new(
+        &contensou::scenes::rattleback::Params::kane_levinson(),
+        friction(),
+    ));
+    let y = celt.initial_state(t(0.0087), t(-2.0));
+    bb(rk4_step(&celt, 0.0, &y, t(1e-4)));
+}
 fn tippe_top(steps: usize) {
     let top: TippeTop<f32, Simplified> = ok(TippeTop::new(&Params::paper(), friction()));
     let y = top.initial_state(t(0.1), t(180.0));
@@ -313,6 +323,7 @@ probes! {
     "scene,tippe_top_step,f32" => tippe_top(1);
     "scene,tippe_top_step_two_contacts,f32" => tippe_top(1);
     "scene,tippe_top_10ms,f32" => tippe_top(1_000);
+    "scene,rattleback_step,f32" => rattleback_step();
     "scene,sphere-plane-spin-coarse,f32" => scene::<Scene<Circular, Fixed, Spin, Coarse, f32>>();
     "scene,sphere-plane-spin-coarse,f64" => scene::<Scene<Circular, Fixed, Spin, Coarse, f64>>();
     "scene,sphere-plane-spin-exact,f32" => scene::<Scene<Circular, Fixed, Spin, ExactGrade, f32>>();

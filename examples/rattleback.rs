@@ -1,0 +1,233 @@
+//! The rattleback (Kane & Levinson's body, `contensou::scenes::rattleback`) with each friction
+//! law, spun both ways: spin reversal or stall, peak rocking, final spin and energy.
+//!
+//! ```sh
+//! cargo run --release --features scenes --example rattleback         # into out/
+//! cargo run --release --features scenes --example rattleback -- DIR  # into DIR
+//! ```
+//!
+//! `RATTLEBACK_H` (s) and `RATTLEBACK_ESTAR` (Pa) override the step and E* (README: step and
+//! stiffness checks).
+//!
+//! Writes `rattleback_summary.csv` (`law,direction,reversal_s,stall_s,peak_rock_rad,
+//! final_spin,energy_start,energy_end`, empty fields when there is none) and one labelled PNG
+//! of ω·ẑ(t) per law (`rattleback_<law>.png`, both directions).
+//!
+//! Start (Kane & Levinson 1982): roll = pitch = 0.5°, rolling (the contact point at rest),
+//! the static approach. Spin ω₀ = ∓2 rad/s instead of their 5 rad/s: with the compliant contact
+//! and f = 0.3, rolling at 5 rad/s needs more than f (the friction ratio saturates within
+//! 0.1 s and the body slides), at 2 rad/s the peak |F_t|/N is 0.23–0.25 < f (printed per
+//! run; the `Ellipsoid` law touches f briefly).
+//! Friction f = 0.3, δ = 1 mm/s; RK4, h = 0.1 ms (h·ω ≈ 0.25 for the 400 Hz contact mode and
+//! ≈ 0.45 for the friction regularisation), 20 s.
+//!
+//! - **reversal**: the first time the spin has turned and reached 10 % of |ω₀| the other way;
+//! - **stall**: no reversal within the run, and the spin was braked to below 10 % of |ω₀|:
+//!   the first time it got there.
+
+use std::fmt::Write as _;
+
+use contensou::friction::{Best, Coulomb, Ellipsoid, Friction, FrictionLaw, Simplified};
+use contensou::scenes::integrate::rk4;
+use contensou::scenes::rattleback::{Params, Probe, Rattleback};
+use plotters::prelude::*;
+use plotters::style::{FontStyle, register_font};
+
+const F: f64 = 0.3;
+const DELTA: f64 = 1e-3;
+const TILT_DEG: f64 = 0.5;
+const SPIN: f64 = 2.0;
+/// RK4 step (s); `RATTLEBACK_H` overrides it (the step-size check in the README).
+fn step() -> f64 {
+    std::env::var("RATTLEBACK_H")
+        .ok()
+        .and_then(|h| h.parse().ok())
+        .unwrap_or(1e-4)
+}
+const T_END: f64 = 20.0;
+const SAMPLE: usize = 100; // steps of 0.1 ms: every 10 ms
+
+struct Run {
+    law: &'static str,
+    direction: &'static str,
+    spin0: f64,
+    rows: Vec<(f64, Probe<f64>)>,
+}
+
+impl Run {
+    fn reversal(&self) -> Option<f64> {
+        let s = self.spin0.signum();
+        self.rows
+            .iter()
+            .find(|(_, p)| p.spin * s <= -0.1 * self.spin0.abs())
+            .map(|r| r.0)
+    }
+    fn stall(&self) -> Option<f64> {
+        if self.reversal().is_some() {
+            return None;
+        }
+        self.rows
+            .iter()
+            .find(|(_, p)| p.spin.abs() < 0.1 * self.spin0.abs())
+            .map(|r| r.0)
+    }
+    fn peak_rock(&self) -> f64 {
+        self.rows
+            .iter()
+            .map(|(_, p)| p.pitch.abs().max(p.roll.abs()))
+            .fold(0.0, f64::max)
+    }
+    fn peak(&self, f: impl Fn(&Probe<f64>) -> f64) -> f64 {
+        self.rows.iter().map(|(_, p)| f(p)).fold(0.0, f64::max)
+    }
+}
+
+/// Kane & Levinson's body; `RATTLEBACK_ESTAR` overrides E* (Pa) for the stiffness study.
+fn params() -> Params<f64> {
+    let p = Params::kane_levinson();
+    let estar = std::env::var("RATTLEBACK_ESTAR")
+        .ok()
+        .and_then(|e| e.parse().ok())
+        .unwrap_or(p.estar);
+    Params { estar, ..p }
+}
+
+fn run<L: FrictionLaw>(law: &'static str, direction: &'static str, spin0: f64) -> Run {
+    let rb = Rattleback::new(&params(), Friction::<f64, L>::new(F, DELTA).unwrap()).unwrap();
+    let y0 = rb.initial_state(TILT_DEG.to_radians(), spin0);
+    let mut rows = vec![(0.0, rb.probe(&y0))];
+    rk4(
+        &rb,
+        0.0,
+        y0,
+        step(),
+        (T_END / step()).round() as usize,
+        |i, t, y| {
+            if i % ((SAMPLE as f64 * 1e-4 / step()).round() as usize).max(1) == 0 {
+                rows.push((t, rb.probe(y)));
+            }
+        },
+    );
+    Run {
+        law,
+        direction,
+        spin0,
+        rows,
+    }
+}
+
+fn both<L: FrictionLaw>(law: &'static str) -> [Run; 2] {
+    // δ > 0 for these parameters: the negative spin is the unstable one.
+    [
+        run::<L>(law, "unstable", -SPIN),
+        run::<L>(law, "steady", SPIN),
+    ]
+}
+
+fn opt(x: Option<f64>) -> String {
+    x.map_or(String::new(), |t| format!("{t:.3}"))
+}
+
+fn main() {
+    let dir = std::env::args().nth(1).unwrap_or_else(|| "out".into());
+    std::fs::create_dir_all(&dir).unwrap();
+    static DEJAVU: &[u8] = include_bytes!("../tools/fonts/DejaVuSans.ttf");
+    if register_font("sans-serif", FontStyle::Normal, DEJAVU).is_err() {
+        eprintln!("rattleback: the committed font did not load; the charts will lack text");
+    }
+    let p = params();
+    println!(
+        "Kane–Levinson rattleback: δ = {:.5} rad, I = {:?} kg·m², E* = {:e} Pa, f = {F}, δ_v = {DELTA} m/s, ω₀ = ±{SPIN} rad/s, tilt {TILT_DEG}°, RK4 h = {} s, T = {T_END} s",
+        p.skew,
+        p.inertia,
+        p.estar,
+        step()
+    );
+    let laws = [
+        both::<Best>("best"),
+        both::<Simplified>("simplified"),
+        both::<Ellipsoid>("ellipsoid"),
+        both::<Coulomb>("coulomb"),
+    ];
+    let mut csv = String::from(
+        "law,direction,reversal_s,stall_s,peak_rock_rad,final_spin,energy_start,energy_end\n",
+    );
+    for runs in &laws {
+        for r in runs {
+            let (first, last) = (r.rows[0].1, r.rows[r.rows.len() - 1].1);
+            writeln!(
+                csv,
+                "{},{},{},{},{:.5},{:.4},{:.6},{:.6}",
+                r.law,
+                r.direction,
+                opt(r.reversal()),
+                opt(r.stall()),
+                r.peak_rock(),
+                last.spin,
+                first.energy,
+                last.energy
+            )
+            .unwrap();
+            println!(
+                "{:10} {:8} ω₀ = {:+.1}: reversal {:>7} s, stall {:>7} s, peak pitch {:.4} / roll {:.4} rad, final spin {:+.3} rad/s, energy {:.6} → {:.6} J, peak |F_t|/N = {:.3}",
+                r.law,
+                r.direction,
+                r.spin0,
+                opt(r.reversal()),
+                opt(r.stall()),
+                r.peak(|p| p.pitch.abs()),
+                r.peak(|p| p.roll.abs()),
+                last.spin,
+                first.energy,
+                last.energy,
+                r.peak(|p| p.friction_ratio)
+            );
+        }
+        plot(runs, &format!("{dir}/rattleback_{}.png", runs[0].law)).unwrap();
+    }
+    std::fs::write(format!("{dir}/rattleback_summary.csv"), csv).unwrap();
+    println!("wrote {dir}/rattleback_summary.csv and {dir}/rattleback_<law>.png");
+}
+
+/// ω·ẑ(t) of both directions of one law.
+fn plot(runs: &[Run; 2], path: &str) -> Result<(), Box<dyn std::error::Error>> {
+    let root = BitMapBackend::new(path, (900, 500)).into_drawing_area();
+    root.fill(&WHITE)?;
+    let mut chart = ChartBuilder::on(&root)
+        .caption(
+            format!(
+                "Rattleback (Kane–Levinson), {} friction: spin ω·ẑ(t)",
+                runs[0].law
+            ),
+            ("sans-serif", 20),
+        )
+        .margin(15)
+        .x_label_area_size(40)
+        .y_label_area_size(55)
+        .build_cartesian_2d(0.0..T_END, -1.1 * SPIN..1.1 * SPIN)?;
+    chart
+        .configure_mesh()
+        .x_desc("t (s)")
+        .y_desc("ω·ẑ (rad/s)")
+        .label_style(("sans-serif", 14))
+        .axis_desc_style(("sans-serif", 15))
+        .draw()?;
+    let colours = [RGBColor(214, 39, 40), RGBColor(31, 119, 180)];
+    for (r, c) in runs.iter().zip(colours) {
+        chart
+            .draw_series(LineSeries::new(
+                r.rows.iter().map(|(t, p)| (*t, p.spin)),
+                c.stroke_width(2),
+            ))?
+            .label(format!("ω₀ = {:+.0} rad/s ({})", r.spin0, r.direction))
+            .legend(move |(x, y)| PathElement::new([(x, y), (x + 20, y)], c.stroke_width(2)));
+    }
+    chart
+        .configure_series_labels()
+        .background_style(WHITE.mix(0.8))
+        .border_style(BLACK)
+        .label_font(("sans-serif", 14))
+        .draw()?;
+    root.present()?;
+    Ok(())
+}

@@ -1,0 +1,200 @@
+//! The rattleback scene (feature `scenes`): the closed-form contact geometry against an
+//! independent mpmath computation (tools/gen_rattleback_geometry.py: numerical minimisation of
+//! the height + finite-difference curvatures of the lower sheet), spin reversal in the unstable
+//! direction only, energy never increasing, no reversal for a sphere-like body without skew,
+//! the drilling torque's stall, and a finite f32 RK4 step.
+//!
+//! Kept short for debug CI: RK4 with h = 0.2 ms over ≤ 4 s. Stable-step bounds at the
+//! Kane–Levinson start (static approach 2.3 µm, N ≈ mg): the vertical contact mode
+//! ω_c = √(1.5 N/(h m)) ≈ 2.5e3 rad/s gives h·ω_c ≈ 0.5; the regularised friction's rate
+//! f N/(δ m_eff) ≈ 4.4e3 1/s (f = 0.3, δ = 1e-3 m/s, m_eff ≈ 0.67 kg at the contact) gives
+//! 0.9 — both inside RK4's real-axis bound 2.78. The example runs h = 0.1 ms; its reversal and
+//! stall times are the same at h = 0.05, 0.1 and 0.2 ms to its 10 ms sampling (README).
+
+use contensou::friction::{Best, Coulomb, Friction, FrictionLaw};
+use contensou::scenes::integrate::rk4;
+use contensou::scenes::rattleback::{Params, Probe, Rattleback};
+
+const H: f64 = 2e-4;
+const F: f64 = 0.3;
+const DELTA: f64 = 1e-3;
+const TILT: f64 = 0.5 * std::f64::consts::PI / 180.0;
+
+fn body<L: FrictionLaw>(p: &Params<f64>) -> Rattleback<f64, L> {
+    Rattleback::new(p, Friction::new(F, DELTA).unwrap()).unwrap()
+}
+
+/// Probes every 10 steps over `t_end` from Kane–Levinson's tilt and spin `spin`.
+fn run<L: FrictionLaw>(p: &Params<f64>, spin: f64, t_end: f64) -> Vec<(f64, Probe<f64>)> {
+    let rb = body::<L>(p);
+    let y0 = rb.initial_state(TILT, spin);
+    let mut out = vec![(0.0, rb.probe(&y0))];
+    let y = rk4(&rb, 0.0, y0, H, (t_end / H).round() as usize, |i, t, y| {
+        if i % 10 == 0 {
+            out.push((t, rb.probe(y)));
+        }
+    });
+    assert!(y.iter().all(|v| v.is_finite()));
+    out
+}
+
+/// First time the spin has reversed to 10 % of |ω₀|.
+fn reversal(rows: &[(f64, Probe<f64>)], spin0: f64) -> Option<f64> {
+    rows.iter()
+        .find(|(_, p)| p.spin * spin0.signum() <= -0.1 * spin0.abs())
+        .map(|r| r.0)
+}
+
+fn assert_energy_never_increases(rows: &[(f64, Probe<f64>)]) {
+    let e0 = rows[0].1.energy;
+    let mut min_so_far = e0;
+    for (t, p) in rows {
+        assert!(
+            p.energy <= min_so_far + 1e-6 * e0,
+            "t = {t}: E = {} > {min_so_far} (+{:e} of E₀)",
+            p.energy,
+            (p.energy - min_so_far) / e0
+        );
+        min_so_far = min_so_far.min(p.energy);
+    }
+}
+
+#[test]
+fn geometry_matches_the_independent_mpmath_reference() {
+    let rb = body::<Best>(&Params::kane_levinson());
+    let csv = include_str!("../tools/data/rattleback_geometry.csv");
+    let mut cases = 0;
+    for line in csv.lines().skip(1) {
+        let v: Vec<f64> = line.split(',').map(|x| x.parse().unwrap()).collect();
+        let [qw, qx, qy, qz, zg, h, px, py, p, q, c2, s2] = v[..] else {
+            panic!("bad row {line}")
+        };
+        let y = [0.0, 0.0, zg, 0.0, 0.0, 0.0, qw, qx, qy, qz, 0.0, 0.0, 0.0];
+        let g = rb.geometry(&y);
+        let rel = |a: f64, b: f64| (a - b).abs() / b.abs();
+        let arm = px.hypot(py).max(1e-3);
+        assert!(rel(g.h, h) < 1e-9, "{line}: h {} vs {h}", g.h);
+        assert!(
+            (g.lowest.x - px).abs() / arm < 1e-9,
+            "{line}: x {}",
+            g.lowest.x
+        );
+        assert!(
+            (g.lowest.y - py).abs() / arm < 1e-9,
+            "{line}: y {}",
+            g.lowest.y
+        );
+        assert_eq!((g.arm.x, g.arm.y, g.arm.z), (g.lowest.x, g.lowest.y, -zg));
+        let c = g.curvatures;
+        assert!(rel(c.p(), p) < 1e-9, "{line}: P {} vs {p}", c.p());
+        assert!(rel(c.q(), q) < 1e-9, "{line}: Q {} vs {q}", c.q());
+        let phi2 = 2.0 * c.major_angle();
+        assert!(
+            (phi2.cos() - c2).abs() < 1e-9,
+            "{line}: cos 2φ {}",
+            phi2.cos()
+        );
+        assert!(
+            (phi2.sin() - s2).abs() < 1e-9,
+            "{line}: sin 2φ {}",
+            phi2.sin()
+        );
+        cases += 1;
+    }
+    assert_eq!(cases, 7);
+}
+
+#[test]
+fn coulomb_reverses_the_unstable_spin_only_and_energy_never_increases() {
+    let p = Params::kane_levinson();
+    // ω₀ = −2 rad/s: the unstable direction for these parameters (δ > 0).
+    let unstable = run::<Coulomb>(&p, -2.0, 4.0);
+    let t = reversal(&unstable, -2.0);
+    // h = 0.1 ms in the example: 2.44 s.
+    assert!(t.is_some_and(|t| (1.5..3.5).contains(&t)), "{t:?}");
+    assert_energy_never_increases(&unstable);
+    // Rolling, not sliding: the friction ratio stays below f.
+    let peak = unstable
+        .iter()
+        .map(|r| r.1.friction_ratio)
+        .fold(0.0, f64::max);
+    assert!(peak < 0.95 * F, "{peak}");
+
+    let steady = run::<Coulomb>(&p, 2.0, 4.0);
+    assert!(reversal(&steady, 2.0).is_none());
+    assert!(
+        steady.iter().all(|(_, p)| p.spin > 1.0),
+        "the steady spin drops below 1 rad/s"
+    );
+    assert_energy_never_increases(&steady);
+}
+
+#[test]
+fn sphere_like_body_without_skew_never_reverses() {
+    let p = Params::sphere_like();
+    for spin in [-2.0, 2.0] {
+        let rows = run::<Coulomb>(&p, spin, 3.0);
+        assert!(reversal(&rows, spin).is_none(), "ω₀ = {spin}");
+        // The spin keeps its sign (it only decays, by rolling friction into rocking).
+        let min = rows
+            .iter()
+            .map(|r| r.1.spin * spin.signum())
+            .fold(f64::MAX, f64::min);
+        assert!(min > 0.2 * spin.abs(), "ω₀ = {spin}: spin down to {min}");
+        assert_energy_never_increases(&rows);
+    }
+}
+
+#[test]
+fn contensou_drilling_torque_stalls_the_spin_without_reversal() {
+    // The same start with the default (exact-grade) law: the patch's drilling torque brakes
+    // the spin to ≈ 0 before the rocking can reverse it.
+    let rows = run::<Best>(&Params::kane_levinson(), -2.0, 2.5);
+    assert!(reversal(&rows, -2.0).is_none());
+    let stall = rows.iter().find(|(_, p)| p.spin.abs() < 0.2).map(|r| r.0);
+    assert!(stall.is_some_and(|t| t < 2.0), "{stall:?}");
+    assert_energy_never_increases(&rows);
+}
+
+#[test]
+fn f32_rk4_step_stays_finite_and_on_the_floor() {
+    let rb =
+        Rattleback::<f32, Best>::new(&Params::kane_levinson(), Friction::new(0.3, 1e-3).unwrap())
+            .unwrap();
+    let y0 = rb.initial_state(0.5f32.to_radians(), -2.0);
+    let e0 = rb.probe(&y0).energy;
+    let y = rk4(&rb, 0.0, y0, 1e-4, 2_000, |_, _, _| {});
+    let p = rb.probe(&y);
+    assert!(y.iter().all(|v| v.is_finite()));
+    assert!(p.n > 5.0 && p.n < 15.0, "{}", p.n);
+    assert!(p.energy <= e0 * (1.0 + 1e-4), "{} vs {e0}", p.energy);
+}
+
+#[test]
+fn from_quadratic_matches_from_bodies_and_rejects_indefinite_forms() {
+    use contensou::Error;
+    use contensou::geometry::{Curvatures, Principal};
+    // A plane (A) against body B with κ = (4, 1) turned by 0.3 rad: M = ½R diag(4, 1)Rᵀ.
+    let (s, c) = 0.3f64.sin_cos();
+    let (k1, k2) = (4.0, 1.0);
+    let m = (
+        0.5 * (k1 * c * c + k2 * s * s),
+        0.5 * (k1 * s * s + k2 * c * c),
+        0.5 * (k1 - k2) * s * c,
+    );
+    let q = Curvatures::from_quadratic(m.0, m.1, m.2).unwrap();
+    let b = Curvatures::from_bodies(Principal::plane(), Principal { k1, k2 }, 0.3).unwrap();
+    assert_eq!(q, b);
+    assert!((q.p() - 0.5).abs() < 1e-15 && (q.q() - 2.0).abs() < 1e-15);
+    // The major axis (curvature 1) is perpendicular to the stiff direction at 0.3 rad.
+    assert!((q.major_angle() - (0.3 - std::f64::consts::FRAC_PI_2)).abs() < 1e-15);
+    assert_eq!(
+        Curvatures::from_quadratic(1.0, -1.0, 0.0),
+        Err(Error::CurvatureNotPositive)
+    );
+    assert_eq!(
+        Curvatures::from_quadratic(1.0, 1.0, 1.0),
+        Err(Error::CurvatureNotPositive)
+    );
+    assert!(Curvatures::from_quadratic(f64::NAN, 1.0, 0.0).is_err());
+}

@@ -1,0 +1,436 @@
+//! The rattleback (celt): a rigid semi-ellipsoid whose principal axes of inertia are turned by
+//! a small skew angle δ from its axes of curvature, on a rigid, fixed floor, with a compliant
+//! contact whose geometry changes every step — the case [`VaryingContact`] exists for. Spun
+//! one way it rocks, stops and reverses; spun the other way it keeps spinning.
+//!
+//! Parameters: Kane & Levinson (1982), *Realistic mathematical modeling of the rattleback*,
+//! Int. J. Non-Linear Mech. 17, 175 — the body most later work (Garcia & Hubbard 1988,
+//! Kondo & Nakanishi 2017) compares against; see [`Params::kane_levinson`].
+//!
+//! # Model
+//!
+//! - **Curvature frame** C (body-fixed): origin at the ellipsoid's centre O, axes along its
+//!   semi-axes a₁ (long), a₂, a₃ (short: the symmetry axis, pointing out of the flat top). The
+//!   surface is Σ xᵢ²/aᵢ² = 1; the centre of mass G lies on the symmetry axis at
+//!   O − ε·e₃ (ε > 0: G below O, towards the rocking bottom).
+//! - **Body frame** B: the principal axes of inertia at G, turned by +δ about e₃ from C (a
+//!   vector with B coordinates v has C coordinates R_z(δ)·v). Euler's equations are written in
+//!   B ([`euler_rate`]), the attitude q maps B to the world.
+//! - **State** (13 scalars, [`State`]): G (m), Ġ (m/s), q = (w, x, y, z), ω in B (rad/s).
+//! - **Contact, in closed form each step** (no iteration; [`Rattleback::geometry`]): with
+//!   u = −ẑ in C coordinates (the world's "down" seen from the body) the lowest point of the
+//!   ellipsoid is its support point in direction u,
+//!
+//!   ```text
+//!   s = √(Σ aᵢ² uᵢ²),   x*ᵢ = aᵢ² uᵢ / s   (C frame),   approach h = −(height of x*)
+//!   ```
+//!
+//!   The outward normal there is −ẑ, so the tangent plane is the floor's plane and the
+//!   surface is, to second order, the graph z = ½ ξᵀKξ over the world (x, y) with
+//!   K = s·Tᵀ diag(1/aᵢ²) T, T the world x̂, ŷ in C coordinates (the Hessian of xᵀAx = 1
+//!   divided by |∇| = 2/s). The floor is flat, so the gap is z = ξᵀ(½K)ξ:
+//!   [`Curvatures::from_quadratic`] gives P ≤ Q and the major axis' angle φ from world x.
+//!   Cost: one `sqrt`, one `hypot`, one `atan2` and one `sin_cos`.
+//! - **Contact frame**: z = world ẑ (floor = body A, rattleback = body B), x = (cos φ, sin φ, 0)
+//!   along the patch's major axis, y = ẑ × x. The patch centre P is the floor point below x*.
+//!   Slip: the velocity of the rattleback's material point at P, in (x, y); spin: ω·ẑ;
+//!   ḣ = −(vertical velocity of that point).
+//! - **Wrench**: [`VaryingContact::wrench`] — exact Hertz on this step's P, Q through
+//!   [`crate::shape::Table`], Hunt–Crossley N = k h^{3/2}(1 + (3/2)c_d ḣ) clamped ≥ 0, friction
+//!   by the law `L` (Best, Simplified, Ellipsoid, Coulomb). Slip, ḣ and the world force and
+//!   torque about G through [`crate::frame`] (normal ẑ, reference tangent world x).
+//!
+//! # Diagnostics ([`Probe`])
+//!
+//! - Energy ½m|Ġ|² + ½ωᵀIω + m g G_z + (2/5)k_H h^{5/2}, k_H the Hertz constant of the current
+//!   curvatures. Friction and damping dissipate; the elastic term is a potential only at fixed
+//!   curvature; the error of that is O(N·h·Δk/k), below the 1e-6·E₀ that the tests allow.
+//! - Spin ω·ẑ (rad/s, world vertical component), pitch = asin(a₁-axis · ẑ) (the long axis'
+//!   elevation), roll = asin(a₂-axis · ẑ) (rad).
+
+use super::integrate::Ode;
+use super::rigid::{Quat, Vec3, euler_rate};
+use crate::contact::VaryingContact;
+use crate::frame::{ContactFrame, Frame, Load, MajorAxis, point_velocity};
+use crate::friction::{Friction, FrictionLaw};
+use crate::geometry::Curvatures;
+use crate::normal::{Hertz, HuntCrossley, Modulus, NormalLaw};
+use crate::shape::Newton;
+use crate::{Error, Real};
+
+/// Number of scalars in the state.
+pub const N: usize = 13;
+
+/// The state [G (3), Ġ (3), q = (w, x, y, z) (4), ω body (3)].
+pub type State<T> = [T; N];
+
+/// The rattleback's physical parameters (SI).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Params<T> {
+    /// Semi-axes a₁ (long), a₂, a₃ (symmetry axis) of the ellipsoid (m).
+    pub semi_axes: [T; 3],
+    /// Distance ε from the ellipsoid's centre O down the symmetry axis to G (m).
+    pub com_offset: T,
+    /// Mass m (kg).
+    pub mass: T,
+    /// Principal moments of inertia about G (kg·m²), in the order of the axes nearest a₁, a₂, a₃.
+    pub inertia: [T; 3],
+    /// Skew angle δ (rad) from the curvature axis a₁ to the first principal axis of inertia,
+    /// positive about e₃.
+    pub skew: T,
+    /// Effective modulus E* (Pa).
+    pub estar: T,
+    /// Hunt–Crossley damping c_d (s/m).
+    pub damping: T,
+    /// Gravity g (m/s²).
+    pub gravity: T,
+}
+
+impl<T: Real> Params<T> {
+    /// Kane & Levinson's rattleback (1982; also in the `RattleBack` PyPI package and the
+    /// pydy rattleback examples): a = 0.2 m, b = 0.03 m, c = 0.02 m, ε = 0.01 m, m = 1 kg, and
+    /// about G in the curvature frame I₁₁ = A = 2e-4, I₂₂ = B = 1.6e-3, I₃₃ = C = 1.7e-3,
+    /// I₁₂ = D = −2e-5 kg·m² (D the tensor entry). Diagonalised here: δ = ½·atan(2D/(A − B))
+    /// = +0.014283 rad (0.82°), I₁,₂ = (A+B)/2 ∓ √(((B−A)/2)² + D²).
+    ///
+    /// Contact (our choice, not in the sources): E* = 3 GPa (a hard polymer on glass), static
+    /// approach ≈ 8 µm, vertical contact frequency ≈ 170 Hz; c_d = 5 s/m as for the tippe top.
+    pub fn kane_levinson() -> Self {
+        let (a, b, c, d) = (2e-4f64, 1.6e-3f64, 1.7e-3f64, -2e-5f64);
+        let mean = 0.5 * (a + b);
+        let r = (0.5 * (b - a)).hypot(d);
+        let skew = 0.5 * libm::atan(2.0 * d / (a - b));
+        let t = T::from_f64;
+        Params {
+            semi_axes: [t(0.2), t(0.03), t(0.02)],
+            com_offset: t(0.01),
+            mass: t(1.0),
+            inertia: [t(mean - r), t(mean + r), t(c)],
+            skew: t(skew),
+            estar: t(3e9),
+            damping: t(5.0),
+            gravity: t(9.81),
+        }
+    }
+
+    /// The same body with equal bottom curvatures (a₂ = a₁ = 0.2 m: a sphere-like bottom of
+    /// radius a₁²/a₃ in every direction at rest) and no skew (δ = 0): nothing should reverse.
+    pub fn sphere_like() -> Self {
+        let p = Self::kane_levinson();
+        Params {
+            semi_axes: [p.semi_axes[0], p.semi_axes[0], p.semi_axes[2]],
+            skew: T::ZERO,
+            ..p
+        }
+    }
+}
+
+/// The contact geometry at one state, in closed form (see the [module docs](self)).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Geometry<T> {
+    /// Approach h (m): depth of the ellipsoid's lowest point below the floor (negative: apart).
+    pub h: T,
+    /// G → patch centre P (the floor point below the lowest point), world frame (m).
+    pub arm: Vec3<T>,
+    /// The lowest point of the ellipsoid relative to G, world frame (m).
+    pub lowest: Vec3<T>,
+    /// P, Q of the gap z = P x² + Q y² and the major axis' angle from world x.
+    pub curvatures: Curvatures<T>,
+}
+
+/// What the contact does at a state.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct ContactState<T> {
+    /// Approach h (m), negative when apart.
+    pub h: T,
+    /// Normal force N (N).
+    pub n: T,
+    /// Force on the rattleback, world frame (N).
+    pub force: Vec3<T>,
+    /// Torque on the rattleback about G, world frame (N·m).
+    pub torque: Vec3<T>,
+}
+
+/// Diagnostics of a state (see the [module docs](self)).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Probe<T> {
+    /// Spin ω·ẑ (rad/s).
+    pub spin: T,
+    /// Pitch: elevation of the long axis a₁ (rad).
+    pub pitch: T,
+    /// Roll: elevation of the axis a₂ (rad).
+    pub roll: T,
+    /// Total mechanical energy incl. the contact's elastic energy (J).
+    pub energy: T,
+    /// Normal force (N).
+    pub n: T,
+    /// Friction ratio |F_t|/N (0 without contact).
+    pub friction_ratio: T,
+    /// Approach h (m).
+    pub h: T,
+}
+
+/// The rattleback with friction law `L` (see the [module docs](self)).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Rattleback<T: Real, L: FrictionLaw> {
+    mass: T,
+    gravity: T,
+    inertia: Vec3<T>,
+    /// aᵢ².
+    axes2: [T; 3],
+    /// 1/aᵢ².
+    inv_axes2: [T; 3],
+    com_offset: T,
+    /// cos δ, sin δ.
+    skew: (T, T),
+    /// The curvatures at rest (fallback for a degenerate state).
+    rest: Curvatures<T>,
+    estar: Modulus<T>,
+    contact: VaryingContact<T, HuntCrossley<T>, L>,
+}
+
+impl<T: Real, L: FrictionLaw> Rattleback<T, L> {
+    /// The rattleback `p` with the friction law `friction`.
+    ///
+    /// Errors: [`Error::LengthNotPositive`] for a semi-axis ≤ 0, [`Error::NonFinite`], and
+    /// those of [`Modulus::new`] and [`HuntCrossley::new`].
+    pub fn new(p: &Params<T>, friction: Friction<T, L>) -> Result<Self, Error> {
+        let mut axes2 = [T::ZERO; 3];
+        let mut inv_axes2 = [T::ZERO; 3];
+        for ((a2, inv), a) in axes2.iter_mut().zip(inv_axes2.iter_mut()).zip(p.semi_axes) {
+            let a = crate::error::finite(a, "semi-axis")?;
+            if a <= T::ZERO {
+                return Err(Error::LengthNotPositive);
+            }
+            *a2 = a * a;
+            *inv = T::ONE / (a * a);
+        }
+        let estar = Modulus::new(p.estar)?;
+        let a3 = p.semi_axes[2];
+        let rest = Curvatures::new(T::HALF * a3 * inv_axes2[0], T::HALF * a3 * inv_axes2[1])?;
+        let (sin, cos) = crate::error::finite(p.skew, "skew")?.sin_cos();
+        Ok(Rattleback {
+            mass: p.mass,
+            gravity: p.gravity,
+            inertia: Vec3::new(p.inertia[0], p.inertia[1], p.inertia[2]),
+            axes2,
+            inv_axes2,
+            com_offset: crate::error::finite(p.com_offset, "com offset")?,
+            skew: (cos, sin),
+            rest,
+            estar,
+            contact: VaryingContact::new(estar, HuntCrossley::new(p.damping)?, friction),
+        })
+    }
+
+    /// Kane & Levinson's start: roll and pitch `tilt` (rad) each (a₂- and a₁-axis rotations of
+    /// the curvature frame), spin `spin` (rad/s) about the world vertical, the lowest point at
+    /// the static approach and at rest (rolling: Ġ = −ω × (G → P)).
+    pub fn initial_state(&self, tilt: T, spin: T) -> State<T> {
+        let (c, s) = self.skew;
+        // Curvature frame → world: roll about a₁ (x), then pitch about the turned a₂ (y); the
+        // body frame is the curvature frame turned by δ about e₃.
+        let q = Quat::about_x(tilt)
+            .product(Quat::about_y(tilt))
+            .product(Quat::about_z(s.atan2(c)))
+            .normalized();
+        let omega_w = Vec3::new(T::ZERO, T::ZERO, spin);
+        let omega = q.rotate_inv(omega_w);
+        let mut y = pack(Vec3::zero(), Vec3::zero(), q, omega);
+        let g0 = self.geometry(&y);
+        let h0 = self.static_approach(&g0.curvatures);
+        let r = Vec3::new(T::ZERO, T::ZERO, -g0.lowest.z - h0);
+        y = pack(r, Vec3::zero(), q, omega);
+        let arm = self.geometry(&y).arm;
+        pack(r, -omega_w.cross(arm), q, omega)
+    }
+
+    /// The static approach (mg/k_H)^{2/3} at the given curvatures (exact Hertz).
+    fn static_approach(&self, c: &Curvatures<T>) -> T {
+        let k = Hertz::new::<Newton>(c, self.estar)
+            .map(|h| h.stiffness())
+            .unwrap_or(T::ONE);
+        let x = self.mass * self.gravity / k;
+        // x^{2/3} = (x²)^{1/3}, host-side only (initial state).
+        (x * x).cbrt()
+    }
+
+    /// The contact geometry at state `y` in closed form (module docs). Total; a degenerate
+    /// (non-finite) state gives the curvatures of the body at rest.
+    pub fn geometry(&self, y: &State<T>) -> Geometry<T> {
+        let (r, _, q, _) = split(y);
+        self.geometry_at(r, q.normalized())
+    }
+
+    #[inline(always)]
+    fn geometry_at(&self, r: Vec3<T>, q: Quat<T>) -> Geometry<T> {
+        let [wx, wy, wz] = q.world_axes_in_body();
+        let (c, s) = self.skew;
+        // Body (principal) → curvature coordinates: R_z(δ).
+        let to_c = |v: Vec3<T>| Vec3::new(c * v.x - s * v.y, s * v.x + c * v.y, v.z);
+        let [a1, a2, a3] = self.axes2;
+        let [i1, i2, i3] = self.inv_axes2;
+        let u = -to_c(wz);
+        let su = Vec3::new(a1 * u.x, a2 * u.y, a3 * u.z);
+        let len = su.dot(u).sqrt();
+        let inv = T::ONE / len;
+        // Lowest point in curvature, then body coordinates, relative to G.
+        let xc = su * inv;
+        let lowest_b = Vec3::new(
+            c * xc.x + s * xc.y,
+            -s * xc.x + c * xc.y,
+            xc.z + self.com_offset,
+        );
+        let lowest = q.rotate(lowest_b);
+        let h = -(r.z + lowest.z);
+        // Curvature matrix of the graph over world (x, y): K = s·Tᵀ A T; the gap is ½K.
+        let tx = to_c(wx);
+        let ty = to_c(wy);
+        let form = |p: Vec3<T>, q: Vec3<T>| p.x * q.x * i1 + p.y * q.y * i2 + p.z * q.z * i3;
+        let half_len = T::HALF * len;
+        let curvatures = Curvatures::from_quadratic(
+            half_len * form(tx, tx),
+            half_len * form(ty, ty),
+            half_len * form(tx, ty),
+        )
+        .unwrap_or(self.rest);
+        Geometry {
+            h,
+            arm: Vec3::new(lowest.x, lowest.y, -r.z),
+            lowest,
+            curvatures,
+        }
+    }
+
+    /// The contact at state `y`.
+    pub fn contact(&self, y: &State<T>) -> ContactState<T> {
+        let (r, v, q, omega) = split(y);
+        let q = q.normalized();
+        self.contact_at(r, v, q, q.rotate(omega)).0
+    }
+
+    /// The contact at G = `r`, Ġ = `v`, unit attitude `q`, world angular velocity `w`; also
+    /// the geometry it used.
+    #[inline(always)]
+    fn contact_at(
+        &self,
+        r: Vec3<T>,
+        v: Vec3<T>,
+        q: Quat<T>,
+        w: Vec3<T>,
+    ) -> (ContactState<T>, Geometry<T>) {
+        let g = self.geometry_at(r, q);
+        if g.h <= T::ZERO {
+            return (
+                ContactState {
+                    h: g.h,
+                    ..ContactState::default()
+                },
+                g,
+            );
+        }
+        // Contact frame: z up (floor = A → rattleback = B), reference tangent world x (the
+        // frame `Curvatures::from_quadratic` measured the major angle in).
+        let z = [T::ZERO, T::ZERO, T::ONE];
+        let frame = Frame::new(z, [T::ONE, T::ZERO, T::ZERO], MajorAxis::of(&g.curvatures));
+        let (arm, w) = (g.arm.into(), w.into());
+        // The floor is at rest: v_rel is the rattleback's material point at P.
+        let v_rel = point_velocity(v.into(), w, arm);
+        // Non-finite only if the state is: then no friction (the step is rejected anyway).
+        let slip = frame.slip(v_rel, w).unwrap_or_default();
+        let wr = self
+            .contact
+            .wrench(&g.curvatures, g.h, frame.approach_rate(v_rel), slip);
+        let Load { force, torque } = frame.on_b(&wr, arm);
+        (
+            ContactState {
+                h: g.h,
+                n: wr.n,
+                force: force.into(),
+                torque: torque.into(),
+            },
+            g,
+        )
+    }
+
+    /// Spin, pitch, roll, energy, normal force and friction ratio at state `y`.
+    pub fn probe(&self, y: &State<T>) -> Probe<T> {
+        let (r, v, q, omega) = split(y);
+        let q = q.normalized();
+        let (contact, g) = self.contact_at(r, v, q, q.rotate(omega));
+        let elastic = if g.h > T::ZERO {
+            Hertz::new::<Newton>(&g.curvatures, self.estar)
+                .map(|k| k.energy(g.h))
+                .unwrap_or(T::ZERO)
+        } else {
+            T::ZERO
+        };
+        let energy = T::HALF * (self.mass * v.dot(v) + omega.dot(self.inertia.mul_elem(omega)))
+            + self.mass * self.gravity * r.z
+            + elastic;
+        let (c, s) = self.skew;
+        // Curvature axes a₁, a₂ in body coordinates: R_z(−δ) of the unit vectors.
+        let e1 = q.rotate(Vec3::new(c, -s, T::ZERO));
+        let e2 = q.rotate(Vec3::new(s, c, T::ZERO));
+        let ft = contact.force.x.hypot(contact.force.y);
+        Probe {
+            spin: q.rotate(omega).z,
+            pitch: elevation(e1),
+            roll: elevation(e2),
+            energy,
+            n: contact.n,
+            friction_ratio: if contact.n > T::ZERO {
+                ft / contact.n
+            } else {
+                T::ZERO
+            },
+            h: contact.h,
+        }
+    }
+}
+
+/// asin(e·ẑ) of a unit vector e: its elevation above the floor's plane (rad).
+fn elevation<T: Real>(e: Vec3<T>) -> T {
+    e.z.atan2(e.x.hypot(e.y))
+}
+
+impl<T: Real, L: FrictionLaw> Ode<T, N> for Rattleback<T, L> {
+    #[inline]
+    fn rhs(&self, _t: T, y: &State<T>) -> State<T> {
+        let (r, v, q, omega) = split(y);
+        let qn = q.normalized();
+        let (c, _) = self.contact_at(r, v, qn, qn.rotate(omega));
+        let force = c.force - Vec3::new(T::ZERO, T::ZERO, self.mass * self.gravity);
+        let a = force * (T::ONE / self.mass);
+        let dq = q.derivative(omega);
+        let dw = euler_rate(self.inertia, omega, qn.rotate_inv(c.torque));
+        [
+            v.x, v.y, v.z, a.x, a.y, a.z, dq.w, dq.x, dq.y, dq.z, dw.x, dw.y, dw.z,
+        ]
+    }
+
+    #[inline]
+    fn project(&self, y: &mut State<T>) {
+        let (r, v, q, omega) = split(y);
+        *y = pack(r, v, q.normalized(), omega);
+    }
+}
+
+/// The state's parts: G, Ġ, q (as stored), ω (body).
+#[inline(always)]
+fn split<T: Real>(y: &State<T>) -> (Vec3<T>, Vec3<T>, Quat<T>, Vec3<T>) {
+    let [rx, ry, rz, vx, vy, vz, w, x, y, z, wx, wy, wz] = *y;
+    (
+        Vec3::new(rx, ry, rz),
+        Vec3::new(vx, vy, vz),
+        Quat { w, x, y, z },
+        Vec3::new(wx, wy, wz),
+    )
+}
+
+#[inline(always)]
+fn pack<T: Real>(r: Vec3<T>, v: Vec3<T>, q: Quat<T>, w: Vec3<T>) -> State<T> {
+    [
+        r.x, r.y, r.z, v.x, v.y, v.z, q.w, q.x, q.y, q.z, w.x, w.y, w.z,
+    ]
+}
