@@ -391,10 +391,12 @@ impl Eccentricity for HamrockDowson {
 /// [`HamrockDowson`] 277: micromath's `exp` costs more than libm's), host ≈ 112 ns (as
 /// [`HamrockDowson`]). Not worth using: no cheaper, no better.
 #[cfg(feature = "micromath")]
+#[cfg_attr(docsrs, doc(cfg(feature = "micromath")))]
 #[derive(Clone, Copy, Debug, Default)]
 pub struct HamrockDowsonMicromath;
 
 #[cfg(feature = "micromath")]
+#[cfg_attr(docsrs, doc(cfg(feature = "micromath")))]
 impl Eccentricity for HamrockDowsonMicromath {
     const NAME: &'static str = "hamrock-dowson-micromath";
 

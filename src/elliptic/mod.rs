@@ -65,6 +65,7 @@ mod theta;
 pub use agm::Agm;
 pub use table::Table;
 #[cfg(feature = "micromath")]
+#[cfg_attr(docsrs, doc(cfg(feature = "micromath")))]
 pub use theta::ThetaMicromath;
 pub use theta::{Theta, ThetaTerms, paper_k_e};
 

@@ -72,8 +72,10 @@ fn lookup_f32(m1: f32) -> (f32, f32) {
     let bits = m1.to_bits();
     let index = ((bits >> SHIFT).wrapping_sub(BASE) as usize).min(LAST);
     let u = f32::from_bits((bits & ((1 << SHIFT) - 1)) | 1.0f32.to_bits()) - 1.0;
+    // The cubics are written out: the type checks the generated rows (2 × (degree + 1)) and
+    // the assertion their degree.
     const _: () = assert!(data::F32_DEG == 3);
-    let c = &data::F32[index];
+    let c: &[f32; 2 * (data::F32_DEG + 1)] = &data::F32[index];
     let b = c[0] + u * (c[1] + u * (c[2] + u * c[3]));
     let d = c[4] + u * (c[5] + u * (c[6] + u * c[7]));
     (b, d)

@@ -160,10 +160,12 @@ impl Method for Theta {
 /// L ≥ 3.1. Cost: M4F **117** instructions (`f32`; [`Theta`] 122), host ≈ 41 ns (as
 /// [`Theta`] within noise).
 #[cfg(feature = "micromath")]
+#[cfg_attr(docsrs, doc(cfg(feature = "micromath")))]
 #[derive(Clone, Copy, Debug, Default)]
 pub struct ThetaMicromath;
 
 #[cfg(feature = "micromath")]
+#[cfg_attr(docsrs, doc(cfg(feature = "micromath")))]
 impl Method for ThetaMicromath {
     const NAME: &'static str = "theta-micromath";
 

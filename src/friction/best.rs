@@ -587,10 +587,12 @@ impl Best {
 /// instructions on average (`f32`; [`Best`] per call 1,324), host ≈ 195 ns (as [`Best`] within
 /// noise). Marginal: 2 % fewer instructions, only where e² changes every call.
 #[cfg(feature = "micromath")]
+#[cfg_attr(docsrs, doc(cfg(feature = "micromath")))]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct BestMicromath;
 
 #[cfg(feature = "micromath")]
+#[cfg_attr(docsrs, doc(cfg(feature = "micromath")))]
 impl FrictionLaw for BestMicromath {
     const NAME: &'static str = "best-micromath";
     type Branch = Branch;

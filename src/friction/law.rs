@@ -98,12 +98,33 @@ pub struct Friction<T, L = super::Best> {
     law: PhantomData<L>,
 }
 
+impl<T: Real> Friction<T> {
+    /// The default law ([`crate::friction::Best`]) from the friction coefficient `f` ≥ 0 and
+    /// the regularization speed `delta` ≥ 0 (m/s). Not generic over the law, so it needs no
+    /// annotation where it is built (`Contact::hertz::<Newton>(…, Friction::new(0.1, 1e-4)?)`);
+    /// for another law name it: [`Friction::with_law`]. Errors as [`Friction::with_law`].
+    ///
+    /// ```
+    /// use contensou::friction::{Best, Friction};
+    ///
+    /// let law = Friction::new(0.1_f64, 1e-4)?; // Friction<f64, Best>
+    /// assert_eq!(law, Friction::<f64, Best>::with_law(0.1, 1e-4)?);
+    /// # Ok::<(), contensou::Error>(())
+    /// ```
+    #[inline]
+    pub fn new(f: T, delta: T) -> Result<Self, Error> {
+        Self::with_law(f, delta)
+    }
+}
+
 impl<T: Real, L: FrictionLaw> Friction<T, L> {
-    /// From the friction coefficient `f` ≥ 0 and the regularization speed `delta` ≥ 0 (m/s).
+    /// The law `L` (named by a turbofish, `Friction::<f64, Simplified>::with_law(0.3, 1e-4)`,
+    /// or inferred from where the value goes) from the friction coefficient `f` ≥ 0 and the
+    /// regularization speed `delta` ≥ 0 (m/s). [`Friction::new`] is this for the default law.
     /// Errors: [`Error::NonFinite`] (`"f"`, `"delta"`) for NaN or ±∞,
     /// [`Error::FrictionCoefficientNegative`] for f < 0, [`Error::RegularizationSpeedNegative`]
     /// for δ < 0 (δ = 0 is allowed and means no regularization).
-    pub fn new(f: T, delta: T) -> Result<Self, Error> {
+    pub fn with_law(f: T, delta: T) -> Result<Self, Error> {
         let f = finite(f, "f")?;
         let delta = finite(delta, "delta")?;
         if f < T::ZERO {
