@@ -44,7 +44,7 @@
 //!   the shape from [`Table`] once at construction ([`Contact::hertz`]; constants
 //!   precomputed, per step a square root and the friction law). [`crate::shape::Newton`] would
 //!   be exact to 1.5e-15 instead of 3.6e-12 (f64), but in `f32` the table is the more accurate
-//!   (3.0e-7 against 7.6e-7) and it is 5 KB smaller and 13× cheaper to build, so the table is
+//!   (3.7e-7 against 7.6e-7) and it is 5 KB smaller and 13× cheaper to build, so the table is
 //!   the cheapest adequate choice. [`Elliptic`] + [`Varying`]: [`VaryingContact`], the shape
 //!   from [`Table`] every step (fixed cost, no elliptic integral). N, a and b are exact-grade
 //!   (relative error ≤ [`NORMAL_BOUND`]) in every configuration but one: a [`Fixed`] contact
