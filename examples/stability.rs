@@ -471,8 +471,8 @@ fn coulomb_chart() -> (Chart, String) {
         let delta = 10f64.powi(-k);
         let law = Friction::<f64, Coulomb>::with_law(f, delta).unwrap();
         let (eu_est, rk_est) = (
-            law.stable_step(mass, n, Explicit::Euler),
-            law.stable_step(mass, n, Explicit::Rk4),
+            law.stable_step(&Constants::circle(), mass, n, Explicit::Euler),
+            law.stable_step(&Constants::circle(), mass, n, Explicit::Rk4),
         );
         let eu = measured_step(&law, mass, n, Explicit::Euler, false, eu_est);
         let rk = measured_step(&law, mass, n, Explicit::Rk4, false, rk_est);
@@ -629,7 +629,7 @@ fn spin_chart() -> (Chart, String) {
                 } else {
                     Friction::<f64, Simplified>::with_law(f, delta)
                         .unwrap()
-                        .stable_spin_step(1.0, inertia, n, scheme)
+                        .stable_spin_step(&k, 1.0, inertia, n, scheme)
                 };
                 let mut worst = f64::INFINITY;
                 for probe in spin_probes(is_best, e2, m1, delta) {
@@ -756,7 +756,7 @@ fn main() {
             format!(
                 "δ → 0 (stiffness fN/δ) — {s_coul}; Euler oscillates from h*/2 (chart `coulomb_step`)"
             ),
-            "`Friction::<T, Coulomb>::stable_step(mass, n, Explicit)` (also for `Simplified`): limit·mδ/(fN); 0 for δ = 0",
+            "`Friction::<T, Coulomb>::stable_step(&Constants, mass, n, Explicit)` (also for `Simplified`; every law has this signature, and `Contact::stable_step(mass, n, Explicit)`): limit·mδ/(fN); 0 for δ = 0",
             "stable_step_matches_the_measured_bisection, stable_step_edge_cases_are_total",
         ),
         (
@@ -772,7 +772,7 @@ fn main() {
             format!(
                 "δ → 0 (torque stiffness κ_T·fN·a²/δ, largest with spin and slip together) — {s_spin} (chart `spin_step`)"
             ),
-            "`Friction::<T, Simplified>::stable_spin_step(a, inertia, n, Explicit)`: limit·5Iδ/(2fN·a²); `Friction::<T, Best>::stable_spin_step(&Constants, a, inertia, n, Explicit)`: limit·Iδ/(κ_T·fN·a²), κ_T = `friction::best::spin_stiffness` (maximised on the exact quartic, within 1e-13 of the mpmath maximisation `tools/gen_spin_stiffness.py`); `Coulomb`: no torque, `T::MAX`; 0 for δ = 0",
+            "`Friction::<T, Simplified>::stable_spin_step(&Constants, a, inertia, n, Explicit)`: limit·5Iδ/(2fN·a²); `Friction::<T, Best>::stable_spin_step(&Constants, a, inertia, n, Explicit)`: limit·Iδ/(κ_T·fN·a²), κ_T = `friction::best::spin_stiffness` (maximised on the exact quartic, within 1e-13 of the mpmath maximisation `tools/gen_spin_stiffness.py`); `Coulomb`: no torque, `T::MAX`; 0 for δ = 0",
             "spin_stiffness_matches_the_maximisation, spin_stiffness_is_largest_inside_the_ramp_and_the_ellipse, spin_stable_step_is_conservative_and_tight, spin_stable_step_edge_cases_are_total",
         ),
     ];

@@ -7,9 +7,9 @@
 //! cargo run --release --example tippe_top -- DIR     # … into DIR instead of out/
 //! ```
 //!
-//! The PNG has no text (no font backend): x = t from 0 to 8 s (grid every second), y = θ from 0 to
-//! 3.3 rad, black lines at θ = 0 and π, grey at θ* = arccos(−10/13) (both spheres touch);
-//! red `simplified`, blue `coulomb-steep`, green `coulomb-gentle`.
+//! The PNG is drawn like the report's charts (its renderer, `examples/report/plot.rs`, and the
+//! committed font): θ (rad) against t (s), one labelled curve per law with its δ, the line
+//! θ* = arccos(−10/13) where both spheres touch, legend and title.
 //!
 //! Runs (f64, fixed-step RK4, h = 10 µs ≈ 1/68 of the 1.5 kHz contact period, T = 8 s):
 //! `simplified` (the paper's simplified Contensou law, δ = 1e-4 m/s), `coulomb-steep`
@@ -22,6 +22,11 @@ use std::time::Instant;
 use contensou::friction::{Best, Coulomb, Friction, FrictionLaw, Simplified};
 use contensou::scenes::integrate::{Tolerance, dopri45, rk4};
 use contensou::scenes::tippe_top::{N, Params, Probe, TippeTop};
+
+/// The report's chart renderer (plotters with the committed font); only `lines` is used here.
+#[path = "report/plot.rs"]
+#[allow(dead_code)]
+mod plot;
 
 const THETA0: f64 = 0.1;
 const SPIN: f64 = 180.0;
@@ -36,6 +41,7 @@ fn theta_star() -> f64 {
 
 struct Run {
     name: &'static str,
+    delta: f64,
     rows: Vec<(f64, Probe<f64>)>,
     wall: f64,
 }
@@ -79,6 +85,7 @@ fn fixed<L: FrictionLaw>(name: &'static str, delta: f64) -> Run {
     });
     Run {
         name,
+        delta,
         rows,
         wall: start.elapsed().as_secs_f64(),
     }
@@ -210,44 +217,33 @@ fn adaptive<L: FrictionLaw>(name: &str, delta: f64) -> (usize, f64) {
     (s.rhs_evals, wall)
 }
 
-/// θ(t) of every run, θ* and π dashed, into a PNG (no fonts: axes 0…T_END s, 0…π rad).
+/// θ(t) of every run and the θ* line, labelled like the report's charts (its renderer and the
+/// committed font).
 fn plot(runs: &[Run], path: &str) {
-    use plotters::prelude::*;
-    let root = BitMapBackend::new(path, (900, 500)).into_drawing_area();
-    root.fill(&WHITE).unwrap();
-    let area = root.margin(20, 20, 20, 20);
-    let mut chart = ChartBuilder::on(&area)
-        .build_cartesian_2d(0.0..T_END, 0.0..3.3f64)
-        .unwrap();
-    let grid = RGBColor(220, 220, 220);
-    for k in 0..=(T_END as usize) {
-        let t = k as f64;
-        chart
-            .draw_series(LineSeries::new([(t, 0.0), (t, 3.3)], grid))
-            .unwrap();
+    plot::register();
+    let mut series: Vec<plot::Series> = runs
+        .iter()
+        .map(|r| {
+            let label = format!("{} (δ = {:.0e} m/s)", r.name, r.delta);
+            (label, r.rows.iter().map(|(t, p)| (*t, p.theta)).collect())
+        })
+        .collect();
+    series.push((
+        format!("θ* = {:.3} rad: both spheres touch", theta_star()),
+        vec![(0.0, theta_star()), (T_END, theta_star())],
+    ));
+    let title = format!(
+        "Tippe top: tilt θ(t) by friction law (θ₀ = {THETA0} rad, ω₃ = {SPIN} rad/s, f = {F}, RK4 h = {H:.0e} s)"
+    );
+    let t = plot::Axis {
+        title: "t (s)",
+        log: false,
+    };
+    let theta = plot::Axis {
+        title: "θ (rad): 0 stem up, π inverted",
+        log: false,
+    };
+    if let Err(e) = plot::lines(std::path::Path::new(path), &title, t, theta, &series, false) {
+        eprintln!("tippe_top: {path}: {e}");
     }
-    for (y, c) in [
-        (0.0, BLACK),
-        (theta_star(), RGBColor(150, 150, 150)),
-        (std::f64::consts::PI, BLACK),
-    ] {
-        chart
-            .draw_series(LineSeries::new([(0.0, y), (T_END, y)], c))
-            .unwrap();
-    }
-    let colours = [
-        RGBColor(200, 30, 30),
-        RGBColor(30, 30, 200),
-        RGBColor(30, 150, 30),
-        RGBColor(230, 140, 0),
-    ];
-    for (r, c) in runs.iter().zip(colours) {
-        chart
-            .draw_series(LineSeries::new(
-                r.rows.iter().map(|(t, p)| (*t, p.theta)),
-                c.stroke_width(2),
-            ))
-            .unwrap();
-    }
-    root.present().unwrap();
 }

@@ -368,7 +368,7 @@ fn stable_step_matches_the_measured_bisection() {
     for delta in [1e-3, 1e-5] {
         let law = Friction::<f64, Coulomb>::with_law(f, delta).unwrap();
         for scheme in [Explicit::Euler, Explicit::Rk4] {
-            let h = law.stable_step(mass, n, scheme);
+            let h = law.stable_step(&Constants::circle(), mass, n, scheme);
             assert!((h / (scheme.limit() * mass * delta / (f * n)) - 1.0).abs() < 1e-15);
             let measured = measured_step(&law, mass, n, scheme, false, h);
             assert!(
@@ -377,7 +377,7 @@ fn stable_step_matches_the_measured_bisection() {
             );
             // the simplified law without spin is the same ramp
             let simple = Friction::<f64, Simplified>::with_law(f, delta).unwrap();
-            assert_eq!(simple.stable_step(mass, n, scheme), h);
+            assert_eq!(simple.stable_step(&Constants::circle(), mass, n, scheme), h);
             let measured = measured_step(&simple, mass, n, scheme, false, h);
             assert!(
                 rel(measured, h) <= 1e-3,
@@ -385,7 +385,7 @@ fn stable_step_matches_the_measured_bisection() {
             );
         }
         // Euler oscillates (sign flips) from half the stable step
-        let h = law.stable_step(mass, n, Explicit::Euler);
+        let h = law.stable_step(&Constants::circle(), mass, n, Explicit::Euler);
         let osc = measured_step(&law, mass, n, Explicit::Euler, true, h);
         assert!(rel(osc, 0.5 * h) <= 1e-3, "{osc:e} vs {:e}", 0.5 * h);
     }
@@ -398,19 +398,25 @@ fn stable_step_edge_cases_are_total() {
     assert_eq!(
         Friction::<f32, Coulomb>::with_law(0.3, 0.0)
             .unwrap()
-            .stable_step(1.0, 1.0, e),
+            .stable_step(&Constants::circle(), 1.0, 1.0, e),
         0.0
     );
-    assert_eq!(law.stable_step(0.0, 1.0, e), 0.0);
-    assert_eq!(law.stable_step(-1.0, 1.0, e), 0.0);
-    assert_eq!(law.stable_step(f32::NAN, 1.0, e), 0.0);
-    assert_eq!(law.stable_step(1.0, 0.0, e), f32::MAX);
-    assert_eq!(law.stable_step(1.0, f32::NAN, e), f32::MAX);
-    assert_eq!(law.stable_step(f32::MAX, 1e-30, e), f32::MAX);
+    assert_eq!(law.stable_step(&Constants::circle(), 0.0, 1.0, e), 0.0);
+    assert_eq!(law.stable_step(&Constants::circle(), -1.0, 1.0, e), 0.0);
+    assert_eq!(law.stable_step(&Constants::circle(), f32::NAN, 1.0, e), 0.0);
+    assert_eq!(law.stable_step(&Constants::circle(), 1.0, 0.0, e), f32::MAX);
+    assert_eq!(
+        law.stable_step(&Constants::circle(), 1.0, f32::NAN, e),
+        f32::MAX
+    );
+    assert_eq!(
+        law.stable_step(&Constants::circle(), f32::MAX, 1e-30, e),
+        f32::MAX
+    );
     assert_eq!(
         Friction::<f32, Coulomb>::with_law(0.0, 1e-4)
             .unwrap()
-            .stable_step(1.0, 1.0, e),
+            .stable_step(&Constants::circle(), 1.0, 1.0, e),
         f32::MAX
     );
     // the RK4 limit: |R(−x)| = 1 for R(z) = 1 + z + z²/2 + z³/6 + z⁴/24
@@ -680,7 +686,7 @@ fn spin_stable_step_is_conservative_and_tight() {
             let simple = Friction::<f64, Simplified>::with_law(f, delta).unwrap();
             let best = Friction::<f64, Best>::with_law(f, delta).unwrap();
             for (is_best, h_star) in [
-                (false, simple.stable_spin_step(1.0, inertia, n, scheme)),
+                (false, simple.stable_spin_step(&k, 1.0, inertia, n, scheme)),
                 (true, best.stable_spin_step(&k, 1.0, inertia, n, scheme)),
             ] {
                 for probe in spin_probes(is_best, e2, m1, delta) {
@@ -764,10 +770,10 @@ fn spin_stable_step_edge_cases_are_total() {
     // h* = 2·Iδ/(κ·f·N·a²), I = 2, N = 3, a = 0.5
     let want = |kappa: f32| 2.0 * 2.0 * 1e-4 / (kappa * 0.3 * 3.0 * 0.25);
     assert!((best.stable_spin_step(&k, 0.5, 2.0, 3.0, e) / want(kt) - 1.0).abs() < 1e-6);
-    assert!((simple.stable_spin_step(0.5, 2.0, 3.0, e) / want(0.4) - 1.0).abs() < 1e-6);
+    assert!((simple.stable_spin_step(&k, 0.5, 2.0, 3.0, e) / want(0.4) - 1.0).abs() < 1e-6);
     for g in [
         &|a: f32, i: f32, n: f32| best.stable_spin_step(&k, a, i, n, e) as f64,
-        &|a: f32, i: f32, n: f32| simple.stable_spin_step(a, i, n, e) as f64,
+        &|a: f32, i: f32, n: f32| simple.stable_spin_step(&k, a, i, n, e) as f64,
     ] as [&dyn Fn(f32, f32, f32) -> f64; 2]
     {
         assert_eq!(g(1.0, 0.0, 1.0), 0.0);
@@ -791,7 +797,7 @@ fn spin_stable_step_edge_cases_are_total() {
     assert_eq!(
         Friction::<f32, Simplified>::with_law(0.3, 0.0)
             .unwrap()
-            .stable_spin_step(1.0, 1.0, 1.0, e),
+            .stable_spin_step(&k, 1.0, 1.0, 1.0, e),
         0.0
     );
     assert_eq!(
@@ -801,8 +807,8 @@ fn spin_stable_step_edge_cases_are_total() {
         f32::MAX
     );
     // Coulomb: no torque
-    assert_eq!(coulomb.stable_spin_step(1.0, 1.0, 1.0, e), f32::MAX);
-    assert_eq!(coulomb.stable_spin_step(1.0, f32::NAN, 1.0, e), 0.0);
+    assert_eq!(coulomb.stable_spin_step(&k, 1.0, 1.0, 1.0, e), f32::MAX);
+    assert_eq!(coulomb.stable_spin_step(&k, 1.0, f32::NAN, 1.0, e), 0.0);
     // κ_T over the whole f32 and f64 parameter domains: finite, ≥ C
     for m1 in [1.0, 0.5, 1e-3, 5.960464477539063e-8] {
         let k = Constants::from_parameter(Parameter::<f32>::from_complement(m1).unwrap());
@@ -824,4 +830,77 @@ fn per_shape<R: Send>(run: impl Fn(f64, f64) -> Vec<R> + Sync) -> Vec<R> {
             .collect();
         hs.into_iter().flat_map(|h| h.join().unwrap()).collect()
     })
+}
+
+// ---- the stable steps: one signature for every law, callable from a built contact ---------
+
+/// Every law answers `stable_step(&Constants, mass, n, scheme)` and
+/// `stable_spin_step(&Constants, a, inertia, n, scheme)`; the laws that ignore δ (no ramp)
+/// have no stable explicit step where friction acts (0) and no limit where it does not.
+#[test]
+fn stable_steps_have_one_signature_and_come_from_a_contact() {
+    use contensou::contact::Contact;
+    use contensou::friction::{Ellipsoid, Exact, FrictionLaw, Pade};
+    use contensou::normal::Undamped;
+    fn steps<L: FrictionLaw>(k: &Constants<f64>, a: f64, n: f64) -> (f64, f64) {
+        let law = Friction::<f64, L>::with_law(0.3, 1e-4).unwrap();
+        let e = Explicit::Euler;
+        (
+            law.stable_step(k, 2.0, n, e),
+            law.stable_spin_step(k, a, 3.0, n, e),
+        )
+    }
+    let k = Constants::<f64>::circle();
+    for (name, s) in [
+        (
+            "pade",
+            steps::<Pade> as fn(&Constants<f64>, f64, f64) -> (f64, f64),
+        ),
+        ("ellipsoid", steps::<Ellipsoid>),
+        ("exact", steps::<Exact>),
+    ] {
+        assert_eq!(s(&k, 0.5, 1.0), (0.0, 0.0), "{name}");
+        assert_eq!(s(&k, 0.5, 0.0), (f64::MAX, f64::MAX), "{name}: no contact");
+        assert_eq!(
+            s(&k, 0.0, 1.0).1,
+            f64::MAX,
+            "{name}: point contact, no torque"
+        );
+    }
+    // Closed forms: h* = 2mδ/(κfN), 2Iδ/(κ_T·fN·a²).
+    let want = |kappa: f64, kappa_t: f64| {
+        (
+            2.0 * 2.0 * 1e-4 / (kappa * 0.3),
+            2.0 * 3.0 * 1e-4 / (kappa_t * 0.3 * 0.25),
+        )
+    };
+    let rel2 = |(a, b): (f64, f64), (c, d): (f64, f64)| rel(a, c).max(rel(b, d));
+    assert!(rel2(steps::<Simplified>(&k, 0.5, 1.0), want(1.0, 0.4)) < 1e-15);
+    assert_eq!(steps::<Coulomb>(&k, 0.5, 1.0), (want(1.0, 1.0).0, f64::MAX));
+    let best = steps::<Best>(&k, 0.5, 1.0);
+    assert!(rel2(best, want(ramp_stiffness(&k), spin_stiffness(&k))) < 1e-15);
+
+    // From a built contact (the default law `Best` needs the shape's constants): the same
+    // numbers as the law's call with the constants of that shape.
+    let curv = Curvatures::new(40.0, 90.0).unwrap();
+    let contact = Contact::hertz::<Newton>(
+        &curv,
+        Modulus::new(1e11).unwrap(),
+        Undamped,
+        Friction::<f64>::new(0.3, 1e-4).unwrap(),
+    )
+    .unwrap();
+    let shape = Constants::from_shape(&Newton::shape(Ratio::of(&curv).unwrap()));
+    assert_eq!(*contact.constants(), shape);
+    let e = Explicit::Rk4;
+    let law = Friction::<f64, Best>::with_law(0.3, 1e-4).unwrap();
+    assert_eq!(
+        contact.stable_step(2.0, 3.0, e),
+        law.stable_step(&shape, 2.0, 3.0, e)
+    );
+    assert_eq!(
+        contact.stable_spin_step(1e-4, 2.0, 3.0, e),
+        law.stable_spin_step(&shape, 1e-4, 2.0, 3.0, e)
+    );
+    assert!(contact.stable_step(2.0, 3.0, e) < 2.785 * 2.0 * 1e-4 / (0.3 * 3.0 * 2.52));
 }

@@ -37,13 +37,16 @@
 //! ```
 
 use crate::friction::law::{PerCall, PerContact};
-use crate::friction::{Best, Constants, Friction, FrictionLaw, Slip, Tangential};
+use crate::friction::{Best, Constants, Explicit, Friction, FrictionLaw, Slip, Tangential};
 use crate::geometry::Curvatures;
 use crate::normal::{Damping, Hertz, Modulus, NormalLaw, Patch};
 use crate::shape::{self, Eccentricity, Ratio, Shape};
 use crate::{Error, Real};
 
-/// The contact wrench on body B from body A, in the contact frame (SI).
+/// The contact wrench on body B from body A, in the contact frame (SI): x the major axis, y the
+/// minor axis, z the normal from A into B. N, F_x, F_y act at the patch centre P; T_z is a couple
+/// about z. Body A receives the opposite. [`crate::frame`] turns it into a world force and a
+/// torque about each body's centre of mass (see [`crate::guide`]).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Wrench<T, B> {
     /// Normal force N ≥ 0 (N), along +z (from A into B).
@@ -81,12 +84,40 @@ fn wrench_of<T: Real, B>(patch: Patch<T>, t: Tangential<T, B>) -> Wrench<T, B> {
 ///
 /// Cost per step (f32, Cortex-M4F, Hertz + undamped): `bench-results/qemu.csv`, stage `wrench`,
 /// method `fixed` ([`crate::friction::Simplified`]) and `fixed-best` ([`Best`]).
+///
+/// The wrench comes back in the contact frame (x the major axis, z from A into B, on body B;
+/// see [`crate::guide`]); [`crate::frame::Frame`] turns it into world loads.
+///
+/// # Example
+///
+/// ```
+/// use contensou::contact::Contact;
+/// use contensou::friction::{Friction, Slip};
+/// use contensou::geometry::Curvatures;
+/// use contensou::normal::{HuntCrossley, Material, Modulus};
+///
+/// // A 5 mm steel ball on a steel plate: a circle, so no eccentricity method is linked.
+/// let steel = Material::new(2.1e11, 0.3)?;
+/// let contact = Contact::circular(
+///     &Curvatures::sphere_plane(5e-3)?,
+///     Modulus::of(steel, steel)?,
+///     HuntCrossley::new(1.0)?, // restitution ≈ 1 − c_d·v
+///     Friction::<f64>::new(0.2, 1e-4)?, // the default law, `Best`
+/// )?;
+/// // Per step: approach 1 µm, compressing at 1 mm/s, sliding along x at 5 cm/s, no spin.
+/// let w = contact.wrench(1e-6, 1e-3, Slip::new(0.05, 0.0, 0.0)?);
+/// assert!(w.n > 0.0 && (w.fx + 0.2 * w.n).abs() < 1e-9 * w.n); // F = −fN: full sliding
+/// assert_eq!((w.fy, w.tz), (0.0, 0.0));
+/// assert_eq!(contact.wrench(-1e-6, 0.0, Slip::new(0.05, 0.0, 0.0)?).n, 0.0); // apart
+/// # Ok::<(), contensou::Error>(())
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Contact<T: Real, N, D, L: FrictionLaw = Best> {
     normal: N,
     damping: D,
     friction: Friction<T, L>,
     prepared: L::Prepared<T>,
+    constants: Constants<T>,
 }
 
 impl<T: Real, D: Damping<T>, L: FrictionLaw> Contact<T, Hertz<T>, D, L> {
@@ -185,10 +216,16 @@ impl<T: Real, N: NormalLaw<T>, D: Damping<T>, L: FrictionLaw> Contact<T, N, D, L
             damping,
             friction,
             prepared: L::prepare(&constants),
+            constants,
         }
     }
 
     /// One step: approach h (m), its rate ḣ (m/s), slip → the wrench on B from A. Total.
+    ///
+    /// h > 0 is overlap (h ≤ 0: apart, the zero wrench); **ḣ > 0 is compression** (read only by
+    /// the damping law); the slip is B's velocity relative to A at the patch centre P and the
+    /// relative spin about the normal, in the contact frame (x the major axis, z from A into B).
+    /// From two bodies' states and back to world loads: [`crate::frame`], [`crate::guide`].
     #[inline(always)]
     pub fn wrench(&self, h: T, hdot: T, slip: Slip<T>) -> Wrench<T, L::Branch> {
         let patch = self.normal.damped_patch(h, hdot, &self.damping);
@@ -209,6 +246,58 @@ impl<T: Real, N: NormalLaw<T>, D: Damping<T>, L: FrictionLaw> Contact<T, N, D, L
     pub fn prepared(&self) -> &L::Prepared<T> {
         &self.prepared
     }
+
+    /// The patch shape's friction constants (e², A, B, C, …), for every law.
+    pub fn constants(&self) -> &Constants<T> {
+        &self.constants
+    }
+
+    /// The friction law `L`'s coefficient and regularization speed.
+    pub fn friction(&self) -> &Friction<T, L> {
+        &self.friction
+    }
+
+    /// The largest stable step of an explicit `scheme` for the slip, for an effective `mass`
+    /// (kg) at normal force `n` (N): [`Friction::stable_step`] with this contact's shape, the
+    /// same call for every law. **`mass` is the effective mass at the contact point**: 2m/7
+    /// for a solid ball of mass m rolling on its surface, not m (see
+    /// [`Friction::stable_step`]). Host/construction use (for `Best` it evaluates
+    /// [`ramp_stiffness`](crate::friction::best::ramp_stiffness)).
+    ///
+    /// ```
+    /// use contensou::contact::Contact;
+    /// use contensou::friction::{Explicit, Friction};
+    /// use contensou::geometry::Curvatures;
+    /// use contensou::normal::{Modulus, Undamped};
+    /// use contensou::shape::Newton;
+    ///
+    /// // A steel ball, R = 10 mm, m = 32.7 g, on a plane: f = 0.1, δ = 1e-4 m/s, N = mg.
+    /// let (r, m) = (10e-3, 32.67e-3);
+    /// let contact = Contact::hertz::<Newton>(
+    ///     &Curvatures::sphere_plane(r)?,
+    ///     Modulus::new(1.1538e11)?,
+    ///     Undamped,
+    ///     Friction::<f64>::new(0.1, 1e-4)?,
+    /// )?;
+    /// let h_slip = contact.stable_step(2.0 * m / 7.0, m * 9.81, Explicit::Euler);
+    /// let a = 2.75e-5; // the patch radius at that load (m)
+    /// let h_spin = contact.stable_spin_step(a, 0.4 * m * r * r, m * 9.81, Explicit::Euler);
+    /// assert!(h_slip > 1e-5 && h_slip < 3e-5 && h_spin > 1e-3);
+    /// # Ok::<(), contensou::Error>(())
+    /// ```
+    pub fn stable_step(&self, mass: T, n: T, scheme: Explicit) -> T {
+        self.friction.stable_step(&self.constants, mass, n, scheme)
+    }
+
+    /// The largest stable step of an explicit `scheme` for the spin about the normal, for an
+    /// effective moment of inertia `inertia` (kg·m², about the normal) at major semi-axis `a`
+    /// (m) and normal force `n` (N): [`Friction::stable_spin_step`] with this contact's shape,
+    /// the same call for every law. Host/construction use (for `Best` it evaluates
+    /// [`spin_stiffness`](crate::friction::best::spin_stiffness), ≈ 26 µs).
+    pub fn stable_spin_step(&self, a: T, inertia: T, n: T, scheme: Explicit) -> T {
+        self.friction
+            .stable_spin_step(&self.constants, a, inertia, n, scheme)
+    }
 }
 
 /// A contact whose curvatures change every step: the eccentricity and every shape constant
@@ -221,6 +310,36 @@ impl<T: Real, N: NormalLaw<T>, D: Damping<T>, L: FrictionLaw> Contact<T, N, D, L
 ///
 /// The friction law defaults to [`Best`], evaluated in its per-call form (nothing precomputed,
 /// e² may change every call).
+///
+/// # Example
+///
+/// A contact point wandering over a body of varying curvature: this step's [`Curvatures`] go
+/// into the call, and this step's major axis into the frame (it turns by 90° where P and Q
+/// cross; the world force does not jump, see [`crate::frame`]).
+///
+/// ```
+/// use contensou::contact::VaryingContact;
+/// use contensou::frame::{ContactFrame, Frame, MajorAxis};
+/// use contensou::friction::Friction;
+/// use contensou::geometry::Curvatures;
+/// use contensou::normal::{Modulus, Undamped};
+///
+/// let contact = VaryingContact::new(Modulus::new(1.15e11)?, Undamped, Friction::<f64>::new(0.1, 1e-4)?);
+/// let (v_rel, w_rel) = ([0.02, 0.01, 0.0], [0.0, 0.0, 30.0]); // world, B relative to A at P
+/// let mut previous: Option<[f64; 3]> = None;
+/// for step in 0..5 {
+///     // Curvature along the world x changes from 40 to 60 1/m; across it stays 50 1/m.
+///     let curv = Curvatures::new(40.0 + 5.0 * step as f64, 50.0)?;
+///     let frame = Frame::new([0.0, 0.0, 1.0], [1.0, 0.0, 0.0], MajorAxis::of(&curv));
+///     let w = contact.wrench(&curv, 1e-6, 0.0, frame.slip(v_rel, w_rel)?);
+///     let force = frame.force(&w);
+///     if let Some(f) = previous {
+///         assert!((force[0] - f[0]).abs() < 0.05 * w.n); // no jump at P = Q (step 2)
+///     }
+///     previous = Some(force);
+/// }
+/// # Ok::<(), contensou::Error>(())
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct VaryingContact<T, D, L = Best> {
     estar: Modulus<T>,
@@ -240,7 +359,8 @@ impl<T: Real, D: Damping<T>, L: FrictionLaw> VaryingContact<T, D, L> {
     }
 
     /// One step at this step's curvatures. P/Q below the table's range (1e-4) is clamped to
-    /// it. Total.
+    /// it. Total. h, ḣ (> 0: compression) and the slip as in [`Contact::wrench`]; the contact
+    /// frame's x is this step's major axis ([`crate::frame::MajorAxis::of`] these curvatures).
     #[inline]
     pub fn wrench(
         &self,

@@ -88,6 +88,34 @@ pub enum Race {
 
 /// A validated relative surface z = P x² + Q y², 0 < P ≤ Q (1/m), with the direction of the
 /// contact ellipse's major axis.
+///
+/// # Example
+///
+/// ```
+/// use contensou::geometry::{Curvatures, Principal, Race};
+/// use std::f64::consts::FRAC_PI_2;
+///
+/// // Coefficients in some frame (x′, y′), in either order: p > q is swapped, and the major
+/// // axis (the smaller coefficient's direction) is then y′, at π/2.
+/// let c = Curvatures::new(80.0, 20.0)?;
+/// assert_eq!((c.p(), c.q(), c.major_angle()), (20.0, 80.0, FRAC_PI_2));
+/// assert_eq!(c.ratio(), 0.25);
+///
+/// // A ball of radius 10 mm on a plane: P = Q = 1/(2R), a circle.
+/// let ball = Curvatures::sphere_plane(10e-3)?;
+/// assert_eq!((ball.p(), ball.q()), (50.0, 50.0));
+///
+/// // Two crossed cylinders of radius 10 mm and 20 mm (body B's axis at 90° to body A's).
+/// let cyl = |r: f64| Principal { k1: 1.0 / r, k2: 0.0 };
+/// let crossed = Curvatures::from_bodies(cyl(10e-3), cyl(20e-3), FRAC_PI_2)?;
+/// assert!((crossed.p() - 25.0).abs() < 1e-12 && (crossed.q() - 50.0).abs() < 1e-12);
+///
+/// // A ball in a bearing's inner-race groove: the ellipse is long across the groove.
+/// let race = Curvatures::ball_race(12.7e-3, 6.6e-3, 65e-3, 0.0, Race::Inner)?;
+/// assert!(race.ratio() < 0.1 && (race.major_angle() - FRAC_PI_2).abs() < 1e-12);
+/// assert!(Curvatures::new(0.0, 50.0).is_err()); // a plane on a plane: no Hertz contact
+/// # Ok::<(), contensou::Error>(())
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Curvatures<T> {
     p: T,

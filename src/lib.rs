@@ -8,6 +8,11 @@
 //! The design follows I. I. Kosenko & E. B. Aleksandrov (2009), *Implementation of the
 //! Contensou–Erismann model for tangent forces in the Hertz contact problem*.
 //!
+//! **New here? Read the [`guide`]**: using a contact in your own loop — the contact frame,
+//! bodies A and B, h and ḣ, slip and spin from body states, where N, F and T_z act, and the
+//! wrench back to a force and a torque about each body's centre of mass ([`frame`]), with a
+//! worked example tested against the analytic solution (`examples/ball_on_plane.rs`).
+//!
 //! # Conventions
 //!
 //! These hold in every module; doc comments refer back here.
@@ -47,8 +52,10 @@ mod defmt_impls;
 pub mod dynamic;
 pub mod elliptic;
 pub mod error;
+pub mod frame;
 pub mod friction;
 pub mod geometry;
+pub mod guide;
 mod hw_sqrt;
 pub mod math;
 pub mod normal;

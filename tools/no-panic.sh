@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # No-panic proof (issue 8): builds nopanic/ — a thumbv7em-none-eabihf image calling every
-# public contensou entry point on black-boxed inputs, f32 and f64, at opt-level 3 + fat LTO —
+# public contensou entry point and every C API function (capi/, issue 15) on black-boxed inputs, f32 and f64, at opt-level 3 + fat LTO —
 # whose panic handler calls a function that is never defined. The image links only if no
 # panic path survives optimisation. Fails loudly otherwise, naming the probes (entry points)
 # that still reach core::panicking and the library lines involved.
@@ -47,6 +47,9 @@ expected=$((2 * ($(grep -cE '^\s+fn probe_[a-z_]+<T>' src/main.rs) + 4 * laws)))
 # the micromath twins' probes (`*_mm`) are instantiated in f32 only
 mm=$(($(grep -cE '^\s+fn probe_[a-z_]+_mm<T>' src/main.rs) + 4 * $(grep -cE '^\s+[A-Za-z]+: probe_tangential_[a-z_]+_mm,' src/main.rs)))
 expected=$((expected - mm))
+# the C API's exported functions (src/capi.rs): `probe_capi_*` per precision, `probe_capi_any_*` once
+capi=$((2 * $(grep -cE '^\s+fn probe_capi_[a-z_]+\(' src/capi.rs) + $(grep -cE '^fn probe_capi_any_[a-z_]+\(' src/capi.rs)))
+expected=$((expected + capi))
 if ((probes != expected)); then
     echo "NO-PANIC PROOF VACUOUS: $probes probe instances in the image, expected $expected" >&2
     exit 1

@@ -7,8 +7,12 @@
 #   bench-results/qemu-run.txt        the firmware's full output (OVERHEAD, BENCH, DETAIL lines)
 #   bench-results/firmware-size.txt   .text size (arm-none-eabi-size) and the toolchain used
 #   bench-results/vsqrt-disasm.txt    disassembly proving f32 sqrt executes vsqrt.f32
+#   bench-results/c-firmware-size.txt flash of the C firmware images (capi/examples/firmware/)
+# The C image bench.elf (the C API's staticlib called from C, built by
+# capi/examples/firmware/build.sh) runs after the Rust binaries: rows wrench,c-*-best,f32.
 # Fails if a run fails, the two runs differ, no BENCH line is printed, or vsqrt.f32 is absent.
-# Needs: rustup, qemu-system-arm, binutils-arm-none-eabi (arm-none-eabi-objdump/-size/-nm).
+# Needs: rustup, qemu-system-arm, binutils-arm-none-eabi (arm-none-eabi-objdump/-size/-nm),
+# gcc-arm-none-eabi and libnewlib-arm-none-eabi (the C image).
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 out="$root/bench-results"
@@ -23,14 +27,19 @@ rustup target list --installed --toolchain "$chan" | grep -q '^thumbv7em-none-ea
     rustup target add --toolchain "$chan" thumbv7em-none-eabihf
 
 cargo build --release --locked
+"$root/capi/examples/firmware/build.sh" >/dev/null
+c_bench="$root/capi/target/firmware/bench.elf"
 elf="target/thumbv7em-none-eabihf/release/contensou-firmware"
 
 # The main firmware, then the `scenes` binary (stage `scene` rows of contensou::select's
-# configurations; a binary of its own so the main firmware's code and counts are unaffected).
+# configurations; a binary of its own so the main firmware's code and counts are unaffected),
+# then the C image under the same QEMU command as the Rust runner (.cargo/config.toml).
+runner="$(sed -n 's/^runner *= *"\(.*\)"/\1/p' .cargo/config.toml)"
 run() {
     {
         cargo run --release --locked --quiet
         cargo run --release --locked --quiet --bin scenes
+        $runner "$c_bench"
     } | tr -d '\r'
 }
 first="$(run)"
@@ -72,6 +81,8 @@ text="$(arm-none-eabi-size -A "$elf" | awk '$1 == ".text" { print $2 }')"
         while read -r _ size _ name; do printf '%6d  %s\n' "$((16#$size))" "$name"; done
 } >"$out/firmware-size.txt"
 
+cp "$root/capi/target/firmware/size.txt" "$out/c-firmware-size.txt"
+
 # vsqrt proof: the shim executes vsqrt.f32, the sqrt benchmark reaches it, and the f32 AGM
 # calls it.
 dis="$(arm-none-eabi-objdump -d -C --no-show-raw-insn "$elf")"
@@ -101,4 +112,4 @@ grep -q '<contensou::hw_sqrt::imp::sqrtf>' <<<"$agm32" ||
 ((fail == 0)) || exit 1
 echo "vsqrt check: ok"
 
-echo "wrote bench-results/{qemu.csv,qemu-run.txt,firmware-size.txt,vsqrt-disasm.txt} (.text $text bytes)"
+echo "wrote bench-results/{qemu.csv,qemu-run.txt,firmware-size.txt,c-firmware-size.txt,vsqrt-disasm.txt} (.text $text bytes)"

@@ -29,6 +29,7 @@ stages! {
     bench_hertz,
     bench_friction,
     bench_wrench,
+    bench_frame,
     bench_scene,
 }
 

@@ -1,6 +1,7 @@
 //! Link-time no-panic proof for `contensou` on `thumbv7em-none-eabihf` (issue 8).
 //!
-//! `main` calls every public constructor and evaluation entry point, in `f32` and `f64`, on
+//! `main` calls every public constructor and evaluation entry point, in `f32` and `f64`, and
+//! every function the C API exports (`capi.rs`, crate `contensou-capi`), on
 //! inputs the optimiser cannot see (`black_box`), and black-boxes every output. The panic
 //! handler calls `contensou_panic_path_survived`, a function that is declared but never
 //! defined: if any panic path survives optimisation (opt-level 3, fat LTO, one codegen unit,
@@ -32,6 +33,8 @@ use contensou::shape::{
     self, Eccentricity, HamrockDowson, HamrockDowsonMicromath, Linear, Newton, Ratio,
 };
 use cortex_m_rt::entry;
+
+mod capi;
 
 #[cfg(not(feature = "locate"))]
 unsafe extern "Rust" {
@@ -243,7 +246,8 @@ mod api {
             let (Ok(co), Ok(si)) =
                 (Friction::<T, Coulomb>::with_law(f, delta), Friction::<T, Simplified>::with_law(f, delta))
             else { return };
-            (co.stable_step(mass, n, Explicit::Euler), si.stable_step(mass, n, Explicit::Rk4))
+            let k = Constants::circle();
+            (co.stable_step(&k, mass, n, Explicit::Euler), si.stable_step(&k, mass, n, Explicit::Rk4))
         }
         fn probe_best_stable_step<T>(m1, f, delta, mass, n) {
             let (Ok(p), Ok(be)) = (Parameter::from_complement(m1), Friction::<T, Best>::with_law(f, delta))
@@ -257,10 +261,32 @@ mod api {
                 Friction::<T, Simplified>::with_law(f, delta),
                 Friction::<T, Coulomb>::with_law(f, delta),
             ) else { return };
+            let k = Constants::from_parameter(p);
             (
-                be.stable_spin_step(&Constants::from_parameter(p), a, inertia, n, Explicit::Rk4),
-                si.stable_spin_step(a, inertia, n, Explicit::Euler),
-                co.stable_spin_step(a, inertia, n, Explicit::Euler),
+                be.stable_spin_step(&k, a, inertia, n, Explicit::Rk4),
+                si.stable_spin_step(&k, a, inertia, n, Explicit::Euler),
+                co.stable_spin_step(&k, a, inertia, n, Explicit::Euler),
+            )
+        }
+        // the frame helper, and the stable steps from a built contact
+        fn probe_frame<T>(nx, ny, nz, rx, ry, rz, c, s, v, e, h) {
+            use contensou::frame::{ContactFrame, Frame, MajorAxis, WorldAxes, point_velocity};
+            let (Ok(curv), Ok(e), Ok(fr)) = (Curvatures::new(nx, ny), Modulus::new(e), Friction::<T, Best>::with_law(c, s))
+            else { return };
+            let Ok(contact) = Contact::hertz::<Newton>(&curv, e, Undamped, fr) else { return };
+            let frame = Frame::from_reference([nx, ny, nz], [rx, ry, rz], MajorAxis::of(&curv));
+            let other = Frame::new([nx, ny, nz], [rx, ry, rz], MajorAxis::from_cos_sin(c, s));
+            let vel = point_velocity([v, rx, ry], [rz, c, s], [nx, ny, nz]);
+            let Ok(slip) = frame.slip(vel, [s, c, v]) else { return };
+            let w = contact.wrench(h, frame.approach_rate(vel), slip);
+            (
+                frame.on_b(&w, vel),
+                other.on_a(&w, vel),
+                WorldAxes.on_b(&w, vel),
+                WorldAxes.slip(vel, vel),
+                other.to_contact(vel),
+                contact.stable_step(v, h, Explicit::Euler),
+                contact.stable_spin_step(c, s, h, Explicit::Rk4),
             )
         }
         fn probe_spin_stiffness<T>(m1) {
@@ -373,6 +399,7 @@ fn main() -> ! {
     api::run::<f64>();
     mm_laws::run();
     mm_api::run();
+    capi::run();
     loop {
         core::hint::spin_loop();
     }

@@ -541,6 +541,16 @@ impl FrictionLaw for Best {
     type Prepared<T: Real> = BestContact<T>;
     const RAMP_BELOW_DELTA: bool = true;
 
+    /// κ = [`ramp_stiffness`]`(k)`.
+    fn slip_ramp<T: Real>(k: &Constants<T>) -> Option<T> {
+        Some(ramp_stiffness(k))
+    }
+
+    /// κ_T = [`spin_stiffness`]`(k)`.
+    fn spin_ramp<T: Real>(k: &Constants<T>) -> Option<T> {
+        Some(spin_stiffness(k))
+    }
+
     /// The per-call form (e² may change every call): the fitted series summed at this e².
     fn traction<T: Real>(k: &Constants<T>, s: &SlipState<T>) -> (Traction<T>, Branch) {
         Self::per_call::<Libm, T>(k, s)
@@ -597,6 +607,16 @@ impl FrictionLaw for BestMicromath {
     const NAME: &'static str = "best-micromath";
     type Branch = Branch;
     const RAMP_BELOW_DELTA: bool = true;
+
+    /// κ = [`ramp_stiffness`]`(k)`.
+    fn slip_ramp<T: Real>(k: &Constants<T>) -> Option<T> {
+        Some(ramp_stiffness(k))
+    }
+
+    /// κ_T = [`spin_stiffness`]`(k)`.
+    fn spin_ramp<T: Real>(k: &Constants<T>) -> Option<T> {
+        Some(spin_stiffness(k))
+    }
     super::law::constants_are_prepared!();
 
     fn traction<T: Real>(k: &Constants<T>, s: &SlipState<T>) -> (Traction<T>, Branch) {

@@ -51,6 +51,16 @@ impl FrictionLaw for Coulomb {
     type Branch = Branch;
     super::law::constants_are_prepared!();
 
+    /// The ramp F = −fN·v_P/δ below δ: κ = 1.
+    fn slip_ramp<T: Real>(_k: &Constants<T>) -> Option<T> {
+        Some(T::ONE)
+    }
+
+    /// No drilling torque: κ_T = 0.
+    fn spin_ramp<T: Real>(_k: &Constants<T>) -> Option<T> {
+        Some(T::ZERO)
+    }
+
     #[inline]
     fn traction<T: Real>(_k: &Constants<T>, s: &SlipState<T>) -> (Traction<T>, Branch) {
         traction::<Libm, T>(s)
@@ -77,6 +87,16 @@ impl FrictionLaw for CoulombMicromath {
     const NAME: &'static str = "coulomb-micromath";
     type Branch = Branch;
     super::law::constants_are_prepared!();
+
+    /// The ramp F = −fN·v_P/δ below δ: κ = 1.
+    fn slip_ramp<T: Real>(_k: &Constants<T>) -> Option<T> {
+        Some(T::ONE)
+    }
+
+    /// No drilling torque: κ_T = 0.
+    fn spin_ramp<T: Real>(_k: &Constants<T>) -> Option<T> {
+        Some(T::ZERO)
+    }
 
     #[inline]
     fn traction<T: Real>(_k: &Constants<T>, s: &SlipState<T>) -> (Traction<T>, Branch) {

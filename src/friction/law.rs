@@ -4,7 +4,6 @@
 use core::fmt::Debug;
 use core::marker::PhantomData;
 
-use super::best::ramp_stiffness;
 use super::{Constants, Slip, SlipState, Traction};
 use crate::error::finite;
 use crate::{Error, Real};
@@ -42,6 +41,26 @@ pub trait FrictionLaw: Copy + Debug + PartialEq {
 
     /// Precompute the per-contact form from the shape constants (once per contact). Total.
     fn prepare<T: Real>(k: &Constants<T>) -> Self::Prepared<T>;
+
+    /// κ: the largest stiffness −∂F/∂v_P of the law's regularization near rest, in units of
+    /// fN/δ, over every slip direction and every fixed spin, for the shape `k` — what
+    /// [`Friction::stable_step`] divides by. `Coulomb` and `Simplified`: 1; `Best`:
+    /// [`ramp_stiffness`](super::best::ramp_stiffness). `None` (the default) for a law with no ramp (`Pade`, `Ellipsoid`,
+    /// `Exact` ignore δ: Coulomb's sign law at rest, no stable explicit step).
+    fn slip_ramp<T: Real>(k: &Constants<T>) -> Option<T> {
+        let _ = k;
+        None
+    }
+
+    /// κ_T: the largest torque stiffness −∂T_z/∂ω of the law's regularization, in units of
+    /// fN·a²/δ, over every slip with v_P fixed, for the shape `k` — what
+    /// [`Friction::stable_spin_step`] divides by. `Coulomb`: 0 (no torque); `Simplified`: 2/5;
+    /// `Best`: [`spin_stiffness`](super::best::spin_stiffness). `None` (the default) for a law
+    /// with no ramp.
+    fn spin_ramp<T: Real>(k: &Constants<T>) -> Option<T> {
+        let _ = k;
+        None
+    }
 
     /// The dimensionless core with the per-contact form: same result as
     /// [`FrictionLaw::traction`] up to the law's stated error, usually cheaper. Total.
@@ -91,6 +110,25 @@ pub struct Tangential<T, B> {
 /// per-step [`Friction::tangential`] is total.
 ///
 /// The law defaults to [`crate::friction::Best`], the exact-grade fast law.
+///
+/// # Example
+///
+/// ```
+/// use contensou::friction::{Constants, Explicit, Friction, Simplified, Slip};
+///
+/// // f = 0.3, regularization speed δ = 1e-4 m/s; the default law `Best`, and the paper's.
+/// let best = Friction::<f64>::new(0.3, 1e-4)?;
+/// let paper = Friction::<f64, Simplified>::with_law(0.3, 1e-4)?;
+/// // On a circular patch (a = 0.1 mm, N = 10 N): pure spin gives the torque −(3π/16)·fN·a.
+/// let k = Constants::circle();
+/// let t = best.tangential(&k, 1e-4, 10.0, Slip::new(0.0, 0.0, 50.0)?);
+/// assert!((t.tz / (-3.0 * std::f64::consts::PI / 16.0 * 0.3 * 10.0 * 1e-4) - 1.0).abs() < 1e-5);
+/// assert!(paper.tangential(&k, 1e-4, 10.0, Slip::new(0.0, 0.0, 50.0)?).tz < 0.0);
+/// // The explicit step the regularization allows (effective mass 1 g).
+/// assert!(best.stable_step(&k, 1e-3, 10.0, Explicit::Euler) > 0.0);
+/// assert!(Friction::<f64>::new(-0.1, 0.0).is_err()); // f < 0
+/// # Ok::<(), contensou::Error>(())
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Friction<T, L = super::Best> {
     f: T,
@@ -302,106 +340,76 @@ pub(super) fn ramp_step<T: Real>(f: T, delta: T, mass: T, n: T, scheme: Explicit
     }
 }
 
-macro_rules! stable_step_for {
-    ($law:ty, $name:literal) => {
-        impl<T: Real> Friction<T, $law> {
-            #[doc = concat!("The largest stable step of an explicit `scheme` for a body of mass `mass` (kg)")]
-            #[doc = concat!("sliding under this ", $name, " law at normal force `n` (N):")]
-            /// h* = limit·m·δ/(fN) (limit 2 for Euler, 2.785 for RK4).
-            ///
-            /// # Why
-            ///
-            /// Below the regularization speed δ the force is the ramp F = −fN·v_P/δ: a
-            /// stiffness dF/dv = fN/δ, so the mass's velocity obeys v' = −k·v with k = fN/(mδ),
-            /// and an explicit step must keep h·k under the scheme's limit ([`Explicit::limit`]).
-            /// Past h* the velocity is not damped but kept oscillating at amplitude ≈ δ (the
-            /// law saturates at ±fN, so it stays bounded and finite, but it never comes to
-            /// rest); Euler already flips sign every step past h*/2. The step shrinks ∝ δ: as
-            /// δ → 0 the law becomes Coulomb's sign law, for which no explicit step is stable.
-            /// For the translational degrees of freedom spin only widens the ramp (`simplified`
-            /// uses the spin-induced width aω/A, aω/B where it exceeds δ), so h* holds for
-            /// every ω. The rotational step is a separate limit: `Simplified`'s regularized
-            /// torque has stiffness −dT/dω up to 2fN·a²/(5δ) (fN·a²/(5δ) in pure spin), see
-            /// `stable_spin_step` (`Coulomb` has no torque). Not covered: the laws that ignore
-            /// δ (`pade`, `ellipsoid`, `exact`: at ω = 0 Coulomb's sign law, no stable explicit
-            /// step), and the coupling of translation and spin when both move.
-            ///
-            /// # Edge cases and accuracy
-            ///
-            /// δ = 0 → 0 (no stable explicit step); `mass` ≤ 0 or NaN → 0; fN ≤ 0 or NaN
-            /// (no contact or f = 0) → `T::MAX` (friction sets no limit); an overflowing
-            /// quotient → `T::MAX`. Measured by integrating a block with this law and bisecting
-            /// the step at which its velocity stops decaying (`examples/stability.rs` →
-            /// `docs/report/stability/coulomb_step.csv`; `host-tests/stability.rs`): the
-            /// measured step agrees with h* to 0.02 % for δ from 1e-2 to 1e-6 m/s, both schemes.
-            /// Cost: a division (construction/host use).
-            pub fn stable_step(&self, mass: T, n: T, scheme: Explicit) -> T {
-                ramp_step(self.f, self.delta, mass, n, scheme)
-            }
+impl<T: Real, L: FrictionLaw> Friction<T, L> {
+    /// The largest stable step of an explicit `scheme` for the slip v_P of a body of effective
+    /// mass `mass` (kg) under this law at normal force `n` (N), for the patch shape `k`:
+    /// h* = limit·m·δ/(κ·fN), κ = [`FrictionLaw::slip_ramp`] (limit 2 for Euler, 2.785 for
+    /// RK4, [`Explicit::limit`]). One signature for every law; from a built contact:
+    /// [`Contact::stable_step`](crate::contact::Contact::stable_step).
+    ///
+    /// | law | κ |
+    /// |---|---|
+    /// | `Coulomb`, `Simplified` | 1 (the ramp F = −fN·v_P/δ) |
+    /// | `Best` (default) | [`ramp_stiffness`](super::best::ramp_stiffness)`(k)`: 2.52 for a circle, 3.49 at e² = 0.9, 5.19 at 0.99 |
+    /// | `Pade`, `Ellipsoid`, `Exact` | none: they ignore δ (Coulomb's sign law at rest) → 0 |
+    ///
+    /// # The effective mass
+    ///
+    /// `mass` is the mass that the friction force accelerates **at the contact point**, not the
+    /// body's mass: a force F at P changes the slip at the rate F·(1/m + r²/I) for a body of
+    /// mass m and moment of inertia I about the axis through its centre perpendicular to the
+    /// lever r = |P − G| and to F. So m_eff = 1/(1/m + r²/I); for a solid ball rolling on its
+    /// surface (r = R, I = (2/5)mR²) **m_eff = 2m/7**, and using m overstates the stable step by
+    /// 3.5×. When both bodies move, add their 1/m_eff. A body held fixed contributes nothing.
+    ///
+    /// # Why
+    ///
+    /// Below the regularization speed δ the law is a ramp: the stiffness −∂F/∂v_P is κ·fN/δ
+    /// at most, so v_P obeys v′ = −k·v with k ≤ κ·fN/(mδ), and an explicit step must keep h·k
+    /// under the scheme's limit. Past h* the slip is not damped but kept oscillating at
+    /// amplitude ≈ δ (bounded: the law saturates at fN); Euler already flips sign every step
+    /// past h*/2. The step shrinks ∝ δ: as δ → 0 the law becomes Coulomb's sign law, for which
+    /// no explicit step is stable. `simplified`'s spin only widens its ramp (width aω/A, aω/B
+    /// where that exceeds δ), so κ = 1 holds for every ω. `best`'s core ignores δ; the wrapper
+    /// ramps it below the slip scale s = |v_Px| + |v_Py| + a|ω| < δ
+    /// ([`FrictionLaw::RAMP_BELOW_DELTA`]); the stiffness there is fN/δ times a matrix that
+    /// depends on the slip direction and spin ratio only, largest (κ) in between rest with spin
+    /// (diag(A, B)) and pure translation (≤ √2), derivation in [`ramp_stiffness`](super::best::ramp_stiffness). So h* holds
+    /// for every slip direction and every fixed spin; it is conservative by the ratio of κ to
+    /// the stiffness where a given motion settles. The spin has its own limit,
+    /// [`Friction::stable_spin_step`]. Not covered: the coupling of translation and spin when
+    /// both move.
+    ///
+    /// # Edge cases and accuracy
+    ///
+    /// δ = 0 → 0 (no stable explicit step); `mass` ≤ 0 or NaN → 0; fN ≤ 0 or NaN (no contact
+    /// or f = 0) → `T::MAX` (friction sets no limit); an overflowing quotient → `T::MAX`; a law
+    /// without a ramp → 0 (where friction acts). Measured by integrating a block under the law
+    /// and bisecting the step at which its velocity stops decaying (`host-tests/stability.rs`;
+    /// `examples/stability.rs` → `docs/report/stability/coulomb_step.csv`, `best_step.csv`):
+    /// `coulomb` and `simplified` agree with h* to 0.02 % for δ from 1e-2 to 1e-6 m/s, both
+    /// schemes; for `best` (e² ∈ {0, 0.5, 0.9, 0.99}, ψ ∈ {0, π/8, π/4, π/2} plus the
+    /// derivation's stiffest slip, aω/δ ∈ {0, 0.3, 1, 3}, both schemes) every measured step is
+    /// ≥ h* and the stiffest case's within 0.4 % of it; a given case is looser by κ over its own
+    /// stiffness (up to 6.4× h* in the test: circle, aω = 3δ). Cost: a division, plus
+    /// [`ramp_stiffness`](super::best::ramp_stiffness) for `best` (construction/host use).
+    pub fn stable_step(&self, k: &Constants<T>, mass: T, n: T, scheme: Explicit) -> T {
+        match L::slip_ramp(k) {
+            Some(kappa) => ramp_step(self.f * kappa, self.delta, mass, n, scheme),
+            None => no_ramp_step(self.f, mass, n),
         }
-    };
+    }
 }
 
-stable_step_for!(super::Coulomb, "regularized Coulomb");
-stable_step_for!(super::Simplified, "simplified");
-
-macro_rules! best_stable_step_for {
-    ($law:ty) => {
-        impl<T: Real> Friction<T, $law> {
-            /// The largest stable step of an explicit `scheme` for the translational motion of
-            /// a body of mass `mass` (kg) sliding under the `best` law at normal force `n` (N),
-            /// for the patch shape `k`: h* = limit·m·δ/(κ·fN), κ = [`ramp_stiffness`]`(k)`
-            /// (2.52 for a circle, 3.49 at e² = 0.9, 5.19 at 0.99, ≈ (32/27)·A as e² → 1;
-            /// limit 2 for Euler, 2.785 for RK4).
-            ///
-            /// # Why
-            ///
-            /// `best`'s core ignores δ; the wrapper ramps it to zero below the slip scale
-            /// s = |v_Px| + |v_Py| + a|ω| < δ ([`FrictionLaw::RAMP_BELOW_DELTA`]). There the
-            /// force is (fN/δ)·s·P with P the core's traction, so the stiffness −∂F/∂v_P is
-            /// fN/δ times a matrix that depends on the slip direction and the spin ratio only:
-            /// diag(A, B) at rest with spin, |cos ψ| + |sin ψ| ≤ √2 in pure translation (the
-            /// ℓ¹ scale), and largest, κ, in between, where the factor s and the core's slope
-            /// peak together (derivation in [`ramp_stiffness`]). An explicit step must keep
-            /// h·κ·fN/m under the scheme's real-axis limit ([`Explicit::limit`]) wherever the
-            /// slip can sit — at rest, or held inside the ramp by a steady drive. Past the ramp
-            /// (s ≥ δ) the stiffness is at most fN/s times the core's, below κ·fN/δ. So h*
-            /// holds for every slip direction and every fixed spin; it is conservative by the
-            /// ratio of κ to the stiffness where a given motion actually settles (e.g. ×κ/A at
-            /// rest with spin aω < δ, ×κ/(|cos ψ| + |sin ψ|) for a block at rest without
-            /// spin). The rotational (spin) degree of freedom has its own limit: the torque
-            /// ramp's stiffness is up to κ_T·fN·a²/δ, see `stable_spin_step` and
-            /// [`spin_stiffness`](super::best::spin_stiffness). Not covered: the coupling of
-            /// translation and spin when both move. The laws that ignore δ and have no ramp
-            /// (`pade`, `ellipsoid`, `exact`) are Coulomb's sign law at ω = 0: no stable
-            /// explicit step (see `stable_step` of `Coulomb` and `Simplified`, whose ramp
-            /// stiffness is fN/δ).
-            ///
-            /// # Edge cases and accuracy
-            ///
-            /// δ = 0 → 0 (no stable explicit step); `mass` ≤ 0 or NaN → 0; fN ≤ 0 or NaN
-            /// (no contact or f = 0) → `T::MAX`; an overflowing quotient → `T::MAX`. Measured
-            /// (`host-tests/stability.rs`; `examples/stability.rs` →
-            /// `docs/report/stability/best_step.csv`) by integrating a block under this law
-            /// (2-D velocity, fixed spin, held by a constant drive at probe slips across the
-            /// ramp) and bisecting the step at which a perturbation stops decaying: for
-            /// e² ∈ {0, 0.5, 0.9, 0.99} (the chart: m₁ = 1 … 1e-3), ψ ∈ {0, π/8, π/4, π/2}
-            /// plus the derivation's stiffest slip, aω/δ ∈ {0, 0.3, 1, 3}, both schemes, every
-            /// measured step is ≥ h* and the stiffest case's is within 0.4 % of it (the Jacobian
-            /// at each probe predicts its measured step to 0.1 %). A given case is looser by
-            /// κ over its own stiffness: up to 6.4× h* in the test (circle, aω = 3δ: no ramp
-            /// at rest, stiffness A·fN/(aω)), κ/1 without spin along an axis.
-            /// Cost: [`ramp_stiffness`] and a division (construction/host use).
-            pub fn stable_step(&self, k: &Constants<T>, mass: T, n: T, scheme: Explicit) -> T {
-                ramp_step(self.f * ramp_stiffness(k), self.delta, mass, n, scheme)
-            }
-        }
-    };
+/// The step for a law with no ramp: 0 where friction acts, `T::MAX` where it does not
+/// (fN ≤ 0 or NaN), 0 for an invalid `mass` (as [`ramp_step`]). Total.
+pub(super) fn no_ramp_step<T: Real>(f: T, mass: T, n: T) -> T {
+    // `x > 0` is false for NaN: NaN mass → 0, NaN fN → MAX.
+    match (mass > T::ZERO, f * n > T::ZERO) {
+        (true, false) => T::MAX,
+        _ => T::ZERO,
+    }
 }
-
-best_stable_step_for!(super::Best);
-#[cfg(feature = "micromath")]
-best_stable_step_for!(super::BestMicromath);
 
 /// The branch of the laws with one smooth formula ([`crate::friction::Pade`],
 /// [`crate::friction::Ellipsoid`]).

@@ -125,6 +125,16 @@ impl FrictionLaw for Simplified {
     type Branch = Branch;
     super::law::constants_are_prepared!();
 
+    /// The ramp of width δ (widened, never steepened, by the spin): κ = 1.
+    fn slip_ramp<T: Real>(_k: &Constants<T>) -> Option<T> {
+        Some(T::ONE)
+    }
+
+    /// κ_T = 2/5 (see [`Friction::stable_spin_step`](super::Friction::stable_spin_step)).
+    fn spin_ramp<T: Real>(_k: &Constants<T>) -> Option<T> {
+        Some(T::from_f64(0.4))
+    }
+
     #[inline]
     fn traction<T: Real>(k: &Constants<T>, s: &SlipState<T>) -> (Traction<T>, Branch) {
         traction::<Libm, T>(k, s)
@@ -152,6 +162,16 @@ impl FrictionLaw for SimplifiedMicromath {
     const NAME: &'static str = "simplified-micromath";
     type Branch = Branch;
     super::law::constants_are_prepared!();
+
+    /// The ramp of width δ (widened, never steepened, by the spin): κ = 1.
+    fn slip_ramp<T: Real>(_k: &Constants<T>) -> Option<T> {
+        Some(T::ONE)
+    }
+
+    /// κ_T = 2/5 (see [`Friction::stable_spin_step`](super::Friction::stable_spin_step)).
+    fn spin_ramp<T: Real>(_k: &Constants<T>) -> Option<T> {
+        Some(T::from_f64(0.4))
+    }
 
     #[inline]
     fn traction<T: Real>(k: &Constants<T>, s: &SlipState<T>) -> (Traction<T>, Branch) {

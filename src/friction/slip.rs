@@ -21,7 +21,23 @@ use crate::{Error, Real};
 /// patch centre in the contact frame, and `omega` (rad/s), the relative spin about the normal z.
 ///
 /// [`Slip::new`] is the only constructor: it rejects NaN and ±∞, so every `Slip` is finite and
-/// the per-step friction call that takes it is total.
+/// the per-step friction call that takes it is total. From two bodies' world velocities:
+/// [`crate::frame::ContactFrame::slip`].
+///
+/// # Example
+///
+/// ```
+/// use contensou::Error;
+/// use contensou::friction::Slip;
+///
+/// // B slides over A at 2 cm/s along the major axis and spins at 10 rad/s about the normal.
+/// let slip = Slip::new(0.02, 0.0, 10.0)?;
+/// assert_eq!((slip.vx(), slip.vy(), slip.omega()), (0.02, 0.0, 10.0));
+/// // A diverged state is refused, naming the input.
+/// assert_eq!(Slip::new(f64::NAN, 0.0, 0.0), Err(Error::NonFinite("v_Px")));
+/// assert_eq!(Slip::<f32>::default().omega(), 0.0); // rest
+/// # Ok::<(), contensou::Error>(())
+/// ```
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Slip<T> {
     vx: T,

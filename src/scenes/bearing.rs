@@ -13,11 +13,12 @@
 //!   plane, the approach is h = d + D/2 − r_g; the unit vector u from the groove centre to the
 //!   ball centre gives the contact normal z = −u (from the ring, body A, into the ball, body B)
 //!   and the patch centre P = ball centre + (D/2)u.
-//! - Contact frame: y the circumferential (rolling) direction, x = y × z across the groove
-//!   (the major axis when the groove conforms closely, [`Curvatures::major_angle`] = π/2;
-//!   swapped otherwise). The curvatures — hence e² and the friction constants — are those of
-//!   the nominal contact angle 0, fixed per race (the contact angle that a load develops in a
-//!   zero-clearance bearing is a few degrees).
+//! - Contact frame ([`crate::frame`]): reference tangent t₁ the circumferential (rolling)
+//!   direction, the race's first principal direction in [`Curvatures::ball_race`]; the major
+//!   axis at [`Curvatures::major_angle`] from it (π/2, x = z × t₁ across the groove, when the
+//!   groove conforms closely). The curvatures — hence e² and the friction constants — are those
+//!   of the nominal contact angle 0, fixed per race (the contact angle that a load develops in
+//!   a zero-clearance bearing is a few degrees).
 //! - Slip: ball minus ring material velocity at P; spin: (ω_ball − ω_ring)·z.
 //! - State ([`N`] scalars): inner ring centre and velocity (6), then per ball centre, velocity
 //!   and angular velocity (9; a sphere's attitude does not enter).
@@ -25,6 +26,7 @@
 use super::integrate::Ode;
 use super::rigid::Vec3;
 use crate::contact::{Contact, Wrench};
+use crate::frame::{ContactFrame, Frame, MajorAxis, point_velocity};
 use crate::friction::{FrictionLaw, Slip};
 use crate::geometry::{Curvatures, Race};
 use crate::normal::{HuntCrossley, NormalLaw};
@@ -121,8 +123,8 @@ struct Raceway<T, C> {
     /// Radius of the groove centre circle (m).
     centre_radius: T,
     groove: T,
-    /// Whether the major axis lies across the groove.
-    across: bool,
+    /// The major axis, from the rolling direction.
+    axis: MajorAxis<T>,
     contact: C,
 }
 
@@ -135,9 +137,9 @@ pub struct RaceContact<T> {
     pub n: T,
     /// e² of the patch.
     pub e2: T,
-    /// Friction force along the major axis x, across the groove (N).
+    /// Friction force along the major axis x (N): across the groove when it conforms closely.
     pub fx: T,
-    /// Friction force along the minor axis y, the rolling direction (N).
+    /// Friction force along the minor axis y (N): then along the rolling direction.
     pub fy: T,
     /// Drilling torque (N·m).
     pub tz: T,
@@ -154,15 +156,22 @@ pub struct RaceContact<T> {
 /// A per-step contact law for the races: [`Contact`] with any normal law (exact Hertz, the G*
 /// shape, the volumetric law), Hunt–Crossley damping and friction law `L`.
 pub trait RaceLaw<T: Real> {
-    /// The wrench at (h, ḣ, slip).
-    fn wrench_at(&self, h: T, hdot: T, slip: Slip<T>) -> (T, T, T, T, T);
+    /// The wrench at (h, ḣ, slip), without the friction law's branch.
+    fn wrench_at(&self, h: T, hdot: T, slip: Slip<T>) -> Wrench<T, ()>;
 }
 
 impl<T: Real, Nl: NormalLaw<T>, L: FrictionLaw> RaceLaw<T> for Contact<T, Nl, HuntCrossley<T>, L> {
     #[inline(always)]
-    fn wrench_at(&self, h: T, hdot: T, slip: Slip<T>) -> (T, T, T, T, T) {
-        let w: Wrench<T, L::Branch> = self.wrench(h, hdot, slip);
-        (w.n, w.fx, w.fy, w.tz, w.patch.e2)
+    fn wrench_at(&self, h: T, hdot: T, slip: Slip<T>) -> Wrench<T, ()> {
+        let w = self.wrench(h, hdot, slip);
+        Wrench {
+            n: w.n,
+            fx: w.fx,
+            fy: w.fy,
+            tz: w.tz,
+            patch: w.patch,
+            branch: (),
+        }
     }
 }
 
@@ -199,30 +208,27 @@ impl<T: Real, C: RaceLaw<T>> Raceway<T, C> {
         let u = g * (T::ONE / d);
         let z = -u;
         let e_theta = Vec3::new(-e_rho.y, e_rho.x, T::ZERO);
-        let (x, y) = if self.across {
-            (e_theta.cross(z), e_theta)
-        } else {
-            (e_theta, z.cross(e_theta))
-        };
+        let frame = Frame::new(z.into(), e_theta.into(), self.axis);
         let arm = u * rb;
         let ring_w = Vec3::new(T::ZERO, T::ZERO, wr);
-        let vp = v + w.cross(arm) - (vr + ring_w.cross(rel + arm));
+        let ball_p: Vec3<T> = point_velocity(v.into(), w.into(), arm.into()).into();
+        let ring_p: Vec3<T> = point_velocity(vr.into(), ring_w.into(), (rel + arm).into()).into();
+        let vp = (ball_p - ring_p).into();
         let w_rel = w - ring_w;
-        let spin = w_rel.dot(z);
-        let slip = Slip::new(vp.dot(x), vp.dot(y), spin).unwrap_or_default();
-        let (n, fx, fy, tz, e2) = self.contact.wrench_at(h, -vp.dot(z), slip);
-        let force = x * fx + y * fy + z * n;
+        let slip = frame.slip(vp, w_rel.into()).unwrap_or_default();
+        let wrench = self.contact.wrench_at(h, frame.approach_rate(vp), slip);
+        let load = frame.on_b(&wrench, arm.into());
         RaceContact {
             h,
-            n,
-            e2,
-            fx,
-            fy,
-            tz,
-            spin,
-            roll: (w_rel - z * spin).norm(),
-            force,
-            torque: arm.cross(force) + z * tz,
+            n: wrench.n,
+            e2: wrench.patch.e2,
+            fx: wrench.fx,
+            fy: wrench.fy,
+            tz: wrench.tz,
+            spin: slip.omega(),
+            roll: (w_rel - z * slip.omega()).norm(),
+            force: load.force.into(),
+            torque: load.torque.into(),
         }
     }
 }
@@ -243,20 +249,19 @@ impl<T: Real, C: RaceLaw<T>> Bearing<T, C> {
     /// Errors: those of [`Geometry::curvatures`].
     pub fn new(g: &Geometry<T>, inner: C, outer: C) -> Result<Self, Error> {
         let half = T::HALF;
-        let across = |race| -> Result<bool, Error> {
-            Ok(g.curvatures(race)?.major_angle().abs() > T::FRAC_PI_4)
-        };
+        let axis =
+            |race| -> Result<MajorAxis<T>, Error> { Ok(MajorAxis::of(&g.curvatures(race)?)) };
         Ok(Bearing {
             inner: Raceway {
                 centre_radius: (g.pitch_diameter - g.ball_diameter) * half + g.inner_groove,
                 groove: g.inner_groove,
-                across: across(Race::Inner)?,
+                axis: axis(Race::Inner)?,
                 contact: inner,
             },
             outer: Raceway {
                 centre_radius: (g.pitch_diameter + g.ball_diameter) * half - g.outer_groove,
                 groove: g.outer_groove,
-                across: across(Race::Outer)?,
+                axis: axis(Race::Outer)?,
                 contact: outer,
             },
             ball_inertia: T::from_f64(0.1) * g.ball_mass * g.ball_diameter * g.ball_diameter,

@@ -69,6 +69,22 @@ impl<T: Real> Vec3<T> {
     }
 }
 
+/// From a [`crate::frame::Vector`] (the frame helper's world vectors).
+impl<T> From<[T; 3]> for Vec3<T> {
+    #[inline(always)]
+    fn from([x, y, z]: [T; 3]) -> Self {
+        Vec3 { x, y, z }
+    }
+}
+
+/// Into a [`crate::frame::Vector`].
+impl<T> From<Vec3<T>> for [T; 3] {
+    #[inline(always)]
+    fn from(v: Vec3<T>) -> Self {
+        [v.x, v.y, v.z]
+    }
+}
+
 impl<T: Real> Add for Vec3<T> {
     type Output = Self;
     #[inline(always)]

@@ -16,7 +16,8 @@
 //!   velocity of P). Contact frame: z the world vertical (floor = body A, top = body B), x, y
 //!   the world x, y (the patch is a circle, so any horizontal x axis is a major axis).
 //!   [`Contact::wrench`] gives N, F_x, F_y, T_z; the force acts at P, the drilling torque about
-//!   the vertical.
+//!   the vertical. The slip, ḣ and the load about G come from [`crate::frame`] (see
+//!   [`crate::guide`]).
 //! - Damping: Hunt–Crossley N = k_H h^{3/2}(1 + (3/2)c_d ḣ), clamped ≥ 0.
 //!
 //! # Diagnostics
@@ -33,7 +34,8 @@
 use super::integrate::Ode;
 use super::rigid::{Quat, Vec3, euler_rate};
 use crate::contact::Contact;
-use crate::friction::{Friction, FrictionLaw, Slip};
+use crate::frame::{ContactFrame, WorldAxes, point_velocity};
+use crate::friction::{Friction, FrictionLaw};
 use crate::geometry::Curvatures;
 use crate::normal::{Hertz, HuntCrossley, Modulus, NormalLaw};
 use crate::shape::Newton;
@@ -141,18 +143,21 @@ impl<T: Real, L: FrictionLaw> Sphere<T, L> {
                 ..SphereContact::default()
             };
         }
-        // G → P, P the floor point under the centre.
-        let arm = Vec3::new(to_centre.x, to_centre.y, -r.z);
-        let vp = v + w.cross(arm);
+        // G → P, P the floor point under the centre; the floor is at rest.
+        let arm = [to_centre.x, to_centre.y, -r.z];
+        let vp = point_velocity(v.into(), w.into(), arm);
+        // The floor's contact frame is the world's: z up (floor = body A, top = body B), x the
+        // world x (the patch is a circle: any tangent is a major axis).
+        let floor = WorldAxes;
         // Non-finite only if the state is: then no friction (the step is rejected anyway).
-        let slip = Slip::new(vp.x, vp.y, w.z).unwrap_or_default();
-        let wr = self.contact.wrench(h, -vp.z, slip);
-        let force = Vec3::new(wr.fx, wr.fy, wr.n);
+        let slip = floor.slip(vp, w.into()).unwrap_or_default();
+        let wr = self.contact.wrench(h, floor.approach_rate(vp), slip);
+        let load = floor.on_b(&wr, arm);
         SphereContact {
             h,
             n: wr.n,
-            force,
-            torque: arm.cross(force) + Vec3::new(T::ZERO, T::ZERO, wr.tz),
+            force: load.force.into(),
+            torque: load.torque.into(),
             energy: self.contact.normal().energy(h),
         }
     }

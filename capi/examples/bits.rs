@@ -1,0 +1,229 @@
+//! Helper of `tests/compare.sh` (the C twin against the Rust contract, bit for bit):
+//!
+//! - `bits gen` prints the test rows (header + valid states: every patch shape, damping,
+//!   friction and slip regime, contact loss, valid extremes; runs of rows that change only
+//!   P, Q so that the C twin takes its `set_curvatures` path in the varying form);
+//! - `bits bad` prints rows each ending in one bad row, `KIND<TAB>row`, for the error paths;
+//! - `bits check f32|f64 A.csv B.csv` parses every field of both outputs in that precision
+//!   and requires the same bits (and the same header and row count).
+use std::process::ExitCode;
+use std::str::FromStr;
+
+use contensou::dynamic::{INPUTS, OUTPUTS};
+use contensou::Real;
+
+/// splitmix64: a fixed, portable stream.
+struct Rng(u64);
+
+impl Rng {
+    fn next(&mut self) -> u64 {
+        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        z ^ (z >> 31)
+    }
+    fn unit(&mut self) -> f64 {
+        (self.next() >> 11) as f64 / (1u64 << 53) as f64
+    }
+    /// Log-uniform in [lo, hi].
+    fn log(&mut self, lo: f64, hi: f64) -> f64 {
+        (lo.ln() + self.unit() * (hi.ln() - lo.ln())).exp()
+    }
+    fn signed(&mut self, lo: f64, hi: f64) -> f64 {
+        let x = self.log(lo, hi);
+        if self.next() & 1 == 0 {
+            x
+        } else {
+            -x
+        }
+    }
+    fn pick(&mut self, xs: &[f64]) -> f64 {
+        xs[(self.next() % xs.len() as u64) as usize]
+    }
+}
+
+/// One of the values, drawn after evaluating all of them (fixed stream consumption).
+macro_rules! pick {
+    ($rng:ident, $($x:expr),+) => {{
+        let xs = [$($x),+];
+        $rng.pick(&xs)
+    }};
+}
+
+fn row(v: &[f64; 11]) -> String {
+    v.iter()
+        .map(|x| format!("{x:e}"))
+        .collect::<Vec<_>>()
+        .join(",")
+}
+
+fn generate() {
+    let mut rng = Rng(15);
+    println!("{}", INPUTS.join(","));
+    // Hand-picked states: shapes, contact loss, zero slip/spin, δ = 0, f = 0, extremes.
+    let fixed: [[f64; 11]; 12] = [
+        [
+            50.0, 50.0, 1.15e11, 0.0, 0.1, 1e-4, 1e-6, 0.0, 0.01, 0.0, 50.0,
+        ],
+        [
+            2e-4 * 60.0,
+            60.0,
+            1.15e11,
+            0.2,
+            0.3,
+            0.0,
+            1e-6,
+            0.1,
+            0.0,
+            0.0,
+            0.0,
+        ],
+        [10.0, 50.0, 2e11, 0.0, 0.0, 1e-4, -1e-6, 0.0, 1.0, 1.0, 1.0],
+        [10.0, 50.0, 2e11, 0.1, 0.1, 1e-4, 0.0, -0.5, 1.0, 1.0, 1.0],
+        [1.0, 1.0, 1e7, 0.5, 1.0, 1.0, 1e-3, -1.0, 0.0, 0.0, 1e3],
+        [
+            30.0, 40.0, 1e30, 0.0, 0.1, 1e-4, 1e-30, 0.0, 1e-30, -1e-30, 1e-30,
+        ],
+        [
+            30.0, 40.0, 1e3, 0.0, 0.1, 1e-4, 1e-2, 0.0, 1e30, -1e30, 1e30,
+        ],
+        [
+            1e-20, 1e-17, 1.15e11, 0.0, 0.1, 1e-4, 1e-6, 0.0, 0.01, 0.0, 50.0,
+        ],
+        [
+            1e20, 1e20, 1.15e11, 0.0, 0.1, 1e-4, 1e-12, 0.0, 0.01, 0.0, 50.0,
+        ],
+        [
+            50.0, 50.0, 1.15e11, 0.0, 0.1, 1e-4, 1e-6, 1e3, 0.01, 0.0, 50.0,
+        ],
+        [
+            50.0, 50.0, 1.15e11, 1e3, 0.1, 1e-4, 1e-6, -1e3, 0.0, 0.0, -50.0,
+        ],
+        [
+            50.0, 50.0, 1.15e11, 0.0, 0.1, 1e-4, 1e-6, 0.0, -0.0, -0.0, -0.0,
+        ],
+    ];
+    for v in &fixed {
+        println!("{}", row(v));
+    }
+    // Random blocks: one contact spec, then 8 steps that also move P, Q (per-step update).
+    for _ in 0..1250 {
+        let estar = rng.log(1e6, 1e12);
+        let cd = pick!(rng, 0.0, 0.0, rng.log(1e-3, 10.0));
+        let f = pick!(rng, 0.0, rng.log(1e-3, 1.0), rng.log(1e-3, 1.0));
+        let delta = pick!(rng, 0.0, rng.log(1e-6, 1e-1), rng.log(1e-6, 1e-1));
+        for _ in 0..8 {
+            let q = rng.log(1e-1, 1e4);
+            let g = pick!(
+                rng,
+                1.0,
+                rng.log(2e-4, 1.0),
+                rng.log(2e-4, 1.0),
+                rng.log(0.5, 1.0)
+            );
+            let h = pick!(rng, -1e-6, 0.0, rng.log(1e-12, 1e-3), rng.log(1e-9, 1e-4));
+            let hdot = pick!(rng, 0.0, rng.signed(1e-6, 1.0));
+            let vx = pick!(rng, 0.0, rng.signed(1e-9, 10.0), rng.signed(1e-6, 1.0));
+            let vy = pick!(rng, 0.0, rng.signed(1e-9, 10.0), rng.signed(1e-6, 1.0));
+            let omega = pick!(rng, 0.0, rng.signed(1e-3, 1e4), rng.signed(1e-1, 1e3));
+            println!(
+                "{}",
+                row(&[g * q, q, estar, cd, f, delta, h, hdot, vx, vy, omega])
+            );
+        }
+    }
+}
+
+/// Files with valid rows, then one bad row (`kind<TAB>line`), for the error paths.
+fn bad() {
+    let good = "50,50,1.15e11,0,0.1,1e-4,1e-6,0,0.01,0,50";
+    let cases = [
+        ("p-gt-q", "60,50,1.15e11,0,0.1,1e-4,1e-6,0,0.01,0,50"),
+        ("p-zero", "0,50,1.15e11,0,0.1,1e-4,1e-6,0,0.01,0,50"),
+        ("ratio", "1e-5,50,1.15e11,0,0.1,1e-4,1e-6,0,0.01,0,50"),
+        ("q-inf", "50,inf,1.15e11,0,0.1,1e-4,1e-6,0,0.01,0,50"),
+        ("estar-neg", "50,50,-1,0,0.1,1e-4,1e-6,0,0.01,0,50"),
+        ("cd-neg", "50,50,1.15e11,-1,0.1,1e-4,1e-6,0,0.01,0,50"),
+        ("f-neg", "50,50,1.15e11,0,-0.1,1e-4,1e-6,0,0.01,0,50"),
+        ("delta-neg", "50,50,1.15e11,0,0.1,-1e-4,1e-6,0,0.01,0,50"),
+        ("h-inf", "50,50,1.15e11,0,0.1,1e-4,inf,0,0.01,0,50"),
+        ("omega-inf", "50,50,1.15e11,0,0.1,1e-4,1e-6,0,0.01,0,-inf"),
+        ("vx-overflow", "50,50,1.15e11,0,0.1,1e-4,1e-6,0,1e400,0,50"),
+        ("nan", "50,50,1.15e11,0,0.1,1e-4,NaN,0,0.01,0,50"),
+        ("text", "50,50,1.15e11,0,0.1,1e-4,abc,0,0.01,0,50"),
+        ("empty", "50,50,1.15e11,0,0.1,,1e-6,0,0.01,0,50"),
+        ("fields", "50,50,1.15e11,0,0.1,1e-4,1e-6,0,0.01,0"),
+    ];
+    for (kind, line) in cases {
+        println!("{kind}\t{good}\n{kind}\t\n{kind}\t{good}\n{kind}\t{line}\n{kind}\t{good}");
+    }
+}
+
+fn parse_all<T: FromStr + Real>(line: &str) -> Result<Vec<u64>, String> {
+    line.split(',')
+        .map(|f| {
+            f.trim()
+                .parse::<T>()
+                .map(|x| x.to_f64().to_bits())
+                .map_err(|_| format!("not a number: {f:?}"))
+        })
+        .collect()
+}
+
+fn check<T: FromStr + Real>(a: &str, b: &str) -> ExitCode {
+    let (a, b) = match (std::fs::read_to_string(a), std::fs::read_to_string(b)) {
+        (Ok(a), Ok(b)) => (a, b),
+        _ => {
+            eprintln!("bits check: cannot read the files");
+            return ExitCode::from(2);
+        }
+    };
+    let (la, lb): (Vec<&str>, Vec<&str>) = (a.lines().collect(), b.lines().collect());
+    let header = format!("{},{}", INPUTS.join(","), OUTPUTS.join(","));
+    if la.first() != Some(&header.as_str()) || lb.first() != Some(&header.as_str()) {
+        eprintln!("bits check: header differs from `{header}`");
+        return ExitCode::from(1);
+    }
+    if la.len() != lb.len() {
+        eprintln!("bits check: {} rows against {}", la.len() - 1, lb.len() - 1);
+        return ExitCode::from(1);
+    }
+    let mut bad = 0;
+    for (k, (x, y)) in la.iter().zip(&lb).enumerate().skip(1) {
+        match (parse_all::<T>(x), parse_all::<T>(y)) {
+            (Ok(u), Ok(v)) if u == v && u.len() == INPUTS.len() + OUTPUTS.len() => {}
+            _ => {
+                bad += 1;
+                if bad <= 5 {
+                    eprintln!("bits check: row {k} differs:\n  {x}\n  {y}");
+                }
+            }
+        }
+    }
+    if bad > 0 {
+        eprintln!("bits check: {bad} of {} rows differ", la.len() - 1);
+        return ExitCode::from(1);
+    }
+    println!("{}", la.len() - 1);
+    ExitCode::SUCCESS
+}
+
+fn main() -> ExitCode {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    match args.first().map(String::as_str) {
+        Some("gen") => generate(),
+        Some("bad") => bad(),
+        Some("check") if args.len() == 4 => {
+            return match args[1].as_str() {
+                "f32" => check::<f32>(&args[2], &args[3]),
+                _ => check::<f64>(&args[2], &args[3]),
+            };
+        }
+        _ => {
+            eprintln!("usage: bits gen | bad | check f32|f64 A B");
+            return ExitCode::from(2);
+        }
+    }
+    ExitCode::SUCCESS
+}

@@ -1,0 +1,358 @@
+//! The generic bodies of the exported functions: pointer checks, type conversion, error
+//! mapping. No formula: every number comes from `contensou`.
+
+use core::ffi::{c_char, CStr};
+
+use contensou::dynamic::{self, DynContact, Form, Invalid, Law, Spec, Step};
+use contensou::geometry::{Curvatures, Race};
+use contensou::normal::{Material, Modulus};
+use contensou::Real;
+
+use crate::cstr::c_str;
+use crate::status::contensou_status as S;
+use crate::types::*;
+
+/// A precision of the C API: its storage type and the tag a constructor writes.
+pub(crate) trait Precision: Real {
+    /// `contensou_contact_f32` or `contensou_contact_f64`.
+    type Storage;
+    /// Written by the constructor in front of the contact; checked by every other call.
+    const TAG: u32;
+}
+
+impl Precision for f32 {
+    type Storage = contensou_contact_f32;
+    const TAG: u32 = u32::from_le_bytes(*b"cf32");
+}
+
+impl Precision for f64 {
+    type Storage = contensou_contact_f64;
+    const TAG: u32 = u32::from_le_bytes(*b"cf64");
+}
+
+/// `Err(NullPointer)` or `Err(Misaligned)` unless `p` can be dereferenced as a `T`.
+fn check<T>(p: *const T) -> Result<(), S> {
+    if p.is_null() {
+        Err(S::NullPointer)
+    } else if !p.is_aligned() {
+        Err(S::Misaligned)
+    } else {
+        Ok(())
+    }
+}
+
+/// Reads a `T` from a C pointer.
+///
+/// # Safety
+/// `p` is NULL or points to memory readable as a `T` (C's side of the contract).
+unsafe fn read<T: Copy>(p: *const T) -> Result<T, S> {
+    check(p)?;
+    // SAFETY: non-NULL and aligned (checked); readable by the caller's contract.
+    Ok(unsafe { p.read() })
+}
+
+/// Writes a `T` through a C pointer.
+///
+/// # Safety
+/// `p` is NULL or points to memory writable as a `T`.
+unsafe fn write<T>(p: *mut T, value: T) -> Result<(), S> {
+    check(p)?;
+    // SAFETY: non-NULL and aligned (checked); writable by the caller's contract.
+    unsafe { p.write(value) };
+    Ok(())
+}
+
+/// The status of a result.
+fn status(r: Result<(), S>) -> S {
+    match r {
+        Ok(()) => S::Ok,
+        Err(s) => s,
+    }
+}
+
+/// Stores the column of an error (or `CONTENSOU_COLUMN_NONE`) if `column` is usable.
+///
+/// # Safety
+/// `column` is NULL or writable as a `u32`.
+unsafe fn report(column: *mut contensou_column, r: Result<(), (S, contensou_column)>) -> S {
+    let (s, c) = match r {
+        Ok(()) => (S::Ok, CONTENSOU_COLUMN_NONE),
+        Err(e) => e,
+    };
+    if check(column).is_ok() {
+        // SAFETY: non-NULL and aligned; writable by the caller's contract.
+        unsafe { column.write(c) };
+    }
+    s
+}
+
+/// The index of a contract column name in [`dynamic::INPUTS`].
+fn column_of(name: &str) -> contensou_column {
+    match dynamic::INPUTS.iter().position(|c| *c == name) {
+        Some(i) => i as contensou_column,
+        None => CONTENSOU_COLUMN_NONE,
+    }
+}
+
+/// A boundary status without a column.
+fn bare(s: S) -> (S, contensou_column) {
+    (s, CONTENSOU_COLUMN_NONE)
+}
+
+/// The library's error with its column.
+fn invalid(e: Invalid) -> (S, contensou_column) {
+    (e.error.into(), column_of(e.column))
+}
+
+pub(crate) fn law(law: contensou_law) -> Result<Law, S> {
+    Ok(match law {
+        CONTENSOU_LAW_BEST => Law::Best,
+        CONTENSOU_LAW_SIMPLIFIED => Law::Simplified,
+        CONTENSOU_LAW_PADE => Law::Pade,
+        CONTENSOU_LAW_ELLIPSOID => Law::Ellipsoid,
+        CONTENSOU_LAW_COULOMB => Law::Coulomb,
+        _ => return Err(S::InvalidLaw),
+    })
+}
+
+pub(crate) fn form(form: contensou_form) -> Result<Form, S> {
+    Ok(match form {
+        CONTENSOU_FORM_FIXED => Form::Fixed,
+        CONTENSOU_FORM_VARYING => Form::Varying,
+        _ => return Err(S::InvalidForm),
+    })
+}
+
+/// The contact in a storage, if a constructor of this precision initialised it.
+///
+/// # Safety
+/// `storage` is NULL or points to a readable `T::Storage`.
+unsafe fn slot<'a, T: Precision>(storage: *const T::Storage) -> Result<&'a Slot<T>, S> {
+    check(storage)?;
+    let slot = storage.cast::<Slot<T>>();
+    // SAFETY: aligned for the storage (8 bytes) hence for the slot (≤ 8, asserted in types.rs),
+    // and the slot fits in the storage (asserted). The tag is a plain u32, valid for any bits.
+    let tag = unsafe { core::ptr::addr_of!((*slot).tag).read() };
+    if tag != T::TAG {
+        return Err(S::NotInitialized);
+    }
+    // SAFETY: the tag is written only together with a valid contact (`contact_new`).
+    Ok(unsafe { &*slot })
+}
+
+/// `contensou_contact_new_*`.
+///
+/// # Safety
+/// Pointers NULL or valid for their types (`column` may be NULL).
+pub(crate) unsafe fn contact_new<T: Precision>(
+    storage: *mut T::Storage,
+    spec: *const contensou_spec<T>,
+    law_value: contensou_law,
+    form_value: contensou_form,
+    column: *mut contensou_column,
+) -> S {
+    let r = (|| {
+        check(storage).map_err(bare)?;
+        // SAFETY: caller's contract.
+        let s = unsafe { read(spec) }.map_err(bare)?;
+        let law = law(law_value).map_err(bare)?;
+        let form = form(form_value).map_err(bare)?;
+        let spec = Spec {
+            p: s.p,
+            q: s.q,
+            estar: s.estar,
+            cd: s.cd,
+            f: s.f,
+            delta: s.delta,
+        };
+        let contact = DynContact::new(&spec, law, form).map_err(invalid)?;
+        // SAFETY: checked non-NULL and aligned; the slot fits (types.rs).
+        unsafe {
+            storage.cast::<Slot<T>>().write(Slot {
+                tag: T::TAG,
+                contact,
+            })
+        };
+        Ok(())
+    })();
+    // SAFETY: caller's contract.
+    unsafe { report(column, r) }
+}
+
+/// `contensou_contact_set_curvatures_*`.
+///
+/// # Safety
+/// Pointers NULL or valid for their types.
+pub(crate) unsafe fn contact_set_curvatures<T: Precision>(
+    storage: *mut T::Storage,
+    p: T,
+    q: T,
+    column: *mut contensou_column,
+) -> S {
+    let r = (|| {
+        // SAFETY: caller's contract.
+        unsafe { slot::<T>(storage) }.map_err(bare)?;
+        // SAFETY: checked by `slot` (non-NULL, aligned, initialised); the storage is mutable.
+        let slot = unsafe { &mut *storage.cast::<Slot<T>>() };
+        slot.contact.set_curvatures(p, q).map_err(invalid)
+    })();
+    // SAFETY: caller's contract.
+    unsafe { report(column, r) }
+}
+
+/// `contensou_contact_wrench_*`.
+///
+/// # Safety
+/// Pointers NULL or valid for their types.
+pub(crate) unsafe fn contact_wrench<T: Precision>(
+    storage: *const T::Storage,
+    step: *const contensou_step<T>,
+    out: *mut contensou_wrench<T>,
+    column: *mut contensou_column,
+) -> S {
+    let r = (|| {
+        // SAFETY: caller's contract.
+        let slot = unsafe { slot::<T>(storage) }.map_err(bare)?;
+        // SAFETY: caller's contract.
+        let s = unsafe { read(step) }.map_err(bare)?;
+        check(out).map_err(bare)?;
+        let step = Step {
+            h: s.h,
+            hdot: s.hdot,
+            vx: s.vx,
+            vy: s.vy,
+            omega: s.omega,
+        };
+        let w = slot.contact.wrench(&step).map_err(invalid)?;
+        let w = contensou_wrench {
+            n: w.n,
+            fx: w.fx,
+            fy: w.fy,
+            tz: w.tz,
+            a: w.a,
+            b: w.b,
+            e2: w.e2,
+        };
+        // SAFETY: caller's contract.
+        unsafe { write(out, w) }.map_err(bare)
+    })();
+    // SAFETY: caller's contract.
+    unsafe { report(column, r) }
+}
+
+/// Checks `out`, then builds the curvatures and writes them.
+///
+/// # Safety
+/// `out` NULL or writable.
+pub(crate) unsafe fn curvatures<T: Precision>(
+    out: *mut contensou_curvatures<T>,
+    make: impl FnOnce() -> Result<Curvatures<T>, S>,
+) -> S {
+    status((|| {
+        check(out)?;
+        let c = make()?;
+        let v = contensou_curvatures {
+            p: c.p(),
+            q: c.q(),
+            major_angle: c.major_angle(),
+        };
+        // SAFETY: caller's contract.
+        unsafe { write(out, v) }
+    })())
+}
+
+/// The `contensou_race` value as a [`Race`].
+pub(crate) fn race(race: contensou_race) -> Result<Race, S> {
+    Ok(match race {
+        CONTENSOU_RACE_INNER => Race::Inner,
+        CONTENSOU_RACE_OUTER => Race::Outer,
+        _ => return Err(S::InvalidRace),
+    })
+}
+
+/// `contensou_modulus_of_*`.
+///
+/// # Safety
+/// `estar` NULL or writable.
+pub(crate) unsafe fn modulus_of<T: Precision>(
+    young_a: T,
+    poisson_a: T,
+    young_b: T,
+    poisson_b: T,
+    estar: *mut T,
+) -> S {
+    status((|| {
+        check(estar)?;
+        let a = Material::new(young_a, poisson_a)?;
+        let b = Material::new(young_b, poisson_b)?;
+        let e = Modulus::of(a, b)?;
+        // SAFETY: caller's contract.
+        unsafe { write(estar, e.get()) }
+    })())
+}
+
+/// Parses a NUL-terminated name with `parse` and writes the value.
+///
+/// # Safety
+/// `name` NULL or a NUL-terminated string; `out` NULL or writable.
+pub(crate) unsafe fn from_name<V>(
+    name: *const c_char,
+    out: *mut u32,
+    parse: impl Fn(&str) -> Option<V>,
+    code: impl Fn(V) -> u32,
+) -> S {
+    status((|| {
+        if name.is_null() {
+            return Err(S::NullPointer);
+        }
+        check(out)?;
+        // SAFETY: non-NULL, NUL-terminated by the caller's contract.
+        let name = unsafe { CStr::from_ptr(name) };
+        let v = name.to_str().ok().and_then(parse).ok_or(S::UnknownName)?;
+        // SAFETY: caller's contract.
+        unsafe { write(out, code(v)) }
+    })())
+}
+
+pub(crate) fn law_code(law: Law) -> contensou_law {
+    match law {
+        Law::Best => CONTENSOU_LAW_BEST,
+        Law::Simplified => CONTENSOU_LAW_SIMPLIFIED,
+        Law::Pade => CONTENSOU_LAW_PADE,
+        Law::Ellipsoid => CONTENSOU_LAW_ELLIPSOID,
+        Law::Coulomb => CONTENSOU_LAW_COULOMB,
+    }
+}
+
+pub(crate) fn form_code(form: Form) -> contensou_form {
+    match form {
+        Form::Fixed => CONTENSOU_FORM_FIXED,
+        Form::Varying => CONTENSOU_FORM_VARYING,
+    }
+}
+
+/// NUL-terminated column names, in [`dynamic::INPUTS`] order.
+const COLUMN_NAMES: [&CStr; 11] = {
+    use dynamic::INPUTS as I;
+    [
+        c_str!(I[0]),
+        c_str!(I[1]),
+        c_str!(I[2]),
+        c_str!(I[3]),
+        c_str!(I[4]),
+        c_str!(I[5]),
+        c_str!(I[6]),
+        c_str!(I[7]),
+        c_str!(I[8]),
+        c_str!(I[9]),
+        c_str!(I[10]),
+    ]
+};
+
+/// The name of a column code (`""` for `CONTENSOU_COLUMN_NONE` and unknown codes).
+pub(crate) fn column_name(column: contensou_column) -> *const c_char {
+    match COLUMN_NAMES.get(column as usize) {
+        Some(c) => c.as_ptr(),
+        None => c_str!("").as_ptr(),
+    }
+}

@@ -1,0 +1,159 @@
+//! The one status code of every fallible function, and its message.
+//!
+//! Codes 1–11 map one to one to the variants of [`contensou::Error`] (their messages are
+//! [`contensou::Error::as_str`]); codes from 100 are the C boundary's own.
+
+use core::ffi::{c_char, CStr};
+
+use contensou::Error;
+
+use crate::cstr::c_str;
+
+/// What a call did: [`contensou_status::Ok`] or why it refused (nothing was written then,
+/// except the `column` out-parameter).
+#[repr(u32)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum contensou_status {
+    /// Success.
+    Ok = 0,
+    /// [`Error::NonFinite`]: an input that must be finite was NaN or ±∞.
+    NonFinite = 1,
+    /// [`Error::EllipticParameterOutOfDomain`].
+    EllipticParameterOutOfDomain = 2,
+    /// [`Error::CurvatureNotPositive`]: P ≤ 0, or two bodies not convex towards each other.
+    CurvatureNotPositive = 3,
+    /// [`Error::CurvaturesNotOrdered`]: P > Q where the contract requires P ≤ Q.
+    CurvaturesNotOrdered = 4,
+    /// [`Error::CurvatureRatioOutOfRange`]: P/Q below 1e-4.
+    CurvatureRatioOutOfRange = 5,
+    /// [`Error::ModulusNotPositive`].
+    ModulusNotPositive = 6,
+    /// [`Error::PoissonRatioOutOfRange`]: ν outside (−1, 0.5].
+    PoissonRatioOutOfRange = 7,
+    /// [`Error::FrictionCoefficientNegative`].
+    FrictionCoefficientNegative = 8,
+    /// [`Error::LengthNotPositive`]: a radius or diameter ≤ 0.
+    LengthNotPositive = 9,
+    /// [`Error::RegularizationSpeedNegative`]: δ < 0.
+    RegularizationSpeedNegative = 10,
+    /// [`Error::DampingNegative`]: c_d < 0.
+    DampingNegative = 11,
+    /// A pointer parameter that must not be NULL was NULL.
+    NullPointer = 100,
+    /// A pointer parameter is not aligned for its type (storage: 8 bytes).
+    Misaligned = 101,
+    /// The contact storage was not initialised by `contensou_contact_new_*` (of this precision).
+    NotInitialized = 102,
+    /// A `contensou_law` value outside the `CONTENSOU_LAW_*` constants.
+    InvalidLaw = 103,
+    /// A `contensou_form` value outside the `CONTENSOU_FORM_*` constants.
+    InvalidForm = 104,
+    /// A `contensou_race` value outside the `CONTENSOU_RACE_*` constants.
+    InvalidRace = 105,
+    /// A name that is no law or form (`contensou_law_from_name`, `contensou_form_from_name`).
+    UnknownName = 106,
+    /// Reserved for a panic caught at the boundary. Never returned: no exported function can
+    /// panic (the link-time proof tools/no-panic.sh), and the library is built with
+    /// `panic = "abort"`.
+    Panic = 107,
+    /// A `contensou::Error` variant newer than this C API (the enum is non-exhaustive). Never
+    /// returned by this build: every variant of its `contensou` is mapped.
+    UnknownError = 108,
+}
+
+impl From<Error> for contensou_status {
+    fn from(e: Error) -> Self {
+        match e {
+            Error::NonFinite(_) => contensou_status::NonFinite,
+            Error::EllipticParameterOutOfDomain => contensou_status::EllipticParameterOutOfDomain,
+            Error::CurvatureNotPositive => contensou_status::CurvatureNotPositive,
+            Error::CurvaturesNotOrdered => contensou_status::CurvaturesNotOrdered,
+            Error::CurvatureRatioOutOfRange => contensou_status::CurvatureRatioOutOfRange,
+            Error::ModulusNotPositive => contensou_status::ModulusNotPositive,
+            Error::PoissonRatioOutOfRange => contensou_status::PoissonRatioOutOfRange,
+            Error::FrictionCoefficientNegative => contensou_status::FrictionCoefficientNegative,
+            Error::LengthNotPositive => contensou_status::LengthNotPositive,
+            Error::RegularizationSpeedNegative => contensou_status::RegularizationSpeedNegative,
+            Error::DampingNegative => contensou_status::DampingNegative,
+            _ => contensou_status::UnknownError,
+        }
+    }
+}
+
+/// The library error's message, NUL-terminated at compile time.
+macro_rules! error_message {
+    ($e:expr) => {
+        c_str!($e.as_str())
+    };
+}
+
+impl contensou_status {
+    /// The message of a raw code (any `u32`: unknown codes get a message too).
+    pub fn message_of(code: u32) -> &'static CStr {
+        use contensou_status as S;
+        const ALL: [contensou_status; 21] = [
+            S::Ok,
+            S::NonFinite,
+            S::EllipticParameterOutOfDomain,
+            S::CurvatureNotPositive,
+            S::CurvaturesNotOrdered,
+            S::CurvatureRatioOutOfRange,
+            S::ModulusNotPositive,
+            S::PoissonRatioOutOfRange,
+            S::FrictionCoefficientNegative,
+            S::LengthNotPositive,
+            S::RegularizationSpeedNegative,
+            S::DampingNegative,
+            S::NullPointer,
+            S::Misaligned,
+            S::NotInitialized,
+            S::InvalidLaw,
+            S::InvalidForm,
+            S::InvalidRace,
+            S::UnknownName,
+            S::Panic,
+            S::UnknownError,
+        ];
+        match ALL.into_iter().find(|s| *s as u32 == code) {
+            Some(s) => s.message(),
+            None => c_str!("unknown contensou_status code"),
+        }
+    }
+
+    /// The static message of this code (for the library's errors: [`Error::as_str`]).
+    pub const fn message(self) -> &'static CStr {
+        use contensou_status as S;
+        match self {
+            S::Ok => c_str!("ok"),
+            S::NonFinite => error_message!(Error::NonFinite("")),
+            S::EllipticParameterOutOfDomain => error_message!(Error::EllipticParameterOutOfDomain),
+            S::CurvatureNotPositive => error_message!(Error::CurvatureNotPositive),
+            S::CurvaturesNotOrdered => error_message!(Error::CurvaturesNotOrdered),
+            S::CurvatureRatioOutOfRange => error_message!(Error::CurvatureRatioOutOfRange),
+            S::ModulusNotPositive => error_message!(Error::ModulusNotPositive),
+            S::PoissonRatioOutOfRange => error_message!(Error::PoissonRatioOutOfRange),
+            S::FrictionCoefficientNegative => error_message!(Error::FrictionCoefficientNegative),
+            S::LengthNotPositive => error_message!(Error::LengthNotPositive),
+            S::RegularizationSpeedNegative => error_message!(Error::RegularizationSpeedNegative),
+            S::DampingNegative => error_message!(Error::DampingNegative),
+            S::NullPointer => c_str!("a pointer parameter is NULL"),
+            S::Misaligned => c_str!("a pointer parameter is misaligned for its type"),
+            S::NotInitialized => {
+                c_str!(
+                    "contact storage not initialised by contensou_contact_new_* of this precision"
+                )
+            }
+            S::InvalidLaw => c_str!("invalid contensou_law value"),
+            S::InvalidForm => c_str!("invalid contensou_form value"),
+            S::InvalidRace => c_str!("invalid contensou_race value"),
+            S::UnknownName => c_str!("unknown law or form name"),
+            S::Panic => c_str!("panic caught at the C boundary (reserved: cannot happen)"),
+            S::UnknownError => c_str!("contensou error unknown to this C API version"),
+        }
+    }
+
+    /// [`contensou_status::message`] as a C pointer.
+    pub(crate) fn message_ptr(code: u32) -> *const c_char {
+        Self::message_of(code).as_ptr()
+    }
+}

@@ -1,0 +1,180 @@
+//! The C types: plain `repr(C)` value structs (generic here, one C struct per precision in the
+//! header: `contensou_spec_f32`, `contensou_spec_f64`, …), the opaque caller-owned contact
+//! storage, and the `uint32_t` enumerations (plain integers, so that any value a C caller
+//! passes is defined behaviour and an unknown one is a status code).
+
+use contensou::dynamic::DynContact;
+
+/// The contact columns `P,Q,estar,cd,f,delta` of the contract ([`contensou::dynamic::Spec`]).
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct contensou_spec<T> {
+    /// P (1/m), 0 < P ≤ Q: x is the major axis (the helpers give P, Q in this order).
+    pub p: T,
+    /// Q (1/m), P/Q ≥ 1e-4.
+    pub q: T,
+    /// Effective modulus E* (Pa) > 0 (`contensou_modulus_of_*` from two materials).
+    pub estar: T,
+    /// Hunt–Crossley damping c_d (s/m) ≥ 0; 0 = undamped.
+    pub cd: T,
+    /// Friction coefficient f ≥ 0.
+    pub f: T,
+    /// Regularization speed δ (m/s) ≥ 0.
+    pub delta: T,
+}
+
+/// The step columns `h,hdot,vx,vy,omega` ([`contensou::dynamic::Step`]).
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct contensou_step<T> {
+    /// Approach h (m); ≤ 0 is contact loss.
+    pub h: T,
+    /// Approach rate ḣ (m/s); > 0 compression.
+    pub hdot: T,
+    /// Slip of B relative to A along the major axis x (m/s).
+    pub vx: T,
+    /// Slip along y (m/s).
+    pub vy: T,
+    /// Spin ω about the normal z (rad/s).
+    pub omega: T,
+}
+
+/// The wrench on body B from body A and the patch ([`contensou::dynamic::Output`]).
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct contensou_wrench<T> {
+    /// Normal force N (N).
+    pub n: T,
+    /// Friction force F_x (N).
+    pub fx: T,
+    /// Friction force F_y (N).
+    pub fy: T,
+    /// Drilling torque T_z (N·m).
+    pub tz: T,
+    /// Major semi-axis a (m); 0 without contact.
+    pub a: T,
+    /// Minor semi-axis b (m).
+    pub b: T,
+    /// e² of the patch.
+    pub e2: T,
+}
+
+/// Curvatures from a geometry helper, in contract order: 0 < P ≤ Q, and the angle (rad) from
+/// the helper's reference direction to the major axis x of the contact frame
+/// ([`contensou::geometry::Curvatures::major_angle`]).
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct contensou_curvatures<T> {
+    /// P (1/m), the smaller coefficient.
+    pub p: T,
+    /// Q (1/m).
+    pub q: T,
+    /// Angle (rad, in (−π/2, π/2]) to the major axis: for ball–race, from the rolling
+    /// direction (π/2 for a conforming groove); for `contensou_curvatures_new_*`, 0 or π/2.
+    pub major_angle: T,
+}
+
+/// Bytes of [`contensou_contact_f32`].
+pub const CONTENSOU_CONTACT_F32_SIZE: usize = 1040;
+/// Bytes of [`contensou_contact_f64`].
+pub const CONTENSOU_CONTACT_F64_SIZE: usize = 2072;
+/// Alignment (bytes) of both contact storage types.
+pub const CONTENSOU_CONTACT_ALIGN: usize = 8;
+
+/// Caller-owned storage of one `float` contact: opaque, [`CONTENSOU_CONTACT_F32_SIZE`] bytes,
+/// 8-byte aligned. Initialised by `contensou_contact_new_f32`: other calls on storage it did
+/// not initialise (zeroed, as static memory is) return `CONTENSOU_STATUS_NOT_INITIALIZED`.
+/// Plain data (may be copied with `memcpy` or assignment); no destructor. No global state:
+/// `contensou_contact_wrench_f32` only reads the contact, so threads may share one.
+#[repr(C)]
+#[derive(Debug)]
+pub struct contensou_contact_f32 {
+    /// Opaque.
+    pub opaque: [u64; 130],
+}
+
+/// Caller-owned storage of one `double` contact: opaque, [`CONTENSOU_CONTACT_F64_SIZE`]
+/// bytes, 8-byte aligned. As [`contensou_contact_f32`].
+#[repr(C)]
+#[derive(Debug)]
+pub struct contensou_contact_f64 {
+    /// Opaque.
+    pub opaque: [u64; 259],
+}
+
+/// What the storage holds: a tag that only a constructor writes, then the contact.
+#[repr(C)]
+pub(crate) struct Slot<T: contensou::Real> {
+    pub(crate) tag: u32,
+    pub(crate) contact: DynContact<T>,
+}
+
+// The header's sizes are exact: the slot rounded up to the storage alignment, on every target
+// this crate is built for (host and thumbv7em-none-eabihf).
+const _: () = {
+    use core::mem::{align_of, size_of};
+    assert!(size_of::<contensou_contact_f32>() == CONTENSOU_CONTACT_F32_SIZE);
+    assert!(size_of::<contensou_contact_f64>() == CONTENSOU_CONTACT_F64_SIZE);
+    assert!(size_of::<Slot<f32>>().next_multiple_of(8) == CONTENSOU_CONTACT_F32_SIZE);
+    assert!(size_of::<Slot<f64>>().next_multiple_of(8) == CONTENSOU_CONTACT_F64_SIZE);
+    assert!(align_of::<contensou_contact_f32>() == CONTENSOU_CONTACT_ALIGN);
+    assert!(align_of::<contensou_contact_f64>() == CONTENSOU_CONTACT_ALIGN);
+    assert!(align_of::<Slot<f32>>() <= CONTENSOU_CONTACT_ALIGN);
+    assert!(align_of::<Slot<f64>>() <= CONTENSOU_CONTACT_ALIGN);
+};
+
+/// A friction law: one of the `CONTENSOU_LAW_*` values ([`contensou::dynamic::Law`]).
+pub type contensou_law = u32;
+/// `best`, the exact-grade default.
+pub const CONTENSOU_LAW_BEST: contensou_law = 0;
+/// `simplified`, the paper's model.
+pub const CONTENSOU_LAW_SIMPLIFIED: contensou_law = 1;
+/// `pade`.
+pub const CONTENSOU_LAW_PADE: contensou_law = 2;
+/// `ellipsoid`.
+pub const CONTENSOU_LAW_ELLIPSOID: contensou_law = 3;
+/// `coulomb` (point contact: no drilling torque).
+pub const CONTENSOU_LAW_COULOMB: contensou_law = 4;
+
+/// A contact form: one of the `CONTENSOU_FORM_*` values ([`contensou::dynamic::Form`]).
+pub type contensou_form = u32;
+/// Exact eccentricity solved once at construction.
+pub const CONTENSOU_FORM_FIXED: contensou_form = 0;
+/// Eccentricity and shape constants by table at every step; curvatures updated per step by
+/// `contensou_contact_set_curvatures_*`.
+pub const CONTENSOU_FORM_VARYING: contensou_form = 1;
+
+/// A bearing raceway: one of the `CONTENSOU_RACE_*` values ([`contensou::geometry::Race`]).
+pub type contensou_race = u32;
+/// The inner ring's raceway.
+pub const CONTENSOU_RACE_INNER: contensou_race = 0;
+/// The outer ring's raceway.
+pub const CONTENSOU_RACE_OUTER: contensou_race = 1;
+
+/// An input column of the contract (the order of [`contensou::dynamic::INPUTS`]), or
+/// [`CONTENSOU_COLUMN_NONE`]: which input an error came from.
+pub type contensou_column = u32;
+/// `P`.
+pub const CONTENSOU_COLUMN_P: contensou_column = 0;
+/// `Q`.
+pub const CONTENSOU_COLUMN_Q: contensou_column = 1;
+/// `estar`.
+pub const CONTENSOU_COLUMN_ESTAR: contensou_column = 2;
+/// `cd`.
+pub const CONTENSOU_COLUMN_CD: contensou_column = 3;
+/// `f`.
+pub const CONTENSOU_COLUMN_F: contensou_column = 4;
+/// `delta`.
+pub const CONTENSOU_COLUMN_DELTA: contensou_column = 5;
+/// `h`.
+pub const CONTENSOU_COLUMN_H: contensou_column = 6;
+/// `hdot`.
+pub const CONTENSOU_COLUMN_HDOT: contensou_column = 7;
+/// `vx`.
+pub const CONTENSOU_COLUMN_VX: contensou_column = 8;
+/// `vy`.
+pub const CONTENSOU_COLUMN_VY: contensou_column = 9;
+/// `omega`.
+pub const CONTENSOU_COLUMN_OMEGA: contensou_column = 10;
+/// No column: success, or an error not tied to a contract column (a NULL pointer, …).
+pub const CONTENSOU_COLUMN_NONE: contensou_column = 11;

@@ -1,0 +1,88 @@
+#!/usr/bin/env bash
+# The C twin (examples/wrench_eval.c, linked to the host staticlib) against the Rust contract
+# (`contact_eval wrench`), bit for bit: the same rows (examples/bits.rs `gen`: every patch
+# shape, damping/friction/slip regime, contact loss, valid extremes) through every law × form
+# × precision; every field of both outputs is parsed in the run's precision and must have the
+# same bits. Then the error paths (`bits bad`): both stop at the same row with exit 1 and print
+# the same rows before it. Usage: capi/tests/compare.sh (after capi/build.sh, or it builds).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+[[ -x target/release/wrench_eval && -x target/release/wrench_eval-san ]] || ./build.sh --no-check
+cargo build --release --quiet --example bits
+bits=target/release/examples/bits
+c=target/release/wrench_eval
+
+# The reference: the CLI's `wrench` subcommand (src/bin/contact_eval).
+(cd .. && cargo build --release --quiet --bin contact_eval)
+ref=(../target/release/contact_eval wrench)
+header="P,Q,estar,cd,f,delta,h,hdot,vx,vy,omega"
+
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+"$bits" gen >"$work/rows.csv"
+rows=$(($(wc -l <"$work/rows.csv") - 1))
+runs=0
+for precision in f32 f64; do
+    for form in fixed varying; do
+        for law in best simplified pade ellipsoid coulomb; do
+            opts=(--law "$law" --form "$form" --precision "$precision")
+            "$c" "${opts[@]}" <"$work/rows.csv" >"$work/c.csv" || { echo "compare: the C twin failed for ${opts[*]}" >&2; exit 1; }
+            "${ref[@]}" "${opts[@]}" <"$work/rows.csv" >"$work/rust.csv" || { echo "compare: the reference failed for ${opts[*]}" >&2; exit 1; }
+            n="$("$bits" check "$precision" "$work/c.csv" "$work/rust.csv")" ||
+                { echo "compare: FAILED for ${opts[*]}" >&2; exit 1; }
+            ((n == rows)) || { echo "compare: $n of $rows rows for ${opts[*]}" >&2; exit 1; }
+            runs=$((runs + 1))
+        done
+    done
+done
+echo "compare: $rows rows × $runs runs (5 laws × 2 forms × 2 precisions): C = Rust bit for bit"
+
+# The C side under AddressSanitizer + UndefinedBehaviorSanitizer (built by build.sh): clean
+# on every row, and the same output.
+for precision in f32 f64; do
+    for form in fixed varying; do
+        opts=(--law best --form "$form" --precision "$precision")
+        target/release/wrench_eval-san "${opts[@]}" <"$work/rows.csv" >"$work/san.csv" ||
+            { echo "compare: the sanitized C twin failed for ${opts[*]}" >&2; exit 1; }
+        "$c" "${opts[@]}" <"$work/rows.csv" | cmp -s - "$work/san.csv" ||
+            { echo "compare: the sanitized C twin prints other values for ${opts[*]}" >&2; exit 1; }
+    done
+done
+echo "compare: the C twin is clean under ASan + UBSan (best, both forms and precisions)"
+
+"$bits" bad >"$work/bad.tsv"
+kinds=0
+for kind in $(cut -f1 "$work/bad.tsv" | uniq); do
+    { echo "$header"; grep "^$kind"$'\t' "$work/bad.tsv" | cut -f2-; } >"$work/in.csv"
+    for precision in f32 f64; do
+        opts=(--law best --form varying --precision "$precision")
+        set +e
+        "$c" "${opts[@]}" <"$work/in.csv" >"$work/c.csv" 2>"$work/c.err"; rc_c=$?
+        "${ref[@]}" "${opts[@]}" <"$work/in.csv" >"$work/rust.csv" 2>"$work/rust.err"; rc_r=$?
+        set -e
+        if ((rc_c != 1 || rc_r != 1)); then
+            echo "compare: bad row '$kind' ($precision): exit $rc_c (C) and $rc_r (Rust), expected 1 and 1" >&2
+            cat "$work/c.err" "$work/rust.err" >&2
+            exit 1
+        fi
+        row_c="$(grep -o 'row [0-9]*' "$work/c.err")"
+        row_r="$(grep -o 'row [0-9]*' "$work/rust.err")"
+        if [[ "$row_c" != "row 4" || "$row_r" != "row 4" ]]; then
+            echo "compare: bad row '$kind' ($precision): C says '$row_c', Rust '$row_r', expected row 4" >&2
+            exit 1
+        fi
+        # The same message (row, column, reason), but for the program's name, the C twin's
+        # status code and the value (the C twin echoes the field, the CLI its shortest float).
+        msg_c="$(sed -e 's/^wrench_eval: //' -e 's/ (status [0-9]*)$//' -e 's/ = [^:]*:/ = _:/' "$work/c.err")"
+        msg_r="$(sed -e 's/^contact_eval: //' -e 's/ = [^:]*:/ = _:/' "$work/rust.err")"
+        if [[ "$msg_c" != "$msg_r" ]]; then
+            printf 'compare: bad row %s (%s): messages differ:\n  C:    %s\n  Rust: %s\n' "$kind" "$precision" "$msg_c" "$msg_r" >&2
+            exit 1
+        fi
+        grep -q ' (status [0-9]*)$' "$work/c.err" || [[ "$kind" =~ ^(nan|text|empty|fields)$ ]] ||
+            { echo "compare: C message of '$kind' has no status code: $(cat "$work/c.err")" >&2; exit 1; }
+        "$bits" check "$precision" "$work/c.csv" "$work/rust.csv" >/dev/null
+    done
+    kinds=$((kinds + 1))
+done
+echo "compare: $kinds kinds of bad row: both stop at row 4 with the same message, exit 1, same rows before it"

@@ -1,0 +1,52 @@
+/*
+ * The C API's error paths from C (the ABI as the header declares it): storage in static memory
+ * that no constructor initialised, NULL and misaligned pointers, out-of-range enum values,
+ * the column of a rejected input, and an error that leaves a contact usable. Exit 0 if every
+ * check holds; run by capi/build.sh.
+ */
+#include <stdio.h>
+#include <string.h>
+
+#include "contensou.h"
+
+static contensou_contact_f32 never_initialised; /* static: zeroed */
+static contensou_contact_f64 contact;
+static int failures = 0;
+
+#define EXPECT(cond) do { if (!(cond)) { fprintf(stderr, "errors.c:%d: %s\n", __LINE__, #cond); failures++; } } while (0)
+
+int main(void) {
+    contensou_spec_f64 spec = {10.0, 50.0, 1.15e11, 0.1, 0.1, 1e-4};
+    contensou_step_f64 step = {1e-6, 0.0, 0.01, 0.0, 50.0};
+    contensou_step_f32 step32 = {1e-6f, 0.0f, 0.01f, 0.0f, 50.0f};
+    contensou_wrench_f64 w;
+    contensou_wrench_f32 w32;
+    contensou_column column = 99;
+    union { contensou_contact_f64 storage; unsigned char bytes[sizeof(contensou_contact_f64) + 8]; } raw;
+    contensou_contact_f64 *misaligned = (contensou_contact_f64 *)(void *)(raw.bytes + 4);
+
+    EXPECT(sizeof(contensou_contact_f32) == CONTENSOU_CONTACT_F32_SIZE);
+    EXPECT(sizeof(contensou_contact_f64) == CONTENSOU_CONTACT_F64_SIZE);
+    EXPECT(contensou_contact_wrench_f32(&never_initialised, &step32, &w32, NULL) == CONTENSOU_STATUS_NOT_INITIALIZED);
+    EXPECT(contensou_contact_new_f64(NULL, &spec, CONTENSOU_LAW_BEST, CONTENSOU_FORM_FIXED, &column) == CONTENSOU_STATUS_NULL_POINTER);
+    EXPECT(column == CONTENSOU_COLUMN_NONE);
+    EXPECT(contensou_contact_new_f64(misaligned, &spec, CONTENSOU_LAW_BEST, CONTENSOU_FORM_FIXED, NULL) == CONTENSOU_STATUS_MISALIGNED);
+    EXPECT(contensou_contact_new_f64(&contact, &spec, 7, CONTENSOU_FORM_FIXED, NULL) == CONTENSOU_STATUS_INVALID_LAW);
+    EXPECT(contensou_contact_new_f64(&contact, &spec, CONTENSOU_LAW_BEST, 7, NULL) == CONTENSOU_STATUS_INVALID_FORM);
+    spec.p = 60.0;
+    EXPECT(contensou_contact_new_f64(&contact, &spec, CONTENSOU_LAW_PADE, CONTENSOU_FORM_VARYING, &column) == CONTENSOU_STATUS_CURVATURES_NOT_ORDERED);
+    EXPECT(column == CONTENSOU_COLUMN_P && strcmp(contensou_column_name(column), "P") == 0);
+    spec.p = 10.0;
+    EXPECT(contensou_contact_new_f64(&contact, &spec, CONTENSOU_LAW_PADE, CONTENSOU_FORM_VARYING, &column) == CONTENSOU_STATUS_OK);
+    EXPECT(contensou_contact_set_curvatures_f64(&contact, 20.0, 0.0, &column) == CONTENSOU_STATUS_CURVATURES_NOT_ORDERED);
+    EXPECT(contensou_contact_wrench_f64(&contact, &step, &w, &column) == CONTENSOU_STATUS_OK && w.n > 0.0 && w.tz < 0.0);
+    step.omega = 1.0 / 0.0 * 0.0; /* NaN */
+    EXPECT(contensou_contact_wrench_f64(&contact, &step, &w, &column) == CONTENSOU_STATUS_NON_FINITE);
+    EXPECT(column == CONTENSOU_COLUMN_OMEGA);
+    EXPECT(contensou_contact_wrench_f64(&contact, NULL, &w, NULL) == CONTENSOU_STATUS_NULL_POINTER);
+    EXPECT(strcmp(contensou_status_message(CONTENSOU_STATUS_DAMPING_NEGATIVE), "damping coefficient is negative") == 0);
+    EXPECT(strcmp(contensou_status_message(4242), "unknown contensou_status code") == 0);
+    if (failures) return 1;
+    printf("errors.c: all checks hold\n");
+    return 0;
+}

@@ -1,0 +1,23 @@
+//! The guide's worked example (`examples/ball_on_plane.rs`) against the analytic results: pure
+//! rolling at t = (2/7)·v₀/(f g) with v = (5/7)·v₀, then the spin decaying at
+//! (3π/16)·f·N·a/I, each within 1 %.
+
+#[path = "../examples/ball_on_plane.rs"]
+#[allow(dead_code)]
+mod example;
+
+fn rel(got: f64, want: f64) -> f64 {
+    ((got - want) / want).abs()
+}
+
+#[test]
+fn rolls_and_spins_down_as_the_analytic_solution() {
+    let o = example::run().unwrap();
+    println!("{o:#?}");
+    assert!(rel(o.t_roll, o.t_roll_analytic) < 0.01, "{o:?}");
+    assert!(rel(o.v_roll, 5.0 / 7.0 * example::V0) < 0.01, "{o:?}");
+    assert!(rel(o.spin_rate, o.spin_rate_analytic) < 0.01, "{o:?}");
+    // Rolling is reached after the Coulomb time, never before it (the spin only softens the
+    // force at the end of the sliding phase).
+    assert!(o.t_roll >= o.t_roll_analytic, "{o:?}");
+}

@@ -1,0 +1,150 @@
+//! Probes of every function the C API (`capi/`, crate `contensou-capi`) exports, in both
+//! precisions: each is called on black-boxed values **and** black-boxed pointers (the proof
+//! covers any pointer a C caller can pass: NULL, misaligned, storage never initialised).
+//! Counted by tools/no-panic.sh: `probe_capi_*` once per precision, `probe_capi_any_*` once.
+
+use core::ffi::c_char;
+use core::hint::black_box;
+
+use contensou_capi::*;
+
+/// A pointer the optimiser knows nothing about.
+#[inline(always)]
+fn ptr<P>(p: P) -> P {
+    black_box(p)
+}
+
+/// One module of probes per precision (the exported names differ only by their suffix).
+macro_rules! precision_probes {
+    ($m:ident: $T:ty, $storage:ident, $words:expr,
+     $new:ident, $set:ident, $wrench:ident,
+     $curv_new:ident, $sphere_plane:ident, $sphere_sphere:ident, $ball_race:ident, $modulus:ident) => {
+        pub(crate) mod $m {
+            use super::*;
+
+            fn v(x: f64) -> $T {
+                black_box(x as $T)
+            }
+
+            fn storage() -> $storage {
+                $storage {
+                    opaque: black_box([0; $words]),
+                }
+            }
+
+            #[inline(never)]
+            fn probe_capi_contact_new() {
+                let mut s = storage();
+                let spec = contensou_spec::<$T> {
+                    p: v(1.0),
+                    q: v(2.0),
+                    estar: v(3.0),
+                    cd: v(0.0),
+                    f: v(0.1),
+                    delta: v(1e-4),
+                };
+                let mut col = black_box(0);
+                let r = unsafe {
+                    $new(
+                        ptr(&mut s),
+                        ptr(&spec),
+                        black_box(0),
+                        black_box(1),
+                        ptr(&mut col),
+                    )
+                };
+                black_box((r, &s, col));
+            }
+
+            #[inline(never)]
+            fn probe_capi_contact_set_curvatures() {
+                let mut s = storage();
+                let mut col = black_box(0);
+                let r = unsafe { $set(ptr(&mut s), v(1.0), v(2.0), ptr(&mut col)) };
+                black_box((r, &s, col));
+            }
+
+            #[inline(never)]
+            fn probe_capi_contact_wrench() {
+                let s = storage();
+                let step = contensou_step::<$T> {
+                    h: v(1e-6),
+                    hdot: v(0.0),
+                    vx: v(0.01),
+                    vy: v(0.0),
+                    omega: v(50.0),
+                };
+                let mut w = contensou_wrench::<$T>::default();
+                let mut col = black_box(0);
+                let r = unsafe { $wrench(ptr(&s), ptr(&step), ptr(&mut w), ptr(&mut col)) };
+                black_box((r, w, col));
+            }
+
+            #[inline(never)]
+            fn probe_capi_curvatures() {
+                let mut c = contensou_curvatures::<$T>::default();
+                let r = unsafe {
+                    (
+                        $curv_new(v(1.0), v(2.0), ptr(&mut c)),
+                        $sphere_plane(v(1.0), ptr(&mut c)),
+                        $sphere_sphere(v(1.0), v(-2.0), ptr(&mut c)),
+                        $ball_race(v(1.0), v(0.52), v(5.0), v(0.1), black_box(1), ptr(&mut c)),
+                    )
+                };
+                black_box((r, c));
+            }
+
+            #[inline(never)]
+            fn probe_capi_modulus_of() {
+                let mut e = v(0.0);
+                let r = unsafe { $modulus(v(2e11), v(0.3), v(7e10), v(0.33), ptr(&mut e)) };
+                black_box((r, e));
+            }
+
+            pub(crate) fn run() {
+                probe_capi_contact_new();
+                probe_capi_contact_set_curvatures();
+                probe_capi_contact_wrench();
+                probe_capi_curvatures();
+                probe_capi_modulus_of();
+            }
+        }
+    };
+}
+
+precision_probes!(single: f32, contensou_contact_f32, 130,
+    contensou_contact_new_f32, contensou_contact_set_curvatures_f32, contensou_contact_wrench_f32,
+    contensou_curvatures_new_f32, contensou_curvatures_sphere_plane_f32,
+    contensou_curvatures_sphere_sphere_f32, contensou_curvatures_ball_race_f32, contensou_modulus_of_f32);
+precision_probes!(double: f64, contensou_contact_f64, 259,
+    contensou_contact_new_f64, contensou_contact_set_curvatures_f64, contensou_contact_wrench_f64,
+    contensou_curvatures_new_f64, contensou_curvatures_sphere_plane_f64,
+    contensou_curvatures_sphere_sphere_f64, contensou_curvatures_ball_race_f64, contensou_modulus_of_f64);
+
+#[inline(never)]
+fn probe_capi_any_messages() {
+    black_box((
+        contensou_status_message(black_box(3)),
+        contensou_column_name(black_box(4)),
+    ));
+}
+
+#[inline(never)]
+fn probe_capi_any_names() {
+    let name: *const c_char = ptr(b"pade\0".as_ptr().cast());
+    let (mut law, mut form) = (black_box(0), black_box(0));
+    let r = unsafe {
+        (
+            contensou_law_from_name(name, ptr(&mut law)),
+            contensou_form_from_name(name, ptr(&mut form)),
+        )
+    };
+    black_box((r, law, form));
+}
+
+pub(crate) fn run() {
+    single::run();
+    double::run();
+    probe_capi_any_messages();
+    probe_capi_any_names();
+}
