@@ -498,7 +498,7 @@ fn law_dimensional<L: Law, T: Fz>(
     match fr {
         _ if !fine => assert!(matches!(fr, Err(Error::NonFinite(_)))),
         _ if f < T::ZERO => assert_eq!(fr, Err(Error::FrictionCoefficientNegative)),
-        _ if delta < T::ZERO => assert_eq!(fr, Err(Error::LengthNotPositive)),
+        _ if delta < T::ZERO => assert_eq!(fr, Err(Error::RegularizationSpeedNegative)),
         _ => assert!(fr.is_ok()),
     }
     let Ok(fr) = fr else { return };

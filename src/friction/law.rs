@@ -109,7 +109,11 @@ pub struct Tangential<T, B> {
 /// regularization speed δ (m/s; 0 disables regularization). Validated at construction; the
 /// per-step [`Friction::tangential`] is total.
 ///
-/// The law defaults to [`crate::friction::Best`], the exact-grade fast law.
+/// The law defaults to [`crate::friction::Best`], the exact-grade fast law:
+/// [`Friction::new`] builds that one and needs no annotation where it is passed
+/// (`Contact::hertz::<Newton>(…, Friction::new(0.1, 1e-4)?)`); [`Friction::with_law`] builds
+/// any law, named by a turbofish or inferred from where the value goes (a
+/// `contensou::select` scene's law, a struct field).
 ///
 /// # Example
 ///
