@@ -22,7 +22,7 @@ fn wrench_scene<T: Real, L: FrictionLaw>() -> (
     )
     .expect("valid bearing geometry");
     let estar = Modulus::new(T::from_f64(1.142857e11)).expect("positive modulus");
-    let friction = Friction::<T, L>::new(T::from_f64(0.07), T::ZERO).expect("valid f");
+    let friction = Friction::<T, L>::with_law(T::from_f64(0.07), T::ZERO).expect("valid f");
     let contact =
         Contact::hertz::<Newton>(&curv, estar, Undamped, friction).expect("g in the domain");
     let varying = VaryingContact::new(estar, Undamped, friction);

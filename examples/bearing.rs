@@ -31,7 +31,7 @@ fn parts() -> (Modulus<f64>, HuntCrossley<f64>, Friction<f64, Simplified>) {
     (
         Modulus::new(1.142857e11).unwrap(),
         HuntCrossley::new(0.3).unwrap(),
-        Friction::new(0.07, 0.05).unwrap(),
+        Friction::with_law(0.07, 0.05).unwrap(),
     )
 }
 

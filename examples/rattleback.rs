@@ -93,7 +93,7 @@ fn params() -> Params<f64> {
 }
 
 fn run<L: FrictionLaw>(law: &'static str, direction: &'static str, spin0: f64) -> Run {
-    let rb = Rattleback::new(&params(), Friction::<f64, L>::new(F, DELTA).unwrap()).unwrap();
+    let rb = Rattleback::new(&params(), Friction::<f64, L>::with_law(F, DELTA).unwrap()).unwrap();
     let y0 = rb.initial_state(TILT_DEG.to_radians(), spin0);
     let mut rows = vec![(0.0, rb.probe(&y0))];
     rk4(

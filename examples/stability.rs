@@ -469,7 +469,7 @@ fn coulomb_chart() -> (Chart, String) {
     let mut worst: f64 = 0.0;
     for k in 2..=6 {
         let delta = 10f64.powi(-k);
-        let law = Friction::<f64, Coulomb>::new(f, delta).unwrap();
+        let law = Friction::<f64, Coulomb>::with_law(f, delta).unwrap();
         let (eu_est, rk_est) = (
             law.stable_step(&Constants::circle(), mass, n, Explicit::Euler),
             law.stable_step(&Constants::circle(), mass, n, Explicit::Rk4),
@@ -524,7 +524,7 @@ fn best_chart() -> (Chart, String) {
         let mut cells = Vec::new();
         let mut per_spin = [f64::INFINITY; 4];
         for scheme in [Explicit::Euler, Explicit::Rk4] {
-            let h_star = Friction::<f64, Best>::new(f, delta)
+            let h_star = Friction::<f64, Best>::with_law(f, delta)
                 .unwrap()
                 .stable_step(&k, mass, n, scheme);
             let mut worst = f64::INFINITY;
@@ -554,10 +554,9 @@ fn best_chart() -> (Chart, String) {
             cells.push(Some(worst / unit));
         }
         // the block at rest with spin aω = 0.3δ (stiffness A), and the naive guess
-        let h_star =
-            Friction::<f64, Best>::new(f, delta)
-                .unwrap()
-                .stable_step(&k, mass, n, Explicit::Euler);
+        let h_star = Friction::<f64, Best>::with_law(f, delta)
+            .unwrap()
+            .stable_step(&k, mass, n, Explicit::Euler);
         let rest = BestBlock::new(&k, f, delta, mass, n, 0.3 * delta).measured_step(
             [0.0; 2],
             [0.5e-6 * delta, 0.8e-6 * delta],
@@ -624,11 +623,11 @@ fn spin_chart() -> (Chart, String) {
             let mut pure_euler = 0.0;
             for scheme in [Explicit::Euler, Explicit::Rk4] {
                 let h_star = if is_best {
-                    Friction::<f64, Best>::new(f, delta)
+                    Friction::<f64, Best>::with_law(f, delta)
                         .unwrap()
                         .stable_spin_step(&k, 1.0, inertia, n, scheme)
                 } else {
-                    Friction::<f64, Simplified>::new(f, delta)
+                    Friction::<f64, Simplified>::with_law(f, delta)
                         .unwrap()
                         .stable_spin_step(&k, 1.0, inertia, n, scheme)
                 };

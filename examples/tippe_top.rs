@@ -68,7 +68,11 @@ impl Run {
 }
 
 fn fixed<L: FrictionLaw>(name: &'static str, delta: f64) -> Run {
-    let top = TippeTop::new(&Params::paper(), Friction::<f64, L>::new(F, delta).unwrap()).unwrap();
+    let top = TippeTop::new(
+        &Params::paper(),
+        Friction::<f64, L>::with_law(F, delta).unwrap(),
+    )
+    .unwrap();
     let y0 = top.initial_state(THETA0, SPIN);
     let steps = (T_END / H).round() as usize;
     let every = (SAMPLE / H).round() as usize;
@@ -128,7 +132,7 @@ fn main() {
     for h in [1e-5f32, 2e-5, 4e-5, 8e-5] {
         let top = TippeTop::new(
             &Params::<f32>::paper(),
-            Friction::<f32, Simplified>::new(0.3, 1e-4).unwrap(),
+            Friction::<f32, Simplified>::with_law(0.3, 1e-4).unwrap(),
         )
         .unwrap();
         let mut inversion = None;
@@ -181,7 +185,11 @@ const RTOL: f64 = 1e-6;
 
 /// Adaptive run to T_COST: (rhs evaluations, wall seconds).
 fn adaptive<L: FrictionLaw>(name: &str, delta: f64) -> (usize, f64) {
-    let top = TippeTop::new(&Params::paper(), Friction::<f64, L>::new(F, delta).unwrap()).unwrap();
+    let top = TippeTop::new(
+        &Params::paper(),
+        Friction::<f64, L>::with_law(F, delta).unwrap(),
+    )
+    .unwrap();
     let y0 = top.initial_state(THETA0, SPIN);
     let mut atol = [1e-9; N];
     atol[3..6].fill(1e-6);

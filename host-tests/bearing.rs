@@ -15,7 +15,7 @@ fn e2<M: contensou::shape::Eccentricity>(g: &Geometry<f64>, race: Race) -> f64 {
         &g.curvatures(race).unwrap(),
         Modulus::new(1.142857e11).unwrap(),
         HuntCrossley::new(0.3).unwrap(),
-        Friction::<f64, Simplified>::new(0.07, 0.05).unwrap(),
+        Friction::<f64, Simplified>::with_law(0.07, 0.05).unwrap(),
     )
     .unwrap();
     c.wrench(1e-6, 0.0, Slip::default()).patch.e2
@@ -36,7 +36,7 @@ fn rolls_at_the_cage_speed_under_load() {
             &g.curvatures(race).unwrap(),
             Modulus::new(1.142857e11).unwrap(),
             HuntCrossley::new(0.3).unwrap(),
-            Friction::<f64, Simplified>::new(0.07, 0.05).unwrap(),
+            Friction::<f64, Simplified>::with_law(0.07, 0.05).unwrap(),
         )
         .unwrap()
     };

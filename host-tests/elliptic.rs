@@ -148,6 +148,12 @@ fn reference_covers_both_ends_densely() {
     );
     assert!(rows.iter().any(|r| r.m1 == 2f64.powi(-24)));
     assert!(near0 >= 60 && near1 >= 60, "{near0} {near1}");
+    // Dense where the f64 errors peak (m₁ → its floor), so the stated maxima are maxima.
+    let edge = rows
+        .iter()
+        .filter(|r| r.m1 >= 1e-12 && r.m1 <= 1e-9)
+        .count();
+    assert!(edge >= 1000, "{edge} rows at m1 in [1e-12, 1e-9]");
 }
 
 #[test]

@@ -64,8 +64,8 @@ fn each_variant<T: Real>() {
     nonfinite(Parameter::from_complement(inf), "m1");
     nonfinite(Slip::new(nan, x(0.0), x(0.0)), "v_Px");
     nonfinite(Slip::new(x(0.0), x(0.0), -inf), "omega");
-    nonfinite(Friction::<T, Simplified>::new(nan, x(0.0)), "f");
-    nonfinite(Friction::<T, Simplified>::new(x(0.1), inf), "delta");
+    nonfinite(Friction::<T, Simplified>::with_law(nan, x(0.0)), "f");
+    nonfinite(Friction::<T, Simplified>::with_law(x(0.1), inf), "delta");
     nonfinite(SlipState::new(x(1.0), x(0.0), nan, x(0.0)), "a_omega");
     nonfinite(Curvatures::new(x(1.0), nan), "Q");
     nonfinite(Modulus::new(inf), "E*");
@@ -118,7 +118,7 @@ fn each_variant<T: Real>() {
     assert_eq!(Ratio::of(&thin).unwrap_err(), crr);
     assert_eq!(Hertz::new::<Newton>(&thin, e).unwrap_err(), crr);
     assert_eq!(Fitted::new(&thin, e).unwrap_err(), crr);
-    let fr = Friction::<T, Simplified>::new(x(0.1), x(0.0)).unwrap();
+    let fr = Friction::<T, Simplified>::with_law(x(0.1), x(0.0)).unwrap();
     assert_eq!(
         Contact::hertz::<Newton>(&thin, e, Undamped, fr).unwrap_err(),
         crr
@@ -151,7 +151,7 @@ fn each_variant<T: Real>() {
 
     // FrictionCoefficientNegative.
     assert_eq!(
-        Friction::<T, Simplified>::new(x(-0.1), x(0.0)).unwrap_err(),
+        Friction::<T, Simplified>::with_law(x(-0.1), x(0.0)).unwrap_err(),
         Error::FrictionCoefficientNegative
     );
 
@@ -171,10 +171,10 @@ fn each_variant<T: Real>() {
     }
     // RegularizationSpeedNegative: δ < 0 (δ = 0 is allowed).
     assert_eq!(
-        Friction::<T, Simplified>::new(x(0.1), x(-1e-3)).unwrap_err(),
+        Friction::<T, Simplified>::with_law(x(0.1), x(-1e-3)).unwrap_err(),
         Error::RegularizationSpeedNegative
     );
-    assert!(Friction::<T, Simplified>::new(x(0.1), x(0.0)).is_ok());
+    assert!(Friction::<T, Simplified>::with_law(x(0.1), x(0.0)).is_ok());
 
     // CurvaturesNotOrdered: `ordered` refuses P > Q (where `new` swaps them).
     assert_eq!(

@@ -190,7 +190,7 @@ fn sweep<T: Real + 'static, L: FrictionLaw + Copy + 'static>(
 ) -> f64 {
     let eps = if T::MANTISSA_DIGITS > 24 { 1e-6 } else { 1e-3 };
     let estar = Modulus::new(T::from_f64(ESTAR)).unwrap();
-    let friction = Friction::<T, L>::new(T::from_f64(F), T::ZERO).unwrap();
+    let friction = Friction::<T, L>::with_law(T::from_f64(F), T::ZERO).unwrap();
     let mut worst: f64 = 0.0;
     for &g in &RATIOS {
         let curv = Curvatures::new(T::from_f64(g * Q), T::from_f64(Q)).unwrap();
@@ -319,7 +319,7 @@ fn from_complement_constants_are_finite() {
         for m1 in [1e-4, 1e-3] {
             let k = Constants::from_parameter(Parameter::from_complement(T::from_f64(m1)).unwrap());
             assert!(k.spin_torque().is_finite() && k.gamma() > T::ZERO);
-            let fr = Friction::<T, L>::new(T::from_f64(0.3), T::ZERO).unwrap();
+            let fr = Friction::<T, L>::with_law(T::from_f64(0.3), T::ZERO).unwrap();
             for &u in &U {
                 let (a, om) = (T::from_f64(1e-3), T::from_f64(7.0));
                 let v = u * 1e-3 * 7.0;
@@ -342,7 +342,7 @@ fn overflowing_slip_speeds_stay_finite() {
     fn one<T: Real, L: FrictionLaw>() {
         let k = Constants::from_parameter(Parameter::new(T::from_f64(0.5)).unwrap());
         let big = T::MAX;
-        let fr = Friction::<T, L>::new(T::from_f64(0.2), T::ZERO).unwrap();
+        let fr = Friction::<T, L>::with_law(T::from_f64(0.2), T::ZERO).unwrap();
         for (vx, vy, om, a) in [
             (big, big, big, big),
             (big, -big, T::ZERO, T::ONE),

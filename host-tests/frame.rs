@@ -247,7 +247,7 @@ fn continuous_across_the_crossing() {
                             &curv,
                             mu,
                             Undamped,
-                            Friction::<f64, Simplified>::new(0.1, 1e-6).unwrap(),
+                            Friction::<f64, Simplified>::with_law(0.1, 1e-6).unwrap(),
                         )
                         .unwrap();
                         let w = c.wrench(fn_, 0.0, slip);

@@ -519,23 +519,23 @@ fn simplified_spot_values() {
 #[test]
 fn dimensional_wrapper_validates_and_scales() {
     assert_eq!(
-        Friction::<f64, Simplified>::new(-0.1, 0.0).unwrap_err(),
+        Friction::<f64, Simplified>::with_law(-0.1, 0.0).unwrap_err(),
         Error::FrictionCoefficientNegative
     );
     assert_eq!(
-        Friction::<f64, Simplified>::new(f64::NAN, 0.0).unwrap_err(),
+        Friction::<f64, Simplified>::with_law(f64::NAN, 0.0).unwrap_err(),
         Error::NonFinite("f")
     );
     assert_eq!(
-        Friction::<f32, Pade>::new(f32::INFINITY, 0.0).unwrap_err(),
+        Friction::<f32, Pade>::with_law(f32::INFINITY, 0.0).unwrap_err(),
         Error::NonFinite("f")
     );
     assert_eq!(
-        Friction::<f64, Coulomb>::new(0.3, -1e-3).unwrap_err(),
+        Friction::<f64, Coulomb>::with_law(0.3, -1e-3).unwrap_err(),
         Error::RegularizationSpeedNegative
     );
     assert_eq!(
-        Friction::<f64, Coulomb>::new(0.3, f64::NAN).unwrap_err(),
+        Friction::<f64, Coulomb>::with_law(0.3, f64::NAN).unwrap_err(),
         Error::NonFinite("delta")
     );
     assert_eq!(
@@ -554,7 +554,7 @@ fn dimensional_wrapper_validates_and_scales() {
     assert!(SlipState::<f64>::from_polar(0.0, f64::NAN).is_err());
 
     let k = Constants::from_parameter(Parameter::new(0.5f64).unwrap());
-    let law = Friction::<f64, Simplified>::new(0.3, 1e-4).unwrap();
+    let law = Friction::<f64, Simplified>::with_law(0.3, 1e-4).unwrap();
     let slip = Slip::new(1e-3, -2e-3, 40.0).unwrap();
     for n in [0.0, -1.0, f64::NAN] {
         let w = law.tangential(&k, 1e-4, n, slip);
@@ -589,7 +589,7 @@ fn extremes<T: Real, L: FrictionLaw>() {
         let a = pick(&mut rng).abs().min(T::from_f64(1e3));
         let n = T::from_f64(rng.log(1e-9, 1e3));
         let delta = pick(&mut rng).abs();
-        let law = Friction::<T, L>::new(T::from_f64(0.4), delta).unwrap();
+        let law = Friction::<T, L>::with_law(T::from_f64(0.4), delta).unwrap();
         let w = law.tangential(k, a, n, Slip::new(vx, vy, om).unwrap());
         let ctx = format!(
             "{} {}: v=({vx},{vy}) ω={om} a={a} N={n} δ={delta}: {w:?}",

@@ -325,7 +325,7 @@ fn dimensional_call_matches_the_friction_wrapper() {
     use contensou::friction::{Friction, Slip};
     let k = Constants::from_parameter(Parameter::new(0.7).unwrap());
     let b = BestContact::new(&k);
-    let law = Friction::<f64, Best>::new(0.3, 0.0).unwrap();
+    let law = Friction::<f64, Best>::with_law(0.3, 0.0).unwrap();
     let (a, n) = (50e-6, 2.0);
     for (vx, vy, om) in [
         (1e-3, 5e-4, 30.0),
@@ -455,8 +455,8 @@ fn regularization_ramps_linearly_below_delta() {
     let k = Constants::from_parameter(Parameter::new(0.6).unwrap());
     let b = Best::prepare(&k);
     let (a, n, f, delta) = (1e-3, 3.0, 0.2, 1e-3);
-    let sharp = Friction::<f64, Best>::new(f, 0.0).unwrap();
-    let soft = Friction::<f64, Best>::new(f, delta).unwrap();
+    let sharp = Friction::<f64, Best>::with_law(f, 0.0).unwrap();
+    let soft = Friction::<f64, Best>::with_law(f, delta).unwrap();
     for (vx, vy, om) in [
         (3e-4, -2e-4, 0.4),
         (1e-4, 0.0, 0.0),

@@ -21,7 +21,7 @@ const DELTA: f64 = 1e-3;
 const TILT: f64 = 0.5 * std::f64::consts::PI / 180.0;
 
 fn body<L: FrictionLaw>(p: &Params<f64>) -> Rattleback<f64, L> {
-    Rattleback::new(p, Friction::new(F, DELTA).unwrap()).unwrap()
+    Rattleback::new(p, Friction::with_law(F, DELTA).unwrap()).unwrap()
 }
 
 /// Probes every 10 steps over `t_end` from Kane–Levinson's tilt and spin `spin`.

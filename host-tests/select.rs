@@ -248,7 +248,7 @@ fn circular_rejects_an_elliptic_patch() {
         &curv,
         Modulus::new(ESTAR).unwrap(),
         Undamped,
-        Friction::new(F, 0.0).unwrap(),
+        Friction::with_law(F, 0.0).unwrap(),
     );
     assert_eq!(
         built.unwrap_err(),

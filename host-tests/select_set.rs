@@ -77,7 +77,7 @@ fn scene_errors<S: Select>(kind: &str, spins: bool, per_decade: usize) -> [f64; 
 {
     let t = <S::Real as Real>::from_f64;
     let estar = Modulus::new(t(ESTAR)).unwrap();
-    let friction = Friction::<S::Real, S::Law>::new(t(F), S::Real::ZERO).unwrap();
+    let friction = Friction::<S::Real, S::Law>::with_law(t(F), S::Real::ZERO).unwrap();
     let grid = slip_grid(per_decade, spins);
     let mut worst = [0.0f64; 4];
     for curv in geometries::<S::Real>(kind) {
@@ -87,7 +87,7 @@ fn scene_errors<S: Select>(kind: &str, spins: bool, per_decade: usize) -> [f64; 
             &curv64,
             Modulus::new(t(ESTAR).to_f64()).unwrap(),
             Undamped,
-            Friction::new(t(F).to_f64(), 0.0).unwrap(),
+            Friction::with_law(t(F).to_f64(), 0.0).unwrap(),
         )
         .unwrap();
         // 2⁻¹⁹ m ≈ 1.9 µm: where micromath's √h is worst (6.07 % high; Rough budget).

@@ -366,7 +366,7 @@ fn stable_step_matches_the_measured_bisection() {
     let (mass, f) = (0.006, 0.3);
     let n = mass * 9.81;
     for delta in [1e-3, 1e-5] {
-        let law = Friction::<f64, Coulomb>::new(f, delta).unwrap();
+        let law = Friction::<f64, Coulomb>::with_law(f, delta).unwrap();
         for scheme in [Explicit::Euler, Explicit::Rk4] {
             let h = law.stable_step(&Constants::circle(), mass, n, scheme);
             assert!((h / (scheme.limit() * mass * delta / (f * n)) - 1.0).abs() < 1e-15);
@@ -376,7 +376,7 @@ fn stable_step_matches_the_measured_bisection() {
                 "{scheme:?} delta {delta}: {measured:e} vs {h:e}"
             );
             // the simplified law without spin is the same ramp
-            let simple = Friction::<f64, Simplified>::new(f, delta).unwrap();
+            let simple = Friction::<f64, Simplified>::with_law(f, delta).unwrap();
             assert_eq!(simple.stable_step(&Constants::circle(), mass, n, scheme), h);
             let measured = measured_step(&simple, mass, n, scheme, false, h);
             assert!(
@@ -393,10 +393,10 @@ fn stable_step_matches_the_measured_bisection() {
 
 #[test]
 fn stable_step_edge_cases_are_total() {
-    let law = Friction::<f32, Coulomb>::new(0.3, 1e-4).unwrap();
+    let law = Friction::<f32, Coulomb>::with_law(0.3, 1e-4).unwrap();
     let e = Explicit::Euler;
     assert_eq!(
-        Friction::<f32, Coulomb>::new(0.3, 0.0)
+        Friction::<f32, Coulomb>::with_law(0.3, 0.0)
             .unwrap()
             .stable_step(&Constants::circle(), 1.0, 1.0, e),
         0.0
@@ -414,7 +414,7 @@ fn stable_step_edge_cases_are_total() {
         f32::MAX
     );
     assert_eq!(
-        Friction::<f32, Coulomb>::new(0.0, 1e-4)
+        Friction::<f32, Coulomb>::with_law(0.0, 1e-4)
             .unwrap()
             .stable_step(&Constants::circle(), 1.0, 1.0, e),
         f32::MAX
@@ -575,14 +575,14 @@ fn best_stable_step_is_conservative_and_tight() {
 fn best_stable_step_edge_cases_are_total() {
     let k = Constants::<f32>::circle();
     let e = Explicit::Euler;
-    let law = Friction::<f32, Best>::new(0.3, 1e-4).unwrap();
+    let law = Friction::<f32, Best>::with_law(0.3, 1e-4).unwrap();
     let kappa = ramp_stiffness(&k);
     assert!(
         (law.stable_step(&k, 2.0, 3.0, e) / (2.0 * 2.0 * 1e-4 / (kappa * 0.3 * 3.0)) - 1.0).abs()
             < 1e-6
     );
     assert_eq!(
-        Friction::<f32, Best>::new(0.3, 0.0)
+        Friction::<f32, Best>::with_law(0.3, 0.0)
             .unwrap()
             .stable_step(&k, 1.0, 1.0, e),
         0.0
@@ -594,7 +594,7 @@ fn best_stable_step_edge_cases_are_total() {
     assert_eq!(law.stable_step(&k, 1.0, f32::NAN, e), f32::MAX);
     assert_eq!(law.stable_step(&k, f32::MAX, 1e-30, e), f32::MAX);
     assert_eq!(
-        Friction::<f32, Best>::new(0.0, 1e-4)
+        Friction::<f32, Best>::with_law(0.0, 1e-4)
             .unwrap()
             .stable_step(&k, 1.0, 1.0, e),
         f32::MAX
@@ -683,8 +683,8 @@ fn spin_stable_step_is_conservative_and_tight() {
         let (kappa_t, c, _) = spin_stiffness_row(m1).unwrap();
         let mut lines = Vec::new();
         for scheme in [Explicit::Euler, Explicit::Rk4] {
-            let simple = Friction::<f64, Simplified>::new(f, delta).unwrap();
-            let best = Friction::<f64, Best>::new(f, delta).unwrap();
+            let simple = Friction::<f64, Simplified>::with_law(f, delta).unwrap();
+            let best = Friction::<f64, Best>::with_law(f, delta).unwrap();
             for (is_best, h_star) in [
                 (false, simple.stable_spin_step(&k, 1.0, inertia, n, scheme)),
                 (true, best.stable_spin_step(&k, 1.0, inertia, n, scheme)),
@@ -763,9 +763,9 @@ fn spin_stable_step_is_conservative_and_tight() {
 fn spin_stable_step_edge_cases_are_total() {
     let k = Constants::<f32>::circle();
     let e = Explicit::Euler;
-    let best = Friction::<f32, Best>::new(0.3, 1e-4).unwrap();
-    let simple = Friction::<f32, Simplified>::new(0.3, 1e-4).unwrap();
-    let coulomb = Friction::<f32, Coulomb>::new(0.3, 1e-4).unwrap();
+    let best = Friction::<f32, Best>::with_law(0.3, 1e-4).unwrap();
+    let simple = Friction::<f32, Simplified>::with_law(0.3, 1e-4).unwrap();
+    let coulomb = Friction::<f32, Coulomb>::with_law(0.3, 1e-4).unwrap();
     let kt = spin_stiffness(&k);
     // h* = 2·Iδ/(κ·f·N·a²), I = 2, N = 3, a = 0.5
     let want = |kappa: f32| 2.0 * 2.0 * 1e-4 / (kappa * 0.3 * 3.0 * 0.25);
@@ -789,19 +789,19 @@ fn spin_stable_step_edge_cases_are_total() {
         assert_eq!(g(1e30, 1.0, 0.0), f32::MAX as f64);
     }
     assert_eq!(
-        Friction::<f32, Best>::new(0.3, 0.0)
+        Friction::<f32, Best>::with_law(0.3, 0.0)
             .unwrap()
             .stable_spin_step(&k, 1.0, 1.0, 1.0, e),
         0.0
     );
     assert_eq!(
-        Friction::<f32, Simplified>::new(0.3, 0.0)
+        Friction::<f32, Simplified>::with_law(0.3, 0.0)
             .unwrap()
             .stable_spin_step(&k, 1.0, 1.0, 1.0, e),
         0.0
     );
     assert_eq!(
-        Friction::<f32, Best>::new(0.0, 1e-4)
+        Friction::<f32, Best>::with_law(0.0, 1e-4)
             .unwrap()
             .stable_spin_step(&k, 1e30, 1.0, 1.0, e),
         f32::MAX
@@ -843,7 +843,7 @@ fn stable_steps_have_one_signature_and_come_from_a_contact() {
     use contensou::friction::{Ellipsoid, Exact, FrictionLaw, Pade};
     use contensou::normal::Undamped;
     fn steps<L: FrictionLaw>(k: &Constants<f64>, a: f64, n: f64) -> (f64, f64) {
-        let law = Friction::<f64, L>::new(0.3, 1e-4).unwrap();
+        let law = Friction::<f64, L>::with_law(0.3, 1e-4).unwrap();
         let e = Explicit::Euler;
         (
             law.stable_step(k, 2.0, n, e),
@@ -893,7 +893,7 @@ fn stable_steps_have_one_signature_and_come_from_a_contact() {
     let shape = Constants::from_shape(&Newton::shape(Ratio::of(&curv).unwrap()));
     assert_eq!(*contact.constants(), shape);
     let e = Explicit::Rk4;
-    let law = Friction::<f64, Best>::new(0.3, 1e-4).unwrap();
+    let law = Friction::<f64, Best>::with_law(0.3, 1e-4).unwrap();
     assert_eq!(
         contact.stable_step(2.0, 3.0, e),
         law.stable_step(&shape, 2.0, 3.0, e)

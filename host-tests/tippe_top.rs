@@ -10,7 +10,7 @@ use contensou::scenes::tippe_top::{N, Params, Probe, TippeTop};
 fn run<L: FrictionLaw>(delta: f64, t_end: f64) -> Vec<(f64, Probe<f64>)> {
     let top = TippeTop::new(
         &Params::paper(),
-        Friction::<f64, L>::new(0.3, delta).unwrap(),
+        Friction::<f64, L>::with_law(0.3, delta).unwrap(),
     )
     .unwrap();
     let y0 = top.initial_state(0.1, 180.0);
@@ -76,7 +76,7 @@ fn steep_coulomb_does_not_invert_and_keeps_jellett() {
 fn f32_rk4_with_a_40us_step_inverts_like_f64() {
     let top = TippeTop::new(
         &Params::<f32>::paper(),
-        Friction::<f32, Simplified>::new(0.3, 1e-4).unwrap(),
+        Friction::<f32, Simplified>::with_law(0.3, 1e-4).unwrap(),
     )
     .unwrap();
     let mut inversion = None;
@@ -103,7 +103,7 @@ fn f32_rk4_with_a_40us_step_inverts_like_f64() {
 fn f32_rk4_resolves_the_contact_and_stays_finite() {
     let top = TippeTop::new(
         &Params::<f32>::paper(),
-        Friction::<f32, Simplified>::new(0.3, 1e-4).unwrap(),
+        Friction::<f32, Simplified>::with_law(0.3, 1e-4).unwrap(),
     )
     .unwrap();
     let y0 = top.initial_state(0.1, 180.0);

@@ -39,7 +39,7 @@ fn bearing_pure_spin<T: Real>(race: Race, case: &str, tol: f64, varying: bool) {
         race,
     )
     .unwrap();
-    let friction = Friction::<T, Simplified>::new(T::from_f64(f), T::ZERO).unwrap();
+    let friction = Friction::<T, Simplified>::with_law(T::from_f64(f), T::ZERO).unwrap();
     let rows = reference(case);
     assert!(!rows.is_empty());
     for (estar, h, e, a, n) in rows {
@@ -115,7 +115,7 @@ fn sphere_plane_exact_law_matches_closed_forms() {
         &Curvatures::sphere_plane(r).unwrap(),
         Modulus::new(estar).unwrap(),
         Undamped,
-        Friction::<f64, Exact>::new(f, 0.0).unwrap(),
+        Friction::<f64, Exact>::with_law(f, 0.0).unwrap(),
     )
     .unwrap();
     let n = 4.0 / 3.0 * estar * r.sqrt() * h * h.sqrt();
@@ -142,7 +142,7 @@ fn sphere_plane_exact_law_matches_closed_forms() {
 /// No contact, no wrench; a damped rebound (N clamped to 0) carries no friction either.
 #[test]
 fn contact_loss_and_rebound_give_zero_wrench() {
-    let friction = Friction::<f64, Simplified>::new(0.3, 0.0).unwrap();
+    let friction = Friction::<f64, Simplified>::with_law(0.3, 0.0).unwrap();
     let curv = Curvatures::sphere_plane(0.015).unwrap();
     let modulus = Modulus::new(5e9).unwrap();
     let slip = Slip::new(0.2, -0.1, 30.0).unwrap();
@@ -173,7 +173,7 @@ fn passive_sweep<T: Real, L: FrictionLaw>() {
         state ^= state << 17;
         (state >> 11) as f64 / (1u64 << 53) as f64
     };
-    let friction = Friction::<T, L>::new(T::from_f64(0.25), T::from_f64(1e-4)).unwrap();
+    let friction = Friction::<T, L>::with_law(T::from_f64(0.25), T::from_f64(1e-4)).unwrap();
     let modulus = Modulus::new(T::from_f64(1e11)).unwrap();
     let varying = VaryingContact::new(modulus, Undamped, friction);
     for _ in 0..20_000 {
@@ -223,7 +223,7 @@ fn unclamped_step_is_the_clamped_call<T: Real, L: FrictionLaw>() {
     // The wrench benchmarks' scene (209 bearing, inner race), here with δ > 0.
     let (curv, ..) = wrench_scene::<T, L>();
     let estar = Modulus::new(T::from_f64(1.142857e11)).unwrap();
-    let friction = Friction::<T, L>::new(T::from_f64(0.07), T::from_f64(1e-4)).unwrap();
+    let friction = Friction::<T, L>::with_law(T::from_f64(0.07), T::from_f64(1e-4)).unwrap();
     let plain = Contact::hertz::<Newton>(&curv, estar, Undamped, friction).unwrap();
     let damper = CompressionDamping::new(T::from_f64(0.5)).unwrap();
     let damped = Contact::hertz::<Newton>(&curv, estar, damper, friction).unwrap();

@@ -29,7 +29,7 @@
 //!     &Curvatures::sphere_plane(6.35e-3)?,
 //!     Modulus::new(1.15e11)?,
 //!     Undamped,
-//!     Friction::<f64, Simplified>::new(0.1, 0.0)?,
+//!     Friction::<f64, Simplified>::with_law(0.1, 0.0)?,
 //! )?;
 //! let w = contact.wrench(1e-6, 0.0, Slip::new(0.01, 0.0, 50.0)?);
 //! assert!(w.n > 0.0 && w.fx < 0.0 && w.tz < 0.0);

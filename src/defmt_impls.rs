@@ -9,6 +9,7 @@ use crate::contact::Wrench;
 use crate::friction::{Tangential, Traction};
 use crate::normal::Patch;
 
+#[cfg_attr(docsrs, doc(cfg(feature = "defmt")))]
 impl Format for Error {
     fn format(&self, f: Formatter<'_>) {
         match self {
@@ -18,6 +19,7 @@ impl Format for Error {
     }
 }
 
+#[cfg_attr(docsrs, doc(cfg(feature = "defmt")))]
 impl<T: Format> Format for Patch<T> {
     fn format(&self, f: Formatter<'_>) {
         write!(
@@ -28,6 +30,7 @@ impl<T: Format> Format for Patch<T> {
     }
 }
 
+#[cfg_attr(docsrs, doc(cfg(feature = "defmt")))]
 impl<T: Format> Format for Traction<T> {
     fn format(&self, f: Formatter<'_>) {
         write!(
@@ -38,6 +41,7 @@ impl<T: Format> Format for Traction<T> {
     }
 }
 
+#[cfg_attr(docsrs, doc(cfg(feature = "defmt")))]
 impl<T: Format, B> Format for Tangential<T, B> {
     fn format(&self, f: Formatter<'_>) {
         write!(
@@ -48,6 +52,7 @@ impl<T: Format, B> Format for Tangential<T, B> {
     }
 }
 
+#[cfg_attr(docsrs, doc(cfg(feature = "defmt")))]
 impl<T: Format, B> Format for Wrench<T, B> {
     fn format(&self, f: Formatter<'_>) {
         write!(

@@ -299,7 +299,7 @@ impl<T: Real> DynContact<T> {
         let delta = at("delta", finite(spec.delta, "delta"))?;
         macro_rules! build {
             ($variant:ident) => {{
-                let friction = Friction::new(f, delta).map_err(|error| Invalid {
+                let friction = Friction::with_law(f, delta).map_err(|error| Invalid {
                     column: if matches!(error, Error::RegularizationSpeedNegative) {
                         "delta"
                     } else {

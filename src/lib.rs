@@ -37,6 +37,8 @@
 //! Constructors validate and return [`Result`] with [`Error`]; per-step calls take validated
 //! types and are total: no panic, no NaN or ∞ for finite valid input.
 #![no_std]
+// docs.rs (nightly, `--cfg docsrs`): each feature-gated item is marked with its feature.
+#![cfg_attr(docsrs, feature(doc_cfg))]
 #![deny(unsafe_code)]
 #![warn(missing_docs, missing_debug_implementations, rust_2018_idioms)]
 #![cfg_attr(
@@ -59,6 +61,7 @@ pub mod math;
 pub mod normal;
 pub mod real;
 #[cfg(feature = "scenes")]
+#[cfg_attr(docsrs, doc(cfg(feature = "scenes")))]
 pub mod scenes;
 pub mod select;
 pub mod shape;

@@ -109,11 +109,13 @@ impl Backend for Libm {
 /// exactly; `exp` saturates to 0 below ≈ −88 and to +∞ above ≈ 88. The twins only call these
 /// where the argument is positive and finite.
 #[cfg(feature = "micromath")]
+#[cfg_attr(docsrs, doc(cfg(feature = "micromath")))]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Micromath;
 
 /// `f` on `f32` values (the round trip through `f64` folds away), `fallback` for `f64`.
 #[cfg(feature = "micromath")]
+#[cfg_attr(docsrs, doc(cfg(feature = "micromath")))]
 #[inline(always)]
 fn on_f32<T: Real>(
     x: T,
@@ -129,6 +131,7 @@ fn on_f32<T: Real>(
 
 /// micromath's `ln`, its argument kept ≥ 1 (see `Micromath::ln`).
 #[cfg(feature = "micromath")]
+#[cfg_attr(docsrs, doc(cfg(feature = "micromath")))]
 #[inline(always)]
 fn ln_f32(x: micromath::F32) -> micromath::F32 {
     if x.0 < 1.0 {
@@ -139,6 +142,7 @@ fn ln_f32(x: micromath::F32) -> micromath::F32 {
 }
 
 #[cfg(feature = "micromath")]
+#[cfg_attr(docsrs, doc(cfg(feature = "micromath")))]
 impl Backend for Micromath {
     const NAME: &'static str = "micromath";
     #[inline(always)]

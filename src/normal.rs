@@ -459,10 +459,12 @@ impl<T: Real> Hertz<T> {
 /// [`NormalLaw::patch`]: M4F **32** instructions (`f32`; [`Hertz`] 36: the bit trick is
 /// inlined, `vsqrt.f32` is a call), host ≈ 9–12 ns.
 #[cfg(feature = "micromath")]
+#[cfg_attr(docsrs, doc(cfg(feature = "micromath")))]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct HertzMicromath<T>(Hertz<T>);
 
 #[cfg(feature = "micromath")]
+#[cfg_attr(docsrs, doc(cfg(feature = "micromath")))]
 impl<T: Real> HertzMicromath<T> {
     /// As [`Hertz::new`]: built with the eccentricity method `M`. Errors:
     /// [`Error::CurvatureRatioOutOfRange`] if P/Q < 1e-4.
@@ -475,6 +477,7 @@ impl<T: Real> HertzMicromath<T> {
 }
 
 #[cfg(feature = "micromath")]
+#[cfg_attr(docsrs, doc(cfg(feature = "micromath")))]
 impl<T: Real> From<Hertz<T>> for HertzMicromath<T> {
     fn from(law: Hertz<T>) -> Self {
         HertzMicromath(law)
@@ -482,6 +485,7 @@ impl<T: Real> From<Hertz<T>> for HertzMicromath<T> {
 }
 
 #[cfg(feature = "micromath")]
+#[cfg_attr(docsrs, doc(cfg(feature = "micromath")))]
 impl<T: Real> NormalLaw<T> for HertzMicromath<T> {
     const NON_NEGATIVE: bool = true;
 

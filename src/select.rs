@@ -27,7 +27,7 @@
 //!     &Curvatures::sphere_plane(6.35e-3)?,
 //!     Modulus::new(1.15e11)?,
 //!     Undamped,
-//!     Friction::new(0.1, 0.0)?,
+//!     Friction::with_law(0.1, 0.0)?, // the law is the scene's (here Simplified)
 //! )?;
 //! let w = contact.wrench(1e-6, 0.0, contensou::friction::Slip::new(0.01, 0.0, 50.0)?);
 //! assert!(w.n > 0.0 && w.fx < 0.0 && w.tz < 0.0);
@@ -44,7 +44,7 @@
 //!   the shape from [`Table`] once at construction ([`Contact::hertz`]; constants
 //!   precomputed, per step a square root and the friction law). [`crate::shape::Newton`] would
 //!   be exact to 1.5e-15 instead of 3.6e-12 (f64), but in `f32` the table is the more accurate
-//!   (3.0e-7 against 7.6e-7) and it is 5 KB smaller and 13× cheaper to build, so the table is
+//!   (3.7e-7 against 7.6e-7) and it is 5 KB smaller and 13× cheaper to build, so the table is
 //!   the cheapest adequate choice. [`Elliptic`] + [`Varying`]: [`VaryingContact`], the shape
 //!   from [`Table`] every step (fixed cost, no elliptic integral). N, a and b are exact-grade
 //!   (relative error ≤ [`NORMAL_BOUND`]) in every configuration but one: a [`Fixed`] contact
@@ -223,6 +223,7 @@ pub trait Precision: Real + sealed::Sealed {
 }
 
 #[cfg(feature = "micromath")]
+#[cfg_attr(docsrs, doc(cfg(feature = "micromath")))]
 impl Precision for f32 {
     type FastHertz = crate::normal::HertzMicromath<f32>;
     type FastBest = Best;

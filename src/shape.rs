@@ -17,12 +17,13 @@
 //!
 //! | method | per call | max error on c | max error on a, b, N (relative) |
 //! |---|---|---|---|
-//! | [`Newton`] | construction: 6 (f64) / 4 (f32) Newton steps + AGM | f64 1.0e-15, f32 5.3e-7 rel. | f64 1.5e-15, f32 7.6e-7 |
-//! | [`Table`] | per step: 3 `sqrt`, 3 quintics, 1 division | f64 6.0e-13, f32 1.3e-7 rel. | f64 3.6e-12, f32 3.0e-7 |
+//! | [`Newton`] | construction: 6 (f64) / 4 (f32) Newton steps + AGM | f64 1.9e-15, f32 9.0e-7 rel. | f64 1.5e-15, f32 7.6e-7 |
+//! | [`Table`] | per step: 3 `sqrt`, 3 quintics, 1 division | f64 6.1e-13, f32 1.9e-7 rel. | f64 3.6e-12, f32 3.7e-7 |
 //! | [`Linear`] | the paper's two-segment G*, a multiply + AGM | 5.5e-2 abs. | a 2.2e-2, b 1.22, N 0.12 |
 //! | [`HamrockDowson`] | c = 1 − g^{4/π}: `ln`, `exp` + AGM | 1.6e-2 abs. | a 4.4e-3, b 0.31, N 4.7e-2 |
 //!
-//! Measured over g ∈ [1e-4, 1] against `tools/data/hertz_ref.csv` (mpmath; 204 rows), asserted
+//! Measured over g ∈ [1e-4, 1] against `tools/data/hertz_ref.csv` (mpmath; 1,702 rows, 1,500 of
+//! them a dense sweep of g — the `f32` errors are rounding noise over the whole domain), asserted
 //! by `host-tests/hertz.rs`, tabulated in `bench-results/hertz.md`. The large b errors of the
 //! approximate methods come from m₁ = (b/a)² at small g: Linear's m₁ is off by up to 4×,
 //! Hamrock–Dowson's by 53%.
@@ -170,8 +171,8 @@ pub trait Eccentricity {
 /// # Domain, error, cost
 ///
 /// g ∈ [1e-4, 1]; g = 1 is the circle exactly. Measured max relative error vs mpmath
-/// (`bench-results/hertz.md`): f64 — c 1.0e-15, m₁ 3.4e-15, K/E/B/D ≤ 2.1e-15, and through
-/// [`crate::normal::Hertz`] a, b, N ≤ 1.5e-15; f32 — c 5.3e-7, m₁ 1.6e-6, K/E/B/D ≤ 1.1e-6,
+/// (`bench-results/hertz.md`): f64 — c 1.9e-15, m₁ 3.4e-15, K/E/B/D ≤ 2.1e-15, and through
+/// [`crate::normal::Hertz`] a, b, N ≤ 1.5e-15; f32 — c 9.0e-7, m₁ 1.6e-6, K/E/B/D ≤ 1.1e-6,
 /// a, b, N ≤ 7.6e-7. A denser check (900 g incl. 150 within 1e-12…0.1 of 1, via `contact_eval`)
 /// found c ≤ 2.0e-15 (f64) and ≤ 1.2e-6 (f32, near g ≈ 0.78, where c = 1 − m₁ ≈ 0.3 is formed). Cost: construction only — per iteration one AGM, `ln`, `exp`
 /// (large-c branch) or a 40-term series (small-c branch). Not for per-step use: see [`Table`].
@@ -313,7 +314,7 @@ impl Eccentricity for Newton {
 /// c error peaks at 0.054 (g ≈ 0.27) and the N error grows to 7.7 % at g = 0.1, 12.2 % at
 /// g = [`Ratio::MIN`]; b, through m₁ = (6/7)·g against the exact m₁ ≈ g/ln(…), is 29 % off at
 /// g = 0.1 and 122 % at 1e-4. Always finite (the [`Ratio`] domain is the guard; tested at the
-/// knee and at [`Ratio::MIN`] in `host-tests/stability.rs`). Use [`Table`] (≤ 3e-7 `f32`,
+/// knee and at [`Ratio::MIN`] in `host-tests/stability.rs`). Use [`Table`] (≤ 3.7e-7 `f32`,
 /// 94 instructions) when elongated contacts matter.
 #[derive(Clone, Copy, Debug, Default)]
 pub struct Linear;
@@ -391,10 +392,12 @@ impl Eccentricity for HamrockDowson {
 /// [`HamrockDowson`] 277: micromath's `exp` costs more than libm's), host ≈ 112 ns (as
 /// [`HamrockDowson`]). Not worth using: no cheaper, no better.
 #[cfg(feature = "micromath")]
+#[cfg_attr(docsrs, doc(cfg(feature = "micromath")))]
 #[derive(Clone, Copy, Debug, Default)]
 pub struct HamrockDowsonMicromath;
 
 #[cfg(feature = "micromath")]
+#[cfg_attr(docsrs, doc(cfg(feature = "micromath")))]
 impl Eccentricity for HamrockDowsonMicromath {
     const NAME: &'static str = "hamrock-dowson-micromath";
 
@@ -422,9 +425,9 @@ impl Eccentricity for HamrockDowsonMicromath {
 /// # Domain, error, cost, size
 ///
 /// g ∈ [1e-4, 1] (the [`Ratio`] domain). Measured max relative error vs mpmath
-/// (`bench-results/hertz.md`): f64 — c 6.0e-13, m₁ 4.6e-12, K/E/B/D ≤ 4.6e-12, and a, b, N
-/// through [`crate::normal::Hertz::from_shape`] ≤ 3.6e-12; f32 — c 1.3e-7, m₁ 3.7e-7,
-/// K/E/B/D ≤ 4.0e-7, a, b, N ≤ 3.0e-7. Cost: 3 `sqrt`, 3 Horner quintics, 1 division (host
+/// (`bench-results/hertz.md`): f64 — c 6.1e-13, m₁ 4.6e-12, K/E/B/D ≤ 4.6e-12, and a, b, N
+/// through [`crate::normal::Hertz::from_shape`] ≤ 3.6e-12; f32 — c 1.9e-7, m₁ 3.7e-7,
+/// K/E/B/D ≤ 4.0e-7, a, b, N ≤ 3.7e-7. Cost: 3 `sqrt`, 3 Horner quintics, 1 division (host
 /// ≈ 35–70 ns); M4F 94 instructions (f32), 4,791 (f64), and 143 / 6,875 with g = P/Q and a, b, N, p0
 /// (`Hertz::from_shape(..).patch(h)`) — within the 150-instruction f32 budget. Size: 32 × 18 coefficients = 2,304 bytes
 /// (`f32`) or 4,608 bytes (`f64`); only the table of the precision used is linked.

@@ -72,6 +72,12 @@ def rows():
     # (rounded up so that m1 >= 1e-12, resp. >= 2^-24: the domain edges)
     for x in logspace(1e-12, 0.1, 56):
         near1.add(quantise(x, 53, up=True))
+    # dense where the errors peak, at the domain edges m -> 1: m1 in [1e-12, 1e-9] (f64; AGM's
+    # E peaks near m1 = 1.5e-12) and [2^-24, 2^-20] (f32), so the stated maxima are maxima
+    for x in logspace(1e-12, 1e-9, 1000):
+        near1.add(quantise(x, 53, up=True))
+    for x in logspace(2.0 ** -24, 2.0 ** -20, 60):
+        near1.add(quantise(x, 24, up=True))
     for x in logspace(2.0 ** -24, 0.1, 40):
         near1.add(quantise(x, 24, up=True))
     for k in (1, 2, 3, 5):

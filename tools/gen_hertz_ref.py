@@ -13,6 +13,8 @@ Cases:
   bearing209_*   ball 12.7 mm, groove radii 6.6 mm, pitch 65 mm, contact angle 0; P, Q from the
                  torus geometry here (Harris' curvature sums), steel E* = 2.08e11/(2(1-0.3^2))
   grid           g = P/Q log-spaced over [1e-4, 1] (9 per decade) + points near 1 and 0.41721
+  dense          g log-spaced over [1e-4, 1] (1,200) and [1e-4, 1e-3] (300): the f32 errors are
+                 rounding noise everywhere, so the stated maxima come from a dense sweep
   random         g log-uniform in [1e-4, 1], random Q = 2^k, E*, h (seed 3)
 
 Run:  python3 tools/gen_hertz_ref.py > tools/data/hertz_ref.csv
@@ -79,6 +81,13 @@ def main():
     grid += [mp.mpf(x) for x in ("0.41721", "0.7", "0.8", "0.9", "0.99", "0.999", "0.9999", "0.99999")]
     for g in grid:
         print(row("grid", g, 1, 1e11, 1e-6))
+    # dense: the f32 table's error is rounding noise over the whole domain (no single peak), so
+    # its stated maxima need a dense sweep — 1,200 g log-spaced over [1e-4, 1] and 300 more
+    # towards the floor [1e-4, 1e-3] (f32-exact g, Q = 1)
+    dense = {max(f32(10 ** (-4 + 4 * i / 1199)), f32(1.0000001e-4)) for i in range(1200)}
+    dense |= {max(f32(10 ** (-4 + i / 299)), f32(1.0000001e-4)) for i in range(300)}
+    for g in sorted(dense - {1.0}):
+        print(row("dense", g, 1, 1e11, 1e-6))
     rnd = random.Random(3)
     for _ in range(150):
         g = max(10 ** rnd.uniform(-4, 0), 1.0000001e-4)

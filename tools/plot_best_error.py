@@ -2,16 +2,17 @@
 """Error maps of the `best` friction law (issue 5, item 5): |model - exact| over (u, psi) for
 several e^2, as PNG images in bench-results/best-error-*.png, plus the max-error table on
 stdout. Both columns come from the evaluator (`contact_eval friction --model best|exact`).
-Needs numpy and matplotlib. Run from the repository root:  python3 tools/plot_best_error.py
+The table's maxima also cover a dense set on both sides of the ellipse boundary,
+u = u_b(psi)(1 +- d) for d = 1e-9 ... 0.3 (the error peaks just outside it, where the slip's
+instantaneous centre leaves the patch), so they are maxima, not the grid's.
+Needs numpy and matplotlib (`--table`: numpy only, no images). Run from the repository root:
+python3 tools/plot_best_error.py [--table]
 """
 import io
 import subprocess
+import sys
 
-import matplotlib
-
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
+import numpy as np
 
 E2 = [0.0, 0.5, 0.9, 0.99]
 NU, NPSI = 241, 181
@@ -25,22 +26,36 @@ def run(model, rows, precision="f64"):
     return np.loadtxt(io.StringIO(out), delimiter=",", skiprows=1)[:, 3:6]
 
 
+def errors(rows, prec, ex):
+    b = run("best", rows, prec)
+    ef = np.maximum(abs(b[:, 0] - ex[:, 0]), abs(b[:, 1] - ex[:, 1]))
+    return ef, abs(b[:, 2] - ex[:, 2])
+
+
 def main():
+    images = "--table" not in sys.argv[1:]
+    if images:
+        import matplotlib
+
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
     u = 10 ** np.linspace(-2, 2, NU)
     psi = np.linspace(0, np.pi / 2, NPSI)  # the symmetries cover the other quadrants
+    d = 10 ** np.linspace(-9, np.log10(0.3), 160)
     print("model,precision,e2,max_force_error_fN,max_torque_error_fNa")
     for m in E2:
         rows = [(m, float(p), float(x)) for p in psi for x in u]
-        ex = run("exact", rows)
+        ub = 1 / np.sqrt(np.sin(psi) ** 2 + np.cos(psi) ** 2 / (1 - m))
+        edge = [(m, float(p), float(b * (1 + s * x))) for p, b in zip(psi, ub) for x in d for s in (-1, 1)]
+        ex, ex_edge = run("exact", rows), run("exact", edge)
         for prec in ("f64", "f32"):
-            b = run("best", rows, prec)
-            ef = np.maximum(abs(b[:, 0] - ex[:, 0]), abs(b[:, 1] - ex[:, 1])).reshape(NPSI, NU)
-            et = abs(b[:, 2] - ex[:, 2]).reshape(NPSI, NU)
-            print(f"best,{prec},{m},{ef.max():.2e},{et.max():.2e}")
-            if prec != "f64":
+            ef, et = errors(rows, prec, ex)
+            ef_edge, et_edge = errors(edge, prec, ex_edge)
+            ef, et = ef.reshape(NPSI, NU), et.reshape(NPSI, NU)
+            print(f"best,{prec},{m},{max(ef.max(), ef_edge.max()):.2e},{max(et.max(), et_edge.max()):.2e}")
+            if prec != "f64" or not images:
                 continue
             fig, axes = plt.subplots(1, 2, figsize=(11, 4), constrained_layout=True)
-            ub = 1 / np.sqrt(np.sin(psi) ** 2 + np.cos(psi) ** 2 / (1 - m))
             for ax, e, name in ((axes[0], ef, "force error (fN)"),
                                 (axes[1], et, "torque error (fNa)")):
                 im = ax.pcolormesh(u, psi, np.log10(np.maximum(e, 1e-17)), shading="auto",

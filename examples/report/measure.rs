@@ -261,7 +261,7 @@ fn wrench_rows<T: Real, L: FrictionLaw>(
         };
         let (Ok(modulus), Ok(friction)) = (
             Modulus::new(T::from_f64(estar)),
-            Friction::<T, L>::new(T::from_f64(F), T::ZERO),
+            Friction::<T, L>::with_law(T::from_f64(F), T::ZERO),
         ) else {
             continue;
         };

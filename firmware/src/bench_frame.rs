@@ -76,7 +76,7 @@ fn stage<T: Real>(r: &Runner) {
             &curv,
             Modulus::new(c(1.15e11))?,
             Undamped,
-            Friction::<T, Best>::new(c(0.1), c(1e-4))?,
+            Friction::<T, Best>::with_law(c(0.1), c(1e-4))?,
         )
     }) else {
         return;

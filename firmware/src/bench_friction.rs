@@ -45,7 +45,7 @@ fn full<T: Real, L: FrictionLaw>(r: &Runner) {
     let k = Constants::<T>::from_parameter(
         Parameter::new(T::from_f64(0.5)).expect("e² = 0.5 is inside the domain"),
     );
-    let f = Friction::<T, L>::new(T::from_f64(0.3), T::ZERO).expect("valid friction");
+    let f = Friction::<T, L>::with_law(T::from_f64(0.3), T::ZERO).expect("valid friction");
     let pairs = mixed_set();
     // ω = 100 rad/s, a = 50 µm: v = u·aω.
     let slips: [StepInput<'_, T, L>; N] = core::array::from_fn(|i| {
@@ -123,7 +123,7 @@ fn best<T: Real>(r: &Runner) {
     let states: [(&Constants<T>, SlipState<T>); N] = core::array::from_fn(|i| (&k, states[i].1));
     r.bench("friction", "best-varying", T::NAME, &states, core::<T, Best>);
     r.bench("friction", "best-contact-new", T::NAME, &[&k], best_new::<T>);
-    let f = Friction::<T, Best>::new(T::from_f64(0.3), T::ZERO).expect("valid friction");
+    let f = Friction::<T, Best>::with_law(T::from_f64(0.3), T::ZERO).expect("valid friction");
     // The same slips as `full`: ω = 100 rad/s, a = 50 µm, N = 2 N, v = u·aω.
     let steps: [BestStep<'_, T>; N] = core::array::from_fn(|i| {
         let (u, psi) = pairs[i];

@@ -44,7 +44,7 @@ fn rattleback_step(x: (&Celt, rattleback::State<f32>)) -> rattleback::State<f32>
 pub fn run(r: &Runner) {
     let top = Top::new(
         &Params::paper(),
-        Friction::new(0.3, 1e-4).expect("valid f and δ"),
+        Friction::with_law(0.3, 1e-4).expect("valid f and δ"),
     )
     .expect("the paper's parameters are valid");
     let y0 = top.initial_state(0.1, 180.0);

@@ -49,36 +49,23 @@ fn table_each_step<T: Real, L: FrictionLaw>(x: VaryingInput<'_, T, L>) -> Wrench
 
 fn law<T: Real, L: FrictionLaw>(r: &Runner, suffix: &str) {
     let (curv, contact, varying, h, slips) = wrench_scene::<T, L>();
-    let mut name = heapless_name("fixed", suffix);
+    let mut name = bench_name("fixed", suffix);
     let fixed_inputs: [FixedInput<'_, T, L>; N] = core::array::from_fn(|i| (&contact, h, slips[i]));
     r.bench("wrench", name.as_str(), T::NAME, &fixed_inputs, fixed::<T, L>);
-    name = heapless_name("table_each_step", suffix);
+    name = bench_name("table_each_step", suffix);
     let varying_inputs: [VaryingInput<'_, T, L>; N] =
         core::array::from_fn(|i| (&varying, &curv, h, slips[i]));
     r.bench("wrench", name.as_str(), T::NAME, &varying_inputs, table_each_step::<T, L>);
 }
 
-/// `base` + `suffix` in a fixed buffer (no allocation on the MCU).
-fn heapless_name(base: &str, suffix: &str) -> Name {
-    let mut n = Name { buf: [0; 32], len: 0 };
-    for &byte in base.as_bytes().iter().chain(suffix.as_bytes()) {
-        if n.len < n.buf.len() {
-            n.buf[n.len] = byte;
-            n.len += 1;
-        }
-    }
-    n
-}
-
-struct Name {
-    buf: [u8; 32],
-    len: usize,
-}
-
-impl Name {
-    fn as_str(&self) -> &str {
-        core::str::from_utf8(&self.buf[..self.len]).unwrap_or("?")
-    }
+/// `base` + `suffix` in a fixed-capacity string (no allocation on the MCU). The names are
+/// this file's literals; one that did not fit would be a wrong qemu.csv key, so it stops the rig.
+fn bench_name(base: &str, suffix: &str) -> heapless::String<32> {
+    let mut name = heapless::String::new();
+    name.push_str(base)
+        .and_then(|()| name.push_str(suffix))
+        .expect("bench name fits 32 bytes");
+    name
 }
 
 type BodiesInput<'a> = (

@@ -63,7 +63,7 @@ fn generic_of<T: Real, L: FrictionLaw>(spec: &Spec<T>, form: Form, s: &Step<T>) 
     let c = Curvatures::new(spec.p, spec.q).unwrap();
     let e = Modulus::new(spec.estar).unwrap();
     let d = HuntCrossley::new(spec.cd).unwrap();
-    let fr = Friction::<T, L>::new(spec.f, spec.delta).unwrap();
+    let fr = Friction::<T, L>::with_law(spec.f, spec.delta).unwrap();
     let slip = Slip::new(s.vx, s.vy, s.omega).unwrap();
     let w = match form {
         Form::Fixed => Contact::hertz::<Newton>(&c, e, d, fr)

@@ -493,12 +493,12 @@ fn law_dimensional<L: Law, T: Fz>(
     boxed: bool,
 ) {
     let (f, delta, a, n): (T, T, T, T) = (inp.val(), inp.val(), inp.val(), inp.val());
-    let fr = Friction::<T, L>::new(f, delta);
+    let fr = Friction::<T, L>::with_law(f, delta);
     let fine = f.is_finite() && delta.is_finite();
     match fr {
         _ if !fine => assert!(matches!(fr, Err(Error::NonFinite(_)))),
         _ if f < T::ZERO => assert_eq!(fr, Err(Error::FrictionCoefficientNegative)),
-        _ if delta < T::ZERO => assert_eq!(fr, Err(Error::LengthNotPositive)),
+        _ if delta < T::ZERO => assert_eq!(fr, Err(Error::RegularizationSpeedNegative)),
         _ => assert!(fr.is_ok()),
     }
     let Ok(fr) = fr else { return };
@@ -621,7 +621,7 @@ fn contact_law<L: Law, T: Fz>(inp: &mut Input<'_>, c: &Curvatures<T>, e: Modulus
         inp.val(),
     );
     let (Ok(fr), Ok(slip), Ok(hc)) = (
-        Friction::<T, L>::new(f, delta),
+        Friction::<T, L>::with_law(f, delta),
         Slip::new(vx, vy, om),
         HuntCrossley::new(cd),
     ) else {

@@ -427,7 +427,7 @@ impl<L: FrictionLaw> SpinBody<L> {
         v: [f64; 2],
     ) -> Self {
         SpinBody {
-            law: Friction::new(f, delta).unwrap(),
+            law: Friction::with_law(f, delta).unwrap(),
             prepared: L::prepare(k),
             a,
             inertia,

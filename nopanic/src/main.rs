@@ -93,7 +93,7 @@ macro_rules! law_probes {
             $(
             fn $tangential<T>(f, delta, m, a, n, vx, vy, om) {
                 let (Ok(fr), Ok(p), Ok(s)) =
-                    (Friction::<T, $law>::new(f, delta), Parameter::new(m), Slip::new(vx, vy, om))
+                    (Friction::<T, $law>::with_law(f, delta), Parameter::new(m), Slip::new(vx, vy, om))
                 else { return };
                 fr.tangential(&Constants::from_parameter(p), a, n, s)
             }
@@ -106,7 +106,7 @@ macro_rules! law_probes {
                 let (Ok(c), Ok(e), Ok(fr), Ok(s), Ok(hc)) = (
                     Curvatures::new(p, q),
                     Modulus::new(e),
-                    Friction::<T, $law>::new(f, delta),
+                    Friction::<T, $law>::with_law(f, delta),
                     Slip::new(vx, vy, om),
                     HuntCrossley::new(cd),
                 ) else { return };
@@ -117,7 +117,7 @@ macro_rules! law_probes {
                 let (Ok(c), Ok(e), Ok(fr), Ok(s), Ok(cdamp)) = (
                     Curvatures::new(p, q),
                     Modulus::new(e),
-                    Friction::<T, $law>::new(f, delta),
+                    Friction::<T, $law>::with_law(f, delta),
                     Slip::new(vx, vy, om),
                     CompressionDamping::new(d),
                 ) else { return };
@@ -250,22 +250,22 @@ mod api {
         }
         fn probe_stable_step<T>(f, delta, mass, n) {
             let (Ok(co), Ok(si)) =
-                (Friction::<T, Coulomb>::new(f, delta), Friction::<T, Simplified>::new(f, delta))
+                (Friction::<T, Coulomb>::with_law(f, delta), Friction::<T, Simplified>::with_law(f, delta))
             else { return };
             let k = Constants::circle();
             (co.stable_step(&k, mass, n, Explicit::Euler), si.stable_step(&k, mass, n, Explicit::Rk4))
         }
         fn probe_best_stable_step<T>(m1, f, delta, mass, n) {
-            let (Ok(p), Ok(be)) = (Parameter::from_complement(m1), Friction::<T, Best>::new(f, delta))
+            let (Ok(p), Ok(be)) = (Parameter::from_complement(m1), Friction::<T, Best>::with_law(f, delta))
             else { return };
             be.stable_step(&Constants::from_parameter(p), mass, n, Explicit::Rk4)
         }
         fn probe_stable_spin_step<T>(m1, f, delta, a, inertia, n) {
             let (Ok(p), Ok(be), Ok(si), Ok(co)) = (
                 Parameter::from_complement(m1),
-                Friction::<T, Best>::new(f, delta),
-                Friction::<T, Simplified>::new(f, delta),
-                Friction::<T, Coulomb>::new(f, delta),
+                Friction::<T, Best>::with_law(f, delta),
+                Friction::<T, Simplified>::with_law(f, delta),
+                Friction::<T, Coulomb>::with_law(f, delta),
             ) else { return };
             let k = Constants::from_parameter(p);
             (
@@ -277,7 +277,7 @@ mod api {
         // the frame helper, and the stable steps from a built contact
         fn probe_frame<T>(nx, ny, nz, rx, ry, rz, c, s, v, e, h) {
             use contensou::frame::{ContactFrame, Frame, MajorAxis, WorldAxes, point_velocity};
-            let (Ok(curv), Ok(e), Ok(fr)) = (Curvatures::new(nx, ny), Modulus::new(e), Friction::<T, Best>::new(c, s))
+            let (Ok(curv), Ok(e), Ok(fr)) = (Curvatures::new(nx, ny), Modulus::new(e), Friction::<T, Best>::with_law(c, s))
             else { return };
             let Ok(contact) = Contact::hertz::<Newton>(&curv, e, Undamped, fr) else { return };
             let frame = Frame::from_reference([nx, ny, nz], [rx, ry, rz], MajorAxis::of(&curv));
@@ -301,7 +301,7 @@ mod api {
         // contact (other normal laws through from_parts)
         fn probe_contact_from_parts<T>(p, q, e, f, h, hdot, vx, vy, om) {
             let (Ok(c), Ok(e), Ok(fr), Ok(s)) =
-                (Curvatures::new(p, q), Modulus::new(e), Friction::<T, Simplified>::new(f, f), Slip::new(vx, vy, om))
+                (Curvatures::new(p, q), Modulus::new(e), Friction::<T, Simplified>::with_law(f, f), Slip::new(vx, vy, om))
             else { return };
             let v = Contact::from_parts(Volumetric::new(&c, e), Undamped, fr, Constants::circle());
             let k = Constants::from_shape(&shape::Table::shape(Ratio::clamped(c.ratio())));
@@ -322,7 +322,7 @@ mod api {
             use contensou::select::*;
             let (Ok(c), Ok(e), Ok(s)) = (Curvatures::new(p, q), Modulus::new(e), Slip::new(vx, vy, om))
             else { return };
-            let (Ok(f1), Ok(f2), Ok(f3)) = (Friction::new(f, f), Friction::new(f, f), Friction::new(f, f))
+            let (Ok(f1), Ok(f2), Ok(f3)) = (Friction::with_law(f, f), Friction::with_law(f, f), Friction::with_law(f, f))
             else { return };
             type Ball<T> = Scene<Circular, Fixed, Spin, Coarse, T>;
             type Race<T> = Scene<Elliptic, Fixed, Spin, ExactGrade, T>;
@@ -331,7 +331,7 @@ mod api {
             type Rolling<T> = Scene<Circular, Fixed, Spin, Rough, T>;
             type Track<T> = Scene<Elliptic, Fixed, NoSpin, Rough, T>;
             type Drift<T> = Scene<Elliptic, Varying, Spin, ExactGrade, T>;
-            let (Ok(f4), Ok(f5), Ok(f6)) = (Friction::new(f, f), Friction::new(f, f), Friction::new(f, f))
+            let (Ok(f4), Ok(f5), Ok(f6)) = (Friction::with_law(f, f), Friction::with_law(f, f), Friction::with_law(f, f))
             else { return };
             (
                 Ball::<T>::build(&Ball::<T>::geometry(&c), e, Undamped, f1).map(|k| k.step(&c, h, hdot, s)),

@@ -34,9 +34,12 @@ use crate::Real;
 /// Arithmetic–geometric mean with a fixed iteration count (7 for `f64`, 5 for `f32`).
 ///
 /// Domain: every valid [`Parameter`]; m = 0 gives K = E = π/2, B = D = π/4 (rounded).
-/// Measured max relative error of K, E, B, D against mpmath (404 reference points, m = 0 …
-/// 1 − 1e-12; `f32` 310 points down to m₁ = 2⁻²⁴): `f64` 1.0e-15, `f32` 3.3e-7 (a dense
-/// scan of 3,000 `f32` points agrees).
+/// Measured max relative error of K, E, B, D against mpmath (1,408 reference points, m = 0 …
+/// 1 − 1e-12, 1,000 of them at m₁ ∈ [1e-12, 1e-9] where the error peaks; `f32` 318 points
+/// down to m₁ = 2⁻²⁴): `f64` 1.3e-15 on the set (E and B near m₁ = 1.2e-12), 1.5e-15 over
+/// scans of 3,000 and 12,000 m₁ ∈ [1e-12, 1e-8] (`tools/scan_agm_edge.py`, `contact_eval`
+/// against mpmath; the error there is rounding noise), `f32` 3.3e-7 (a dense scan of 3,000
+/// `f32` points agrees).
 ///
 /// Cost: N + 1 square roots, N + 2 divisions, ≈12N adds/multiplies; host time and ratio to
 /// `ellip` in the [module table](super); MCU instructions: see bench-results/qemu.csv.

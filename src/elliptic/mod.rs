@@ -31,15 +31,16 @@
 //! # Accuracy and cost
 //!
 //! Max relative error of K, E, B and D (worst of the four) against mpmath at 60 digits
-//! (tools/gen_elliptic_ref.py → tools/data/elliptic_ref.csv: 404 points, m = 0, m from 1e-12,
-//! uniform, m₁ down to 1e-12; `f32`: the 310 points exact in `f32`, m₁ down to 2⁻²⁴), asserted
+//! (tools/gen_elliptic_ref.py → tools/data/elliptic_ref.csv: 1,408 points, m = 0, m from 1e-12,
+//! uniform, m₁ down to 1e-12 with 1,000 of them at m₁ ∈ [1e-12, 1e-9] where the `f64` errors
+//! peak; `f32`: the 318 points exact in `f32`, m₁ down to 2⁻²⁴), asserted
 //! by host-tests/elliptic.rs. Host time per call for K and E on x86-64 (criterion, fastest
 //! sample, 64 fixed m incl. near 1, shared machine: ±20 %), beside the `ellip` crate in the
 //! same run (ratio ours/ellip in brackets); bench-results/host-elliptic.md has the full table (`tools/host-bench.sh`).
 //!
 //! | method | `f64` error | `f32` error | host ns `f64` | host ns `f32` | M4F instructions |
 //! |---|---|---|---|---|---|
-//! | [`Agm`] (7 / 5 iterations) | 1.0e-15 | 3.3e-7 | 29 (0.72×) | 15 (0.47×) | 141 `f32` / 12,163 `f64` |
+//! | [`Agm`] (7 / 5 iterations) | 1.5e-15 (dense scan near m₁ = 1e-12; 1.3e-15 on the set) | 3.3e-7 | 29 (0.72×) | 15 (0.47×) | 141 `f32` / 12,163 `f64` |
 //! | [`Theta`] (complementary nome for m > ½) | 7.0e-16 | 3.3e-7 | 49 (1.20×) | 27 (0.87×) | 122 `f32` / 9,089 `f64` |
 //! | [`Table`] (12,320 B `f32`, 20,608 B `f64`) | 1.2e-11 | 1.1e-7 | 8.2 (0.20×) | 4.2 (0.13×) | 45 `f32` / 2,279 `f64` |
 //! | `ellip` 1.2 (peer; no B, taken as K − D; its K, E, D: 5.2e-15, 2.6e-7) | 1.4e-14 | 1.6e-6 | 40 (1×) | 31 (1×) | — |
@@ -65,6 +66,7 @@ mod theta;
 pub use agm::Agm;
 pub use table::Table;
 #[cfg(feature = "micromath")]
+#[cfg_attr(docsrs, doc(cfg(feature = "micromath")))]
 pub use theta::ThetaMicromath;
 pub use theta::{Theta, ThetaTerms, paper_k_e};
 

@@ -77,10 +77,12 @@ impl FrictionLaw for Coulomb {
 /// (the same as [`Coulomb`]: no spin effect). Cost: M4F **45** instructions (`f32`; [`Coulomb`]
 /// 42), host ≈ 10 ns. Not worth using.
 #[cfg(feature = "micromath")]
+#[cfg_attr(docsrs, doc(cfg(feature = "micromath")))]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct CoulombMicromath;
 
 #[cfg(feature = "micromath")]
+#[cfg_attr(docsrs, doc(cfg(feature = "micromath")))]
 impl FrictionLaw for CoulombMicromath {
     const NAME: &'static str = "coulomb-micromath";
     type Branch = Branch;

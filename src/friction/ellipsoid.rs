@@ -72,10 +72,12 @@ impl FrictionLaw for Ellipsoid {
 /// 3.6e-3). Cost: M4F **37** instructions (`f32`; [`Ellipsoid`] 34), host ≈ 6 ns. Not worth
 /// using.
 #[cfg(feature = "micromath")]
+#[cfg_attr(docsrs, doc(cfg(feature = "micromath")))]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct EllipsoidMicromath;
 
 #[cfg(feature = "micromath")]
+#[cfg_attr(docsrs, doc(cfg(feature = "micromath")))]
 impl FrictionLaw for EllipsoidMicromath {
     const NAME: &'static str = "ellipsoid-micromath";
     type Branch = Smooth;

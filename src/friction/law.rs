@@ -109,7 +109,11 @@ pub struct Tangential<T, B> {
 /// regularization speed δ (m/s; 0 disables regularization). Validated at construction; the
 /// per-step [`Friction::tangential`] is total.
 ///
-/// The law defaults to [`crate::friction::Best`], the exact-grade fast law.
+/// The law defaults to [`crate::friction::Best`], the exact-grade fast law:
+/// [`Friction::new`] builds that one and needs no annotation where it is passed
+/// (`Contact::hertz::<Newton>(…, Friction::new(0.1, 1e-4)?)`); [`Friction::with_law`] builds
+/// any law, named by a turbofish or inferred from where the value goes (a
+/// `contensou::select` scene's law, a struct field).
 ///
 /// # Example
 ///
@@ -118,7 +122,7 @@ pub struct Tangential<T, B> {
 ///
 /// // f = 0.3, regularization speed δ = 1e-4 m/s; the default law `Best`, and the paper's.
 /// let best = Friction::<f64>::new(0.3, 1e-4)?;
-/// let paper = Friction::<f64, Simplified>::new(0.3, 1e-4)?;
+/// let paper = Friction::<f64, Simplified>::with_law(0.3, 1e-4)?;
 /// // On a circular patch (a = 0.1 mm, N = 10 N): pure spin gives the torque −(3π/16)·fN·a.
 /// let k = Constants::circle();
 /// let t = best.tangential(&k, 1e-4, 10.0, Slip::new(0.0, 0.0, 50.0)?);
@@ -136,12 +140,33 @@ pub struct Friction<T, L = super::Best> {
     law: PhantomData<L>,
 }
 
+impl<T: Real> Friction<T> {
+    /// The default law ([`crate::friction::Best`]) from the friction coefficient `f` ≥ 0 and
+    /// the regularization speed `delta` ≥ 0 (m/s). Not generic over the law, so it needs no
+    /// annotation where it is built (`Contact::hertz::<Newton>(…, Friction::new(0.1, 1e-4)?)`);
+    /// for another law name it: [`Friction::with_law`]. Errors as [`Friction::with_law`].
+    ///
+    /// ```
+    /// use contensou::friction::{Best, Friction};
+    ///
+    /// let law = Friction::new(0.1_f64, 1e-4)?; // Friction<f64, Best>
+    /// assert_eq!(law, Friction::<f64, Best>::with_law(0.1, 1e-4)?);
+    /// # Ok::<(), contensou::Error>(())
+    /// ```
+    #[inline]
+    pub fn new(f: T, delta: T) -> Result<Self, Error> {
+        Self::with_law(f, delta)
+    }
+}
+
 impl<T: Real, L: FrictionLaw> Friction<T, L> {
-    /// From the friction coefficient `f` ≥ 0 and the regularization speed `delta` ≥ 0 (m/s).
+    /// The law `L` (named by a turbofish, `Friction::<f64, Simplified>::with_law(0.3, 1e-4)`,
+    /// or inferred from where the value goes) from the friction coefficient `f` ≥ 0 and the
+    /// regularization speed `delta` ≥ 0 (m/s). [`Friction::new`] is this for the default law.
     /// Errors: [`Error::NonFinite`] (`"f"`, `"delta"`) for NaN or ±∞,
     /// [`Error::FrictionCoefficientNegative`] for f < 0, [`Error::RegularizationSpeedNegative`]
     /// for δ < 0 (δ = 0 is allowed and means no regularization).
-    pub fn new(f: T, delta: T) -> Result<Self, Error> {
+    pub fn with_law(f: T, delta: T) -> Result<Self, Error> {
         let f = finite(f, "f")?;
         let delta = finite(delta, "delta")?;
         if f < T::ZERO {

@@ -12,15 +12,16 @@
 //! - [`FrictionLaw`]: a zero-sized law type with a dimensionless core
 //!   `(Constants, SlipState) → (Traction, Branch)`; [`Friction`]`<T, L>` adds the friction
 //!   coefficient and the regularization speed δ and scales by fN, fNa.
-//! - Laws: [`Simplified`] (the paper's model), [`Pade`], [`Ellipsoid`], [`Coulomb`], and the
-//!   reference [`Exact`] (the integrals of [`exact`], µs per call).
+//! - Laws: [`Best`] (exact grade and fast: the default of [`Friction`], per-contact tables in
+//!   [`BestContact`]), [`Simplified`] (the paper's model), [`Pade`], [`Ellipsoid`],
+//!   [`Coulomb`], and the reference [`Exact`] (the integrals of [`exact`], µs per call).
 //!
 //! ```
 //! use contensou::elliptic::Parameter;
 //! use contensou::friction::{Constants, Friction, Simplified, Slip};
 //!
 //! let k = Constants::from_parameter(Parameter::new(0.6_f64)?); // once per contact shape
-//! let law = Friction::<f64, Simplified>::new(0.3, 1e-4)?;       // f = 0.3, δ = 0.1 mm/s
+//! let law = Friction::<f64, Simplified>::with_law(0.3, 1e-4)?;       // f = 0.3, δ = 0.1 mm/s
 //! // per step: a = 50 µm, N = 0.06 N, v_P = (1, 0.5) mm/s, ω = 30 rad/s
 //! let w = law.tangential(&k, 50e-6, 0.06, Slip::new(1e-3, 0.5e-3, 30.0)?);
 //! assert!(w.fx < 0.0 && w.fy < 0.0 && w.tz < 0.0);
@@ -50,6 +51,7 @@ pub use reference::Exact;
 pub use simplified::Simplified;
 pub use slip::{Slip, SlipState};
 #[cfg(feature = "micromath")]
+#[cfg_attr(docsrs, doc(cfg(feature = "micromath")))]
 pub use {
     best::BestMicromath, coulomb::CoulombMicromath, ellipsoid::EllipsoidMicromath,
     simplified::SimplifiedMicromath,

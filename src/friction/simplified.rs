@@ -152,10 +152,12 @@ impl FrictionLaw for Simplified {
 /// median 3.1e-2 fN (vs 8.6e-4); against [`Simplified`] itself 5.7e-2 fN / 2.6e-2 fNa. Cost:
 /// M4F **70** instructions (`f32`; [`Simplified`] 66), host ≈ 11 ns. Not worth using.
 #[cfg(feature = "micromath")]
+#[cfg_attr(docsrs, doc(cfg(feature = "micromath")))]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct SimplifiedMicromath;
 
 #[cfg(feature = "micromath")]
+#[cfg_attr(docsrs, doc(cfg(feature = "micromath")))]
 impl FrictionLaw for SimplifiedMicromath {
     const NAME: &'static str = "simplified-micromath";
     type Branch = Branch;

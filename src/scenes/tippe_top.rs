@@ -206,7 +206,7 @@ impl<T: Real, L: FrictionLaw> TippeTop<T, L> {
                 p.small_offset,
                 p.small_radius,
                 p,
-                Friction::new(friction.coefficient(), friction.delta())?,
+                Friction::with_law(friction.coefficient(), friction.delta())?,
             )?,
             big: Sphere::new(p.big_offset, p.big_radius, p, friction)?,
         })

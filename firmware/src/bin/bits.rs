@@ -18,14 +18,13 @@ include!("../../../capi/examples/firmware/vectors.rs");
 /// `SYS_WRITE` per fill (one trap per line would dominate the run time).
 struct Buffered {
     host: hio::HostStream,
-    buf: [u8; 4096],
-    len: usize,
+    buf: heapless::Vec<u8, 4096>,
 }
 
 impl Buffered {
     fn flush(&mut self) -> core::fmt::Result {
-        let r = self.host.write_all(&self.buf[..self.len]);
-        self.len = 0;
+        let r = self.host.write_all(&self.buf);
+        self.buf.clear();
         r.map_err(|()| core::fmt::Error)
     }
 }
@@ -33,11 +32,10 @@ impl Buffered {
 impl core::fmt::Write for Buffered {
     fn write_str(&mut self, s: &str) -> core::fmt::Result {
         for &byte in s.as_bytes() {
-            if self.len == self.buf.len() {
+            if self.buf.is_full() {
                 self.flush()?;
             }
-            self.buf[self.len] = byte;
-            self.len += 1;
+            self.buf.push(byte).map_err(|_| core::fmt::Error)?;
         }
         Ok(())
     }
@@ -49,8 +47,7 @@ fn main() -> ! {
         Ok(host) => {
             let mut out = Buffered {
                 host,
-                buf: [0; 4096],
-                len: 0,
+                buf: heapless::Vec::new(),
             };
             bits_all(&mut out).is_ok() && out.flush().is_ok()
         }

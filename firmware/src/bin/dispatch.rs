@@ -86,7 +86,7 @@ fn main() -> ! {
     let r = Runner::new();
     let (curv, contact, varying, h, slips) = wrench_scene::<f32, Best>();
     let estar = Modulus::new(1.142857e11_f64 as f32).expect("positive");
-    let friction = Friction::<f32, Best>::new(0.07_f64 as f32, 0.0).expect("valid f");
+    let friction = Friction::<f32, Best>::with_law(0.07_f64 as f32, 0.0).expect("valid f");
     let hc = HuntCrossley::new(0.0).expect("c_d = 0");
     let contact_hc = Contact::hertz::<Newton>(&curv, estar, hc, friction).expect("domain");
     let varying_hc = VaryingContact::new(estar, hc, friction);

@@ -103,7 +103,7 @@ fn curvatures<T: Real>() -> Curvatures<T> {
 }
 
 fn friction<T: Real, L: FrictionLaw>() -> Friction<T, L> {
-    ok(Friction::new(t(0.1), t(0.0)))
+    ok(Friction::with_law(t(0.1), t(0.0)))
 }
 
 fn hertz<T: Real>() -> Hertz<T> {

@@ -111,7 +111,7 @@ fn scene<S: Select>(r: &Runner, method: &str) {
         &S::geometry(&curvatures::<S::Real>(S::GEOMETRY, 0)),
         Modulus::new(t(1.142857e11)).expect("positive modulus"),
         Undamped,
-        Friction::new(t(0.1), t(0.0)).expect("valid f"),
+        Friction::with_law(t(0.1), t(0.0)).expect("valid f"),
     )
     .expect("valid scene");
     scene_row(r, method, S::GEOMETRY, S::SPINS, &contact);

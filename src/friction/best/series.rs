@@ -141,10 +141,12 @@ impl FrictionLaw for BestSeries {
 /// longer chosen anywhere: [`Best`](super::Best)'s per-step flash-table form calls no `ln` and
 /// costs 271.
 #[cfg(feature = "micromath")]
+#[cfg_attr(docsrs, doc(cfg(feature = "micromath")))]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct BestMicromath;
 
 #[cfg(feature = "micromath")]
+#[cfg_attr(docsrs, doc(cfg(feature = "micromath")))]
 impl FrictionLaw for BestMicromath {
     const NAME: &'static str = "best-micromath";
     type Branch = Branch;
