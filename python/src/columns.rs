@@ -91,6 +91,14 @@ impl<'a, T: Element + Copy> Column<'a, T> {
         })
     }
 
+    /// The first `rows` values when the column has one value per row.
+    pub fn rows(&self, rows: usize) -> Option<&[T]> {
+        match self.stride {
+            0 => None,
+            _ => self.values.get(..rows),
+        }
+    }
+
     /// The value at row `i` (C order).
     #[inline(always)]
     pub fn at(&self, i: usize) -> T {

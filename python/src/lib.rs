@@ -18,7 +18,7 @@
 mod columns;
 mod rows;
 
-use ::contensou::dynamic::{DynContact, Form, INPUTS, Law, OUTPUTS, Spec};
+use ::contensou::dynamic::{DynContact, Form, INPUTS, Law, OUTPUTS, Spec, Step};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
@@ -262,6 +262,49 @@ impl Contact {
             Built::F32(c) => steps_in(py, c, values),
             Built::F64(c) => steps_in(py, c, values),
         }
+    }
+
+    /// One scalar step for tight Python loops (a physics engine's callback): Python floats in,
+    /// the tuple `(N, Fx, Fy, Tz, a, b, e2)` of Python floats out (for `precision="f32"` the
+    /// inputs are rounded to f32 and the f32 results widened exactly) — the values of
+    /// `wrench` on the same step, without building numpy objects. `ValueError` as `wrench`.
+    fn step(
+        &self,
+        h: f64,
+        hdot: f64,
+        vx: f64,
+        vy: f64,
+        omega: f64,
+    ) -> PyResult<(f64, f64, f64, f64, f64, f64, f64)> {
+        fn one<T: Precision>(c: &DynContact<T>, x: [f64; 5]) -> PyResult<[f64; 7]> {
+            let [h, hdot, vx, vy, omega] = x.map(T::from_f64);
+            let step = Step {
+                h,
+                hdot,
+                vx,
+                vy,
+                omega,
+            };
+            match c.wrench(&step) {
+                Ok(out) => Ok(out.to_array().map(T::to_f64)),
+                Err(e) => {
+                    let k = INPUTS.iter().position(|&n| n == e.column).unwrap_or(6);
+                    let value = x.get(k.saturating_sub(6)).copied().unwrap_or(f64::NAN);
+                    Err(PyValueError::new_err(format!(
+                        "{} = {}: {}",
+                        e.column,
+                        T::from_f64(value),
+                        e.error.as_str()
+                    )))
+                }
+            }
+        }
+        let x = [h, hdot, vx, vy, omega];
+        let [n, fx, fy, tz, a, b, e2] = match &self.built {
+            Built::F32(c) => one(c, x)?,
+            Built::F64(c) => one(c, x)?,
+        };
+        Ok((n, fx, fy, tz, a, b, e2))
     }
 
     /// New curvatures (scalars): the per-step update of a `form="varying"` contact; a `fixed`

@@ -113,25 +113,45 @@ pub struct Outputs<T> {
 pub fn evaluate<T: Precision>(
     rows: usize,
     steps: &StepColumns<'_, T>,
-    mut contacts: impl Contacts<T>,
+    contacts: impl Contacts<T>,
 ) -> Result<Outputs<T>, (usize, Invalid)> {
-    let mut columns: [Vec<T>; 7] = core::array::from_fn(|_| Vec::with_capacity(rows));
     let [h, hdot, vx, vy, omega] = steps;
-    for i in 0..rows {
-        let step = Step {
+    // The common case, every step column an array: plain slices of length `rows`, so the
+    // loop indexes without bounds checks.
+    match steps.each_ref().map(|c| c.rows(rows)) {
+        [Some(h), Some(hdot), Some(vx), Some(vy), Some(omega)] => fill(rows, contacts, |i| Step {
+            h: h[i],
+            hdot: hdot[i],
+            vx: vx[i],
+            vy: vy[i],
+            omega: omega[i],
+        }),
+        _ => fill(rows, contacts, |i| Step {
             h: h.at(i),
             hdot: hdot.at(i),
             vx: vx.at(i),
             vy: vy.at(i),
             omega: omega.at(i),
-        };
+        }),
+    }
+}
+
+/// The row loop over `step(i)`, into output columns allocated once.
+#[inline(always)]
+fn fill<T: Precision>(
+    rows: usize,
+    mut contacts: impl Contacts<T>,
+    step: impl Fn(usize) -> Step<T>,
+) -> Result<Outputs<T>, (usize, Invalid)> {
+    let mut columns: [Vec<T>; 7] = core::array::from_fn(|_| vec![T::ZERO; rows]);
+    let [n, fx, fy, tz, a, b, e2] = columns.each_mut().map(|c| &mut c[..rows]);
+    for i in 0..rows {
         let out: Output<T> = contacts
             .at(i)
-            .and_then(|c| c.wrench(&step))
+            .and_then(|c| c.wrench(&step(i)))
             .map_err(|e| (i, e))?;
-        for (column, value) in columns.iter_mut().zip(out.to_array()) {
-            column.push(value);
-        }
+        (n[i], fx[i], fy[i], tz[i]) = (out.n, out.fx, out.fy, out.tz);
+        (a[i], b[i], e2[i]) = (out.a, out.b, out.e2);
     }
     Ok(Outputs { columns })
 }

@@ -113,3 +113,18 @@ def test_friction_dissipates():
         w = contensou.wrench(**rows, law=law)
         power = w["Fx"] * rows["vx"] + w["Fy"] * rows["vy"] + w["Tz"] * rows["omega"]
         assert np.all(power <= 0), law
+
+
+@pytest.mark.parametrize("precision", ["f64", "f32"])
+@pytest.mark.parametrize("law", contensou.LAWS)
+def test_step_equals_wrench(law, precision):
+    """Contact.step (Python floats) gives the values of Contact.wrench, bit for bit."""
+    dtype = np.float32 if precision == "f32" else np.float64
+    steps = contract_rows(100, seed=13, dtype=dtype)
+    contact = contensou.Contact(**SPEC, law=law, precision=precision)
+    want = contact.wrench(*(steps[c] for c in contensou.INPUTS[6:]))
+    for i in range(100):
+        got = contact.step(*(float(steps[c][i]) for c in contensou.INPUTS[6:]))
+        assert isinstance(got, tuple) and len(got) == 7 and all(type(x) is float for x in got)
+        for c, x in zip(contensou.OUTPUTS, got):
+            assert dtype(x).tobytes() == want[c][i].tobytes() and x == float(want[c][i]), (c, i)

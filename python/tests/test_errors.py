@@ -116,3 +116,13 @@ def test_first_bad_row_reported_and_no_output():
     h[1, 2] = np.nan
     with pytest.raises(ValueError, match=r"^h = NaN at index \(1, 2\)"):
         contensou.wrench(**SPEC, **{**STEP, "h": h})
+
+
+def test_step_errors():
+    contact = contensou.Contact(**SPEC)
+    with pytest.raises(ValueError, match=r"^omega = NaN: input must be finite"):
+        contact.step(1e-6, 0.0, 0.0, 0.0, float("nan"))
+    with pytest.raises(ValueError, match=r"^h = inf: input must be finite"):
+        contact.step(float("inf"), 0.0, 0.0, 0.0, 0.0)
+    with pytest.raises(TypeError):
+        contact.step("x", 0.0, 0.0, 0.0, 0.0)
