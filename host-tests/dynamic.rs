@@ -1,79 +1,17 @@
 //! `contensou::dynamic`: the run-time-chosen contact returns exactly (bit for bit) what the
 //! generic contact of the same law and form returns, and every bad input names its column.
 
-use contensou::contact::{Contact, VaryingContact};
+mod contract;
+
+use contensou::contact::Contact;
 use contensou::dynamic::{self, DynContact, Form, Invalid, Law, Spec, Step};
-use contensou::friction::{
-    Best, Coulomb, Ellipsoid, Friction, FrictionLaw, Pade, Simplified, Slip,
-};
+use contensou::friction::{Friction, Slip};
 use contensou::geometry::Curvatures;
-use contensou::normal::{HuntCrossley, Modulus};
+use contensou::normal::Modulus;
 use contensou::shape::Newton;
 use contensou::{Error, Real};
 
-fn specs<T: Real>() -> Vec<Spec<T>> {
-    let x = T::from_f64;
-    [
-        (50.0, 50.0, 0.0),
-        (10.0, 400.0, 0.3),
-        (1.0, 9000.0, 0.0),
-        (120.0, 121.0, 0.05),
-    ]
-    .into_iter()
-    .map(|(p, q, cd)| Spec {
-        p: x(p),
-        q: x(q),
-        estar: x(1.15e11),
-        cd: x(cd),
-        f: x(0.2),
-        delta: x(1e-4),
-    })
-    .collect()
-}
-
-fn steps<T: Real>() -> Vec<Step<T>> {
-    let x = T::from_f64;
-    let mut v = Vec::new();
-    for h in [-1e-7, 0.0, 3e-7, 2e-6] {
-        for (vx, vy, omega) in [
-            (0.0, 0.0, 0.0),
-            (0.01, 0.0, 0.0),
-            (0.0, 0.0, 40.0),
-            (-3e-3, 2e-3, 25.0),
-            (1e-6, -1e-6, 1e-3),
-            (2.0, 1.0, -300.0),
-        ] {
-            v.push(Step {
-                h: x(h),
-                hdot: x(0.01),
-                vx: x(vx),
-                vy: x(vy),
-                omega: x(omega),
-            });
-        }
-    }
-    v
-}
-
-/// The generic contact's output for law `L`, as the contract's seven numbers.
-fn generic<T: Real, L: FrictionLaw>(spec: &Spec<T>, form: Form, s: &Step<T>) -> [T; 7] {
-    let c = Curvatures::new(spec.p, spec.q).unwrap();
-    let e = Modulus::new(spec.estar).unwrap();
-    let d = HuntCrossley::new(spec.cd).unwrap();
-    let fr = Friction::<T, L>::new(spec.f, spec.delta).unwrap();
-    let slip = Slip::new(s.vx, s.vy, s.omega).unwrap();
-    let w = match form {
-        Form::Fixed => Contact::hertz::<Newton>(&c, e, d, fr)
-            .unwrap()
-            .wrench(s.h, s.hdot, slip),
-        Form::Varying => VaryingContact::new(e, d, fr).wrench(&c, s.h, s.hdot, slip),
-    };
-    [w.n, w.fx, w.fy, w.tz, w.patch.a, w.patch.b, w.patch.e2]
-}
-
-fn bits<T: Real>(v: [T; 7]) -> [u64; 7] {
-    v.map(|x| x.to_f64().to_bits())
-}
+use contract::{bits, generic, specs, steps};
 
 fn same_as_generic<T: Real>() {
     let mut n = 0;
@@ -82,13 +20,7 @@ fn same_as_generic<T: Real>() {
             for law in Law::ALL {
                 let dc = DynContact::new(&spec, law, form).unwrap();
                 for s in steps::<T>() {
-                    let want = match law {
-                        Law::Best => generic::<T, Best>(&spec, form, &s),
-                        Law::Simplified => generic::<T, Simplified>(&spec, form, &s),
-                        Law::Pade => generic::<T, Pade>(&spec, form, &s),
-                        Law::Ellipsoid => generic::<T, Ellipsoid>(&spec, form, &s),
-                        Law::Coulomb => generic::<T, Coulomb>(&spec, form, &s),
-                    };
+                    let want = generic(law, &spec, form, &s);
                     let got = dc.wrench(&s).unwrap().to_array();
                     assert_eq!(bits(got), bits(want), "{law:?} {form:?} {spec:?} {s:?}");
                     let row = dynamic::wrench(&spec, law, form, &s).unwrap().to_array();

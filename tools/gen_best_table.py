@@ -28,7 +28,7 @@ DG, DZ = 8, 10
 NG, NZ = 16, 24
 NU = np.linspace(0.1, 1.45, 6)
 LAM_LO = np.log(0.1)
-EVAL = ["cargo", "run", "--quiet", "--release", "--example", "contact_eval", "--",
+EVAL = ["cargo", "run", "--quiet", "--release", "--bin", "contact_eval", "--",
         "friction", "--model", "exact"]
 
 

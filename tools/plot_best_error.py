@@ -19,7 +19,7 @@ NU, NPSI = 241, 181
 
 def run(model, rows, precision="f64"):
     text = "e2,psi,u\n" + "".join(f"{m!r},{p!r},{u!r}\n" for m, p, u in rows)
-    cmd = ["cargo", "run", "--quiet", "--release", "--example", "contact_eval", "--",
+    cmd = ["cargo", "run", "--quiet", "--release", "--bin", "contact_eval", "--",
            "friction", "--model", model, "--precision", precision]
     out = subprocess.run(cmd, input=text, capture_output=True, text=True, check=True).stdout
     return np.loadtxt(io.StringIO(out), delimiter=",", skiprows=1)[:, 3:6]

@@ -1,0 +1,247 @@
+//! `contact_eval` (the built binary): `wrench` agrees bit for bit with direct calls of the
+//! generic contacts for every law × form × precision, refuses bad rows with
+//! `row K: name = value: reason` and a nonzero exit, skips blank lines; `--help` exits 0.
+
+mod contract;
+
+use std::io::Write;
+use std::process::{Command, Output, Stdio};
+
+use contensou::Real;
+use contensou::dynamic::{Form, INPUTS, Law, OUTPUTS, Spec, Step};
+
+use contract::{bits, generic, specs, steps};
+
+/// Runs `contact_eval args…` with `input` on stdin.
+fn run(args: &[&str], input: &str) -> Output {
+    let mut child = Command::new(env!("CARGO_BIN_EXE_contact_eval"))
+        .args(args)
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("contact_eval runs");
+    // A usage error exits before reading stdin: a broken pipe is part of that outcome.
+    let _ = child.stdin.take().unwrap().write_all(input.as_bytes());
+    child.wait_with_output().unwrap()
+}
+
+fn row<T: Real>(spec: &Spec<T>, s: &Step<T>) -> [T; 11] {
+    [
+        spec.p, spec.q, spec.estar, spec.cd, spec.f, spec.delta, s.h, s.hdot, s.vx, s.vy, s.omega,
+    ]
+}
+
+fn wrench_matches_the_generic_contacts<T: Real>(precision: &str) {
+    // Inputs printed with Rust's shortest round-trip Display: the binary parses the same values.
+    let mut input = format!("{}\n", INPUTS.join(","));
+    let mut want = Vec::new();
+    for spec in specs::<T>() {
+        for s in steps::<T>() {
+            let r = row(&spec, &s);
+            let text: Vec<String> = r.iter().map(|v| v.to_string()).collect();
+            input += &text.join(",");
+            input += "\n";
+            want.push((r, spec, s));
+        }
+        input += "\n"; // blank lines are skipped
+    }
+    for law in Law::ALL {
+        for form in Form::ALL {
+            let args = [
+                "wrench",
+                "--law",
+                law.name(),
+                "--form",
+                form.name(),
+                "--precision",
+                precision,
+            ];
+            let out = run(&args, &input);
+            let stderr = String::from_utf8_lossy(&out.stderr);
+            assert!(out.status.success(), "{args:?}: {stderr}");
+            let stdout = String::from_utf8(out.stdout).unwrap();
+            let mut lines = stdout.lines();
+            assert_eq!(
+                lines.next().unwrap(),
+                format!("{},{}", INPUTS.join(","), OUTPUTS.join(","))
+            );
+            let mut n = 0;
+            for (line, (r, spec, s)) in lines.by_ref().zip(&want) {
+                let got: Vec<T> = line.split(',').map(|f| f.parse().ok().unwrap()).collect();
+                assert_eq!(got.len(), 18, "{line}");
+                let echo = |v: &[T]| v.iter().map(|x| x.to_f64().to_bits()).collect::<Vec<_>>();
+                assert_eq!(echo(&got[..11]), echo(r), "{line}");
+                let expect = generic(law, spec, form, s);
+                assert_eq!(
+                    bits::<T>(got[11..].try_into().unwrap()),
+                    bits(expect),
+                    "{args:?}: {line}"
+                );
+                n += 1;
+            }
+            assert_eq!((n, lines.next()), (want.len(), None));
+        }
+    }
+}
+
+#[test]
+fn wrench_is_bit_identical_to_the_library_f64() {
+    wrench_matches_the_generic_contacts::<f64>("f64");
+}
+
+#[test]
+fn wrench_is_bit_identical_to_the_library_f32() {
+    wrench_matches_the_generic_contacts::<f32>("f32");
+}
+
+const GOOD: &str = "10,400,1.15e11,0.3,0.2,1e-4,2e-6,0.01,-3e-3,2e-3,25";
+
+/// A two-row input whose second row (row 3: a blank line sits before it) is `bad`; the run
+/// must print row 1 only, fail, and say exactly `message`.
+fn refuses(bad: &str, message: &str) {
+    let input = format!("{}\n{GOOD}\n\n{bad}\n{GOOD}\n", INPUTS.join(","));
+    for form in Form::ALL {
+        for precision in ["f32", "f64"] {
+            let out = run(
+                &["wrench", "--form", form.name(), "--precision", precision],
+                &input,
+            );
+            assert_eq!(out.status.code(), Some(1), "{bad}");
+            assert_eq!(
+                String::from_utf8_lossy(&out.stderr),
+                format!("contact_eval: row 3: {message}\n"),
+                "{bad} {precision}"
+            );
+            assert_eq!(String::from_utf8_lossy(&out.stdout).lines().count(), 2);
+        }
+    }
+}
+
+#[test]
+fn wrench_refuses_bad_rows_naming_the_column() {
+    let with = |column: &str, value: &str| {
+        let i = INPUTS.iter().position(|c| *c == column).unwrap();
+        let mut fields: Vec<&str> = GOOD.split(',').collect();
+        fields[i] = value;
+        fields.join(",")
+    };
+    refuses(&with("P", "x1"), "P = x1: not a number");
+    refuses(&with("h", "NaN"), "h = NaN: not a number (NaN)");
+    refuses(
+        &with("P", "500"),
+        "P = 500: curvatures must satisfy P <= Q (x is the major axis)",
+    );
+    refuses(
+        &with("P", "0"),
+        "P = 0: curvature must be positive (P and Q, or the sum of the two bodies' curvatures)",
+    );
+    refuses(
+        &with("P", "0.01"),
+        "P = 0.01: curvature ratio P/Q below the solver's range (g >= 1e-4; volumetric law: g >= 0.5)",
+    );
+    refuses(&with("Q", "inf"), "Q = inf: input must be finite");
+    refuses(
+        &with("estar", "-1"),
+        "estar = -1: elastic modulus must be positive",
+    );
+    refuses(
+        &with("cd", "-0.1"),
+        "cd = -0.1: damping coefficient is negative",
+    );
+    refuses(
+        &with("f", "-0.2"),
+        "f = -0.2: friction coefficient is negative",
+    );
+    refuses(
+        &with("delta", "-1e-3"),
+        "delta = -1e-3: regularization speed delta must be >= 0 (m/s; 0 = no regularization)",
+    );
+    refuses(&with("omega", "-inf"), "omega = -inf: input must be finite");
+    refuses(
+        "1,2,3",
+        "fields = 3: expected 11 (P,Q,estar,cd,f,delta,h,hdot,vx,vy,omega)",
+    );
+}
+
+#[test]
+fn usage_errors_name_the_value_and_exit_2() {
+    let header = format!("{}\n", INPUTS.join(","));
+    for (args, message) in [
+        (
+            &["wrench", "--law", "exact"][..],
+            "--law = exact: unknown (one of best, simplified, pade, ellipsoid, coulomb)",
+        ),
+        (
+            &["wrench", "--form", "x"],
+            "--form = x: unknown (one of fixed, varying)",
+        ),
+        (
+            &["wrench", "--precision", "f16"],
+            "--precision = f16: must be f32 or f64",
+        ),
+        (
+            &["wrench", "--model", "best"],
+            "--model = best: unknown option for this subcommand",
+        ),
+        (
+            &["nope"],
+            "subcommand = nope: unknown (one of wrench, elliptic, eccentricity, hertz, friction)",
+        ),
+    ] {
+        let out = run(args, &header);
+        assert_eq!(out.status.code(), Some(2), "{args:?}");
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(
+            stderr.lines().next(),
+            Some(&*format!("contact_eval: {message}"))
+        );
+    }
+    let out = run(&["wrench"], "P,Q\n");
+    assert_eq!(out.status.code(), Some(1));
+    assert!(String::from_utf8_lossy(&out.stderr).starts_with(
+        "contact_eval: header = P,Q: must be `P,Q,estar,cd,f,delta,h,hdot,vx,vy,omega`"
+    ));
+}
+
+#[test]
+fn help_lists_every_model_and_exits_0() {
+    let top = run(&["--help"], "");
+    assert!(top.status.success());
+    let text = String::from_utf8(top.stdout).unwrap();
+    for name in [
+        "wrench",
+        "elliptic",
+        "eccentricity",
+        "hertz",
+        "friction",
+        "best-varying",
+    ] {
+        assert!(text.contains(name), "{name} missing from --help");
+    }
+    for law in Law::ALL {
+        assert!(text.contains(law.name()));
+    }
+    for sub in ["wrench", "elliptic", "eccentricity", "hertz", "friction"] {
+        for flag in ["--help", "-h"] {
+            let out = run(&[sub, flag], "");
+            assert!(out.status.success(), "{sub} {flag}");
+            assert!(
+                String::from_utf8_lossy(&out.stdout)
+                    .starts_with(&format!("usage: contact_eval {sub}"))
+            );
+        }
+    }
+}
+
+#[test]
+fn floats_print_in_shortest_form() {
+    let input = format!("{}\n{GOOD}\n", INPUTS.join(","));
+    let out = run(&["wrench"], &input);
+    let stdout = String::from_utf8(out.stdout).unwrap();
+    let line = stdout.lines().nth(1).unwrap();
+    assert!(
+        line.starts_with("10,400,1.15e11,0.3,0.2,1e-4,2e-6,0.01,-3e-3,2e-3,25,"),
+        "{line}"
+    );
+}

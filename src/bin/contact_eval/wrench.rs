@@ -1,0 +1,99 @@
+//! `wrench`: the full per-step wrench of the contract of [`contensou::dynamic`] — the C API
+//! and the Python package evaluate the same module, so all three agree bit for bit. No formula
+//! here: each row is [`dynamic::wrench`] (the contact built from the row, one step).
+use std::fmt::LowerExp;
+use std::process::ExitCode;
+
+use contensou::Real;
+use contensou::dynamic::{self, Form, INPUTS, Invalid, Law, OUTPUTS, Spec, Step};
+
+use crate::csv::{message, run_csv, shortest};
+use crate::{Args, Precision, by_name, list};
+
+/// One line per law for `--help`.
+fn about_law(law: Law) -> &'static str {
+    match law {
+        Law::Best => "exact grade, fast (the library's default law)",
+        Law::Simplified => "the paper's simplified model",
+        Law::Pade => "Pade approximants",
+        Law::Ellipsoid => "ellipsoidal pressure fit",
+        Law::Coulomb => "point contact (no drilling torque)",
+    }
+}
+
+/// One line per form for `--help`.
+fn about_form(form: Form) -> &'static str {
+    match form {
+        Form::Fixed => "Contact built per row, exact eccentricity (Newton)",
+        Form::Varying => "VaryingContact, eccentricity and shape constants by table each step",
+    }
+}
+
+const COLUMNS: &str =
+    "  columns (SI, contact frame x = major axis, z from A into B; forces on B from A):
+    P,Q        curvatures, z = P x^2 + Q y^2, 0 < P <= Q (P > Q is refused, never swapped)
+    estar      effective modulus E* (Pa)
+    cd         Hunt-Crossley c_d (s/m), 0 = undamped
+    f,delta    friction coefficient, regularization speed (m/s, 0 allowed)
+    h,hdot     approach (m, <= 0: no contact), its rate (m/s, > 0: compression)
+    vx,vy      slip of B relative to A at the patch centre (m/s)
+    omega      spin about z (rad/s)
+    -> N,Fx,Fy,Tz,a,b,e2   normal force, friction force, drilling torque, semi-axes, e^2
+";
+
+/// The help text.
+pub fn help() -> String {
+    let laws = list("--law", Law::ALL.iter().map(|&l| (l.name(), about_law(l))));
+    let forms = list(
+        "--form",
+        Form::ALL.iter().map(|&f| (f.name(), about_form(f))),
+    );
+    format!("{COLUMNS}{laws}{forms}")
+}
+
+/// Run the subcommand, or say why the options are wrong.
+pub fn run(mut args: Args) -> Result<ExitCode, String> {
+    let law = by_name("--law", args.take(&["--law"]), &Law::ALL, |l| l.name())?;
+    let form = by_name("--form", args.take(&["--form"]), &Form::ALL, |f| f.name())?;
+    let (law, form) = (
+        law.copied().unwrap_or_default(),
+        form.copied().unwrap_or_default(),
+    );
+    let precision = args.precision;
+    args.finish()?;
+    Ok(match precision {
+        Precision::F32 => rows::<f32>(law, form),
+        Precision::F64 => rows::<f64>(law, form),
+    })
+}
+
+fn rows<T: Real + LowerExp>(law: Law, form: Form) -> ExitCode {
+    run_csv::<T>(&INPUTS, &OUTPUTS, &mut |r| {
+        let spec = Spec {
+            p: r[0],
+            q: r[1],
+            estar: r[2],
+            cd: r[3],
+            f: r[4],
+            delta: r[5],
+        };
+        let step = Step {
+            h: r[6],
+            hdot: r[7],
+            vx: r[8],
+            vy: r[9],
+            omega: r[10],
+        };
+        match dynamic::wrench(&spec, law, form, &step) {
+            Ok(out) => Ok(out.to_array().to_vec()),
+            Err(Invalid { column, error }) => {
+                let value = INPUTS.iter().position(|&c| c == column).map(|i| r[i]);
+                Err(message(
+                    column,
+                    value.map_or_else(|| "?".into(), shortest),
+                    error.as_str(),
+                ))
+            }
+        }
+    })
+}
