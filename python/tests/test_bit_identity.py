@@ -2,9 +2,8 @@
 floats, parsed back exactly) and through `contensou.wrench` / `Contact.wrench` give the same
 bits, for every law, form and precision.
 
-The reference command: $CONTENSOU_WRENCH_CMD if set; else `contact_eval wrench` when the
-repository has it (src/bin/contact_eval/wrench.rs, branch `cli`); else the stand-in
-tests/wrench_ref (the same contract through contensou::dynamic::wrench)."""
+The reference command: $CONTENSOU_WRENCH_CMD if set, else
+`cargo run --release --bin contact_eval -- wrench` in this repository."""
 
 import os
 import shlex
@@ -29,10 +28,8 @@ def reference_command():
         return shlex.split(os.environ["CONTENSOU_WRENCH_CMD"])
     if shutil.which("cargo") is None:
         pytest.skip("cargo not on PATH: no reference command")
-    cargo = ["cargo", "run", "--release", "--quiet", "--manifest-path"]
-    if (REPO / "src/bin/contact_eval/wrench.rs").exists():
-        return cargo + [str(REPO / "Cargo.toml"), "--bin", "contact_eval", "--", "wrench"]
-    return cargo + [str(REPO / "python/tests/wrench_ref/Cargo.toml"), "--"]
+    return ["cargo", "run", "--release", "--quiet", "--manifest-path", str(REPO / "Cargo.toml"),
+            "--bin", "contact_eval", "--", "wrench"]
 
 
 def text(x, precision):
