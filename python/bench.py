@@ -154,7 +154,7 @@ def main():
     out("")
 
     # 3. Scalar calls.
-    out("## One scalar call (Python floats in, numpy scalars out)")
+    out("## One scalar call (Python floats in)")
     out("")
     out("| call | calls/s | µs/call |")
     out("|---|---:|---:|")
@@ -165,11 +165,16 @@ def main():
         for _ in range(reps):
             c.wrench(1e-6, 0.0, 0.01, 0.0, 30.0)
 
+    def many_steps():
+        for _ in range(reps):
+            c.step(1e-6, 0.0, 0.01, 0.0, 30.0)
+
     def many_rows():
         for _ in range(reps):
             contensou.wrench(20.0, 50.0, 1.15e11, 0.2, 0.3, 1e-4, 1e-6, 0.0, 0.01, 0.0, 30.0)
 
-    for name, call in [("`Contact.wrench(h, hdot, vx, vy, omega)` (best, fixed, f64)", many_contact),
+    for name, call in [("`Contact.step(h, hdot, vx, vy, omega)` → tuple of floats (best, fixed, f64)", many_steps),
+                       ("`Contact.wrench(h, hdot, vx, vy, omega)` → dict of numpy scalars", many_contact),
                        ("`contensou.wrench(11 floats)` (best, fixed, f64; builds the contact)", many_rows)]:
         t = best_time(call, budget)
         out(f"| {name} | {fmt(reps / t)} | {t / reps * 1e6:.2f} |")
