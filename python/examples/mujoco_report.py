@@ -98,6 +98,13 @@ semi-implicit Euler against the scene's RK4, both at 10 µs):
 
 {chr(10).join("- " + line for line in top.agreement(top_rows)) or "- (no Rust rows)"}
 
+Reading: MuJoCo's own contact is a soft constraint with a pyramidal friction cone and, for
+condim ≥ 4, a torsional friction torque bounded by μ_torsion·N (a length, default 5 mm): at the
+defaults that torque eats the spin (condim 4, 6: a few rad/s left at 8 s) and the top never rises; with
+condim 3 (no torsion) it rises but, lacking the drilling torque, does not stay on its head; the
+stiff solref changes the timing, not the story. With contensou's Hertz + Contensou–Erismann
+contact in the callback, MuJoCo inverts the top as the library's own scene does.
+
 ![θ(t)](mujoco_tippe_top.png)
 
 ## Steel ball (`python/examples/mujoco_ball.py`)
@@ -109,6 +116,14 @@ a = {ball.A_STATIC * 1e6:.2f} µm, so the physical torsional coefficient (3π/16
 contact below 1 mm/s. To {args.ball_end:g} s.
 
 {ball.table(ball_rows)}
+
+Reading: condim 3 has no torsional friction, so the spin never decays; condim 4 and 6 at
+MuJoCo's default torsional coefficient (5 mm, ≈ 3,000 times the physical (3π/16)·f·a) stop it
+within the sliding phase (condim 6's rolling friction also slows the rolling ball, so the
+"pure rolling" criterion is met late); even set to the physical value the coefficient is raised
+to MuJoCo's floor 1e-5 m and the spin decays about six times too fast (why that run's slip
+stays above 1 mm/s until 9.4 s we have not investigated). With contensou the ball
+rolls at the analytic 2v₀/(7fg) and its spin follows the analytic pure-spin decay.
 
 ![ω_z(t)](mujoco_ball.png)
 """
