@@ -1,0 +1,423 @@
+//! `contensou` for Python: the wrench contract of [`contensou::dynamic`] over numpy arrays.
+//!
+//! A shell and nothing more: it converts the arguments to arrays of the chosen precision,
+//! broadcasts them (numpy's rules), validates and loops over the rows with the GIL released;
+//! every number comes from [`DynContact::wrench`], so a row gives the bits that
+//! `contact_eval wrench`, the C API and the generic contacts give.
+//!
+//! - `wrench(P, Q, estar, cd, f, delta, h, hdot, vx, vy, omega, *, law, precision, form)`:
+//!   the per-row function (a contact per row; rows that repeat the previous row's contact
+//!   columns reuse its contact).
+//! - `Contact(P, Q, estar, cd, f, delta, *, law, precision, form)`: built once;
+//!   `.wrench(h, hdot, vx, vy, omega)` per step, `.set_curvatures(P, Q)`.
+//!
+//! Both return the dict `{N, Fx, Fy, Tz, a, b, e2}` of arrays of the broadcast shape (f32
+//! arrays for `precision="f32"`; numpy scalars when every argument is a scalar). Bad input is
+//! a `ValueError` naming the argument, the index into the broadcast shape and the reason.
+
+mod columns;
+mod rows;
+
+use ::contensou::dynamic::{DynContact, Form, INPUTS, Law, OUTPUTS, Spec, Step};
+use pyo3::exceptions::PyValueError;
+use pyo3::prelude::*;
+use pyo3::types::PyDict;
+
+use columns::{Arg, Column, broadcast_shape};
+use rows::{PerRow, Precision, evaluate_py};
+
+/// The value of `option` called `name` among `all`, or a `ValueError` listing the names.
+fn named<V: Copy>(
+    option: &str,
+    name: &str,
+    all: &[V],
+    name_of: fn(V) -> &'static str,
+) -> PyResult<V> {
+    all.iter()
+        .copied()
+        .find(|&v| name_of(v) == name)
+        .ok_or_else(|| {
+            let names: Vec<_> = all.iter().map(|&v| name_of(v)).collect();
+            PyValueError::new_err(format!(
+                "{option}: unknown '{name}'; expected one of {}",
+                names.join(", ")
+            ))
+        })
+}
+
+fn law_of(name: &str) -> PyResult<Law> {
+    named("law", name, &Law::ALL, Law::name)
+}
+
+fn form_of(name: &str) -> PyResult<Form> {
+    named("form", name, &Form::ALL, Form::name)
+}
+
+/// `true` for `"f32"`, `false` for `"f64"`.
+fn is_f32(precision: &str) -> PyResult<bool> {
+    named("precision", precision, &[false, true], |f32| {
+        if f32 { "f32" } else { "f64" }
+    })
+}
+
+/// The named arguments converted to arrays of `T`.
+fn convert_all<'py, T: Precision, const N: usize>(
+    names: [&'static str; N],
+    values: [&Bound<'py, PyAny>; N],
+) -> PyResult<[Arg<'py, T>; N]> {
+    let mut out = Vec::with_capacity(N);
+    for (name, value) in names.into_iter().zip(values) {
+        out.push(T::convert(name, value)?);
+    }
+    out.try_into()
+        .map_err(|_| PyValueError::new_err("argument count"))
+}
+
+/// The columns of `args` over `shape`.
+fn columns_of<'a, T: Precision, const N: usize>(
+    args: &'a [Arg<'_, T>; N],
+    shape: &[usize],
+) -> PyResult<[Column<'a, T>; N]> {
+    let mut out = Vec::with_capacity(N);
+    for arg in args {
+        out.push(Column::new(arg, shape)?);
+    }
+    out.try_into()
+        .map_err(|_| PyValueError::new_err("argument count"))
+}
+
+/// The per-row function in precision `T`.
+fn wrench_in<'py, T: Precision>(
+    py: Python<'py>,
+    values: [&Bound<'py, PyAny>; 11],
+    law: Law,
+    form: Form,
+) -> PyResult<Bound<'py, PyDict>> {
+    let args = convert_all::<T, 11>(INPUTS, values)?;
+    let named: Vec<_> = INPUTS.iter().copied().zip(args.iter()).collect();
+    let shape = broadcast_shape(&named)?;
+    let [p, q, estar, cd, f, delta, h, hdot, vx, vy, omega] = columns_of(&args, &shape)?;
+    let spec = [p, q, estar, cd, f, delta];
+    let steps = [h, hdot, vx, vy, omega];
+    let inputs = core::array::from_fn(|k| {
+        if k < 6 {
+            Some(&spec[k])
+        } else {
+            Some(&steps[k - 6])
+        }
+    });
+    evaluate_py(py, &shape, &steps, PerRow::new(&spec, law, form), inputs)
+}
+
+/// The wrench of the contract, row by row over the broadcast arguments.
+///
+/// Arguments are the contract's input columns (`contensou.INPUTS`): scalars or arrays that
+/// broadcast together. Returns a dict of arrays `N, Fx, Fy, Tz, a, b, e2` of the broadcast
+/// shape (numpy scalars if every argument is a scalar), dtype float32 for `precision="f32"`.
+/// Raises `ValueError` naming the argument, the index and the reason for any invalid value,
+/// an unknown `law`, `precision` or `form`, or shapes that do not broadcast.
+#[pyfunction]
+#[pyo3(signature = (P, Q, estar, cd, f, delta, h, hdot, vx, vy, omega, *, law = "best", precision = "f64", form = "fixed"))]
+#[allow(non_snake_case, clippy::too_many_arguments)]
+fn wrench<'py>(
+    py: Python<'py>,
+    P: &Bound<'py, PyAny>,
+    Q: &Bound<'py, PyAny>,
+    estar: &Bound<'py, PyAny>,
+    cd: &Bound<'py, PyAny>,
+    f: &Bound<'py, PyAny>,
+    delta: &Bound<'py, PyAny>,
+    h: &Bound<'py, PyAny>,
+    hdot: &Bound<'py, PyAny>,
+    vx: &Bound<'py, PyAny>,
+    vy: &Bound<'py, PyAny>,
+    omega: &Bound<'py, PyAny>,
+    law: &str,
+    precision: &str,
+    form: &str,
+) -> PyResult<Bound<'py, PyDict>> {
+    let (law, form) = (law_of(law)?, form_of(form)?);
+    let values = [P, Q, estar, cd, f, delta, h, hdot, vx, vy, omega];
+    if is_f32(precision)? {
+        wrench_in::<f32>(py, values, law, form)
+    } else {
+        wrench_in::<f64>(py, values, law, form)
+    }
+}
+
+/// A built contact in either precision (one per `Contact` object: the size difference is
+/// not worth a box).
+#[derive(Clone, Copy)]
+#[allow(clippy::large_enum_variant)]
+enum Built {
+    F32(DynContact<f32>),
+    F64(DynContact<f64>),
+}
+
+/// A scalar argument of the chosen precision (numpy's conversion, then one value).
+fn scalar<T: Precision>(name: &'static str, value: &Bound<'_, PyAny>) -> PyResult<T> {
+    let array = T::convert(name, value)?;
+    let view = array.as_array();
+    match (view.ndim(), view.iter().next()) {
+        (0, Some(&x)) => Ok(x),
+        _ => Err(PyValueError::new_err(format!(
+            "{name}: a Contact's contact columns are scalars, got shape {}",
+            columns::tuple(view.shape())
+        ))),
+    }
+}
+
+/// The contact of `values` (P, Q, estar, cd, f, delta) in precision `T`.
+fn build<T: Precision>(
+    values: [&Bound<'_, PyAny>; 6],
+    law: Law,
+    form: Form,
+) -> PyResult<DynContact<T>> {
+    let mut x = [T::from_f64(0.0); 6];
+    for (k, value) in values.into_iter().enumerate() {
+        x[k] = scalar::<T>(INPUTS[k], value)?;
+    }
+    let [p, q, estar, cd, f, delta] = x;
+    DynContact::new(
+        &Spec {
+            p,
+            q,
+            estar,
+            cd,
+            f,
+            delta,
+        },
+        law,
+        form,
+    )
+    .map_err(|e| {
+        let k = INPUTS.iter().position(|&c| c == e.column).unwrap_or(0);
+        PyValueError::new_err(format!("{} = {}: {}", e.column, x[k], e.error.as_str()))
+    })
+}
+
+/// One step (or an array of steps) of a built contact in precision `T`.
+fn steps_in<'py, T: Precision>(
+    py: Python<'py>,
+    contact: &DynContact<T>,
+    values: [&Bound<'py, PyAny>; 5],
+) -> PyResult<Bound<'py, PyDict>> {
+    let names = [INPUTS[6], INPUTS[7], INPUTS[8], INPUTS[9], INPUTS[10]];
+    let args = convert_all::<T, 5>(names, values)?;
+    let named: Vec<_> = names.iter().copied().zip(args.iter()).collect();
+    let shape = broadcast_shape(&named)?;
+    let steps = columns_of(&args, &shape)?;
+    let inputs = core::array::from_fn(|k| if k < 6 { None } else { Some(&steps[k - 6]) });
+    evaluate_py(py, &shape, &steps, contact, inputs)
+}
+
+/// A contact of the contract built once (validated, the shape solved for `form="fixed"`),
+/// evaluated per step with `wrench(h, hdot, vx, vy, omega)` — scalars or arrays.
+#[pyclass(module = "contensou")]
+struct Contact {
+    built: Built,
+}
+
+#[pymethods]
+impl Contact {
+    /// Validates the contact columns (scalars) and builds the contact; `ValueError` naming
+    /// the argument otherwise.
+    #[new]
+    #[pyo3(signature = (P, Q, estar, cd, f, delta, *, law = "best", precision = "f64", form = "fixed"))]
+    #[allow(non_snake_case, clippy::too_many_arguments)]
+    fn new(
+        P: &Bound<'_, PyAny>,
+        Q: &Bound<'_, PyAny>,
+        estar: &Bound<'_, PyAny>,
+        cd: &Bound<'_, PyAny>,
+        f: &Bound<'_, PyAny>,
+        delta: &Bound<'_, PyAny>,
+        law: &str,
+        precision: &str,
+        form: &str,
+    ) -> PyResult<Self> {
+        let (law, form) = (law_of(law)?, form_of(form)?);
+        let values = [P, Q, estar, cd, f, delta];
+        let built = if is_f32(precision)? {
+            Built::F32(build(values, law, form)?)
+        } else {
+            Built::F64(build(values, law, form)?)
+        };
+        Ok(Contact { built })
+    }
+
+    /// The wrench at the step columns (scalars or arrays that broadcast): the dict of
+    /// `contensou.wrench`.
+    fn wrench<'py>(
+        &self,
+        py: Python<'py>,
+        h: &Bound<'py, PyAny>,
+        hdot: &Bound<'py, PyAny>,
+        vx: &Bound<'py, PyAny>,
+        vy: &Bound<'py, PyAny>,
+        omega: &Bound<'py, PyAny>,
+    ) -> PyResult<Bound<'py, PyDict>> {
+        let values = [h, hdot, vx, vy, omega];
+        match &self.built {
+            Built::F32(c) => steps_in(py, c, values),
+            Built::F64(c) => steps_in(py, c, values),
+        }
+    }
+
+    /// One scalar step for tight Python loops (a physics engine's callback): Python floats in,
+    /// the tuple `(N, Fx, Fy, Tz, a, b, e2)` of Python floats out (for `precision="f32"` the
+    /// inputs are rounded to f32 and the f32 results widened exactly) — the values of
+    /// `wrench` on the same step, without building numpy objects. `ValueError` as `wrench`.
+    fn step(
+        &self,
+        h: f64,
+        hdot: f64,
+        vx: f64,
+        vy: f64,
+        omega: f64,
+    ) -> PyResult<(f64, f64, f64, f64, f64, f64, f64)> {
+        fn one<T: Precision>(c: &DynContact<T>, x: [f64; 5]) -> PyResult<[f64; 7]> {
+            let [h, hdot, vx, vy, omega] = x.map(T::from_f64);
+            let step = Step {
+                h,
+                hdot,
+                vx,
+                vy,
+                omega,
+            };
+            match c.wrench(&step) {
+                Ok(out) => Ok(out.to_array().map(T::to_f64)),
+                Err(e) => {
+                    let k = INPUTS.iter().position(|&n| n == e.column).unwrap_or(6);
+                    let value = x.get(k.saturating_sub(6)).copied().unwrap_or(f64::NAN);
+                    Err(PyValueError::new_err(format!(
+                        "{} = {}: {}",
+                        e.column,
+                        T::from_f64(value),
+                        e.error.as_str()
+                    )))
+                }
+            }
+        }
+        let x = [h, hdot, vx, vy, omega];
+        let [n, fx, fy, tz, a, b, e2] = match &self.built {
+            Built::F32(c) => one(c, x)?,
+            Built::F64(c) => one(c, x)?,
+        };
+        Ok((n, fx, fy, tz, a, b, e2))
+    }
+
+    /// New curvatures (scalars): the per-step update of a `form="varying"` contact; a `fixed`
+    /// one is rebuilt. `ValueError` (and the contact unchanged) for invalid values.
+    #[allow(non_snake_case)]
+    fn set_curvatures(&mut self, P: &Bound<'_, PyAny>, Q: &Bound<'_, PyAny>) -> PyResult<()> {
+        fn set<T: Precision>(
+            c: &mut DynContact<T>,
+            p: &Bound<'_, PyAny>,
+            q: &Bound<'_, PyAny>,
+        ) -> PyResult<()> {
+            let (p, q) = (scalar::<T>("P", p)?, scalar::<T>("Q", q)?);
+            c.set_curvatures(p, q).map_err(|e| {
+                let value = if e.column == "Q" { q } else { p };
+                PyValueError::new_err(format!("{} = {value}: {}", e.column, e.error.as_str()))
+            })
+        }
+        match &mut self.built {
+            Built::F32(c) => set(c, P, Q),
+            Built::F64(c) => set(c, P, Q),
+        }
+    }
+
+    /// The friction law's name.
+    #[getter]
+    fn law(&self) -> &'static str {
+        match &self.built {
+            Built::F32(c) => c.law().name(),
+            Built::F64(c) => c.law().name(),
+        }
+    }
+
+    /// `"fixed"` or `"varying"`.
+    #[getter]
+    fn form(&self) -> &'static str {
+        match &self.built {
+            Built::F32(c) => c.form().name(),
+            Built::F64(c) => c.form().name(),
+        }
+    }
+
+    /// `"f32"` or `"f64"`.
+    #[getter]
+    fn precision(&self) -> &'static str {
+        match &self.built {
+            Built::F32(_) => "f32",
+            Built::F64(_) => "f64",
+        }
+    }
+
+    /// The contact columns as a dict `{P, Q, estar, cd, f, delta}` (Python floats).
+    #[getter]
+    fn spec<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        let s: Spec<f64> = match &self.built {
+            Built::F32(c) => {
+                let s = c.spec();
+                Spec {
+                    p: s.p.into(),
+                    q: s.q.into(),
+                    estar: s.estar.into(),
+                    cd: s.cd.into(),
+                    f: s.f.into(),
+                    delta: s.delta.into(),
+                }
+            }
+            Built::F64(c) => *c.spec(),
+        };
+        let dict = PyDict::new(py);
+        for (name, value) in INPUTS.iter().zip([s.p, s.q, s.estar, s.cd, s.f, s.delta]) {
+            dict.set_item(*name, value)?;
+        }
+        Ok(dict)
+    }
+
+    fn __repr__(&self) -> PyResult<String> {
+        Python::attach(|py| {
+            let spec = self.spec(py)?;
+            let body: Vec<String> = INPUTS[..6]
+                .iter()
+                .map(|n| {
+                    Ok(format!(
+                        "{n}={}",
+                        spec.get_item(n)?.map_or(String::new(), |v| v.to_string())
+                    ))
+                })
+                .collect::<PyResult<_>>()?;
+            Ok(format!(
+                "Contact({}, law='{}', precision='{}', form='{}')",
+                body.join(", "),
+                self.law(),
+                self.precision(),
+                self.form()
+            ))
+        })
+    }
+}
+
+/// The Python module `contensou`.
+#[pymodule(name = "contensou")]
+fn contensou_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_function(wrap_pyfunction!(wrench, m)?)?;
+    m.add_class::<Contact>()?;
+    m.add("INPUTS", INPUTS.to_vec())?;
+    m.add("OUTPUTS", OUTPUTS.to_vec())?;
+    m.add(
+        "LAWS",
+        Law::ALL.iter().map(|l| l.name()).collect::<Vec<_>>(),
+    )?;
+    m.add(
+        "FORMS",
+        Form::ALL.iter().map(|f| f.name()).collect::<Vec<_>>(),
+    )?;
+    m.add("PRECISIONS", vec!["f32", "f64"])?;
+    m.add("__version__", env!("CARGO_PKG_VERSION"))?;
+    Ok(())
+}

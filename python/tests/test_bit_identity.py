@@ -1,0 +1,93 @@
+"""Bit identity with `contact_eval wrench`: the same rows through the CLI (shortest round-trip
+floats, parsed back exactly) and through `contensou.wrench` / `Contact.wrench` give the same
+bits, for every law, form and precision.
+
+The reference command: $CONTENSOU_WRENCH_CMD if set, else
+`cargo run --release --bin contact_eval -- wrench` in this repository."""
+
+import os
+import shlex
+import shutil
+import subprocess
+import zlib
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import contensou
+from rows import contract_rows
+
+REPO = Path(__file__).resolve().parents[2]
+DTYPES = {"f32": np.float32, "f64": np.float64}
+UINTS = {"f32": np.uint32, "f64": np.uint64}
+
+
+def reference_command():
+    if os.environ.get("CONTENSOU_WRENCH_CMD"):
+        return shlex.split(os.environ["CONTENSOU_WRENCH_CMD"])
+    if shutil.which("cargo") is None:
+        pytest.skip("cargo not on PATH: no reference command")
+    return ["cargo", "run", "--release", "--quiet", "--manifest-path", str(REPO / "Cargo.toml"),
+            "--bin", "contact_eval", "--", "wrench"]
+
+
+def text(x, precision):
+    """Shortest round-trip decimal of x in its precision (numpy's and Python's str)."""
+    return str(np.float32(x)) if precision == "f32" else repr(float(x))
+
+
+def reference(rows, law, form, precision):
+    n = len(rows["P"])
+    lines = [",".join(contensou.INPUTS)]
+    lines += [",".join(text(rows[c][i], precision) for c in contensou.INPUTS) for i in range(n)]
+    cmd = reference_command() + ["--law", law, "--form", form, "--precision", precision]
+    run = subprocess.run(cmd, input="\n".join(lines) + "\n", capture_output=True, text=True, cwd=REPO)
+    assert run.returncode == 0, run.stderr
+    out = run.stdout.strip().split("\n")
+    header = out[0].split(",")
+    assert header == list(contensou.INPUTS) + list(contensou.OUTPUTS)
+    table = np.array([[float(x) for x in line.split(",")] for line in out[1:]])
+    assert table.shape == (n, len(header))
+    dtype = DTYPES[precision]
+    # The echoed inputs are the bits we sent (the decimal form round-trips).
+    for k, c in enumerate(contensou.INPUTS):
+        assert np.array_equal(table[:, k].astype(dtype).view(UINTS[precision]), rows[c].view(UINTS[precision])), c
+    return {c: table[:, len(contensou.INPUTS) + k].astype(dtype) for k, c in enumerate(contensou.OUTPUTS)}
+
+
+def assert_same_bits(got, want, precision):
+    for c in contensou.OUTPUTS:
+        g, w = np.asarray(got[c]), np.asarray(want[c])
+        assert g.dtype == DTYPES[precision], c
+        bad = np.flatnonzero(g.view(UINTS[precision]) != w.view(UINTS[precision]))
+        assert bad.size == 0, f"{c}: {bad.size} rows differ, first {bad[:3]}: {g[bad[:3]]} vs {w[bad[:3]]}"
+
+
+@pytest.mark.parametrize("precision", ["f64", "f32"])
+@pytest.mark.parametrize("form", contensou.FORMS)
+@pytest.mark.parametrize("law", contensou.LAWS)
+def test_wrench_matches_the_cli(law, form, precision):
+    rows = contract_rows(400, seed=zlib.crc32(f"{law}/{form}".encode()), dtype=DTYPES[precision])
+    want = reference(rows, law, form, precision)
+    got = contensou.wrench(**rows, law=law, form=form, precision=precision)
+    assert_same_bits(got, want, precision)
+    assert np.all(got["N"] >= 0) and np.any(got["N"] > 0)
+    assert np.any(got["Tz"] != 0) == (law != "coulomb")  # a point contact has no drilling torque
+
+
+@pytest.mark.parametrize("precision", ["f64", "f32"])
+@pytest.mark.parametrize("form", contensou.FORMS)
+def test_contact_matches_the_cli(form, precision):
+    """One contact (fixed columns), 300 steps: Contact.wrench on the array, one call per scalar
+    step, and the CLI on the same rows."""
+    dtype = DTYPES[precision]
+    steps = contract_rows(300, seed=7, dtype=dtype)
+    spec = {"P": 20.0, "Q": 50.0, "estar": 1.15e11, "cd": 0.3, "f": 0.3, "delta": 1e-4}
+    rows = {**steps, **{k: np.full(300, v, dtype=dtype) for k, v in spec.items()}}
+    want = reference(rows, "best", form, precision)
+    contact = contensou.Contact(**spec, law="best", form=form, precision=precision)
+    step_cols = [steps[c] for c in contensou.INPUTS[6:]]
+    assert_same_bits(contact.wrench(*step_cols), want, precision)
+    one = [contact.wrench(*(c[i] for c in step_cols)) for i in range(300)]
+    assert_same_bits({c: np.array([o[c] for o in one], dtype=dtype) for c in contensou.OUTPUTS}, want, precision)
