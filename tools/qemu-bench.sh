@@ -7,8 +7,16 @@
 #   bench-results/qemu-run.txt        the firmware's full output (OVERHEAD, BENCH, DETAIL lines)
 #   bench-results/firmware-size.txt   .text size (arm-none-eabi-size) and the toolchain used
 #   bench-results/vsqrt-disasm.txt    disassembly proving f32 sqrt executes vsqrt.f32
-# Fails if a run fails, the two runs differ, no BENCH line is printed, or vsqrt.f32 is absent.
-# Needs: rustup, qemu-system-arm, binutils-arm-none-eabi (arm-none-eabi-objdump/-size/-nm).
+#   bench-results/cycles.csv          stage,method,precision,insns,cycles_lo,cycles_mid,cycles_hi
+#                                     (Cortex-M4F cycle estimates per call, one row per qemu.csv
+#                                     row: tools/cycle_model.py on a third, traced run)
+#   bench-results/cycle-mix.csv       the executed mix per row (instructions, mid cycles by class)
+#   bench-results/cycle-model-check.csv  the model against the TRM's stated cycles (bin `model`)
+# Fails if a run fails, the runs differ, no BENCH line is printed, vsqrt.f32 is absent, or the
+# traced instruction counts differ from the TIM2 counts (tools/cycle_model.py checks).
+# Takes ≈3 min on 2 cores (the traced runs; ≈1.5 s without them).
+# Needs: rustup, qemu-system-arm, binutils-arm-none-eabi (arm-none-eabi-objdump/-size/-nm),
+# python3.
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 out="$root/bench-results"
@@ -42,6 +50,27 @@ if [[ "$first" != "$second" ]]; then
 fi
 echo "$first"
 
+# Cycles: the same two binaries once more under QEMU's exec log (tools/cycle_model.py, which
+# also checks every traced count against TIM2), then the model's validation binary. The QEMU
+# command is the cargo runner of .cargo/config.toml without its `timeout 120` and `-kernel`.
+runner="$(sed -n 's/^runner = "\(.*\)"$/\1/p' .cargo/config.toml)"
+qemu="${runner#timeout * }"
+qemu=(timeout 1800 ${qemu% -kernel})
+tmp="$(mktemp -d)"
+trap 'rm -rf "$tmp"' EXIT
+dir="target/thumbv7em-none-eabihf/release"
+for bin in contensou-firmware scenes; do
+    python3 "$root/tools/cycle_model.py" --elf "$dir/$bin" --csv "$tmp/cycles.csv" \
+        --mix "$tmp/mix.csv" $([[ $bin == scenes ]] || echo --mix-header) \
+        --stdout "$tmp/traced-$bin.txt" -- "${qemu[@]}"
+done
+if [[ "$first" != "$(cat "$tmp"/traced-contensou-firmware.txt "$tmp"/traced-scenes.txt)" ]]; then
+    echo "qemu-bench: the traced run's counts differ from the plain run's" >&2
+    exit 1
+fi
+python3 "$root/tools/cycle_model.py" --elf "$dir/model" --csv /dev/null \
+    --check "$tmp/check.csv" -- "${qemu[@]}"
+
 bench="$(grep '^BENCH ' <<<"$first" || true)"
 [[ -n "$bench" ]] || { echo "qemu-bench: no BENCH line" >&2; exit 1; }
 printf '%s\n' "$first" >"$out/qemu-run.txt"
@@ -51,6 +80,12 @@ printf '%s\n' "$first" >"$out/qemu-run.txt"
         if (NF != 5 || $5 !~ /^insns=[0-9]+$/) { print "bad line: " $0 > "/dev/stderr"; exit 1 }
         sub(/^insns=/, "", $5); print $2 "," $3 "," $4 "," $5 }' <<<"$bench"
 } >"$out/qemu.csv"
+{
+    echo "stage,method,precision,insns,cycles_lo,cycles_mid,cycles_hi"
+    cat "$tmp/cycles.csv"
+} >"$out/cycles.csv"
+cp "$tmp/mix.csv" "$out/cycle-mix.csv"
+cp "$tmp/check.csv" "$out/cycle-model-check.csv"
 
 text="$(arm-none-eabi-size -A "$elf" | awk '$1 == ".text" { print $2 }')"
 {
@@ -101,4 +136,4 @@ grep -q '<contensou::hw_sqrt::imp::sqrtf>' <<<"$agm32" ||
 ((fail == 0)) || exit 1
 echo "vsqrt check: ok"
 
-echo "wrote bench-results/{qemu.csv,qemu-run.txt,firmware-size.txt,vsqrt-disasm.txt} (.text $text bytes)"
+echo "wrote bench-results/{qemu.csv,cycles.csv,cycle-mix.csv,cycle-model-check.csv,qemu-run.txt,firmware-size.txt,vsqrt-disasm.txt} (.text $text bytes)"
