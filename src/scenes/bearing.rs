@@ -209,7 +209,7 @@ impl<T: Real, C: RaceLaw<T>> Raceway<T, C> {
         let vp = v + w.cross(arm) - (vr + ring_w.cross(rel + arm));
         let w_rel = w - ring_w;
         let spin = w_rel.dot(z);
-        let slip = Slip::new(vp.dot(x), vp.dot(y), spin).unwrap_or_default();
+        let slip = Slip::or_rest(vp.dot(x), vp.dot(y), spin);
         let (n, fx, fy, tz, e2) = self.contact.wrench_at(h, -vp.dot(z), slip);
         let force = x * fx + y * fy + z * n;
         RaceContact {
