@@ -289,6 +289,7 @@ probes! {
     "scene,tippe_top_step,f32" => tippe_top(1);
     "scene,tippe_top_step_two_contacts,f32" => tippe_top(1);
     "scene,tippe_top_10ms,f32" => tippe_top(1_000);
+    "scene,tippe_top_8s,f32" => tippe_top(85_107);
     "scene,sphere-plane-spin-coarse,f32" => scene::<Scene<Circular, Fixed, Spin, Coarse, f32>>();
     "scene,sphere-plane-spin-coarse,f64" => scene::<Scene<Circular, Fixed, Spin, Coarse, f64>>();
     "scene,sphere-plane-spin-exact,f32" => scene::<Scene<Circular, Fixed, Spin, ExactGrade, f32>>();
