@@ -14,7 +14,8 @@
 #   bench-results/cycle-model-check.csv  the model against the TRM's stated cycles (bin `model`)
 # Fails if a run fails, the runs differ, no BENCH line is printed, vsqrt.f32 is absent, or the
 # traced instruction counts differ from the TIM2 counts (tools/cycle_model.py checks).
-# Takes ≈3 min on 2 cores (the traced runs; ≈1.5 s without them).
+# Takes ≈2 min of CPU (the traced runs; 8 min wall measured on a loaded shared 2-core
+# machine; ≈5 s without them).
 # Needs: rustup, qemu-system-arm, binutils-arm-none-eabi (arm-none-eabi-objdump/-size/-nm),
 # python3.
 set -euo pipefail
