@@ -19,7 +19,7 @@
 //! from `bench-results/cycles.csv`): the `core vsqrt` row is 13 instructions, 34 cycles (the
 //! shim: 11 and 34; `libm::sqrtf` 60 and 77), the root itself 3 instructions (2 `vmov`,
 //! `vsqrt.f32`: 1 + 14 + 1 cycles). Inlined in real code it saves more: `hertz per_step` 79 → 66
-//! cycles, the tippe-top RK4 step (with its other changes) 4,880 → 4,562.
+//! cycles, the tippe-top RK4 step (with its other changes) 4,880 → 4,524.
 //! `bench-results/vsqrt-disasm.txt` shows the disassembly; the script fails without `vsqrt.f32`.
 
 #[cfg(all(target_arch = "arm", target_abi = "eabihf"))]
