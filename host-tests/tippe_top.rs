@@ -2,7 +2,7 @@
 //! simplified Contensou law and not with a steep Coulomb law, Jellett's quantity is kept by
 //! Coulomb friction on the big sphere, and the f32 RK4 step stays finite.
 
-use contensou::friction::{Coulomb, Friction, FrictionLaw, Simplified};
+use contensou::friction::{Constants, Coulomb, Friction, FrictionLaw, Simplified};
 use contensou::scenes::integrate::{Tolerance, dopri45, rk4};
 use contensou::scenes::tippe_top::{N, Params, Probe, TippeTop};
 
@@ -123,4 +123,46 @@ fn f32_rk4_resolves_the_contact_and_stays_finite() {
     // N = 2.5·mg = 0.147 N (energy balance mg·h = (2/5)k h^{5/2}); damping takes a little off.
     let mg = 6e-3 * 9.81;
     assert!(n_max > 2.3 * mg && n_max < 2.5 * mg * 1.005, "{n_max}");
+}
+
+/// The MCU configuration (firmware/src/bin/tippe.rs): f32 RK4 at 94 µs, just under the
+/// stable-step bound, touches the small sphere down within 5 ms of the f64 10 µs run (1.8475 s,
+/// `cargo run --release --features scenes --example tippe_top_step`); `penetrations` agrees
+/// with the contact evaluation.
+#[test]
+fn f32_rk4_at_94us_touches_down_within_5ms_of_f64() {
+    use contensou::friction::Explicit;
+    let p = Params::<f32>::paper();
+    let friction = Friction::<f32, Simplified>::with_law(0.3, 1e-4).unwrap();
+    let h = 94e-6f32;
+    assert!(
+        h <= friction.stable_step(
+            &Constants::circle(),
+            p.mass,
+            p.mass * p.gravity,
+            Explicit::Rk4
+        )
+    );
+    let top = TippeTop::new(&p, friction).unwrap();
+    let mut y = top.initial_state(0.1, 180.0);
+    let mut touch = None;
+    for i in 0..30_000 {
+        y = contensou::scenes::integrate::rk4_step(&top, 0.0, &y, h);
+        let [hb, hs] = top.penetrations(&y);
+        let [big, small] = top.contacts(&y);
+        assert!(
+            (hs - small.h).abs() <= 1e-8 && (hb - big.h).abs() <= 1e-8,
+            "{hb} {} {hs} {}",
+            big.h,
+            small.h
+        );
+        if hs > 0.0 {
+            touch = Some((i + 1) as f64 * f64::from(h));
+            break;
+        }
+    }
+    assert!(
+        touch.is_some_and(|t| (t - 1.8475).abs() <= 5e-3),
+        "{touch:?}"
+    );
 }

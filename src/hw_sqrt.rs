@@ -2,30 +2,48 @@
 //!
 //! This is the crate's only `unsafe`-adjacent code. Why it exists: on `thumbv7em-none-eabihf`
 //! `libm::sqrtf` is a software routine (≈50 executed instructions), `f32::sqrt` is not available
-//! in `core` on stable Rust, and stable `asm!` rejects FPU register operands on that target. A
-//! two-instruction naked function sidesteps all three: under the hard-float ABI the argument
-//! and the result travel in `s0`, so the body is `vsqrt.f32 s0, s0; bx lr`.
+//! in `core` on stable Rust, and stable `asm!` rejects FPU register operands on that target
+//! (`sreg` needs the unstable `vfp2` target feature). It does accept an FPU register as a
+//! clobber, so the value travels through a core register:
+//! `vmov s0, r` / `vsqrt.f32 s0, s0` / `vmov r, s0`, declaring only `s0` clobbered.
 //!
-//! Soundness: the function reads only `s0` and writes only `s0` (caller-saved under AAPCS-VFP),
-//! touches no memory and no stack, and returns with `bx lr`; it is a plain safe
-//! `extern "C" fn(f32) -> f32`. Correctly rounded per IEEE 754, like `libm::sqrtf`.
+//! The block is `pure, nomem, nostack`: it inlines (no `bl`/`bx`), clobbers one FPU register
+//! instead of the s0–s15 a call clobbers (so callers keep their values in registers instead of
+//! spilling d8–d15 with VPUSH/VPOP), and a root whose result is unused is removed. Correctly
+//! rounded per IEEE 754, like `libm::sqrtf`; the same instruction as the out-of-line shim it
+//! replaces, so results are bit-identical.
 //!
 //! On every other target this is `libm::sqrtf`.
 //!
-//! Cost on the Cortex-M4F (QEMU, `tools/qemu-bench.sh`, rows `core vsqrt` / `core libm`):
-//! 11 executed instructions per call vs 56 for `libm::sqrtf`, both including the benchmark's
-//! 8-instruction call floor (row `core call`); the shim itself is `bl` + `vsqrt.f32` + `bx lr`.
-//! Being a call, it clobbers the caller-saved FPU registers s0–s15 (the compiler keeps live
-//! values in s16–s31).
+//! Cost on the Cortex-M4F (QEMU, `tools/qemu-bench.sh`, rows `core vsqrt` / `core libm`; cycles
+//! from `bench-results/cycles.csv`): the `core vsqrt` row is 13 instructions, 34 cycles (the
+//! shim: 11 and 34; `libm::sqrtf` 60 and 77), the root itself 3 instructions (2 `vmov`,
+//! `vsqrt.f32`: 1 + 14 + 1 cycles). Inlined in real code it saves more: `hertz per_step` 79 → 66
+//! cycles, the tippe-top RK4 step (with its other changes) 4,880 → 4,524.
 //! `bench-results/vsqrt-disasm.txt` shows the disassembly; the script fails without `vsqrt.f32`.
 
 #[cfg(all(target_arch = "arm", target_abi = "eabihf"))]
 #[allow(unsafe_code)]
 mod imp {
-    /// `vsqrt.f32 s0, s0`.
-    #[unsafe(naked)]
-    pub extern "C" fn sqrtf(x: f32) -> f32 {
-        core::arch::naked_asm!(".fpu fpv4-sp-d16", "vsqrt.f32 s0, s0", "bx lr")
+    /// `vsqrt.f32` through s0 (see the module docs).
+    #[inline(always)]
+    pub fn sqrtf(x: f32) -> f32 {
+        let y: u32;
+        // SAFETY: register-only arithmetic: reads the input register, writes the output
+        // register and s0 (declared clobbered); no memory, no stack, no condition flags
+        // (vsqrt.f32 sets only FPSCR's cumulative exception bits).
+        unsafe {
+            core::arch::asm!(
+                "vmov s0, {x}",
+                "vsqrt.f32 s0, s0",
+                "vmov {y}, s0",
+                x = in(reg) x.to_bits(),
+                y = lateout(reg) y,
+                out("s0") _,
+                options(pure, nomem, nostack, preserves_flags),
+            );
+        }
+        f32::from_bits(y)
     }
 }
 

@@ -339,8 +339,8 @@ pub trait NormalLaw<T: Real> {
 ///
 /// Error: that of the shape it is built from (exact with [`crate::shape::Newton`]; measured
 /// figures per method in `bench-results/hertz.md`). Cost per [`NormalLaw::patch`]: one
-/// `sqrt`, four multiplies, one compare; M4F 36 instructions in f32 (incl. the rig's 8-instruction
-/// call floor), 685 in f64 (soft float); host ≈ 9–15 ns.
+/// `sqrt`, four multiplies, one compare; M4F 33 instructions, ≈66 cycles in f32 (incl. the rig's
+/// 8-instruction call floor), 685 in f64 (soft float); host ≈ 9–15 ns.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Hertz<T> {
     a_coef: T,
@@ -456,8 +456,8 @@ impl<T: Real> Hertz<T> {
 /// biased high by that factor. Measured max relative error of a, b, N, p0 (`f32`, Newton
 /// constants, tools/data/hertz_ref.csv; and N over h ∈ [1e-12, 1] m; asserted by
 /// host-tests/micromath.rs): **6.1e-2** (median 1.5e-2; [`Hertz`] 5.0e-7). Cost per
-/// [`NormalLaw::patch`]: M4F **32** instructions (`f32`; [`Hertz`] 36: the bit trick is
-/// inlined, `vsqrt.f32` is a call), host ≈ 9–12 ns.
+/// [`NormalLaw::patch`]: M4F **32** instructions, ≈50 cycles (`f32`; [`Hertz`] 33 and ≈66:
+/// `vsqrt.f32` takes 14 cycles), host ≈ 9–12 ns.
 #[cfg(feature = "micromath")]
 #[cfg_attr(docsrs, doc(cfg(feature = "micromath")))]
 #[derive(Clone, Copy, Debug, PartialEq)]

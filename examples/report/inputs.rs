@@ -25,6 +25,44 @@ pub fn keyed(rel: &str) -> Option<HashMap<(String, String, String), f64>> {
     Some(out)
 }
 
+/// The MCU clock the "µs at 168 MHz" columns assume (an STM32F405/407 at its maximum).
+pub const MCU_HZ: f64 = 168e6;
+
+/// bench-results/cycles.csv (`stage,method,precision,insns,cycles_lo,cycles_mid,cycles_hi`,
+/// written by tools/qemu-bench.sh) as key → [lo, mid, hi] cycles per call (None: absent).
+pub fn cycles() -> Option<HashMap<(String, String, String), [f64; 3]>> {
+    let text = std::fs::read_to_string(repo("bench-results/cycles.csv")).ok()?;
+    let mut out = HashMap::new();
+    for line in text.lines().skip(1) {
+        let f: Vec<&str> = line.split(',').map(str::trim).collect();
+        if let [s, m, p, _, lo, mid, hi] = f[..]
+            && let (Ok(lo), Ok(mid), Ok(hi)) =
+                (lo.parse::<f64>(), mid.parse::<f64>(), hi.parse::<f64>())
+        {
+            out.insert((s.to_string(), m.to_string(), p.to_string()), [lo, mid, hi]);
+        }
+    }
+    Some(out)
+}
+
+/// Cycles → "mid (lo–hi)" microseconds at [`MCU_HZ`], three significant digits.
+pub fn micros(c: [f64; 3]) -> String {
+    let us = |v: f64| {
+        let v = v / MCU_HZ * 1e6;
+        let d = if v >= 100.0 {
+            0
+        } else if v >= 10.0 {
+            1
+        } else if v >= 1.0 {
+            2
+        } else {
+            3
+        };
+        format!("{v:.d$}")
+    };
+    format!("{} ({}–{})", us(c[1]), us(c[0]), us(c[2]))
+}
+
 /// A `# key: value` header, a CSV header and rows, as written by the stability example.
 pub struct Table {
     pub meta: HashMap<String, String>,
@@ -127,9 +165,18 @@ pub fn stability(dir: &Path) -> Vec<(String, String)> {
     out
 }
 
-/// bench-results/scenes.csv as markdown: its `#` lines as text, then the table.
+/// bench-results/scenes.csv as markdown: its `#` lines as text, then the table, with a
+/// "µs at 168 MHz" column after `insns` joined from bench-results/cycles.csv (stage `scene`).
 pub fn scenes() -> Option<String> {
-    let t = read_table(&repo("bench-results/scenes.csv"))?;
+    let mut t = read_table(&repo("bench-results/scenes.csv"))?;
+    if let (Some(cyc), Some(j)) = (cycles(), t.header.iter().position(|h| h == "insns")) {
+        t.header.insert(j + 1, "µs at 168 MHz".into());
+        for r in &mut t.rows {
+            let key = ("scene".to_string(), r[0].clone(), r[1].clone());
+            let cell = cyc.get(&key).map_or("—".into(), |&c| micros(c));
+            r.insert(j + 1, cell);
+        }
+    }
     let mut md = String::new();
     if !t.comments.is_empty() {
         md.push_str(&format!("{}\n\n", t.comments.join(" ")));

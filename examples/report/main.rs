@@ -67,6 +67,8 @@ fn measure(m: Method, refs: &measure::Refs) -> Measured {
 }
 
 type Keyed = Option<HashMap<(String, String, String), f64>>;
+/// key → [lo, mid, hi] Cortex-M4F cycles per call (bench-results/cycles.csv).
+type Cycles = Option<HashMap<(String, String, String), [f64; 3]>>;
 
 fn lookup(t: &Keyed, m: &Method) -> Option<f64> {
     t.as_ref()?
@@ -161,6 +163,7 @@ fn section(
     rows: &[&Measured],
     host: &Keyed,
     qemu: &Keyed,
+    cycles: &Cycles,
     flash: &Keyed,
 ) {
     let md = &mut out.md;
@@ -170,19 +173,24 @@ fn section(
     for c in s.components {
         let _ = write!(head, " max {c} | median {c} |");
     }
-    head.push_str(" host ns | QEMU insns | flash bytes |");
+    head.push_str(" host ns | QEMU insns | µs at 168 MHz | flash bytes |");
     let _ = writeln!(md, "{head}");
-    let _ = writeln!(md, "|{}", "---|".repeat(6 + 2 * s.components.len()));
+    let _ = writeln!(md, "|{}", "---|".repeat(7 + 2 * s.components.len()));
     for r in rows {
         let mut line = format!("| {} | {} | {} |", r.m.method, r.m.precision, r.rows);
         for (a, b) in r.max.iter().zip(&r.median) {
             let _ = write!(line, " {} | {} |", e(*a), e(*b));
         }
+        let us = cycles
+            .as_ref()
+            .and_then(|t| t.get(&(r.m.stage.into(), r.m.method.into(), r.m.precision.into())))
+            .map_or("—".into(), |&c| inputs::micros(c));
         let _ = write!(
             line,
-            " {} | {} | {} |",
+            " {} | {} | {} | {} |",
             opt(lookup(host, &r.m), 1),
             opt(lookup(qemu, &r.m), 0),
+            us,
             opt(lookup(flash, &r.m), 0)
         );
         let _ = writeln!(md, "{line}");
@@ -251,6 +259,11 @@ How to read the cost columns:
   M4F but counts 1 here). Each figure includes the call itself: the floor is `core,call,f32` =
   8 instructions for an empty call. f64 runs in software on the M4F (no double FPU), hence its
   10–100× counts.
+- **µs at 168 MHz**: Cortex-M4F cycles per call at 168 MHz, estimated from the executed
+  instruction mix of the same QEMU run (`bench-results/cycles.csv`, `tools/cycle_model.py`:
+  the TRM's cycle table, VDIV/VSQRT 14, VMLA 3, loads 2 or 1 pipelined, taken branches 1 + P);
+  the figure is P = 2, the range P = 1…3. Zero flash wait states assumed (the STM32F4's ART
+  accelerator hides most of its 5 at 168 MHz in loops, not on cold code).
 - **flash bytes**: from `bench-results/flash.csv` when present (`—` otherwise).
 - Error charts: one point per method × precision with a QEMU row; log–log; the red line joins
   the Pareto front (no other point is both cheaper and more accurate). An error of exactly 0 is
@@ -309,6 +322,7 @@ fn main() {
     let host = inputs::keyed("bench-results/host-ns.csv");
     let qemu = inputs::keyed("bench-results/qemu.csv");
     let flash = inputs::keyed("bench-results/flash.csv");
+    let cycles = inputs::cycles();
     let mut missing = Vec::new();
     for (t, f) in [
         (&host, "host-ns.csv"),
@@ -318,6 +332,9 @@ fn main() {
         if t.is_none() {
             missing.push(format!("`bench-results/{f}`"));
         }
+    }
+    if cycles.is_none() {
+        missing.push("`bench-results/cycles.csv`".into());
     }
     if !missing.is_empty() {
         let _ = writeln!(
@@ -331,7 +348,7 @@ fn main() {
     out.md.push_str("\n## Error against cost, per stage\n\n");
     for s in &SECTIONS {
         let rows: Vec<&Measured> = measured.iter().filter(|r| r.m.section.id == s.id).collect();
-        section(&mut out, s, &rows, &host, &qemu, &flash);
+        section(&mut out, s, &rows, &host, &qemu, &cycles, &flash);
     }
 
     out.md.push_str(FRICTION_MAPS);

@@ -41,12 +41,13 @@
 //!
 //! # Cost
 //!
-//! One square root, four divisions (a fifth only while the spin is regularized), no
-//! transcendental functions. Cortex-M4F, `f32`, patch constants given: **66 instructions** per
-//! call including the 8-instruction call floor of the QEMU rig (stage `friction`); `f64`
-//! (soft float) ≈2,300. Host (x86-64): ≈6–12 ns. The dimensional call
-//! [`Friction::tangential`](super::Friction::tangential) (normalisation + core + scaling):
-//! 122 instructions (`f32`).
+//! One square root, three divisions in `f32` (four in `f64`, where the soft-float division is
+//! cheaper than the cross-multiplied torque test; a fifth only while the spin is regularized),
+//! no transcendental functions. Cortex-M4F, `f32`, patch constants given: **69 instructions**,
+//! ≈174 cycles per call including the 8-instruction call floor of the QEMU rig (stage
+//! `friction`, `bench-results/cycles.csv`); `f64` (soft float) ≈2,300. Host (x86-64): ≈6–12 ns.
+//! The dimensional call [`Friction::tangential`](super::Friction::tangential) (normalisation +
+//! core + scaling): 124 instructions (`f32`).
 
 use super::{Constants, FrictionLaw, SlipState, Traction, larger as max};
 use crate::Real;
@@ -150,7 +151,7 @@ impl FrictionLaw for Simplified {
 /// the ellipse and ∞; asserted by host-tests/micromath.rs): against the exact integrals
 /// **0.329 fN / 0.335 fNa** max, the same as [`Simplified`] (whose model error dominates), but
 /// median 3.1e-2 fN (vs 8.6e-4); against [`Simplified`] itself 5.7e-2 fN / 2.6e-2 fNa. Cost:
-/// M4F **70** instructions (`f32`; [`Simplified`] 66), host ≈ 11 ns. Not worth using.
+/// M4F **73** instructions (`f32`; [`Simplified`] 69), host ≈ 11 ns. Not worth using.
 #[cfg(feature = "micromath")]
 #[cfg_attr(docsrs, doc(cfg(feature = "micromath")))]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -191,12 +192,31 @@ fn traction<B: Backend, T: Real>(k: &Constants<T>, s: &SlipState<T>) -> (Tractio
     let vd = max(v, d);
     let (wx, wy) = (aw * k.knee_x(), aw * k.knee_y());
     // Torque: T = −w·min(C/|w|, q/(5v³)) with q = x² + m₁y² = 5v²|T₁|: the plateau
-    // −C·sgn ω, or the hyperbola −w·q/(5v³) = T₁/u (sign of ω included). At v = 0 the
-    // quotient is 0/0 or +∞ and fails `<`: plateau. At ω = 0, C/|w| = +∞: hyperbola (= 0).
-    let plateau = k.spin_torque() / aw;
-    let hyperbola = (xx + k.m1() * y * y) / (T::from_f64(5.0) * v2 * v);
-    let hyperbolic = hyperbola < plateau;
-    let tz = -w * if hyperbolic { hyperbola } else { plateau };
+    // −C·sgn ω, or the hyperbola −w·q/(5v³) = T₁/u (sign of ω included).
+    let q = xx + k.m1() * y * y;
+    let five_v3 = T::from_f64(5.0) * v2 * v;
+    let (hyperbolic, t) = if T::MANTISSA_DIGITS <= 24 {
+        // f32 (the M4F's FPU: a division is 14 cycles, a multiply 1): compared
+        // cross-multiplied, q·|w| < C·5v³ (|w|, v ≤ √2: no overflow), and only the chosen
+        // quotient divided. At v = 0 both sides are 0 and fail `<`: plateau. At ω = 0 (v > 0):
+        // hyperbola (= 0).
+        let hyperbolic = q * aw < k.spin_torque() * five_v3;
+        let (num, den) = if hyperbolic {
+            (q, five_v3)
+        } else {
+            (k.spin_torque(), aw)
+        };
+        (hyperbolic, num / den)
+    } else {
+        // f64 (soft float on the M4F, where the two extra multiplies cost more than the
+        // division saved): both quotients. At v = 0 the hyperbola is 0/0 or +∞ and fails
+        // `<`: plateau. At ω = 0, C/|w| = +∞: hyperbola (= 0).
+        let plateau = k.spin_torque() / aw;
+        let hyperbola = q / five_v3;
+        let hyperbolic = hyperbola < plateau;
+        (hyperbolic, if hyperbolic { hyperbola } else { plateau })
+    };
+    let tz = -w * t;
     // Spin regularization: × min(1, |w|·u_T/d); d > 0. Rare: divide only when it applies
     // (this also covers rest, where the line above is 0·∞).
     let spin = aw * k.knee_z_max();

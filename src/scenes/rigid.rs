@@ -268,6 +268,19 @@ pub fn euler_rate<T: Real>(inertia: Vec3<T>, omega: Vec3<T>, torque: Vec3<T>) ->
     Vec3::new(r.x / inertia.x, r.y / inertia.y, r.z / inertia.z)
 }
 
+/// [`euler_rate`] with the inverse moments 1/I precomputed: three multiplies instead of three
+/// divisions per call (within an ulp of it per component; ≈40 cycles less on the M4F).
+#[inline(always)]
+pub fn euler_rate_inv<T: Real>(
+    inertia: Vec3<T>,
+    inv_inertia: Vec3<T>,
+    omega: Vec3<T>,
+    torque: Vec3<T>,
+) -> Vec3<T> {
+    let l = inertia.mul_elem(omega);
+    (torque - omega.cross(l)).mul_elem(inv_inertia)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

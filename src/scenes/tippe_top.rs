@@ -32,7 +32,7 @@
 //!   contact on the small sphere change it.
 
 use super::integrate::Ode;
-use super::rigid::{Quat, Vec3, euler_rate};
+use super::rigid::{Quat, Vec3, euler_rate_inv};
 use crate::contact::Contact;
 use crate::frame::{ContactFrame, WorldAxes, point_velocity};
 use crate::friction::{Friction, FrictionLaw};
@@ -169,6 +169,9 @@ pub struct TippeTop<T: Real, L: FrictionLaw> {
     mass: T,
     gravity: T,
     inertia: Vec3<T>,
+    /// 1/m and 1/I, so the right-hand side multiplies instead of dividing.
+    inv_mass: T,
+    inv_inertia: Vec3<T>,
     big: Sphere<T, L>,
     small: Sphere<T, L>,
 }
@@ -198,10 +201,13 @@ impl<T: Real, L: FrictionLaw> TippeTop<T, L> {
     /// Errors: those of [`Curvatures::sphere_plane`], [`Modulus::new`] and
     /// [`HuntCrossley::new`] for non-positive radii, modulus or negative damping.
     pub fn new(p: &Params<T>, friction: Friction<T, L>) -> Result<Self, Error> {
+        let inertia = Vec3::new(p.inertia_eq, p.inertia_eq, p.inertia_polar);
         Ok(TippeTop {
             mass: p.mass,
             gravity: p.gravity,
-            inertia: Vec3::new(p.inertia_eq, p.inertia_eq, p.inertia_polar),
+            inertia,
+            inv_mass: T::ONE / p.mass,
+            inv_inertia: Vec3::new(T::ONE / inertia.x, T::ONE / inertia.y, T::ONE / inertia.z),
             small: Sphere::new(
                 p.small_offset,
                 p.small_radius,
@@ -242,6 +248,21 @@ impl<T: Real, L: FrictionLaw> TippeTop<T, L> {
         [self.big.eval(r, v, q, w), self.small.eval(r, v, q, w)]
     }
 
+    /// The penetrations h = radius − centre height of both spheres at state `y` (big sphere
+    /// first; > 0 in contact): the geometry alone, no force — a cheap touch-down test for a
+    /// firmware loop (8 multiply-adds). Takes the attitude q as stored, without normalising
+    /// it: [`crate::scenes::integrate::rk4_step`] projects it to unit length after every step.
+    #[inline]
+    pub fn penetrations(&self, y: &State<T>) -> [T; 2] {
+        let (r, _, q, _) = split(y);
+        // z component of q·e₃·q*: w² − x² − y² + z².
+        let e3z = q.w * q.w - q.x * q.x - q.y * q.y + q.z * q.z;
+        [
+            self.big.radius - (r.z + self.big.offset * e3z),
+            self.small.radius - (r.z + self.small.offset * e3z),
+        ]
+    }
+
     /// θ, both normal forces, energy, Jellett's quantity and the spin at state `y`.
     pub fn probe(&self, y: &State<T>) -> Probe<T> {
         let [big, small] = self.contacts(y);
@@ -273,9 +294,9 @@ impl<T: Real, L: FrictionLaw> Ode<T, N> for TippeTop<T, L> {
         let [big, small] = self.contacts_at(r, v, qn, omega);
         let force = big.force + small.force - Vec3::new(T::ZERO, T::ZERO, self.mass * self.gravity);
         let torque = qn.rotate_inv(big.torque + small.torque);
-        let a = force * (T::ONE / self.mass);
+        let a = force * self.inv_mass;
         let dq = q.derivative(omega);
-        let dw = euler_rate(self.inertia, omega, torque);
+        let dw = euler_rate_inv(self.inertia, self.inv_inertia, omega, torque);
         [
             v.x, v.y, v.z, a.x, a.y, a.z, dq.w, dq.x, dq.y, dq.z, dw.x, dw.y, dw.z,
         ]

@@ -238,6 +238,36 @@ fn scene<S: Select>() {
     bb(c.step(&curv, t(1e-6), S::Real::ZERO, slip()));
 }
 
+/// `contensou::frame` per step (stage `frame`): the frame from normal, tangent and major axis
+/// (cos, sin), then the slip and ḣ from world velocities, or the world load of a wrench.
+fn frame_slip<T: Real>() {
+    use contensou::frame::{ContactFrame, Frame, MajorAxis};
+    let frame = Frame::new(
+        bb([t::<T>(0.0), t(0.0), t(1.0)]),
+        bb([t(1.0), t(0.0), t(0.0)]),
+        MajorAxis::from_cos_sin(bb(t(0.8)), bb(t(0.6))),
+    );
+    let (v, w) = bb(([t::<T>(0.01), t(0.02), t(-0.001)], [t::<T>(0.0), t(1.0), t(30.0)]));
+    let _ = bb((frame.slip(v, w), frame.approach_rate(v)));
+}
+
+fn frame_load<T: Real>() {
+    use contensou::frame::{ContactFrame, Frame, MajorAxis};
+    let frame = Frame::new(
+        bb([t::<T>(0.0), t(0.0), t(1.0)]),
+        bb([t(1.0), t(0.0), t(0.0)]),
+        MajorAxis::from_cos_sin(bb(t(0.8)), bb(t(0.6))),
+    );
+    let c = ok(Contact::circular(
+        &ok(Curvatures::sphere_plane(t::<T>(0.01))),
+        estar::<T>(),
+        Undamped,
+        friction::<T, Best>(),
+    ));
+    let w = c.wrench(bb(t(1e-6)), t(0.0), slip());
+    bb(frame.on_b(&w, bb([t(0.0), t(0.0), t(-0.01)])));
+}
+
 /// `probes! { "stage,method,precision" => body; … }`: every key, and the body run for `KEY`.
 macro_rules! probes {
     ($($key:literal => $body:expr;)*) => {
@@ -262,6 +292,10 @@ macro_rules! probes {
 
 probes! {
     "core,call,f32" => bb(t::<f32>(1.0));
+    "frame,slip,f32" => frame_slip::<f32>();
+    "frame,slip,f64" => frame_slip::<f64>();
+    "frame,load,f32" => frame_load::<f32>();
+    "frame,load,f64" => frame_load::<f64>();
     "core,vsqrt,f32" => bb(t::<f32>(2.0).sqrt());
     "core,libm,f32" => bb(libm::sqrtf(t(2.0)));
     "elliptic,agm,f32" => elliptic::<f32, Agm>();
@@ -324,6 +358,7 @@ probes! {
     "scene,tippe_top_step_two_contacts,f32" => tippe_top(1);
     "scene,tippe_top_10ms,f32" => tippe_top(1_000);
     "scene,rattleback_step,f32" => rattleback_step();
+    "scene,tippe_top_8s,f32" => tippe_top(85_107);
     "scene,sphere-plane-spin-coarse,f32" => scene::<Scene<Circular, Fixed, Spin, Coarse, f32>>();
     "scene,sphere-plane-spin-coarse,f64" => scene::<Scene<Circular, Fixed, Spin, Coarse, f64>>();
     "scene,sphere-plane-spin-exact,f32" => scene::<Scene<Circular, Fixed, Spin, ExactGrade, f32>>();

@@ -7,8 +7,8 @@ use std::process::ExitCode;
 use contensou::Real;
 use contensou::elliptic::Parameter;
 use contensou::friction::{
-    Best, BestSeries, Constants, Coulomb, Ellipsoid, Exact, Friction, FrictionLaw, Pade, Simplified, SlipState,
-    Traction,
+    Best, BestSeries, Constants, Coulomb, Ellipsoid, Exact, Friction, FrictionLaw, Pade,
+    Simplified, SlipState, Traction,
 };
 
 use crate::csv::{message, run_csv, shortest};
