@@ -407,7 +407,7 @@ def parse_run(stdout):
         if not f:
             continue
         if f[0] == "OVERHEAD":
-            overhead = int(f[1].split("=")[1])
+            overhead = int(f[-1].split("=")[1])  # "OVERHEAD [name] insns=N"
         elif f[0] == "BENCH":
             rows.append({"key": (f[1], f[2], f[3]), "insns": int(f[4].split("=")[1])})
         elif f[0] == "DETAIL":

@@ -414,6 +414,30 @@ fn main() {
             .push_str("No scene table yet (`bench-results/scenes.csv`).\n"),
     }
 
+    out.md.push_str(
+        "\n## From Python: throughput, and the library's contact inside MuJoCo\n\n\
+         The Python package's figures (`python/bench.py` → `bench-results/python.md`) and the \
+         MuJoCo comparison (`python/examples/mujoco_report.py` → `docs/mujoco.md`), included \
+         here as recorded (their headings one level down).\n\n",
+    );
+    for rel in ["bench-results/python.md", "docs/mujoco.md"] {
+        match std::fs::read_to_string(inputs::repo(rel)) {
+            Ok(text) => {
+                for line in text.lines() {
+                    if line.starts_with('#') {
+                        out.md.push('#');
+                    }
+                    out.md.push_str(line);
+                    out.md.push('\n');
+                }
+                out.md.push('\n');
+            }
+            Err(_) => {
+                let _ = writeln!(out.md, "No `{rel}` yet.\n");
+            }
+        }
+    }
+
     let path = out_dir.join("report.md");
     if let Err(err) = std::fs::write(&path, &out.md) {
         eprintln!("report: {}: {err}", path.display());

@@ -18,12 +18,19 @@
 //!   cos/sin: no trigonometry, no `f64`) then `VaryingContact::wrench` with `Best`; the mixed
 //!   set's slips, the relative angle stepping by 0.1 rad per input.
 //!
+//! - `dyn-fixed-best`, `dyn-varying-best` (f32): the `best` work through `contensou::dynamic`
+//!   (`DynContact::wrench`: the run-time law/form contract that `contact_eval wrench`, the C API
+//!   and the Python package share — Hunt–Crossley with c_d = 0, the step's finiteness checks,
+//!   the law and form dispatch). The Rust rows for the same work as the C image's
+//!   `c-fixed-best` / `c-varying-best` (`capi/examples/firmware/bench.c`).
+//!
 //! Inputs: the friction stage's mixed set (64 states, u log-uniform in [0.01, 100], ψ uniform),
 //! h = 5 µm (a ≈ 1.1 mm), ω = 100 rad/s, v = u·a·ω, ḣ = 0.
 
 use crate::harness::Runner;
 use contensou::Real;
 use contensou::contact::{Contact, VaryingContact, Wrench};
+use contensou::dynamic::{DynContact, Form, Invalid, Law, Output, Spec, Step};
 use contensou::friction::{Best, Friction, FrictionLaw, Simplified, Slip, best};
 use contensou::geometry::{Curvatures, Principal, Race};
 use contensou::normal::{Hertz, Modulus, Undamped};
@@ -148,6 +155,35 @@ fn best_worst(r: &Runner) {
     }
 }
 
+type DynInput<'a> = (&'a DynContact<f32>, Step<f32>);
+
+#[inline(never)]
+fn dynamic(x: DynInput<'_>) -> Result<Output<f32>, Invalid> {
+    x.0.wrench(&x.1)
+}
+
+/// `dyn-fixed-best`, `dyn-varying-best`: the `best` rows' work through `contensou::dynamic`.
+fn dynamic_best(r: &Runner) {
+    let (curv, _, _, h, slips) = wrench_scene::<f32, Best>();
+    let spec = Spec {
+        p: curv.p(),
+        q: curv.q(),
+        estar: 1.142857e11_f64 as f32,
+        cd: 0.0,
+        f: 0.07_f64 as f32,
+        delta: 0.0,
+    };
+    for (form, name) in [(Form::Fixed, "dyn-fixed-best"), (Form::Varying, "dyn-varying-best")] {
+        let contact = DynContact::new(&spec, Law::Best, form).expect("valid contract");
+        let inputs: [DynInput<'_>; N] = core::array::from_fn(|i| {
+            let s = slips[i];
+            let step = Step { h, hdot: 0.0, vx: s.vx(), vy: s.vy(), omega: s.omega() };
+            (&contact, step)
+        });
+        r.bench("wrench", name, "f32", &inputs, dynamic);
+    }
+}
+
 pub fn run(r: &Runner) {
     law::<f32, Simplified>(r, "");
     law::<f64, Simplified>(r, "");
@@ -155,4 +191,5 @@ pub fn run(r: &Runner) {
     law::<f64, Best>(r, "-best");
     best_worst(r);
     best_from_bodies(r);
+    dynamic_best(r);
 }

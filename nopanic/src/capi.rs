@@ -112,11 +112,11 @@ macro_rules! precision_probes {
     };
 }
 
-precision_probes!(single: f32, contensou_contact_f32, 130,
+precision_probes!(single: f32, contensou_contact_f32, CONTENSOU_CONTACT_F32_SIZE / 8,
     contensou_contact_new_f32, contensou_contact_set_curvatures_f32, contensou_contact_wrench_f32,
     contensou_curvatures_new_f32, contensou_curvatures_sphere_plane_f32,
     contensou_curvatures_sphere_sphere_f32, contensou_curvatures_ball_race_f32, contensou_modulus_of_f32);
-precision_probes!(double: f64, contensou_contact_f64, 259,
+precision_probes!(double: f64, contensou_contact_f64, CONTENSOU_CONTACT_F64_SIZE / 8,
     contensou_contact_new_f64, contensou_contact_set_curvatures_f64, contensou_contact_wrench_f64,
     contensou_curvatures_new_f64, contensou_curvatures_sphere_plane_f64,
     contensou_curvatures_sphere_sphere_f64, contensou_curvatures_ball_race_f64, contensou_modulus_of_f64);

@@ -247,7 +247,10 @@ fn frame_slip<T: Real>() {
         bb([t(1.0), t(0.0), t(0.0)]),
         MajorAxis::from_cos_sin(bb(t(0.8)), bb(t(0.6))),
     );
-    let (v, w) = bb(([t::<T>(0.01), t(0.02), t(-0.001)], [t::<T>(0.0), t(1.0), t(30.0)]));
+    let (v, w) = bb((
+        [t::<T>(0.01), t(0.02), t(-0.001)],
+        [t::<T>(0.0), t(1.0), t(30.0)],
+    ));
     let _ = bb((frame.slip(v, w), frame.approach_rate(v)));
 }
 
@@ -266,6 +269,29 @@ fn frame_load<T: Real>() {
     ));
     let w = c.wrench(bb(t(1e-6)), t(0.0), slip());
     bb(frame.on_b(&w, bb([t(0.0), t(0.0), t(-0.01)])));
+}
+
+/// The `best` wrench through `contensou::dynamic` (rows `wrench,dyn-*-best`): the contract's
+/// construction and one step.
+fn dynamic_best(form: contensou::dynamic::Form) {
+    use contensou::dynamic::{DynContact, Law, Spec, Step};
+    let spec = bb(Spec {
+        p: t::<f32>(38.0),
+        q: t(1500.0),
+        estar: t(1.1e11),
+        cd: t(0.0),
+        f: t(0.07),
+        delta: t(0.0),
+    });
+    if let Ok(c) = DynContact::new(&spec, Law::Best, form) {
+        let _ = bb(c.wrench(&bb(Step {
+            h: t(5e-6),
+            hdot: t(0.0),
+            vx: t(0.02),
+            vy: t(0.0),
+            omega: t(100.0),
+        })));
+    }
 }
 
 /// `probes! { "stage,method,precision" => body; … }`: every key, and the body run for `KEY`.
@@ -292,6 +318,8 @@ macro_rules! probes {
 
 probes! {
     "core,call,f32" => bb(t::<f32>(1.0));
+    "wrench,dyn-fixed-best,f32" => dynamic_best(contensou::dynamic::Form::Fixed);
+    "wrench,dyn-varying-best,f32" => dynamic_best(contensou::dynamic::Form::Varying);
     "frame,slip,f32" => frame_slip::<f32>();
     "frame,slip,f64" => frame_slip::<f64>();
     "frame,load,f32" => frame_load::<f32>();
