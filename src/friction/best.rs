@@ -260,21 +260,30 @@ impl Best {
     pub const ERROR: (f64, f64) = (2.0e-5, 3.0e-6);
 }
 
+/// The ramp stiffnesses shared by every form of `best` (the same quartic inside the ellipse):
+/// κ = [`ramp_stiffness`], κ_T = [`spin_stiffness`] (items of [`FrictionLaw`]).
+macro_rules! best_ramps {
+    () => {
+        /// κ = [`ramp_stiffness`](crate::friction::best::ramp_stiffness)`(k)`.
+        fn slip_ramp<T: $crate::Real>(k: &$crate::friction::Constants<T>) -> Option<T> {
+            Some($crate::friction::best::ramp_stiffness(k))
+        }
+
+        /// κ_T = [`spin_stiffness`](crate::friction::best::spin_stiffness)`(k)`.
+        fn spin_ramp<T: $crate::Real>(k: &$crate::friction::Constants<T>) -> Option<T> {
+            Some($crate::friction::best::spin_stiffness(k))
+        }
+    };
+}
+pub(crate) use best_ramps;
+
 impl FrictionLaw for Best {
     const NAME: &'static str = "best";
     type Branch = Branch;
     type Prepared<T: Real> = BestContact<T>;
     const RAMP_BELOW_DELTA: bool = true;
 
-    /// κ = [`ramp_stiffness`]`(k)`.
-    fn slip_ramp<T: Real>(k: &Constants<T>) -> Option<T> {
-        Some(ramp_stiffness(k))
-    }
-
-    /// κ_T = [`spin_stiffness`]`(k)`.
-    fn spin_ramp<T: Real>(k: &Constants<T>) -> Option<T> {
-        Some(spin_stiffness(k))
-    }
+    best_ramps!();
 
     /// The per-step form (e² may change every call): the seven outside coefficients
     /// interpolated in the flash table over (m₁^¼, z) (see the [module docs](self)).

@@ -112,15 +112,7 @@ impl FrictionLaw for BestSeries {
     type Branch = Branch;
     const RAMP_BELOW_DELTA: bool = true;
 
-    /// κ = [`ramp_stiffness`](super::ramp_stiffness)`(k)`.
-    fn slip_ramp<T: Real>(k: &Constants<T>) -> Option<T> {
-        Some(super::ramp_stiffness(k))
-    }
-
-    /// κ_T = [`spin_stiffness`](super::spin_stiffness)`(k)`.
-    fn spin_ramp<T: Real>(k: &Constants<T>) -> Option<T> {
-        Some(super::spin_stiffness(k))
-    }
+    super::best_ramps!();
     crate::friction::law::constants_are_prepared!();
 
     fn traction<T: Real>(k: &Constants<T>, s: &SlipState<T>) -> (Traction<T>, Branch) {
@@ -152,15 +144,7 @@ impl FrictionLaw for BestMicromath {
     type Branch = Branch;
     const RAMP_BELOW_DELTA: bool = true;
 
-    /// κ = [`ramp_stiffness`](super::ramp_stiffness)`(k)`.
-    fn slip_ramp<T: Real>(k: &Constants<T>) -> Option<T> {
-        Some(super::ramp_stiffness(k))
-    }
-
-    /// κ_T = [`spin_stiffness`](super::spin_stiffness)`(k)`.
-    fn spin_ramp<T: Real>(k: &Constants<T>) -> Option<T> {
-        Some(super::spin_stiffness(k))
-    }
+    super::best_ramps!();
     crate::friction::law::constants_are_prepared!();
 
     fn traction<T: Real>(k: &Constants<T>, s: &SlipState<T>) -> (Traction<T>, Branch) {
