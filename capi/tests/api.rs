@@ -17,11 +17,11 @@ fn text(p: *const core::ffi::c_char) -> &'static str {
 }
 
 fn storage32() -> Box<contensou_contact_f32> {
-    Box::new(contensou_contact_f32 { opaque: [0; 130] })
+    Box::new(contensou_contact_f32 { opaque: [0; CONTENSOU_CONTACT_F32_SIZE / 8] })
 }
 
 fn storage64() -> Box<contensou_contact_f64> {
-    Box::new(contensou_contact_f64 { opaque: [0; 259] })
+    Box::new(contensou_contact_f64 { opaque: [0; CONTENSOU_CONTACT_F64_SIZE / 8] })
 }
 
 const SPEC: contensou_spec<f64> = contensou_spec {
