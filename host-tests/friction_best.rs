@@ -4,6 +4,10 @@
 //! symmetries, continuity across the ellipse and the cubic pieces, limits.
 #![allow(clippy::excessive_precision)]
 
+#[path = "best_switch/mod.rs"]
+mod best_switch;
+use best_switch::switch_jump;
+
 use contensou::Real;
 use contensou::elliptic::Parameter;
 use contensou::friction::best::Branch;
@@ -287,24 +291,7 @@ fn boundary_jump<T: Real>(next_up: impl Fn(T) -> T) -> f64 {
         for i in 0..40 {
             let psi = T::from_f64(0.05 + i as f64 * 0.157);
             let at = |u: T| b.traction(&SlipState::from_polar(psi, u).unwrap());
-            let (mut lo, mut hi) = (T::from_f64(0.05), T::from_f64(1.5));
-            assert_eq!(at(lo).1, Branch::Inside);
-            assert_eq!(at(hi).1, Branch::Outside);
-            for _ in 0..200 {
-                let mid = T::HALF * (lo + hi);
-                if mid <= lo || mid >= hi {
-                    break;
-                }
-                if at(mid).1 == Branch::Inside {
-                    lo = mid;
-                } else {
-                    hi = mid;
-                }
-            }
-            assert!(next_up(lo) >= hi);
-            let (a, c) = (at(lo).0, at(hi).0);
-            let d = |p: T, q: T| (p.to_f64() - q.to_f64()).abs();
-            worst = worst.max(d(a.fx, c.fx).max(d(a.fy, c.fy)).max(d(a.tz, c.tz)));
+            worst = worst.max(switch_jump(at, &next_up));
         }
     }
     worst / T::EPSILON.to_f64()

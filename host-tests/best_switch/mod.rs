@@ -1,0 +1,32 @@
+//! Shared by the `best` tests: the jump of a traction across its inside/outside switch.
+
+use contensou::Real;
+use contensou::friction::Traction;
+use contensou::friction::best::Branch;
+
+/// Bisects the inside/outside switch of `at` along u ∈ [0.05, 1.5] (inside at 0.05, outside
+/// at 1.5, asserted) down to adjacent floats (`next_up`, asserted), and returns the largest
+/// component of |traction(outside) − traction(inside)| there.
+pub fn switch_jump<T: Real>(
+    at: impl Fn(T) -> (Traction<T>, Branch),
+    next_up: impl Fn(T) -> T,
+) -> f64 {
+    let (mut lo, mut hi) = (T::from_f64(0.05), T::from_f64(1.5));
+    assert_eq!(at(lo).1, Branch::Inside);
+    assert_eq!(at(hi).1, Branch::Outside);
+    for _ in 0..200 {
+        let mid = T::HALF * (lo + hi);
+        if mid <= lo || mid >= hi {
+            break;
+        }
+        if at(mid).1 == Branch::Inside {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    assert!(next_up(lo) >= hi);
+    let (a, c) = (at(lo).0, at(hi).0);
+    let d = |p: T, q: T| (p.to_f64() - q.to_f64()).abs();
+    d(a.fx, c.fx).max(d(a.fy, c.fy)).max(d(a.tz, c.tz))
+}
