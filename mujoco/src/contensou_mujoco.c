@@ -9,7 +9,7 @@
  *     plane geom of the model (body A: the plane's body, usually the world), and
  *   - each sphere geom of the body against each sphere geom of another body of the same
  *     instance (the body earlier in the model is A),
- * and adds the wrench on B (and its opposite on A unless A is the world) to qfrc_passive by
+ * and adds the wrench on B (and its opposite on A unless A is welded to the world) to qfrc_passive by
  * mj_applyFT. Crate conventions: forces on B from A, contact frame z = the normal from A to B,
  * x = the patch's major axis.
  *
@@ -84,7 +84,7 @@ typedef struct {
   int npair;
   pair* pairs;
   double* out;       /* NOUT per pair */
-  int nbody;         /* bodies that take loads: B bodies and non-world A bodies */
+  int nbody;         /* bodies that move and take loads (not welded to the world) */
   int* bodies;       /* their ids */
   body_state* state; /* per entry of bodies */
   int* slot;         /* model body id → index into bodies, −1 */
@@ -449,7 +449,8 @@ static int init(const mjModel* m, mjData* d, int instance) {
     pair* p = &x->pairs[k];
     int ids[2] = {p->body_b, p->body_a};
     for (int i = 0; i < 2; i++) {
-      if (ids[i] > 0 && x->slot[ids[i]] < 0) {
+      /* A body welded to the world (a plane's static body) neither moves nor takes a load. */
+      if (ids[i] > 0 && m->body_weldid[ids[i]] != 0 && x->slot[ids[i]] < 0) {
         x->slot[ids[i]] = x->nbody;
         x->bodies[x->nbody++] = ids[i];
       }
@@ -659,13 +660,16 @@ static void passive(const mjModel* m, mjData* d, instance_data* x) {
       /* On error (a ratio beyond the library's range) the contact keeps its last curvatures. */
       contensou_contact_set_curvatures_f64(&p->contact, g.p, g.q, NULL);
     }
-    body_state* sb = &x->state[x->slot[p->body_b]];
+    /* A body welded to the world (no slot) is at rest and takes no load. */
+    body_state* sb = x->slot[p->body_b] >= 0 ? &x->state[x->slot[p->body_b]] : NULL;
+    body_state* sa = x->slot[p->body_a] >= 0 ? &x->state[x->slot[p->body_a]] : NULL;
     const mjtNum* ob = d->xpos + 3 * p->body_b;
     double arm_b[3] = {g.point[0] - ob[0], g.point[1] - ob[1], g.point[2] - ob[2]};
-    double vrel[3], wrel[3];
-    point_velocity(sb->v, sb->w, arm_b, vrel);
-    memcpy(wrel, sb->w, sizeof(wrel));
-    body_state* sa = p->body_a > 0 ? &x->state[x->slot[p->body_a]] : NULL;
+    double vrel[3] = {0, 0, 0}, wrel[3] = {0, 0, 0};
+    if (sb) {
+      point_velocity(sb->v, sb->w, arm_b, vrel);
+      memcpy(wrel, sb->w, sizeof(wrel));
+    }
     double arm_a[3] = {0, 0, 0};
     if (sa) {
       const mjtNum* oa = d->xpos + 3 * p->body_a;
@@ -690,12 +694,14 @@ static void passive(const mjModel* m, mjData* d, instance_data* x) {
     out[OUT_B] = w.b;
     double force[3], moment[3];
     for (int i = 0; i < 3; i++) force[i] = w.n * g.n[i] + w.fx * g.x[i] + w.fy * g.y[i];
-    cross3(arm_b, force, moment);
-    for (int i = 0; i < 3; i++) {
-      sb->force[i] += force[i];
-      sb->torque[i] += moment[i] + w.tz * g.n[i];
+    if (sb) {
+      cross3(arm_b, force, moment);
+      for (int i = 0; i < 3; i++) {
+        sb->force[i] += force[i];
+        sb->torque[i] += moment[i] + w.tz * g.n[i];
+      }
+      sb->active = 1;
     }
-    sb->active = 1;
     if (sa) {
       cross3(arm_a, force, moment);
       for (int i = 0; i < 3; i++) {

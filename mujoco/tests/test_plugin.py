@@ -328,3 +328,23 @@ def test_ellipsoid_patch_matches_mpmath_hertz():
         b_ref = mp.sqrt(1 - c) * a_ref
         assert a == pytest.approx(float(a_ref), rel=1e-11)  # measured 1.8e-13 (the shape table: ≤ 5e-12)
         assert b == pytest.approx(float(b_ref), rel=1e-11)  # measured 1.5e-13
+
+
+def test_a_fixed_sphere_pushes_a_moving_one_whichever_comes_first():
+    """Sphere–sphere with one body welded to the world, as body A or as body B (model order):
+    the moving ball is stopped by it the same way; the fixed one takes no load."""
+    fixed = """<body name="post" pos="0 0 0.05"><plugin instance="c"/>
+      <geom name="post" type="sphere" size="0.01" contype="0" conaffinity="0"/></body>"""
+    moving = """<body name="ball" pos="-0.0199 0 0.05"><freejoint/><plugin instance="c"/>
+      <geom name="ball" type="sphere" size="0.01" mass="0.03" contype="0" conaffinity="0"/></body>"""
+    vx = []
+    for bodies in (fixed + moving, moving + fixed):
+        m = mujoco.MjModel.from_xml_string(xml(bodies, gravity="0 0 0", floor=""))
+        d = mujoco.MjData(m)
+        d.qvel[0] = 0.01
+        mujoco.mj_forward(m, d)
+        assert run_models.contacts(m, d)[0, 0] > 0
+        mujoco.mj_step(m, d, 2000)
+        vx.append(float(d.qvel[0]))
+    assert vx[0] < 0  # bounced back
+    assert vx[1] == pytest.approx(vx[0], rel=1e-12)
