@@ -29,7 +29,7 @@ flags=(-std=c11 -O2 -fPIC -ffp-contract=off -Wall -Wextra -Werror -pedantic -Wno
        -I"$(dirname "$headers")" -I../capi/include)
 # -ffp-contract=off: no fused multiply-add, so that the arithmetic is that of the Python callback
 # (python/examples/floor_contact.py) on every host; --exclude-libs: the Rust staticlib's symbols stay local.
-gcc "${flags[@]}" -fvisibility=hidden -shared src/contensou_mujoco.c "$capi" "$lib" \
+gcc "${flags[@]}" -fvisibility=hidden -shared src/*.c "$capi" "$lib" \
     -Wl,--exclude-libs,ALL -Wl,-z,defs -Wl,-rpath,"$pkg" -lpthread -ldl -lm -o build/libcontensou_mujoco.so
 echo "mujoco: build/libcontensou_mujoco.so"
 if nm -D --defined-only build/libcontensou_mujoco.so | awk '$2 ~ /[TDB]/ { print $3 }' | grep -v '^_' | grep .; then
@@ -43,7 +43,7 @@ if ((check)); then
     echo "mujoco: the three models from C under ASan + UBSan (plugin and runner instrumented), and a refused model"
     san=(-fsanitize=address,undefined -fno-sanitize-recover=all -g -O1)
     gcc -std=c11 -fPIC -ffp-contract=off "${san[@]}" -I"$(dirname "$headers")" -I../capi/include -shared \
-        src/contensou_mujoco.c "$capi" "$lib" -Wl,--exclude-libs,ALL -Wl,-rpath,"$pkg" -lpthread -ldl -lm \
+        src/*.c "$capi" "$lib" -Wl,--exclude-libs,ALL -Wl,-rpath,"$pkg" -lpthread -ldl -lm \
         -o build/libcontensou_mujoco-san.so
     gcc -std=c11 "${san[@]}" -I"$(dirname "$headers")" examples/run_model.c "$lib" -Wl,-rpath,"$pkg" -lm -o build/run_model-san
     for model in tippe_top ball rattleback; do
