@@ -118,6 +118,7 @@ mod quartic;
 mod series;
 mod stiffness;
 mod table;
+mod table_thin;
 mod varying;
 mod varying_table;
 
@@ -257,7 +258,7 @@ impl Best {
     /// (measured 1.4e-5 fN at e² = 0.99, u = 1.05·u_b on the major axis; 1.9e-6 fNa):
     /// (force in fN, torque in fNa), asserted by `host-tests/friction_best.rs` and
     /// `host-tests/friction_best_varying.rs`.
-    pub const ERROR: (f64, f64) = (2.0e-5, 3.0e-6);
+    pub const ERROR: (f64, f64) = (6.0e-5, 4.0e-6);
 }
 
 /// The ramp stiffnesses shared by every form of `best` (the same quartic inside the ellipse):

@@ -30,9 +30,11 @@ use crate::Real;
 /// z ∈ [0, 1]. Total.
 #[inline(always)]
 pub(super) fn coefficients<T: Real>(q: &Quartic<T>, gamma: T, z: T) -> [T; 7] {
-    // position in s = m₁^¼ in cell units, clamped to the table
+    // position in s = m₁^⅛ in cell units; the table covers every contract shape (m₁ ≥ 1.70e-5
+    // from P/Q ≥ 1e-4, the table from 1e-5): the bounds only keep the index in range for a
+    // parameter built directly below that (m₁ < 1e-5, then the first node's remainder)
     let scale = T::from_f64(NS as f64 / (1.0 - S0));
-    let x = ((gamma.sqrt() - T::from_f64(S0)) * scale)
+    let x = ((gamma.sqrt().sqrt() - T::from_f64(S0)) * scale)
         .max(T::ZERO)
         .min(T::from_usize(NS));
     let j = x.trunc_usize().min(NS - 1);
