@@ -112,6 +112,57 @@ fn matches_the_independent_reference() {
     }
 }
 
+/// The thin patches (e² from 0.992 to the contract's end, the table's mid-cells there) against
+/// the independent brute-force reference `tools/data/best_thin_ref.csv`
+/// (`tools/gen_best_varying_ref.py --thin`): both forms of `best`, both precisions, within the
+/// exact-grade bound.
+#[test]
+fn thin_patches_match_the_independent_reference() {
+    use contensou::friction::BestContact;
+    let text = include_str!("../tools/data/best_thin_ref.csv");
+    let rows: Vec<Vec<f64>> = text
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').map(|v| v.parse().unwrap()).collect())
+        .collect();
+    assert!(rows.len() > 300);
+    let mut w = [
+        Worst::default(),
+        Worst::default(),
+        Worst::default(),
+        Worst::default(),
+    ];
+    for r in &rows {
+        let (e2, psi, u) = (r[0], r[1], r[2]);
+        assert!(r[6] < 1e-12, "reference not converged at {r:?}");
+        let want = [r[3], r[4], r[5]];
+        w[0].add(diff(&per_step::<f64>(e2, psi, u).0, want), (e2, psi, u));
+        w[1].add(diff(&per_step::<f32>(e2, psi, u).0, want), (e2, psi, u));
+        let k = Constants::from_parameter(param::<f64>(e2));
+        let s = SlipState::from_polar(psi, u).unwrap();
+        w[2].add(
+            diff(&BestContact::new(&k).traction(&s).0, want),
+            (e2, psi, u),
+        );
+        let k = Constants::from_parameter(param::<f32>(e2));
+        let s = SlipState::from_polar(psi as f32, u as f32).unwrap();
+        w[3].add(
+            diff(&BestContact::new(&k).traction(&s).0, want),
+            (e2, psi, u),
+        );
+    }
+    for (w, name) in w
+        .iter()
+        .zip(["Best f64", "Best f32", "BestContact f64", "BestContact f32"])
+    {
+        w.report(&format!("thin reference, {name}"));
+        assert!(
+            w.force <= EXACT_GRADE.0 && w.torque <= EXACT_GRADE.1,
+            "{name}"
+        );
+    }
+}
+
 /// e² at every node, mid-cell and quarter-cell of the table (except the node at the thin end,
 /// below the contract) and at 0.99, 0.985, 0.989, clustered towards e² → 1: 0.995, 0.999,
 /// 0.9995, 0.9999, 0.99995, 0.99999 and the contract's end;
