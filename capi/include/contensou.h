@@ -14,7 +14,7 @@
 #include <stdint.h>
 
 // Bytes of [`contensou_contact_f32`].
-#define CONTENSOU_CONTACT_F32_SIZE 1552
+#define CONTENSOU_CONTACT_F32_SIZE 1528
 
 // Bytes of [`contensou_contact_f64`].
 #define CONTENSOU_CONTACT_F64_SIZE 3056
@@ -125,7 +125,7 @@ typedef uint32_t contensou_race;
 // `contensou_contact_wrench_f32` only reads the contact, so threads may share one.
 typedef struct {
   // Opaque.
-  uint64_t opaque[194];
+  uint64_t opaque[191];
 } contensou_contact_f32;
 
 // The contact columns `P,Q,estar,cd,f,delta` of the contract ([`contensou::dynamic::Spec`]).

@@ -75,7 +75,7 @@ pub struct contensou_curvatures<T> {
 }
 
 /// Bytes of [`contensou_contact_f32`].
-pub const CONTENSOU_CONTACT_F32_SIZE: usize = 1552;
+pub const CONTENSOU_CONTACT_F32_SIZE: usize = 1528;
 /// Bytes of [`contensou_contact_f64`].
 pub const CONTENSOU_CONTACT_F64_SIZE: usize = 3056;
 /// Alignment (bytes) of both contact storage types.
@@ -90,7 +90,7 @@ pub const CONTENSOU_CONTACT_ALIGN: usize = 8;
 #[derive(Debug)]
 pub struct contensou_contact_f32 {
     /// Opaque.
-    pub opaque: [u64; 194],
+    pub opaque: [u64; 191],
 }
 
 /// Caller-owned storage of one `double` contact: opaque, [`CONTENSOU_CONTACT_F64_SIZE`]

@@ -21,20 +21,24 @@ pub struct BestContact<T> {
     quartic: Quartic<T>,
     m: T,
     g1: T,
-    /// The last piece used (7 or 11), and the number of pieces as `T`.
-    last: usize,
+    /// The number of pieces used (8 or 12) and its last index (7 or 11), as `T` (no `usize`
+    /// field: the struct has one layout on every target, which the C API's storage relies on).
     nt: T,
+    last: T,
     /// `pieces[i][j]`: cubic in r = n·z − i of coefficient j (monomial, r ∈ [0, 1]).
     pieces: [[[T; 4]; 7]; PIECES],
 }
 
 impl<T: Real> BestContact<T> {
-    /// Measured max error against the exact integrals, e² ∈ [0, 0.99], all ψ, u ∈ [0, ∞]
-    /// (`f64`): (force in fN, torque in fNa). See `host-tests/friction_best.rs`.
+    /// Measured max error against the exact integrals, every e² of the contract (to m₁ =
+    /// 1.70e-5, P/Q = 1e-4), all ψ, u ∈ [0, ∞], `f64` and `f32` (measured 5.2e-5 / 4.0e-6 at
+    /// e² = 0.99; ≤ 4.4e-5 / 3.1e-6 beyond): (force in fN, torque in fNa). See
+    /// `host-tests/friction_best.rs`.
     pub const ERROR: (f64, f64) = (5.5e-5, 4.5e-6);
 
     /// From the patch constants: sums the fitted series at this e² and interpolates them at
-    /// the Chebyshev–Lobatto nodes r ∈ {0, 1/4, 3/4, 1} of each of 8 pieces. Total.
+    /// the Chebyshev–Lobatto nodes r ∈ {0, 1/4, 3/4, 1} of each of 8 pieces (12 for m₁ < 0.01;
+    /// a piece's right end is the next one's left end, summed once). Total.
     pub fn new(k: &Constants<T>) -> Self {
         let quartic = Quartic::new(k);
         let gamma = k.m1().sqrt();
@@ -90,8 +94,8 @@ impl<T: Real> BestContact<T> {
             quartic,
             m: k.m(),
             g1: T::ONE + gamma,
-            last: n - 1,
             nt,
+            last: nt - T::ONE,
             pieces,
         }
     }
@@ -105,7 +109,7 @@ impl<T: Real> BestContact<T> {
         }
         let (c, sn, tau, one_minus) = confocal(self.m, self.g1, s.x(), s.y(), s.w());
         let zn = larger(one_minus, T::ZERO).sqrt() * self.nt;
-        let i = zn.trunc_usize().min(self.last).min(PIECES - 1);
+        let i = zn.min(self.last).trunc_usize().min(PIECES - 1);
         let r = zn - T::from_usize(i);
         let piece = &self.pieces[i];
         let co = piece.map(|p| p[0] + r * (p[1] + r * (p[2] + r * p[3])));
