@@ -17,7 +17,7 @@
 #define CONTENSOU_CONTACT_F32_SIZE 1528
 
 // Bytes of [`contensou_contact_f64`].
-#define CONTENSOU_CONTACT_F64_SIZE 3056
+#define CONTENSOU_CONTACT_F64_SIZE 3048
 
 // Alignment (bytes) of both contact storage types.
 #define CONTENSOU_CONTACT_ALIGN 8
@@ -148,7 +148,7 @@ typedef struct {
 // bytes, 8-byte aligned. As [`contensou_contact_f32`].
 typedef struct {
   // Opaque.
-  uint64_t opaque[382];
+  uint64_t opaque[381];
 } contensou_contact_f64;
 
 // The contact columns `P,Q,estar,cd,f,delta` of the contract ([`contensou::dynamic::Spec`]).

@@ -77,7 +77,7 @@ pub struct contensou_curvatures<T> {
 /// Bytes of [`contensou_contact_f32`].
 pub const CONTENSOU_CONTACT_F32_SIZE: usize = 1528;
 /// Bytes of [`contensou_contact_f64`].
-pub const CONTENSOU_CONTACT_F64_SIZE: usize = 3056;
+pub const CONTENSOU_CONTACT_F64_SIZE: usize = 3048;
 /// Alignment (bytes) of both contact storage types.
 pub const CONTENSOU_CONTACT_ALIGN: usize = 8;
 
@@ -99,7 +99,7 @@ pub struct contensou_contact_f32 {
 #[derive(Debug)]
 pub struct contensou_contact_f64 {
     /// Opaque.
-    pub opaque: [u64; 382],
+    pub opaque: [u64; 381],
 }
 
 /// What the storage holds: a tag that only a constructor writes, then the contact.

@@ -21,10 +21,9 @@ pub struct BestContact<T> {
     quartic: Quartic<T>,
     m: T,
     g1: T,
-    /// The number of pieces used (8 or 12) and its last index (7 or 11), as `T` (no `usize`
-    /// field: the struct has one layout on every target, which the C API's storage relies on).
+    /// The number of pieces used (8 or 12), as `T` (no `usize` field: the struct has one
+    /// layout on every target, which the C API's storage relies on).
     nt: T,
-    last: T,
     /// `pieces[i][j]`: cubic in r = n·z − i of coefficient j (monomial, r ∈ [0, 1]).
     pieces: [[[T; 4]; 7]; PIECES],
 }
@@ -90,12 +89,17 @@ impl<T: Real> BestContact<T> {
                 }
             }
         }
+        if let Some(end) = pieces.get_mut(n) {
+            // z = 1 (u = ∞) with fewer pieces than the storage: a constant piece, the value there
+            for (cubic, &v) in end.iter_mut().zip(left.iter()) {
+                *cubic = [v, T::ZERO, T::ZERO, T::ZERO];
+            }
+        }
         BestContact {
             quartic,
             m: k.m(),
             g1: T::ONE + gamma,
             nt,
-            last: nt - T::ONE,
             pieces,
         }
     }
@@ -109,7 +113,8 @@ impl<T: Real> BestContact<T> {
         }
         let (c, sn, tau, one_minus) = confocal(self.m, self.g1, s.x(), s.y(), s.w());
         let zn = larger(one_minus, T::ZERO).sqrt() * self.nt;
-        let i = zn.min(self.last).trunc_usize().min(PIECES - 1);
+        // with 8 pieces, z = 1 lands on the constant piece 8 (its value at u = ∞)
+        let i = zn.trunc_usize().min(PIECES - 1);
         let r = zn - T::from_usize(i);
         let piece = &self.pieces[i];
         let co = piece.map(|p| p[0] + r * (p[1] + r * (p[2] + r * p[3])));

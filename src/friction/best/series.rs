@@ -13,63 +13,46 @@ use crate::math::{Backend, Libm};
 /// (`table.rs`, e² ∈ [0, 0.99]).
 pub(super) const M1_THIN: f64 = table::G0 * table::G0;
 
-/// The longest series in ẑ of the two tables, plus one.
-const NZ_MAX: usize = if table::DZ > table_thin::DZ {
-    table::DZ + 1
-} else {
-    table_thin::DZ + 1
-};
+/// Terms in ẑ of the wide and the thin table.
+const NW: usize = table::DZ + 1;
+const NT: usize = table_thin::DZ + 1;
 
-/// The seven outside coefficients as functions of z: `d[j][l]` Chebyshev coefficients in
-/// ẑ = 2z − 1 (e² fixed; the first `len` are used), corrected to the exact ends.
-pub(super) struct Series<T> {
-    d: [[T; NZ_MAX]; 7],
-    len: usize,
+/// The seven outside coefficients as functions of z at one e²: the wide series (e² ≤ 0.99) or
+/// the thin one, each with its fixed length (so every loop over it has a fixed trip count).
+pub(super) enum Series<T> {
+    Wide(Fit<T, NW>),
+    Thin(Fit<T, NT>),
+}
+
+/// `d[j][l]` Chebyshev coefficients in ẑ = 2z − 1 (e² fixed) of coefficient j, corrected to
+/// the exact ends.
+pub(super) struct Fit<T, const Z: usize> {
+    d: [[T; Z]; 7],
     /// Exact minus series at z = 0 and at z = 1.
     end0: [T; 7],
     end1: [T; 7],
 }
 
-/// Sums a table's series in λ at λ (clamped to [−1, 1]): the coefficients in ẑ.
-fn sum_lambda<T: Real, const G: usize, const Z: usize>(
-    table: &[[[f32; Z]; G]; 7],
-    lam: T,
-) -> [[T; NZ_MAX]; 7] {
-    let lam = lam.max(-T::ONE).min(T::ONE);
-    let mut tk = [T::ZERO; G];
-    let (mut t0, mut t1) = (T::ONE, lam);
-    for t in tk.iter_mut() {
-        *t = t0;
-        let t2 = T::TWO * lam * t1 - t0;
-        (t0, t1) = (t1, t2);
-    }
-    let mut d = [[T::ZERO; NZ_MAX]; 7];
-    for (dj, tj) in d.iter_mut().zip(table.iter()) {
-        for (row, &t) in tj.iter().zip(tk.iter()) {
-            for (dl, &c) in dj.iter_mut().zip(row.iter()) {
-                *dl += T::from_f64(f64::from(c)) * t;
+impl<T: Real, const Z: usize> Fit<T, Z> {
+    /// Sums a table's series in λ (clamped to [−1, 1]) and corrects it to the exact ends
+    /// (`bnd` on the ellipse, `inf` at u = ∞).
+    fn new<const G: usize>(table: &[[[f32; Z]; G]; 7], lam: T, bnd: [T; 7], inf: [T; 7]) -> Self {
+        let lam = lam.max(-T::ONE).min(T::ONE);
+        let mut tk = [T::ZERO; G];
+        let (mut t0, mut t1) = (T::ONE, lam);
+        for t in tk.iter_mut() {
+            *t = t0;
+            let t2 = T::TWO * lam * t1 - t0;
+            (t0, t1) = (t1, t2);
+        }
+        let mut d = [[T::ZERO; Z]; 7];
+        for (dj, tj) in d.iter_mut().zip(table.iter()) {
+            for (row, &t) in tj.iter().zip(tk.iter()) {
+                for (dl, &c) in dj.iter_mut().zip(row.iter()) {
+                    *dl += T::from_f64(f64::from(c)) * t;
+                }
             }
         }
-    }
-    d
-}
-
-impl<T: Real> Series<T> {
-    pub(super) fn new<B: Backend>(k: &Constants<T>, q: &Quartic<T>, gamma: T) -> Self {
-        let ln_m1 = B::ln(k.m1());
-        // e² ∈ [0, 0.99]: λ = 1 + log₁₀ m₁; beyond, the thin-patch table in ln m₁ down to
-        // m₁ = 9e-6 (past the contract's end, 1.70e-5 at P/Q = 1e-4; λ clamped below that).
-        let (d, len) = if k.m1() >= T::from_f64(M1_THIN) {
-            let lam = ln_m1 * T::from_f64(table::LAM_SCALE) - T::from_f64(table::LAM_SHIFT);
-            (sum_lambda(&table::TABLE, lam), table::DZ + 1)
-        } else {
-            let lam =
-                ln_m1 * T::from_f64(table_thin::LAM_SCALE) - T::from_f64(table_thin::LAM_SHIFT);
-            (sum_lambda(&table_thin::TABLE, lam), table_thin::DZ + 1)
-        };
-        let g5 = T::from_f64(0.4) / (T::ONE + gamma);
-        let inf = [T::ONE, T::ZERO, T::ONE, T::ZERO, -g5, g5 * k.m(), T::ZERO];
-        let bnd = q.boundary(gamma);
         let mut end0 = [T::ZERO; 7];
         let mut end1 = [T::ZERO; 7];
         for (((dj, e0), e1), (b, i)) in d
@@ -79,7 +62,7 @@ impl<T: Real> Series<T> {
             .zip(bnd.iter().zip(inf.iter()))
         {
             let (mut at0, mut at1, mut sign) = (T::ZERO, T::ZERO, T::ONE);
-            for &c in dj.iter().take(len) {
+            for &c in dj.iter() {
                 at0 += sign * c;
                 at1 += c;
                 sign = -sign;
@@ -87,11 +70,12 @@ impl<T: Real> Series<T> {
             *e0 = *b - at0;
             *e1 = *i - at1;
         }
-        Series { d, len, end0, end1 }
+        Fit { d, end0, end1 }
     }
 
     /// The seven coefficients at z ∈ [0, 1].
-    pub(super) fn at(&self, z: T) -> [T; 7] {
+    #[inline(always)]
+    fn at(&self, z: T) -> [T; 7] {
         let zh = T::TWO * z - T::ONE;
         let mut out = [T::ZERO; 7];
         for (((o, dj), &e0), &e1) in out
@@ -102,7 +86,7 @@ impl<T: Real> Series<T> {
         {
             // Clenshaw
             let (mut b1, mut b2) = (T::ZERO, T::ZERO);
-            for &c in dj.iter().take(self.len).skip(1).rev() {
+            for &c in dj.iter().skip(1).rev() {
                 let b0 = T::TWO * zh * b1 - b2 + c;
                 (b1, b2) = (b0, b1);
             }
@@ -112,6 +96,33 @@ impl<T: Real> Series<T> {
             *o = zh * b1 - b2 + d0 + e0 * (T::ONE - z2) + e1 * z2;
         }
         out
+    }
+}
+
+impl<T: Real> Series<T> {
+    pub(super) fn new<B: Backend>(k: &Constants<T>, q: &Quartic<T>, gamma: T) -> Self {
+        let ln_m1 = B::ln(k.m1());
+        let g5 = T::from_f64(0.4) / (T::ONE + gamma);
+        let inf = [T::ONE, T::ZERO, T::ONE, T::ZERO, -g5, g5 * k.m(), T::ZERO];
+        let bnd = q.boundary(gamma);
+        // e² ∈ [0, 0.99]: λ = 1 + log₁₀ m₁; beyond, the thin-patch table in ln m₁ down to
+        // m₁ = 9e-6 (past the contract's end, 1.70e-5 at P/Q = 1e-4; λ clamped below that).
+        if k.m1() >= T::from_f64(M1_THIN) {
+            let lam = ln_m1 * T::from_f64(table::LAM_SCALE) - T::from_f64(table::LAM_SHIFT);
+            Series::Wide(Fit::new(&table::TABLE, lam, bnd, inf))
+        } else {
+            let lam =
+                ln_m1 * T::from_f64(table_thin::LAM_SCALE) - T::from_f64(table_thin::LAM_SHIFT);
+            Series::Thin(Fit::new(&table_thin::TABLE, lam, bnd, inf))
+        }
+    }
+
+    /// The seven coefficients at z ∈ [0, 1].
+    pub(super) fn at(&self, z: T) -> [T; 7] {
+        match self {
+            Series::Wide(f) => f.at(z),
+            Series::Thin(f) => f.at(z),
+        }
     }
 }
 
