@@ -45,10 +45,10 @@
 //! - [`BestSeries`] sums the fitted series per call (693 terms, 735 on the thin series): the
 //!   reference of the other two and the former per-call form.
 //!
-//! **Which to pick:** a fixed geometry → [`BestContact`] (via `Contact`: 182 M4F instructions
-//! per `f32` wrench, 948 B per contact, 19,409 instructions to build); the per-step form would
-//! serve it too, but at 521 instructions per wrench (the dimensionless core 271 against
-//! [`BestContact`]'s 107), far beyond 10 % of 182, so `Contact` keeps [`BestContact`]. A
+//! **Which to pick:** a fixed geometry → [`BestContact`] (via `Contact`: 184 M4F instructions
+//! per `f32` wrench, 1,404 B per contact, 16,147 instructions to build); the per-step form would
+//! serve it too, but at 521 instructions per wrench (the dimensionless core 273 against
+//! [`BestContact`]'s 109), far beyond 10 % of 184, so `Contact` keeps [`BestContact`]. A
 //! geometry that changes every step → the per-step form (via `VaryingContact`: 12 B per
 //! contact with `Undamped`, nothing built).
 //!
@@ -117,22 +117,26 @@
 //!
 //! Cortex-M4F, `f32`, QEMU stage `friction` (mixed set: u log-uniform in [0.01, 100], ψ uniform,
 //! e² = 0.5; the rig's 8-instruction call floor included):
-//! [`BestContact::traction`] **107 instructions** on average (63 inside … 172 outside;
-//! `simplified`: 66, so 1.62× on average, 2.6× worst on the set; 125 on the same set at
-//! e² = 0.99, worst 174); the dimensional `Friction::<f32, Best>::tangential_prepared` 144
-//! (`simplified`'s `tangential` 122); the full wrench `Contact::wrench` with fixed geometry 182
-//! (144 with `simplified`); [`BestContact::new`] ([`FrictionLaw::prepare`]) 19,281 once per
-//! contact. The per-step form [`Best`]`::traction` (e² changing every call): **271** on
-//! average (94 … 530) on the same set, 16,399 in `f64`; the full varying wrench
+//! [`BestContact::traction`] **109 instructions** on average (63 inside … 175 outside;
+//! `simplified`: 66, so 1.65× on average, 2.7× worst on the set; 126 on the same set at
+//! e² = 0.99, worst 177); the dimensional `Friction::<f32, Best>::tangential_prepared` 146
+//! (`simplified`'s `tangential` 122); the full wrench `Contact::wrench` with fixed geometry 184
+//! (144 with `simplified`); [`BestContact::new`] ([`FrictionLaw::prepare`]) 16,147 once per
+//! contact at e² = 0.5 (25,180 at e² = 0.9999, where the longer thin series is summed at the
+//! 38 nodes of 12 pieces; measured once with a temporary firmware row, not a committed one). The per-step form [`Best`]`::traction` (e² changing every call): **273** on
+//! average (94 … 535) on the same set, 16,511 in `f64`; the full varying wrench
 //! (`VaryingContact::wrench`, shape table + Hertz + friction each step) **521** on the `wrench`
-//! set (1.85× `simplified`'s 281; 282 … 721), **750** on the worst input an input search over
+//! set (1.85× `simplified`'s 281; 279 … 722), **751** on the worst input an input search over
 //! 5,760 states found (2.67×; QEMU row `wrench,table_each_step-best-worst,f32`); with the
-//! per-step geometry `Curvatures::from_bodies_cos_sin` as well 723 on average (477 … 916, row
-//! `-from-bodies`, a toroidal body on a race turned 0.1 rad per step, e² ≈ 0.93). [`BestSeries`] 1,324 on average, 3,103 worst (the 693-term series per call); the
-//! varying wrench with it was 1,950 / 3,310. Flash: the series table 7 × 9 × 11 `f32` = 2,772
-//! bytes (+ 64 bytes of series); the per-step table 21 × 12 × 7 × 4 `f32` = 28,224 bytes
-//! (linked only by the per-step form). RAM per contact: `BestContact<f32>` 948 bytes; the
-//! per-step form none (`VaryingContact<f32, Undamped>` is 12 bytes). Host (criterion, x86-64,
+//! per-step geometry `Curvatures::from_bodies_cos_sin` as well 713 on average (465 … 908, row
+//! `-from-bodies`, a toroidal body on a race turned 0.1 rad per step, e² ≈ 0.93). (Before
+//! issue 21 extended both forms to the contract's end: 108, 181, 19,400, 272, 519, 748 — every
+//! row within +1.9 %.) [`BestSeries`] 1,308 on average (micromath row), 3,099 worst; the
+//! varying wrench with it was 1,950 / 3,310. Flash: the series tables 7 × 9 × 11 `f32` = 2,772
+//! bytes and 7 × 7 × 15 = 2,940 bytes (thin); the per-step table 26 × 12 × 7 × 4 `f32` =
+//! 34,944 bytes (was 28,224 for e² ≤ 0.99: +23.8 %; linked only by the per-step form). RAM per
+//! contact: `BestContact<f32>` 1,404 bytes (12 cubic pieces stored; 948 before); the per-step
+//! form none (`VaryingContact<f32, Undamped>` is 12 bytes). Host (criterion, x86-64,
 //! mixed set): ≈20 ns per call (`BestContact`), ≈100 ns ([`BestSeries`]);
 //! `bench-results/friction.csv`.
 
