@@ -208,7 +208,8 @@ pub struct Rough;
 pub struct Coarse;
 /// Budget: friction within 5e-4 fN in force and 5e-4 fNa in torque ("exact-grade") → [`Best`]
 /// (measured 4.9e-5 fN / 3.5e-6 fNa; 161–182 M4F instructions per `f32` step of a fixed
-/// contact; a varying one takes `Best`'s per-step flash-table form: 1.4e-5 fN / 1.9e-6 fNa,
+/// contact; a varying one takes `Best`'s per-step flash-table form: 4.7e-5 fN / 3.3e-6 fNa
+/// over every accepted shape (e² to 0.99998),
 /// 521 instructions per wrench on the `wrench` set); N, a, b within [`NORMAL_BOUND`].
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct ExactGrade;
