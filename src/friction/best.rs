@@ -88,8 +88,8 @@
 //! | [`BestSeries`] | 3.3e-5 / 3.3e-5 | 7.4e-7 / 7.9e-7 |
 //!
 //! Per decade of m₁ = 1 − e² (max over 9 m₁ per decade, 25 ψ, ≈86 u including u_b(1 ± 1e-7 …
-//! 0.6), force / torque, both precisions alike to 2 digits; `contact_eval friction` against
-//! `--model exact`):
+//! 0.6), force / torque, the larger of `f64` and `f32`; `tools/best_error_decades.py`, through
+//! `contact_eval friction` against `--model exact`):
 //!
 //! | e² | [`BestContact`] | [`Best`] per step |
 //! |---|---|---|
