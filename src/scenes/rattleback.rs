@@ -94,7 +94,9 @@ impl<T: Real> Params<T> {
     /// = +0.014283 rad (0.82°), I₁,₂ = (A+B)/2 ∓ √(((B−A)/2)² + D²).
     ///
     /// Contact (our choice, not in the sources): E* = 3 GPa (a hard polymer on glass), static
-    /// approach ≈ 8 µm, vertical contact frequency ≈ 170 Hz; c_d = 5 s/m as for the tippe top.
+    /// approach ≈ 2.3 µm under mg (Hertz at the rest point: P = c/(2a²) = 0.25, Q = c/(2b²) =
+    /// 11.1 m⁻¹, P/Q = 0.0225), vertical contact frequency √(1.5mg/h)/(2π√m) ≈ 400 Hz;
+    /// c_d = 5 s/m as for the tippe top.
     pub fn kane_levinson() -> Self {
         let (a, b, c, d) = (2e-4f64, 1.6e-3f64, 1.7e-3f64, -2e-5f64);
         let mean = 0.5 * (a + b);
