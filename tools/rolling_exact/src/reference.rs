@@ -88,9 +88,9 @@ impl Patch {
             per.push((tot, st, s));
         }
         let h = [0, 1, 2].map(|i| 1.0 / self.levels[i].k as f64);
-        let (fx, ex) = richardson(h, [0, 1, 2].map(|i| per[i].0.fx));
-        let (fy, ey) = richardson(h, [0, 1, 2].map(|i| per[i].0.fy));
-        let (mz, em) = richardson(h, [0, 1, 2].map(|i| per[i].0.mz));
+        let (fx, ex, _) = richardson(h, [0, 1, 2].map(|i| per[i].0.fx));
+        let (fy, ey, _) = richardson(h, [0, 1, 2].map(|i| per[i].0.fy));
+        let (mz, em, _) = richardson(h, [0, 1, 2].map(|i| per[i].0.mz));
         Solution {
             totals: Totals { fx, fy, mz },
             err_f: ex.max(ey),
