@@ -11,33 +11,47 @@
 /// Poisson ratios of the table's columns.
 pub const NU: [f64; 3] = [0.0, 0.25, 0.5];
 
-/// (a/b, C11, C22, C23), each at ν = 0, 0.25, 0.5.
-pub const TABLE_E3: [(f64, [f64; 3], [f64; 3], [f64; 3]); 5] = [
-    (
+/// One row of Table E3: the coefficients at ν = 0, 0.25, 0.5.
+#[derive(Clone, Copy, Debug)]
+pub struct Row {
+    pub aob: f64,
+    pub c11: [f64; 3],
+    pub c22: [f64; 3],
+    pub c23: [f64; 3],
+}
+
+const fn row(aob: f64, c11: [f64; 3], c22: [f64; 3], c23: [f64; 3]) -> Row {
+    Row { aob, c11, c22, c23 }
+}
+
+/// The rows a/b = 0.2, 0.5, 1, 2, 5.
+#[allow(clippy::approx_constant)] // 3.14 is C22(a/b = 0.5, ν = 0.5), not π
+pub const TABLE_E3: [Row; 5] = [
+    row(
         0.2,
         [2.59, 3.37, 4.81],
         [2.59, 2.63, 2.66],
         [0.483, 0.603, 0.809],
     ),
-    (
+    row(
         0.5,
         [2.88, 3.62, 4.83],
         [2.88, 3.01, 3.14],
         [0.827, 0.929, 1.07],
     ),
-    (
+    row(
         1.0,
         [3.40, 4.12, 5.20],
         [3.40, 3.67, 3.98],
         [1.33, 1.47, 1.63],
     ),
-    (
+    row(
         2.0,
         [4.37, 5.10, 6.11],
         [4.37, 4.90, 5.56],
         [2.35, 2.62, 2.96],
     ),
-    (
+    row(
         5.0,
         [6.96, 7.78, 8.82],
         [6.96, 8.14, 9.79],
@@ -50,8 +64,8 @@ pub fn coefficients_nu(aob: f64, nu: f64) -> Option<(f64, f64, f64)> {
     let col = NU.iter().position(|&n| (n - nu).abs() < 1e-12)?;
     TABLE_E3
         .iter()
-        .find(|r| (r.0 - aob).abs() < 1e-12)
-        .map(|r| (r.1[col], r.2[col], r.3[col]))
+        .find(|r| (r.aob - aob).abs() < 1e-12)
+        .map(|r| (r.c11[col], r.c22[col], r.c23[col]))
 }
 
 /// (C11, C22, C23) for `aob` at ν = 0.25.

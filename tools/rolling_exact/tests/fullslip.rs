@@ -10,7 +10,7 @@
 use contensou::elliptic::Parameter;
 use contensou::friction::exact::traction;
 use rolling_exact::cases::Q_FULL;
-use rolling_exact::kalker::TABLE_E3;
+use rolling_exact::kalker::{Row, TABLE_E3};
 use rolling_exact::reference::{Patch, finest_k};
 
 /// Library full-slip totals in this crate's frame: (F/fN, Mz/(fNc)), c = √(ab) = 1.
@@ -31,7 +31,7 @@ fn library(aob: f64, xi: f64, eta: f64, phi_c: f64) -> (f64, f64, f64) {
 fn check(target: usize, bound: f64) {
     let mut worst = (0.0f64, 0.0f64);
     let mut failures = Vec::new();
-    for &(aob, c11, c22, c23) in &TABLE_E3 {
+    for &Row { aob, c11, c22, c23 } in &TABLE_E3 {
         let (c11, c22, c23) = (c11[1], c22[1], c23[1]);
         let nl = 0.01;
         let p = Patch::new(aob, 0.25, nl, finest_k(aob, target));

@@ -5,7 +5,7 @@
 //! Table values: rolling_exact::kalker (CONTACT's `linrol`, src/m_hertz.f90, cross-checked).
 //! Fast tests: finest grid ≈ 256 elements (CI); `--ignored`: ≈ 1024 (the generator's grids).
 
-use rolling_exact::kalker::{NU, TABLE_E3};
+use rolling_exact::kalker::{NU, Row, TABLE_E3};
 use rolling_exact::reference::{Patch, finest_k};
 
 /// (C11, C22, C23 from Mz(η), C23 from Fy(φ), C33) extrapolated, and the largest error estimate.
@@ -29,7 +29,7 @@ fn coefficients(aob: f64, nu: f64, target: usize) -> ([f64; 5], f64) {
 
 fn check_table(target: usize, bound: f64) {
     let mut worst = 0.0f64;
-    for &(aob, c11, c22, c23) in &TABLE_E3 {
+    for &Row { aob, c11, c22, c23 } in &TABLE_E3 {
         for (col, &nu) in NU.iter().enumerate() {
             let (c, err) = coefficients(aob, nu, target);
             let want = [c11[col], c22[col], c23[col], c23[col]];

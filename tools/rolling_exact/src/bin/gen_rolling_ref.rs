@@ -50,7 +50,7 @@ fn main() {
             let nu = f64::from_bits(nu_bits);
             let k = finest_k(aob, target);
             let patch = Patch::new(aob, nu, NL, k);
-            let mut stat = vec![(0.0f64, 0.0f64, 0usize); 3];
+            let mut stat = [(0.0f64, 0.0f64, 0usize); 3];
             for c in &list {
                 let s = patch.solve(c.xi, c.eta, c.phi_c, c.coulomb);
                 for (i, l) in s.levels.iter().enumerate() {
