@@ -18,6 +18,8 @@ pub struct Case {
     pub family: &'static str,
     pub aob: f64,
     pub nu: f64,
+    /// fN/(Gc²).
+    pub nl: f64,
     pub xi: f64,
     pub eta: f64,
     pub phi_c: f64,
@@ -51,6 +53,7 @@ pub fn for_shape(aob: f64) -> Vec<Case> {
         family,
         aob,
         nu,
+        nl: NL,
         xi,
         eta,
         phi_c,
@@ -108,3 +111,58 @@ pub fn for_shape(aob: f64) -> Vec<Case> {
     }
     v
 }
+
+/// CONTACT's published cases (quoted in tests/contact.rs), ν = 0.28, as the families
+/// `contact_example` (examples/fastsim.inp case 1: a/b = 2, FN/(G c²)·f = 0.3/32, η = −6.25e-4,
+/// φ = 6.25e-4 /mm with c = √32 mm) and `contact_testbank` (a sample of the 3,220-case table,
+/// src/test_table.f90: (a/b, spin, angle°, magnitude) with ρ, c as printed in
+/// testbank/test_table_mx11.ref_fx).
+pub fn contact() -> Vec<Case> {
+    let mut v = Vec::new();
+    let c = 32f64.sqrt();
+    v.push(Case {
+        family: "contact_example",
+        aob: 2.0,
+        nu: 0.28,
+        nl: 0.3 / 32.0,
+        xi: 0.0,
+        eta: -0.000625,
+        phi_c: 0.000625 * c,
+        coulomb: true,
+    });
+    let f = 0.3;
+    for (aob, spin, angle, mag) in TESTBANK {
+        let (rho, cp): (f64, f64) = match aob {
+            0.2 | 5.0 => (1772.0, 8.944),
+            0.5 | 2.0 => (2075.0, 8.485),
+            _ => (2700.0, 9.000),
+        };
+        let ang = f64::to_radians(angle);
+        v.push(Case {
+            family: "contact_testbank",
+            aob,
+            nu: 0.28,
+            nl: f / (cp * cp),
+            xi: mag * f * ang.cos() * cp / rho,
+            eta: mag * f * ang.sin() * cp / rho,
+            phi_c: f * spin * cp / rho,
+            coulomb: true,
+        });
+    }
+    v
+}
+
+/// (a/b, spin, angle°, magnitude) of the testbank sample (tests/contact.rs has the results).
+pub const TESTBANK: [(f64, f64, f64, f64); 11] = [
+    (1.0, 0.0, 0.0, 0.5),
+    (1.0, 0.0, 0.0, 1.1),
+    (1.0, 0.0, 0.0, 3.0),
+    (1.0, 1.0, 90.0, 0.5),
+    (1.0, 0.5, 30.0, 1.4),
+    (0.2, 2.0, 0.0, 0.0),
+    (0.2, 1.0, 60.0, 0.9),
+    (5.0, 0.5, -60.0, 1.4),
+    (5.0, 2.0, 90.0, 0.3),
+    (0.5, 0.5, -30.0, 2.0),
+    (2.0, 1.0, -90.0, 0.7),
+];
