@@ -91,7 +91,9 @@ impl Patch {
         let (fx, ex, _) = richardson(h, [0, 1, 2].map(|i| per[i].0.fx));
         let (fy, ey, _) = richardson(h, [0, 1, 2].map(|i| per[i].0.fy));
         let (mz, em, _) = richardson(h, [0, 1, 2].map(|i| per[i].0.mz));
+        let tol = Settings::default().tol;
         Solution {
+            converged: per.iter().all(|l| l.1.residual <= tol),
             totals: Totals { fx, fy, mz },
             err_f: ex.max(ey),
             err_m: em,
@@ -102,6 +104,8 @@ impl Patch {
 
 /// Extrapolated totals (÷ fN, ÷ fNc), their error estimates and the per-grid results.
 pub struct Solution {
+    /// Every grid's Gauss–Seidel met its tolerance (else it stopped at the sweep limit).
+    pub converged: bool,
     pub totals: Totals,
     pub err_f: f64,
     pub err_m: f64,

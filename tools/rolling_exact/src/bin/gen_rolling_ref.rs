@@ -64,6 +64,7 @@ fn main() {
         let mut stat = [(0.0f64, 0.0f64, 0usize); 3];
         for c in &list {
             let s = patch.solve(c.xi, c.eta, c.phi_c, c.coulomb);
+            assert!(s.converged, "not converged: {c:?}");
             for (i, l) in s.levels.iter().enumerate() {
                 stat[i].0 += l.2;
                 stat[i].1 = stat[i].1.max(l.2);
