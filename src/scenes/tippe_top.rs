@@ -31,6 +31,7 @@
 //!   moment about G is perpendicular to G − P = Rẑ − ε_R e₃); the Contensou drilling torque and
 //!   contact on the small sphere change it.
 
+use super::event::{Crossing, Direction};
 use super::integrate::Ode;
 use super::rigid::{Quat, Vec3, euler_rate_inv};
 use crate::contact::Contact;
@@ -263,6 +264,22 @@ impl<T: Real, L: FrictionLaw> TippeTop<T, L> {
         ]
     }
 
+    /// The tilt θ of the symmetry axis from the vertical at state `y` (rad; 0 stem up, π
+    /// inverted): the event function of [`Events`]' θ crossings, cheaper than [`TippeTop::probe`]
+    /// (no contact evaluation).
+    #[inline]
+    pub fn tilt(&self, y: &State<T>) -> T {
+        let e3 = split(y).2.normalized().rotate(Vec3::unit_z());
+        e3.x.hypot(e3.y).atan2(e3.z)
+    }
+
+    /// θ* at which both spheres touch a flat floor: cos θ* = (r − R)/(ε_r − ε_R) (rad; for the
+    /// paper's top arccos(−10/13) ≈ 2.448). NaN if the spheres cannot both touch (|cos| > 1).
+    pub fn theta_star(&self) -> T {
+        let c = (self.small.radius - self.big.radius) / (self.small.offset - self.big.offset);
+        (T::ONE - c * c).sqrt().atan2(c)
+    }
+
     /// θ, both normal forces, energy, Jellett's quantity and the spin at state `y`.
     pub fn probe(&self, y: &State<T>) -> Probe<T> {
         let [big, small] = self.contacts(y);
@@ -307,6 +324,60 @@ impl<T: Real, L: FrictionLaw> Ode<T, N> for TippeTop<T, L> {
         let q = split(y).2.normalized();
         let [_, _, _, _, _, _, qw, qx, qy, qz, _, _, _] = y;
         (*qw, *qx, *qy, *qz) = (q.w, q.x, q.y, q.z);
+    }
+}
+
+/// The top's events located between integration steps ([`crate::scenes::event`]): the first
+/// time θ reaches π/2 (the axis horizontal), θ reaches θ* ([`TippeTop::theta_star`], where both
+/// spheres can touch: the "inversion" of the README's table), and the small sphere first
+/// penetrates the floor (touch-down, [`TippeTop::penetrations`]). Feed it every accepted step.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Events<T: Real> {
+    theta_star: T,
+    half: Crossing<T, N>,
+    inversion: Crossing<T, N>,
+    touch: Crossing<T, N>,
+}
+
+impl<T: Real> Events<T> {
+    /// Tracking from the start (t₀, y₀).
+    pub fn new<L: FrictionLaw>(top: &TippeTop<T, L>, t0: T, y0: &State<T>) -> Self {
+        let mut e = Events {
+            theta_star: top.theta_star(),
+            half: Crossing::new(Direction::Rising),
+            inversion: Crossing::new(Direction::Rising),
+            touch: Crossing::new(Direction::Rising),
+        };
+        let theta_star = e.theta_star;
+        e.half.start(t0, y0, |y| top.tilt(y) - T::FRAC_PI_2);
+        e.inversion.start(t0, y0, |y| top.tilt(y) - theta_star);
+        e.touch.start(t0, y0, |y| top.penetrations(y)[1]);
+        e
+    }
+
+    /// After an accepted step ending at (t, y). Cost: two θ and one penetration evaluation,
+    /// plus two right-hand sides and the bisections on a step that crosses.
+    pub fn update<L: FrictionLaw>(&mut self, top: &TippeTop<T, L>, t: T, y: &State<T>) {
+        let theta_star = self.theta_star;
+        self.half.update(top, t, y, |y| top.tilt(y) - T::FRAC_PI_2);
+        self.inversion
+            .update(top, t, y, |y| top.tilt(y) - theta_star);
+        self.touch.update(top, t, y, |y| top.penetrations(y)[1]);
+    }
+
+    /// First time θ = π/2 (s).
+    pub fn half(&self) -> Option<T> {
+        self.half.first()
+    }
+
+    /// First time θ = θ* (s).
+    pub fn inversion(&self) -> Option<T> {
+        self.inversion.first()
+    }
+
+    /// First time the small sphere touches the floor (s).
+    pub fn touch_down(&self) -> Option<T> {
+        self.touch.first()
     }
 }
 
