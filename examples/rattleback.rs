@@ -154,6 +154,11 @@ fn opt(x: Option<f64>) -> String {
     x.map_or(String::new(), |t| format!("{t:.4}"))
 }
 
+/// A located time to the µs (the step-halving checks).
+fn fine(x: Option<f64>) -> String {
+    x.map_or(String::new(), |t| format!("{t:.6}"))
+}
+
 fn main() {
     let dir = std::env::args().nth(1).unwrap_or_else(|| "out".into());
     std::fs::create_dir_all(&dir).unwrap();
@@ -198,17 +203,18 @@ fn main() {
             )
             .unwrap();
             println!(
-                "{:10} {:8} ω₀ = {:+.1}: reversal {:>7} s (sampled {:>7}), stall {:>7} s (sampled {:>7}), peak pitch {:.4} / roll {:.4} rad, final spin {:+.3} rad/s, energy {:.6} → {:.6} J, peak |F_t|/N = {:.3}",
+                "{:10} {:8} ω₀ = {:+.1}: reversal {:>8} s (sampled {:>6}), stall {:>8} s (sampled {:>6}), peak pitch {:.4} / roll {:.4} rad, final spin {:+.3} rad/s, peak reversed spin {:+.3} rad/s, energy {:.6} → {:.6} J, peak |F_t|/N = {:.3}",
                 r.law,
                 r.direction,
                 r.spin0,
-                opt(r.reversal()),
+                fine(r.reversal()),
                 opt(r.sampled_reversal()),
-                opt(r.stall()),
+                fine(r.stall()),
                 opt(r.sampled_stall()),
                 r.peak(|p| p.pitch.abs()),
                 r.peak(|p| p.roll.abs()),
                 last.spin,
+                r.peak(|p| -p.spin * r.spin0.signum()),
                 first.energy,
                 last.energy,
                 r.peak(|p| p.friction_ratio)

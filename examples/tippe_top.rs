@@ -135,7 +135,7 @@ fn main() {
         }
         std::fs::write(format!("{dir}/tippe_top_{}.csv", r.name), csv).unwrap();
         let last = r.last();
-        let at = |t: Option<f64>| t.map_or("never".into(), |t| format!("{t:.5} s"));
+        let at = |t: Option<f64>| t.map_or("never".into(), |t| format!("{t:.6} s"));
         println!(
             "{:15} θ = π/2 at {}, inversion (θ = θ*) at {} (sampled every {} s: {}), small sphere touches at {}, θ(T) = {:.3} rad, spin ω·e₃(T) = {:.1} rad/s, on the head {:.0}% of the last second, energy {:.3e} → {:.3e} J, RK4 h = {:e} s: {:.2} s wall",
             r.name,
