@@ -54,7 +54,7 @@ fn main() {
         Explicit::Rk4,
     );
     let reference = touch_down(1e-5f64).expect("the f64 10 µs run touches down");
-    println!("f64 RK4 h = 10 µs: small sphere touches down at {reference:.4} s");
+    println!("f64 RK4 h = 10 µs: small sphere touches down at {reference:.6} s");
     println!(
         "stable-step bound (Friction::stable_step, RK4, m, N = mg): {:.1} µs",
         bound * 1e6
@@ -69,7 +69,7 @@ fn main() {
         println!(
             "f32 RK4 h = {us:3} µs: touch-down {}{}",
             td.map_or("never".into(), |t| format!(
-                "{t:.4} s ({:+.1} ms)",
+                "{t:.6} s ({:+.2} ms)",
                 (t - reference) * 1e3
             )),
             if h > bound {
