@@ -205,6 +205,19 @@ impl<T: Real, const N: usize> Crossing<T, N> {
         g: impl Fn(&[T; N]) -> T,
     ) -> Option<T> {
         let now = g(y);
+        self.update_with(sys, t, y, now, g)
+    }
+
+    /// [`Crossing::update`] with g(y) = `now` already evaluated (several events sharing one
+    /// quantity compute it once per step).
+    pub fn update_with<S: Ode<T, N>>(
+        &mut self,
+        sys: &S,
+        t: T,
+        y: &[T; N],
+        now: T,
+        g: impl Fn(&[T; N]) -> T,
+    ) -> Option<T> {
         let found = match self.previous {
             Some((t0, y0, before)) if self.direction.crossed(before, now) => {
                 let a = Knot::of(sys, t0, &y0);

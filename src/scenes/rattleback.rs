@@ -436,13 +436,16 @@ impl<T: Real> SpinEvents<T> {
         e
     }
 
-    /// After an accepted step ending at (t, y). Cost: two spin evaluations, plus two
-    /// right-hand sides and the bisections on a step that crosses.
+    /// After an accepted step ending at (t, y). Cost: one spin evaluation (a quaternion
+    /// normalisation and rotation), plus two right-hand sides and the bisections on a step that
+    /// crosses.
     pub fn update<L: FrictionLaw>(&mut self, rb: &Rattleback<T, L>, t: T, y: &State<T>) {
         let (sign, level) = (self.sign, self.level);
+        let s = rb.spin(y) * sign;
         self.reversal
-            .update(rb, t, y, |y| rb.spin(y) * sign + level);
-        self.braked.update(rb, t, y, |y| rb.spin(y) * sign - level);
+            .update_with(rb, t, y, s + level, |y| rb.spin(y) * sign + level);
+        self.braked
+            .update_with(rb, t, y, s - level, |y| rb.spin(y) * sign - level);
     }
 
     /// The reversal time (s), if any so far.

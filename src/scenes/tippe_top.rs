@@ -264,20 +264,22 @@ impl<T: Real, L: FrictionLaw> TippeTop<T, L> {
         ]
     }
 
-    /// The tilt θ of the symmetry axis from the vertical at state `y` (rad; 0 stem up, π
-    /// inverted): the event function of [`Events`]' θ crossings, cheaper than [`TippeTop::probe`]
-    /// (no contact evaluation).
+    /// cos θ = e₃·ẑ at state `y` (θ the tilt of the symmetry axis from the vertical: 1 stem
+    /// up, −1 inverted): the event function of [`Events`]' θ crossings — no trigonometry, no
+    /// contact evaluation; the attitude is normalised here (the interpolated states between
+    /// steps are not unit).
     #[inline]
-    pub fn tilt(&self, y: &State<T>) -> T {
-        let e3 = split(y).2.normalized().rotate(Vec3::unit_z());
-        e3.x.hypot(e3.y).atan2(e3.z)
+    pub fn cos_tilt(&self, y: &State<T>) -> T {
+        let (_, _, q, _) = split(y);
+        let (ww, xx, yy, zz) = (q.w * q.w, q.x * q.x, q.y * q.y, q.z * q.z);
+        // z component of q·e₃·q* over |q|².
+        (ww - xx - yy + zz) / (ww + xx + yy + zz)
     }
 
-    /// θ* at which both spheres touch a flat floor: cos θ* = (r − R)/(ε_r − ε_R) (rad; for the
-    /// paper's top arccos(−10/13) ≈ 2.448). NaN if the spheres cannot both touch (|cos| > 1).
-    pub fn theta_star(&self) -> T {
-        let c = (self.small.radius - self.big.radius) / (self.small.offset - self.big.offset);
-        (T::ONE - c * c).sqrt().atan2(c)
+    /// cos θ* = (r − R)/(ε_r − ε_R): at θ* both spheres can touch a flat floor (for the
+    /// paper's top −10/13, θ* ≈ 2.448 rad).
+    pub fn cos_theta_star(&self) -> T {
+        (self.small.radius - self.big.radius) / (self.small.offset - self.big.offset)
     }
 
     /// θ, both normal forces, energy, Jellett's quantity and the spin at state `y`.
@@ -328,12 +330,13 @@ impl<T: Real, L: FrictionLaw> Ode<T, N> for TippeTop<T, L> {
 }
 
 /// The top's events located between integration steps ([`crate::scenes::event`]): the first
-/// time θ reaches π/2 (the axis horizontal), θ reaches θ* ([`TippeTop::theta_star`], where both
-/// spheres can touch: the "inversion" of the README's table), and the small sphere first
-/// penetrates the floor (touch-down, [`TippeTop::penetrations`]). Feed it every accepted step.
+/// time θ reaches π/2 (the axis horizontal), θ reaches θ* ([`TippeTop::cos_theta_star`], where
+/// both spheres can touch: the "inversion" of the README's table), and the small sphere first
+/// reaches the floor (touch-down, [`TippeTop::penetrations`]). The θ events are located on
+/// cos θ ([`TippeTop::cos_tilt`], the same roots). Feed it every accepted step.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Events<T: Real> {
-    theta_star: T,
+    cos_star: T,
     half: Crossing<T, N>,
     inversion: Crossing<T, N>,
     touch: Crossing<T, N>,
@@ -342,26 +345,28 @@ pub struct Events<T: Real> {
 impl<T: Real> Events<T> {
     /// Tracking from the start (t₀, y₀).
     pub fn new<L: FrictionLaw>(top: &TippeTop<T, L>, t0: T, y0: &State<T>) -> Self {
+        let cos_star = top.cos_theta_star();
         let mut e = Events {
-            theta_star: top.theta_star(),
-            half: Crossing::new(Direction::Rising),
-            inversion: Crossing::new(Direction::Rising),
+            cos_star,
+            half: Crossing::new(Direction::Falling),
+            inversion: Crossing::new(Direction::Falling),
             touch: Crossing::new(Direction::Rising),
         };
-        let theta_star = e.theta_star;
-        e.half.start(t0, y0, |y| top.tilt(y) - T::FRAC_PI_2);
-        e.inversion.start(t0, y0, |y| top.tilt(y) - theta_star);
+        e.half.start(t0, y0, |y| top.cos_tilt(y));
+        e.inversion.start(t0, y0, |y| top.cos_tilt(y) - cos_star);
         e.touch.start(t0, y0, |y| top.penetrations(y)[1]);
         e
     }
 
-    /// After an accepted step ending at (t, y). Cost: two θ and one penetration evaluation,
-    /// plus two right-hand sides and the bisections on a step that crosses.
+    /// After an accepted step ending at (t, y). Cost: one cos θ and one penetration
+    /// evaluation (≈ 20 flops), plus two right-hand sides and the bisections on a step that
+    /// crosses.
     pub fn update<L: FrictionLaw>(&mut self, top: &TippeTop<T, L>, t: T, y: &State<T>) {
-        let theta_star = self.theta_star;
-        self.half.update(top, t, y, |y| top.tilt(y) - T::FRAC_PI_2);
+        let cos_star = self.cos_star;
+        let c = top.cos_tilt(y);
+        self.half.update_with(top, t, y, c, |y| top.cos_tilt(y));
         self.inversion
-            .update(top, t, y, |y| top.tilt(y) - theta_star);
+            .update_with(top, t, y, c - cos_star, |y| top.cos_tilt(y) - cos_star);
         self.touch.update(top, t, y, |y| top.penetrations(y)[1]);
     }
 
