@@ -186,7 +186,7 @@ fn usage_errors_name_the_value_and_exit_2() {
         ),
         (
             &["nope"],
-            "subcommand = nope: unknown (one of wrench, elliptic, eccentricity, hertz, friction)",
+            "subcommand = nope: unknown (one of wrench, elliptic, eccentricity, hertz, friction, rolling)",
         ),
     ] {
         let out = run(args, &header);
@@ -216,13 +216,23 @@ fn help_lists_every_model_and_exits_0() {
         "hertz",
         "friction",
         "best-varying",
+        "rolling",
+        "blend",
+        "fastsim-16",
     ] {
         assert!(text.contains(name), "{name} missing from --help");
     }
     for law in Law::ALL {
         assert!(text.contains(law.name()));
     }
-    for sub in ["wrench", "elliptic", "eccentricity", "hertz", "friction"] {
+    for sub in [
+        "wrench",
+        "elliptic",
+        "eccentricity",
+        "hertz",
+        "friction",
+        "rolling",
+    ] {
         for flag in ["--help", "-h"] {
             let out = run(&[sub, flag], "");
             assert!(out.status.success(), "{sub} {flag}");
