@@ -29,12 +29,17 @@
 //!   The asymptote and the table differ at g = 0.1 by up to 2 % (CONTACT switches there with a
 //!   jump); here the asymptote is multiplied by 1 + (r − 1)·g/0.1, r = table/asymptote at 0.1:
 //!   continuous at g = 0.1 and exact as g → 0.
-//! - **C₃₃** is not in CONTACT's copies of Table E3 and no second public copy was found: C₃₃
-//!   is taken from Kalker's simplified theory with the FASTSIM flexibility
-//!   L₃ = πa√(a/b)/(4C₂₃G), which gives M_z = −(8/15)a²b³φ/L₃, i.e.
-//!   C₃₃ = (32/(15π))·C₂₃·(b/a)^{3/2} (0.998 for a circle at ν = 0.25). Its error against the
-//!   exact theory is measured with the exact reference (`host-tests/rolling_ref.rs`), not
-//!   asserted against Kalker's table.
+//! - **C₃₃** is not in CONTACT's copies of Table E3 and no second public copy was found. It is
+//!   taken from the exact steady-rolling reference instead (`tools/data/rolling_ref.csv`,
+//!   family `linear`: Kalker's exact theory in full adhesion, grid-extrapolated, written by
+//!   `tools/rolling_exact`; own error estimate ≤ 0.4 %) at a/b ∈ {0.2, 0.5, 1, 2, 5} and
+//!   ν ∈ {0, 0.25, 0.5}: quartic in ln(a/b) through the five rows (of ln C₃₃), 1/C quadratic
+//!   in ν. Outside [0.2, 5]: the simplified theory's C₃₃ = (32/(15π))·C₂₃·(b/a)^{3/2} (FASTSIM's
+//!   L₃, which gives M_z = −(8/15)a²b³φ/L₃) times its ratio to the exact value at the nearer end
+//!   row (continuous; the ratio is 0.72–2.4 at a/b = 5 and 0.93–0.95 at 0.2, so this
+//!   extrapolation is rough). The simplified value alone is 5–60 % off inside the range.
+//!   The reference's force coefficients agree with Table E3 within 0.4 %, so both come from
+//!   one consistent theory.
 //!
 //! # Domain
 //!
@@ -90,6 +95,53 @@ const LONG: [[f64; 9]; 10] = [
     [3.40, 4.12, 5.20, 3.40, 3.67, 3.98, 1.33, 1.47, 1.63],
 ];
 
+/// C₃₃ of the exact steady-rolling reference (the `linear` family of
+/// `tools/data/rolling_ref.csv`: full adhesion, Richardson-extrapolated over three grids, own
+/// error estimate ≤ 0.4 %): rows a/b = 0.2, 0.5, 1, 2, 5, columns ν = 0, 0.25, 0.5.
+const C33_EXACT: [[f64; 3]; 5] = [
+    [3.4707, 4.2943, 5.6935],
+    [1.7461, 1.9375, 2.2275],
+    [1.2068, 1.1838, 1.1580],
+    [0.9595, 0.8193, 0.6491],
+    [0.8329, 0.6044, 0.3428],
+];
+
+/// ln(a/b) of the rows of [`C33_EXACT`].
+const C33_NODES: [f64; 5] = [0.2, 0.5, 1.0, 2.0, 5.0];
+
+/// The simplified theory's C₃₃ = (32/(15π))·C₂₃·(b/a)^{3/2} (FASTSIM's flexibility L₃).
+fn c33_simplified(r: f64, c23: f64) -> f64 {
+    32.0 / (15.0 * core::f64::consts::PI) * c23 / (r * libm::sqrt(r))
+}
+
+/// C₃₃ for a/b = r, ν: in [0.2, 5] the quartic in ln(a/b) through the five rows of
+/// [`C33_EXACT`] of ln C₃₃ per column, then 1/C quadratic in ν; outside, the simplified
+/// theory's value times its ratio to the exact one at the nearer end row (continuous).
+fn c33(r: f64, nu: f64) -> f64 {
+    let x = libm::log(r.clamp(0.2, 5.0));
+    let col = |j: usize| {
+        let mut sum = 0.0;
+        for (i, row) in C33_EXACT.iter().enumerate() {
+            let mut l = 1.0;
+            for (k, node) in C33_NODES.iter().enumerate() {
+                if k != i {
+                    let xk = libm::log(*node);
+                    l *= (x - xk) / (libm::log(C33_NODES[i]) - xk);
+                }
+            }
+            sum += l * libm::log(row[j]);
+        }
+        libm::exp(sum)
+    };
+    let inside = in_nu([col(0), col(1), col(2)], nu);
+    if (0.2..=5.0).contains(&r) {
+        return inside;
+    }
+    let end = r.clamp(0.2, 5.0);
+    let ratio = inside / c33_simplified(end, coefficients_f64(end, nu)[2]);
+    ratio * c33_simplified(r, coefficients_f64(r, nu)[2])
+}
+
 /// Kalker's linear-theory coefficients of one patch shape and ν (see the [module docs](self)).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Kalker<T> {
@@ -99,7 +151,7 @@ pub struct Kalker<T> {
     pub c22: T,
     /// C₂₃ (spin → F_y, and η → M_z)
     pub c23: T,
-    /// C₃₃ (spin → M_z; simplified-theory value, see the module docs)
+    /// C₃₃ (spin → M_z; from the exact reference, see the module docs)
     pub c33: T,
 }
 
@@ -205,7 +257,7 @@ impl<T: Real> Kalker<T> {
     pub fn new(a_over_b: T, nu: T) -> Self {
         let r = a_over_b.to_f64();
         let [c11, c22, c23] = coefficients_f64(r, nu.to_f64());
-        let c33 = 32.0 / (15.0 * core::f64::consts::PI) * c23 / (r * libm::sqrt(r));
+        let c33 = c33(r, nu.to_f64());
         Self {
             c11: T::from_f64(c11),
             c22: T::from_f64(c22),
