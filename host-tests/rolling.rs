@@ -146,8 +146,10 @@ fn blend_linear_limit_is_kalker() {
 
 #[test]
 fn fastsim_linear_limit_forces_are_kalker() {
-    let w = linear_limit::<Fastsim>(1e-2, false);
+    let w = linear_limit::<Fastsim>(1e-3, false);
     println!("fastsim: linear limit worst relative error (F_x, F_y) {w:.2e}");
+    let w = linear_limit::<FastsimGrid<16, 16>>(1e-2, false);
+    println!("fastsim 16 x 16: linear limit worst relative error (F_x, F_y) {w:.2e}");
 }
 
 /// Full slip (V = 0, and huge creepage): max |ΔF| (fN) and |ΔM_z| (fNc) against the exact
