@@ -1,12 +1,15 @@
 #!/usr/bin/env python3
 """Fits the constants of the default rolling law `blend` (src/friction/rolling/blend.rs) to the
-exact steady-rolling reference tools/data/rolling_ref.csv, and prints the error per family.
+exact steady-rolling reference tools/data/rolling_ref.csv, and prints the error per family and
+shape. The constants printed go into blend.rs by hand (ORDER, ALPHA, G, SIGMA, GAMMA).
 
-The law: q = (κC11ξ, κC22η, κC23cφ) (κ = Gc²/(fN): the linear forces per creepage, in fN),
-t = sqrt((q_x/α_x)² + (q_y/α_y)² + (q_φ/α_φ)² + (M_lin/α_M)²), W_lin split into its gyroscopic
-pair W_cross = (0, -κC23cφ, κC23η) (zero power) and the rest W_diag,
-W = A W_diag + A_s W_cross + B W_fs, A = (1-t)^n, B = 1 - (1-t)^n (1 + n t) for t < 1
-(A = 0, B = 1 beyond), A_s = 1/(1 + (σt)²), then |F| <= fN by scaling W. W_lin and W_fs come from the library itself
+The law (q = κ(C11ξ, C22η, C23cφ): the linear forces, fN; W_fs the full-slip law):
+  t = sqrt((q_x/α_ξ)² + (q_y/α_η)²), A = (1-t)^n, B = 1 - A(1 + n t) (t < 1; else 0, 1),
+  s² = σ²[(q_φ/3)² + g((q_x/3)² + (q_y/3)²)], A_s = 1/sqrt(1 + s⁴),
+  d = |κC33cφ| + γ|q_φ|(1 - A_s), S = (4d m + d²)/(2m + d)², m = |M_fs|,
+  W = (-A q_x + B F_x,fs, -A q_y - A_s q_φ + B F_y,fs, S M_fs + A κC23η),
+then a positive power removed along (ξ, η, cφ) and |F| <= fN by scaling W; σ, γ per shape.
+W_lin and W_fs come from the library itself
 (`contact_eval rolling --law linear|full-slip`), so only the saturation is modelled here.
 
     cargo build --release --bin contact_eval && python3 tools/fit_rolling_blend.py
@@ -53,31 +56,28 @@ for fam, aob, nu, nl, xi, eta, phic, *_ in creep:
     inputs.append((a, b, 1, nu, 1, nl, 1, xi, eta, phic))
 fs = [tuple(v / r[3] for v in w) for w, r in zip(evaluate("full-slip", inputs), creep)]
 
-def blend(params, r, wfs):
-    n, ax, ay, ap, am, sg = params
+SH = [0.2, 0.5, 1.0, 2.0, 5.0]
+
+
+def blend(p, r, wfs):
+    n, ax, ay, g = p[:4]
+    sig, gam = dict(zip(SH, p[4:9])), dict(zip(SH, p[9:14]))
     fam, aob, nu, nl, xi, eta, phic, *_ = r
     c11, c22, c23, c33 = coef[(aob, nu)]
     k = 1 / nl
     qx, qy, qp = k * c11 * xi, k * c22 * eta, k * c23 * phic
-    wl = (-qx, -qy - qp, k * (c23 * eta - c33 * phic))
-    t = math.sqrt((qx / ax) ** 2 + (qy / ay) ** 2 + (qp / ap) ** 2 + (wl[2] / am) ** 2)
-    if RATIONAL:
-        # A = (1 + t)^-n, B = 1 - (1 + n t)(1 + t)^-n for every t: full slip only as t -> oo
-        A = (1 + t) ** -n
-        B = 1 - (1 + n * t) * A
-        w = tuple(A * l + B * f for l, f in zip(wl, wfs))
+    t = math.hypot(qx / ax, qy / ay)
+    if t >= 1:
+        A, B = 0.0, 1.0
     else:
-        # the gyroscopic pair (η → M_z, φ → F_y; zero power) with the weight 1/(1 + (σt)²)
-        cross = (0.0, -qp, k * c23 * eta)
-        diag = tuple(l - c for l, c in zip(wl, cross))
-        As = 1 / (1 + (sg * t) ** 2)
-        if t >= 1:
-            A, B = 0.0, 1.0
-        else:
-            A = (1 - t) ** n
-            B = 1 - A * (1 + n * t)
-        w = tuple(A * d + As * c + B * f for d, c, f in zip(diag, cross, wfs))
-    # passivity: remove a positive power along u = (ξ, η, cφ)
+        A = (1 - t) ** n
+        B = 1 - A * (1 + n * t)
+    s2 = sig[aob] ** 2 * ((qp / 3) ** 2 + g * ((qx / 3) ** 2 + (qy / 3) ** 2))
+    As = 1 / math.sqrt(1 + s2 * s2)
+    d = abs(k * c33 * phic) + gam[aob] * abs(qp) * (1 - As)
+    m = abs(wfs[2])
+    S = (4 * d * m + d * d) / (2 * m + d) ** 2 if m + d > 0 else 0.0
+    w = (-A * qx + B * wfs[0], -A * qy - As * qp + B * wfs[1], S * wfs[2] + A * k * c23 * eta)
     P = w[0] * xi + w[1] * eta + w[2] * phic
     if P > 0:
         u2 = xi * xi + eta * eta + phic * phic
@@ -87,52 +87,49 @@ def blend(params, r, wfs):
         w = tuple(v / fm for v in w)
     return w
 
-def errors(params):
+
+def errors(p):
     out = {}
     for r, wfs in zip(creep, fs):
-        w = blend(params, r, wfs)
+        w = blend(p, r, wfs)
         ef = math.hypot(w[0] - r[7], w[1] - r[8])
         em = abs(w[2] - r[9])
-        for key in (r[0], "all"):
+        for key in (r[0], "all", "%s a/b=%g" % (r[0], r[1])):
             e = out.setdefault(key, [0, 0])
             e[0], e[1] = max(e[0], ef), max(e[1], em)
     return out
 
-def score(params):
-    e = errors(params)["all"]
-    return max(e[0] / 0.03, e[1] / 0.05)
 
-def descend(p, steps):
-    best = (score(p), p)
-    for _ in range(4):
-        for i in range(1, len(p)):
-            for f in steps:
-                q = list(best[1])
-                q[i] *= f
-                q = tuple(q)
-                sc = score(q)
-                if sc < best[0]:
-                    best = (sc, q)
-    return best
+def score(p):
+    """A smooth stand-in for the minimax of max(|dF|/3 %, |dM|/5 %): the 8-norm over rows."""
+    tot = 0.0
+    for r, wfs in zip(creep, fs):
+        w = blend(p, r, wfs)
+        tot += (math.hypot(w[0] - r[7], w[1] - r[8]) / 0.03) ** 8 + (abs(w[2] - r[9]) / 0.05) ** 8
+    return tot ** 0.125
 
-RATIONAL = "--rational" in sys.argv
+
 best = None
 for n in (1, 2, 3):
-    for ax in (n + 1, 1.25 * (n + 1), 1.6 * (n + 1), 2 * (n + 1)):
-        for ap in (1.5, 3, 6, 12):
-            for sg in (0.5, 1, 2, 4):
-                p = (n, ax, ax, ap, 3.0, sg)
-                sc = score(p)
-                if best is None or sc < best[0]:
-                    best = (sc, p)
-print("coarse", best)
-best = descend(best[1], (0.7, 0.85, 0.95, 1.05, 1.18, 1.4))
-best = descend(best[1], (0.97, 0.99, 1.01, 1.03))
-s0, (n, ax, ay, ap, am, sg) = best
-print(f"best: n = {n}, alpha = ({ax:.4g}, {ay:.4g}, {ap:.4g}), alpha_M = {am:.4g}, sigma = {sg:.4g}; score {s0:.3f}")
-for fam, (f, m) in sorted(errors(best[1]).items()):
-    print(f"  {fam:9s} |dF| {f:.2e} fN  |dMz| {m:.2e} fNc")
-if "--rows" in sys.argv:
-    for r, wfs in zip(creep, fs):
-        w = blend(best[1], r, wfs)
-        print(r[0], r[1], "%.3g %.3g %.3g" % r[4:7], "ref %+.3f %+.3f %+.3f got %+.3f %+.3f %+.3f fs %+.3f %+.3f %+.3f" % (*r[7:10], *w, *wfs))
+    for a in (n + 1, 1.3 * (n + 1)):
+        for g in (0.3, 1, 3):
+            p = (n, a, a, g, 5.9, 4, 2.56, 2, 1.71, 1, 1, 0.3, 1, 1.5)
+            s = score(p)
+            if best is None or s < best[0]:
+                best = (s, p)
+s, p = best
+for _ in range(12):  # coordinate descent, multiplicative steps
+    for i in range(1, len(p)):
+        for f in (0.6, 0.8, 0.9, 0.97, 1.03, 1.1, 1.25, 1.6):
+            q = list(p)
+            q[i] = q[i] * f if q[i] > 0 else 0.1
+            q = tuple(q)
+            v = score(q)
+            if v < s:
+                s, p = v, q
+n, ax, ay, g = p[:4]
+print(f"ORDER = {n}; ALPHA = ({ax:.4g}, {ay:.4g}); G = {g:.4g}")
+print("SIGMA =", [float(f"{x:.4g}") for x in p[4:9]])
+print("GAMMA =", [float(f"{x:.4g}") for x in p[9:14]])
+for fam, (f, m) in sorted(errors(p).items()):
+    print(f"  {fam:18s} |dF| {f:.3f} fN  |dMz| {m:.3f} fNc")

@@ -103,6 +103,8 @@ pub struct RollingContact<T> {
     /// turned by 90°.
     pub(crate) along_major: bool,
     pub(crate) best: BestContact<T>,
+    /// The default law's per-shape constants (σ, γ) ([`super::Blend::shape`]).
+    pub(crate) blend: (T, T),
 }
 
 impl<T: Real> RollingContact<T> {
@@ -126,6 +128,7 @@ impl<T: Real> RollingContact<T> {
             major_over_c: if along_major { rho } else { T::ONE / rho },
             along_major,
             best: BestContact::new(&k),
+            blend: super::Blend::shape(r),
         })
     }
 
