@@ -154,24 +154,7 @@ impl RollingLaw for Blend {
             fy: -a_over_v * qy - a_s_over_v * qp + b * fs.fy,
             mz: sm * fs.mz + a_over_v * i.kappa * k.c23 * i.vy,
         };
-        bounded(passive(w, i.vx, i.vy, i.w))
-    }
-}
-
-/// Removes a positive power P = F·v + M_z·ω (the η → M_z and φ → F_y terms carry different
-/// weights): W ← W − P·u/|u|², u = (v_x, v_y, cω). Continuous; only states with P > 0 change.
-#[inline(always)]
-fn passive<T: Real>(c: Creep<T>, vx: T, vy: T, w: T) -> Creep<T> {
-    let p = c.fx * vx + c.fy * vy + c.mz * w;
-    if p > T::ZERO {
-        let k = p / (vx * vx + vy * vy + w * w);
-        Creep {
-            fx: c.fx - k * vx,
-            fy: c.fy - k * vy,
-            mz: c.mz - k * w,
-        }
-    } else {
-        c
+        bounded(super::contact::passive(w, i.vx, i.vy, i.w))
     }
 }
 

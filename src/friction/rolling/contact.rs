@@ -247,3 +247,22 @@ impl RollingLaw for Linear {
         }
     }
 }
+
+/// Removes a positive power P = F·v + M_z·ω from a dimensionless wrench for the slip
+/// direction u = (v_x, v_y, cω): W ← W − P·u/|u|² (only states with P > 0 change; continuous,
+/// the correction vanishing as P → 0⁺). For laws whose cross terms are not exactly
+/// antisymmetric (FASTSIM's simplified theory; `blend`'s channel weights).
+#[inline(always)]
+pub(crate) fn passive<T: Real>(c: Creep<T>, vx: T, vy: T, w: T) -> Creep<T> {
+    let p = c.fx * vx + c.fy * vy + c.mz * w;
+    if p > T::ZERO {
+        let k = p / (vx * vx + vy * vy + w * w);
+        Creep {
+            fx: c.fx - k * vx,
+            fy: c.fy - k * vy,
+            mz: c.mz - k * w,
+        }
+    } else {
+        c
+    }
+}

@@ -191,7 +191,7 @@ impl<const NX: usize, const NY: usize> RollingLaw for FastsimGrid<NX, NY> {
                 * core::f64::consts::PI
                 / NY as f64,
         );
-        passive(
+        super::contact::passive(
             Creep {
                 fx: fx * scale,
                 fy: fy * scale,
@@ -201,24 +201,5 @@ impl<const NX: usize, const NY: usize> RollingLaw for FastsimGrid<NX, NY> {
             vy,
             w,
         )
-    }
-}
-
-/// Removes a positive power P = F·v + M_z·ω (the simplified theory's η → M_z and φ → F_y
-/// couplings use different flexibilities, L₂ and L₃, so its quadratic form can be indefinite
-/// for long patches): W ← W − P·u/|u|², u = (v_x, v_y, cω), in units of (fN, fN, fNc). Only
-/// states with P > 0 change; continuous (the correction vanishes as P → 0⁺).
-#[inline(always)]
-fn passive<T: Real>(c: Creep<T>, vx: T, vy: T, w: T) -> Creep<T> {
-    let p = c.fx * vx + c.fy * vy + c.mz * w;
-    if p > T::ZERO {
-        let k = p / (vx * vx + vy * vy + w * w);
-        Creep {
-            fx: c.fx - k * vx,
-            fy: c.fy - k * vy,
-            mz: c.mz - k * w,
-        }
-    } else {
-        c
     }
 }
