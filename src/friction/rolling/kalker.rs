@@ -126,10 +126,10 @@ fn c33(r: f64, nu: f64) -> f64 {
             for (k, node) in C33_NODES.iter().enumerate() {
                 if k != i {
                     let xk = libm::log(*node);
-                    l *= (x - xk) / (libm::log(C33_NODES[i]) - xk);
+                    l *= (x - xk) / (libm::log(C33_NODES.get(i).copied().unwrap_or(1.0)) - xk);
                 }
             }
-            sum += l * libm::log(row[j]);
+            sum += l * libm::log(row.get(j).copied().unwrap_or(1.0));
         }
         libm::exp(sum)
     };
@@ -155,11 +155,11 @@ pub struct Kalker<T> {
     pub c33: T,
 }
 
-/// The table's C₁₁, C₂₂, C₂₃ of the Table E3 at one of its nodes: `narrow` (a ≤ b) or not,
-/// row `i` (g = 0.1·(i+1)), ν column `j` (ν = 0.25·j). For tests.
-pub fn table_node(narrow: bool, i: usize, j: usize) -> [f64; 3] {
-    let row = if narrow { NARROW[i] } else { LONG[i] };
-    [row[j], row[3 + j], row[6 + j]]
+/// The table's C₁₁, C₂₂, C₂₃ of Table E3 at one of its nodes: `narrow` (a ≤ b) or not,
+/// row `i` (g = 0.1·(i+1), i < 10), ν column `j` (ν = 0.25·j, j < 3); `None` outside. For tests.
+pub fn table_node(narrow: bool, i: usize, j: usize) -> Option<[f64; 3]> {
+    let row = if narrow { NARROW.get(i)? } else { LONG.get(i)? };
+    Some([*row.get(j)?, *row.get(3 + j)?, *row.get(6 + j)?])
 }
 
 /// Cubic Hermite interpolation of a column over g ∈ [0.1, 1] on 10 uniform nodes, with
@@ -168,7 +168,8 @@ fn hermite(rows: &[[f64; 9]; 10], col: usize, g: f64) -> f64 {
     let t = ((g - 0.1) * 10.0).clamp(0.0, 9.0);
     let i = (t as usize).min(8);
     let u = t - i as f64;
-    let y = |k: usize| rows[k][col];
+    // `get`: no bounds-check panic path (k ≤ 9 and col ≤ 8 by construction)
+    let y = |k: usize| rows.get(k).and_then(|r| r.get(col)).copied().unwrap_or(0.0);
     let slope = |k: usize| match k {
         0 => y(1) - y(0),
         9 => y(9) - y(8),
@@ -204,8 +205,8 @@ fn tabulated(narrow: bool, g: f64, nu: f64) -> [f64; 3] {
         };
         let mut scaled = *rows;
         for (i, row) in scaled.iter_mut().enumerate() {
-            for j in 0..3 {
-                row[3 * k + j] *= gp(0.1 * (i + 1) as f64);
+            for c in row.iter_mut().skip(3 * k).take(3) {
+                *c *= gp(0.1 * (i + 1) as f64);
             }
         }
         let c = [0, 1, 2].map(|j| hermite(&scaled, 3 * k + j, g) / gp(g));
@@ -245,8 +246,8 @@ pub(crate) fn coefficients_f64(a_over_b: f64, nu: f64) -> [f64; 3] {
     let (at, tab) = (asymptote(narrow, 0.1, nu), tabulated(narrow, 0.1, nu));
     let here = asymptote(narrow, g, nu);
     let mut out = [0.0; 3];
-    for k in 0..3 {
-        out[k] = here[k] * (1.0 + (tab[k] / at[k] - 1.0) * g / 0.1);
+    for (o, ((h, t), a)) in out.iter_mut().zip(here.iter().zip(tab).zip(at)) {
+        *o = h * (1.0 + (t / a - 1.0) * g / 0.1);
     }
     out
 }

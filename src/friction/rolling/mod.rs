@@ -35,10 +35,13 @@
 //!
 //! # Laws
 //!
-//! - [`Blend`] (default): Kalker's linear theory and the exact full slip joined by a cubic
-//!   saturation; exact at both limits by construction, passive, fixed cost.
+//! - [`Blend`] (default): Kalker's linear theory and the exact full slip joined channel by
+//!   channel with saturation shapes fitted to the exact reference; exact at both limits by
+//!   construction, passive, fixed cost (414 M4F f32 instructions); 0.10 fN / 0.16 fNc from the
+//!   exact theory at worst (spin-dominated states).
 //! - [`Fastsim`] ([`FastsimGrid`]): Kalker's FASTSIM with the elliptic traction bound on a fixed
-//!   grid, saturating to the Contensou–Erismann integrals.
+//!   grid, saturating to the Contensou–Erismann integrals; 0.085 fN / 0.060 fNc from the exact
+//!   theory on 32 × 32 (44,340 M4F instructions).
 //! - [`FullSlip`]: the full-slip law (`best`) whatever V; [`Linear`]: Kalker's linear theory
 //!   unsaturated (a reference, not a friction law).
 //!
