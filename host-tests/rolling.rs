@@ -222,16 +222,25 @@ impl Rng {
 fn passive<L: RollingLaw>(n: usize, seed: u64) {
     let mut rng = Rng(seed);
     let mut worst: f64 = 0.0;
+    // 256 random contacts (a/b, ν, G) built once; the states pick one each
+    let contacts: Vec<_> = (0..256)
+        .map(|_| {
+            let r = 10f64.powf(-2.0 + 4.0 * rng.next());
+            let nu = 0.5 * rng.next();
+            let g = 10f64.powf(6.0 + 5.0 * rng.next());
+            let c64 = RollingContact::new(r, Elasticity::new(g, nu).unwrap()).unwrap();
+            let el32 = Elasticity::new(g as f32, nu as f32).unwrap();
+            let c32 = RollingContact::new(r as f32, el32).unwrap();
+            (r, nu, c64, c32)
+        })
+        .collect();
     for _ in 0..n {
-        let r = 10f64.powf(-2.0 + 4.0 * rng.next());
-        let nu = 0.5 * rng.next();
-        let g = 10f64.powf(6.0 + 5.0 * rng.next());
+        let (r, nu, c, c32) = &contacts[(rng.next() * 256.0) as usize % 256];
+        let (r, nu) = (*r, *nu);
         let a = 10f64.powf(-5.0 + 3.0 * rng.next());
         let n_ = 10f64.powf(-2.0 + 5.0 * rng.next());
         let f = rng.next();
         let (vx, vy, om, v) = (rng.signed(), rng.signed(), rng.signed() / a, rng.signed());
-        let el = Elasticity::new(g, nu).unwrap();
-        let c = RollingContact::new(r, el).unwrap();
         let p = Patch::new(a * r.sqrt(), a / r.sqrt(), n_, f).unwrap();
         let s = RollingSlip::new(vx, vy, om, v).unwrap();
         let w = c.wrench::<L>(&p, &s);
@@ -253,8 +262,6 @@ fn passive<L: RollingLaw>(n: usize, seed: u64) {
             L::NAME
         );
         // f32 alongside: finite and bounded
-        let el32 = Elasticity::new(g as f32, nu as f32).unwrap();
-        let c32 = RollingContact::new(r as f32, el32).unwrap();
         let p32 = Patch::new(
             (a * r.sqrt()) as f32,
             (a / r.sqrt()) as f32,
