@@ -47,6 +47,8 @@
 //!
 //! # Error and cost
 //!
+//! Precision: `f32` within 3.5e-7 fN and 3.0e-7 fNc of `f64` on the same inputs (10,000 states
+//! over the five shapes, `host-tests/rolling.rs`).
 //! Linear limit: Kalker's coefficients, deviation O(t) (`host-tests/rolling.rs`: 1.3e-5
 //! relative at 1e-6 of saturation); full slip: `best`'s error (2.9e-5 fN, 2.0e-6 fNc
 //! measured); against the exact reference: [`Blend::REF_ERROR`] and the README's rolling

@@ -27,9 +27,9 @@
 //!   the exact reference are for a rolling direction along an axis. A caller with a skewed
 //!   rolling velocity turns the frame to the rolling direction and uses the ellipse aligned with
 //!   it whose semi-axis along the rolling direction is the patch's extent in that direction,
-//!   r(θ) = ab/√(b²cos²θ + a²sin²θ), and the other one ab/r (same area, same c); this is exact
-//!   along either axis and continuous in between; the full-slip part stays exact only along the
-//!   axes (not done in the per-step contract yet: see the README's rolling section).
+//!   r(θ) = ab/√(b²cos²θ + a²sin²θ), and the other one ab/r (same area, same c):
+//!   [`aligned_ellipse`]. Exact along either axis and continuous in between; the full-slip part
+//!   stays exact only along the axes (not wired into the per-step contract yet).
 //! - **Elasticity**: [`Elasticity`]: quasi-identical bodies (G, ν), or Kalker's combination
 //!   of dissimilar bodies with the normal–tangential coupling neglected.
 //!
@@ -62,6 +62,7 @@ mod contact;
 mod elastic;
 mod fastsim;
 pub mod kalker;
+mod skew;
 mod slip;
 
 pub use blend::Blend;
@@ -69,4 +70,5 @@ pub use contact::{Creep, FullSlip, Input, Linear, Patch, RollingContact, Rolling
 pub use elastic::Elasticity;
 pub use fastsim::{Fastsim, FastsimGrid};
 pub use kalker::Kalker;
+pub use skew::aligned_ellipse;
 pub use slip::{RollingSlip, Scaled};
