@@ -57,13 +57,13 @@
 //! # Ok::<(), contensou::Error>(())
 //! ```
 
-mod blend;
-mod contact;
-mod elastic;
-mod fastsim;
+pub mod blend;
+pub mod contact;
+pub mod elastic;
+pub mod fastsim;
 pub mod kalker;
-mod skew;
-mod slip;
+pub mod skew;
+pub mod slip;
 
 pub use blend::Blend;
 pub use contact::{Creep, FullSlip, Input, Linear, Patch, RollingContact, RollingLaw, Wrench};
