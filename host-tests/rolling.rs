@@ -7,7 +7,7 @@ use contensou::friction::exact::traction;
 use contensou::friction::rolling::kalker::table_node;
 use contensou::friction::rolling::{
     Blend, Creep, Elasticity, Fastsim, FastsimGrid, FullSlip, Kalker, Linear, Patch,
-    RollingContact, RollingLaw, RollingSlip,
+    RollingContact, RollingLaw, RollingSlip, Table,
 };
 
 /// Exact full slip in the rolling frame: F/(fN), M_z/(fNc) for the slip direction
@@ -146,6 +146,12 @@ fn blend_linear_limit_is_kalker() {
 }
 
 #[test]
+fn table_linear_limit_is_kalker() {
+    let w = linear_limit::<Table>(1e-4, true);
+    println!("table: linear limit worst relative error {w:.2e}");
+}
+
+#[test]
 fn fastsim_linear_limit_forces_are_kalker() {
     let w = linear_limit::<Fastsim>(1e-3, false);
     println!("fastsim: linear limit worst relative error (F_x, F_y) {w:.2e}");
@@ -185,6 +191,15 @@ fn blend_full_slip_is_exact_grade() {
     }
     let (ef, em) = full_slip::<FullSlip>(0.0);
     assert!(ef <= 1e-4 && em <= 1e-4, "{ef} {em}");
+}
+
+#[test]
+fn table_full_slip_is_exact_grade() {
+    for v in [0.0, 1e-9, 1e-6] {
+        let (ef, em) = full_slip::<Table>(v);
+        println!("table: full slip (V/|slip| = {v}) max error {ef:.2e} fN, {em:.2e} fNc");
+        assert!(ef <= 1e-4 && em <= 1e-4, "{ef} {em}");
+    }
 }
 
 #[test]
@@ -285,6 +300,11 @@ fn blend_passive_bounded_finite_on_random_states() {
     passive::<Blend>(100_000, 0x9E3779B97F4A7C15);
 }
 
+#[test]
+fn table_passive_bounded_finite_on_random_states() {
+    passive::<Table>(100_000, 0x2545F4914F6CDD1D);
+}
+
 /// 1e5 FASTSIM calls on 1,024 nodes: ≈ 2 min unoptimised, so release only
 /// (`.ci/run`: `cargo test --release --test rolling -- --include-ignored`).
 #[test]
@@ -300,11 +320,23 @@ fn negative_rolling_speed_is_the_mirror_image() {
         let a = c.wrench::<Blend>(&p, &RollingSlip::new(s[0], s[1], s[2], s[3]).unwrap());
         let b = c.wrench::<Blend>(&p, &RollingSlip::new(-s[0], s[1], -s[2], -s[3]).unwrap());
         assert_eq!((a.fx, a.fy, a.mz), (-b.fx, b.fy, -b.mz));
+        let a = c.wrench::<Table>(&p, &RollingSlip::new(s[0], s[1], s[2], s[3]).unwrap());
+        let b = c.wrench::<Table>(&p, &RollingSlip::new(-s[0], s[1], -s[2], -s[3]).unwrap());
+        assert_eq!((a.fx, a.fy, a.mz), (-b.fx, b.fy, -b.mz));
     }
 }
 
 #[test]
 fn blend_is_continuous_along_creep_curves() {
+    continuous_along_creep_curves::<Blend>();
+}
+
+#[test]
+fn table_is_continuous_along_creep_curves() {
+    continuous_along_creep_curves::<Table>();
+}
+
+fn continuous_along_creep_curves<L: RollingLaw>() {
     // ξ, η, φ swept finely through the saturation point t = 1: no step above the slope's.
     for r in SHAPES {
         let (c, p) = setup(r, 0.25, 0.1);
@@ -318,7 +350,7 @@ fn blend_is_continuous_along_creep_curves() {
             let mut prev: Option<Creep<f64>> = None;
             for k in 0..4000 {
                 let e = 1e-4 * 1.004f64.powi(k);
-                let cur = creep::<Blend>(&c, &p, [dir[0] * e, dir[1] * e, dir[2] * e, 1.0]);
+                let cur = creep::<L>(&c, &p, [dir[0] * e, dir[1] * e, dir[2] * e, 1.0]);
                 if let Some(q) = prev {
                     let d = (cur.fx - q.fx).abs() + (cur.fy - q.fy).abs() + (cur.mz - q.mz).abs();
                     assert!(d < 2e-2, "a/b {r} dir {dir:?} e {e}: step {d}");
@@ -415,6 +447,15 @@ fn aligned_ellipse_for_a_skewed_rolling_direction() {
 fn blend_f32_follows_f64() {
     // the same states in both precisions (measured 3.5e-7 fN, 3.0e-7 fNc): f32 rounding of
     // the inputs and of a few dozen operations
+    f32_follows_f64::<Blend>(2e-6);
+}
+
+#[test]
+fn table_f32_follows_f64() {
+    f32_follows_f64::<Table>(4e-6);
+}
+
+fn f32_follows_f64<L: RollingLaw>(tol: f64) {
     let mut rng = Rng(0x5DEECE66D);
     let (mut ef, mut em) = (0.0f64, 0.0f64);
     for r in SHAPES {
@@ -429,15 +470,15 @@ fn blend_f32_follows_f64() {
             let s = [m * d[0], m * d[1], m * d[2]];
             // the f32 inputs, widened: both precisions see the same state
             let s = s.map(|v| v as f32);
-            let w64 = c64.wrench::<Blend>(
+            let w64 = c64.wrench::<L>(
                 &p64,
                 &RollingSlip::new(s[0] as f64, s[1] as f64, s[2] as f64, 1.0).unwrap(),
             );
-            let w32 = c32.wrench::<Blend>(&p32, &RollingSlip::new(s[0], s[1], s[2], 1.0).unwrap());
+            let w32 = c32.wrench::<L>(&p32, &RollingSlip::new(s[0], s[1], s[2], 1.0).unwrap());
             ef = ef.max((w32.fx as f64 - w64.fx).hypot(w32.fy as f64 - w64.fy) / 0.01);
             em = em.max((w32.mz as f64 - w64.mz).abs() / 0.01);
         }
     }
-    println!("blend f32 vs f64: {ef:.2e} fN, {em:.2e} fNc");
-    assert!(ef <= 2e-6 && em <= 2e-6, "{ef} {em}");
+    println!("{} f32 vs f64: {ef:.2e} fN, {em:.2e} fNc", L::NAME);
+    assert!(ef <= tol && em <= tol, "{ef} {em}");
 }

@@ -10,7 +10,7 @@ use std::process::ExitCode;
 use contensou::Real;
 use contensou::friction::rolling::{
     Blend, Elasticity, Fastsim, FastsimGrid, FullSlip, Linear, Patch, RollingContact, RollingLaw,
-    RollingSlip,
+    RollingSlip, Table,
 };
 
 use crate::csv::{message, run_csv, shortest};
@@ -18,6 +18,11 @@ use crate::{Args, Model, Precision, list_models, run_model};
 
 /// The laws, the default rolling law first.
 pub const MODELS: &[Model] = &[
+    Model {
+        name: Table::NAME,
+        about: "blend plus per-shape residual tables fitted to the exact steady-rolling reference",
+        run: rows::<Table>,
+    },
     Model {
         name: Blend::NAME,
         about: "Kalker's linear theory and the exact full slip (best) joined by a cubic saturation",

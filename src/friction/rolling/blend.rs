@@ -165,7 +165,7 @@ impl RollingLaw for Blend {
 /// |F| ≤ 1 (fN): scales the whole wrench back (a positive factor keeps the power ≤ 0 and the
 /// law continuous). One compare on the common path.
 #[inline(always)]
-fn bounded<T: Real>(w: Creep<T>) -> Creep<T> {
+pub(crate) fn bounded<T: Real>(w: Creep<T>) -> Creep<T> {
     let f2 = w.fx * w.fx + w.fy * w.fy;
     if f2 > T::ONE {
         let s = T::ONE / f2.sqrt();

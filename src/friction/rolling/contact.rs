@@ -105,6 +105,8 @@ pub struct RollingContact<T> {
     pub(crate) best: BestContact<T>,
     /// The default law's per-shape constants (σ, γ) ([`super::Blend::shape`]).
     pub(crate) blend: (T, T),
+    /// The default law's residual tables for this shape ([`super::table::Tables`]).
+    pub(crate) table: super::table::Tables<T>,
 }
 
 impl<T: Real> RollingContact<T> {
@@ -129,6 +131,7 @@ impl<T: Real> RollingContact<T> {
             along_major,
             best: BestContact::new(&k),
             blend: super::Blend::shape(r),
+            table: super::table::Tables::new(r),
         })
     }
 

@@ -64,6 +64,8 @@ pub mod fastsim;
 pub mod kalker;
 pub mod skew;
 pub mod slip;
+pub mod table;
+mod table_data;
 
 pub use blend::Blend;
 pub use contact::{Creep, FullSlip, Input, Linear, Patch, RollingContact, RollingLaw, Wrench};
@@ -72,3 +74,4 @@ pub use fastsim::{Fastsim, FastsimGrid};
 pub use kalker::Kalker;
 pub use skew::aligned_ellipse;
 pub use slip::{RollingSlip, Scaled};
+pub use table::Table;
