@@ -13,7 +13,7 @@ use std::time::Duration;
 use contensou::Real;
 use contensou::friction::rolling::{
     Blend, Elasticity, Fastsim, FastsimGrid, FullSlip, Patch, RollingContact, RollingLaw,
-    RollingSlip,
+    RollingSlip, Table,
 };
 use criterion::Criterion;
 
@@ -60,6 +60,8 @@ fn main() {
         .measurement_time(Duration::from_secs(2))
         .sample_size(20)
         .configure_from_args();
+    bench::<f32, Table>(&mut c, "table");
+    bench::<f64, Table>(&mut c, "table");
     bench::<f32, Blend>(&mut c, "blend");
     bench::<f64, Blend>(&mut c, "blend");
     bench::<f32, FullSlip>(&mut c, "full-slip");

@@ -217,6 +217,7 @@ fn help_lists_every_model_and_exits_0() {
         "friction",
         "best-varying",
         "rolling",
+        "table",
         "blend",
         "fastsim-16",
     ] {
@@ -279,7 +280,7 @@ fn rolling_direct<T: Real, L: contensou::friction::rolling::RollingLaw>(r: [T; 1
 }
 
 fn rolling_matches_the_library<T: Real>(precision: &str) {
-    use contensou::friction::rolling::{Blend, Fastsim, FastsimGrid, FullSlip, Linear};
+    use contensou::friction::rolling::{Blend, Fastsim, FastsimGrid, FullSlip, Linear, Table};
     let rows: Vec<[T; 10]> = ROLLING.iter().map(|r| r.map(T::from_f64)).collect();
     let mut input = "a,b,G,nu,f,N,V,xi,eta,phi\n".to_string();
     for r in &rows {
@@ -291,7 +292,8 @@ fn rolling_matches_the_library<T: Real>(precision: &str) {
         input += "\n";
     }
     type Direct<T> = fn([T; 10]) -> [T; 3];
-    let laws: [(&str, Direct<T>); 5] = [
+    let laws: [(&str, Direct<T>); 6] = [
+        ("table", rolling_direct::<T, Table>),
         ("blend", rolling_direct::<T, Blend>),
         ("fastsim", rolling_direct::<T, Fastsim>),
         ("fastsim-16", rolling_direct::<T, FastsimGrid<16, 16>>),
@@ -318,11 +320,11 @@ fn rolling_matches_the_library<T: Real>(precision: &str) {
             assert_eq!(b(&got[10..]), b(&want), "{name} {precision}: {line}");
         }
     }
-    // the default law is blend
+    // the default law is table
     let out = run(&["rolling", "--precision", precision], &input);
     let first = String::from_utf8(out.stdout).unwrap();
     let blend = run(
-        &["rolling", "--law", "blend", "--precision", precision],
+        &["rolling", "--law", "table", "--precision", precision],
         &input,
     );
     assert_eq!(first, String::from_utf8(blend.stdout).unwrap());

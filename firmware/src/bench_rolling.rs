@@ -10,7 +10,7 @@
 use crate::harness::Runner;
 use contensou::Real;
 use contensou::friction::rolling::{
-    Blend, Elasticity, Fastsim, FastsimGrid, FullSlip, Patch, RollingContact, RollingLaw,
+    Blend, Elasticity, Table, Fastsim, FastsimGrid, FullSlip, Patch, RollingContact, RollingLaw,
     RollingSlip, Wrench,
 };
 
@@ -54,6 +54,7 @@ fn law<T: Real, L: RollingLaw>(r: &Runner, name: &str, contact: &RollingContact<
 fn precision<T: Real>(r: &Runner, all: bool) {
     let el = Elasticity::new(T::from_f64(8e10), T::from_f64(0.28)).expect("valid elasticity");
     let contact = RollingContact::new(T::from_f64(1.5), el).expect("valid contact");
+    law::<T, Table>(r, "table", &contact);
     law::<T, Blend>(r, "blend", &contact);
     law::<T, FullSlip>(r, "full-slip", &contact);
     if all {

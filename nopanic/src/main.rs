@@ -144,7 +144,7 @@ mod api {
     use super::*;
     use contensou::friction::rolling::{
         Blend, Elasticity, FastsimGrid, FullSlip, Linear as KalkerLinear, Patch, RollingContact,
-        RollingLaw, RollingSlip, Wrench,
+        RollingLaw, RollingSlip, Table, Wrench,
     };
 
     /// One rolling wrench by law `L` from raw inputs (every constructor on the way).
@@ -181,6 +181,9 @@ mod api {
         }
         fn probe_rolling_blend<T>(r, g, nu, a, b, n, f, vx, vy, om, v) {
             rolling::<T, Blend>(r, g, nu, a, b, n, f, vx, vy, om, v)
+        }
+        fn probe_rolling_table<T>(r, g, nu, a, b, n, f, vx, vy, om, v) {
+            rolling::<T, Table>(r, g, nu, a, b, n, f, vx, vy, om, v)
         }
         fn probe_rolling_fastsim<T>(r, g, nu, a, b, n, f, vx, vy, om, v) {
             rolling::<T, FastsimGrid<16, 16>>(r, g, nu, a, b, n, f, vx, vy, om, v)

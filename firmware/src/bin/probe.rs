@@ -328,6 +328,8 @@ macro_rules! probes {
 
 probes! {
     "core,call,f32" => bb(t::<f32>(1.0));
+    "rolling,table,f32" => rolling::<f32, contensou::friction::rolling::Table>();
+    "rolling,table,f64" => rolling::<f64, contensou::friction::rolling::Table>();
     "rolling,blend,f32" => rolling::<f32, contensou::friction::rolling::Blend>();
     "rolling,blend,f64" => rolling::<f64, contensou::friction::rolling::Blend>();
     "rolling,full-slip,f32" => rolling::<f32, contensou::friction::rolling::FullSlip>();

@@ -1,4 +1,4 @@
-//! `blend`: the default rolling law — Kalker's linear theory and the exact full-slip law joined
+//! `blend`: a rolling law (the base of the default, [`super::Table`]) — Kalker's linear theory and the exact full-slip law joined
 //! channel by channel, exact at both limits by construction, with saturation shapes fitted to
 //! the exact steady-rolling reference.
 //!
@@ -61,7 +61,8 @@
 use super::contact::{Creep, Input, RollingLaw};
 use crate::Real;
 
-/// The default rolling law (see the [module docs](self)).
+/// Kalker's linear theory and the exact full slip joined channel by channel (see the
+/// [module docs](self)); the base of the default law [`super::Table`].
 #[derive(Clone, Copy, Debug, Default)]
 pub struct Blend;
 
@@ -107,59 +108,66 @@ impl RollingLaw for Blend {
 
     #[inline]
     fn creep<T: Real>(i: &Input<'_, T>) -> Creep<T> {
-        let k = &i.contact.kalker;
-        let (sigma, gamma) = i.contact.blend;
-        let (ax, ay) = Blend::ALPHA;
-        let v = i.v;
-        // the linear forces times v (v = V/S: no division yet)
-        let qx = i.kappa * k.c11 * i.vx;
-        let qy = i.kappa * k.c22 * i.vy;
-        let qp = i.kappa * k.c23 * i.w;
-        let (ux, uy) = (qx * T::from_f64(1.0 / ax), qy * T::from_f64(1.0 / ay));
-        let tv = (ux * ux + uy * uy).sqrt(); // t·v
-        // spin force weight A_s = 1/√(1 + s⁴) = v²/√(v⁴ + (sv)⁴)
-        let third = T::from_f64(1.0 / 3.0);
-        let (px, py, pp) = (qx * third, qy * third, qp * third);
-        let sv2 = sigma * sigma * (pp * pp + T::from_f64(Blend::G) * (px * px + py * py));
-        let v2 = v * v;
-        let root = (v2 * v2 + sv2 * sv2).sqrt();
-        // A_s/v = v/√(v⁴ + (sv)⁴), finite at V = 0 (0 there unless at rest)
-        let (a_s_over_v, one_minus_as) = if root > T::ZERO {
-            (v / root, T::ONE - v2 / root)
-        } else {
-            (T::ZERO, T::ZERO)
-        };
-        let fs = i.contact.full_slip(i.vx, i.vy, i.w);
-        // moment: S(d/m)·M_fs, S(x) = (4x + x²)/(2 + x)², d = |κC₃₃cφ| + γ|q_φ|(1 − A_s)
-        let dv = (i.kappa * k.c33 * i.w).abs() + gamma * qp.abs() * one_minus_as.max(T::ZERO);
-        let mv = fs.mz.abs() * v;
-        let den = T::TWO * mv + dv;
-        let sm = if den > T::ZERO {
-            (T::from_f64(4.0) * dv * mv + dv * dv) / (den * den)
-        } else {
-            T::ZERO
-        };
-        let (a_over_v, b) = if tv < v {
-            let t = tv / v;
-            let u = T::ONE - t;
-            let mut a = T::ONE;
-            for _ in 0..Blend::ORDER {
-                a *= u;
-            }
-            (
-                a / v,
-                T::ONE - a * (T::ONE + T::from_f64(Blend::ORDER as f64) * t),
-            )
-        } else {
-            (T::ZERO, T::ONE) // t ≥ 1 or V = 0
-        };
-        let w = Creep {
-            fx: -a_over_v * qx + b * fs.fx,
-            fy: -a_over_v * qy - a_s_over_v * qp + b * fs.fy,
-            mz: sm * fs.mz + a_over_v * i.kappa * k.c23 * i.vy,
-        };
-        bounded(super::contact::passive(w, i.vx, i.vy, i.w))
+        creep(i)
     }
+}
+
+/// The law's body, inlined into each caller (`blend` itself and [`super::Table`], which adds
+/// its residual to it): one outlined copy would cost both a call.
+#[inline(always)]
+pub(crate) fn creep<T: Real>(i: &Input<'_, T>) -> Creep<T> {
+    let k = &i.contact.kalker;
+    let (sigma, gamma) = i.contact.blend;
+    let (ax, ay) = Blend::ALPHA;
+    let v = i.v;
+    // the linear forces times v (v = V/S: no division yet)
+    let qx = i.kappa * k.c11 * i.vx;
+    let qy = i.kappa * k.c22 * i.vy;
+    let qp = i.kappa * k.c23 * i.w;
+    let (ux, uy) = (qx * T::from_f64(1.0 / ax), qy * T::from_f64(1.0 / ay));
+    let tv = (ux * ux + uy * uy).sqrt(); // t·v
+    // spin force weight A_s = 1/√(1 + s⁴) = v²/√(v⁴ + (sv)⁴)
+    let third = T::from_f64(1.0 / 3.0);
+    let (px, py, pp) = (qx * third, qy * third, qp * third);
+    let sv2 = sigma * sigma * (pp * pp + T::from_f64(Blend::G) * (px * px + py * py));
+    let v2 = v * v;
+    let root = (v2 * v2 + sv2 * sv2).sqrt();
+    // A_s/v = v/√(v⁴ + (sv)⁴), finite at V = 0 (0 there unless at rest)
+    let (a_s_over_v, one_minus_as) = if root > T::ZERO {
+        (v / root, T::ONE - v2 / root)
+    } else {
+        (T::ZERO, T::ZERO)
+    };
+    let fs = i.contact.full_slip(i.vx, i.vy, i.w);
+    // moment: S(d/m)·M_fs, S(x) = (4x + x²)/(2 + x)², d = |κC₃₃cφ| + γ|q_φ|(1 − A_s)
+    let dv = (i.kappa * k.c33 * i.w).abs() + gamma * qp.abs() * one_minus_as.max(T::ZERO);
+    let mv = fs.mz.abs() * v;
+    let den = T::TWO * mv + dv;
+    let sm = if den > T::ZERO {
+        (T::from_f64(4.0) * dv * mv + dv * dv) / (den * den)
+    } else {
+        T::ZERO
+    };
+    let (a_over_v, b) = if tv < v {
+        let t = tv / v;
+        let u = T::ONE - t;
+        let mut a = T::ONE;
+        for _ in 0..Blend::ORDER {
+            a *= u;
+        }
+        (
+            a / v,
+            T::ONE - a * (T::ONE + T::from_f64(Blend::ORDER as f64) * t),
+        )
+    } else {
+        (T::ZERO, T::ONE) // t ≥ 1 or V = 0
+    };
+    let w = Creep {
+        fx: -a_over_v * qx + b * fs.fx,
+        fy: -a_over_v * qy - a_s_over_v * qp + b * fs.fy,
+        mz: sm * fs.mz + a_over_v * i.kappa * k.c23 * i.vy,
+    };
+    bounded(super::contact::passive(w, i.vx, i.vy, i.w))
 }
 
 /// |F| ≤ 1 (fN): scales the whole wrench back (a positive factor keeps the power ≤ 0 and the

@@ -103,7 +103,7 @@ pub struct RollingContact<T> {
     /// turned by 90°.
     pub(crate) along_major: bool,
     pub(crate) best: BestContact<T>,
-    /// The default law's per-shape constants (σ, γ) ([`super::Blend::shape`]).
+    /// `blend`'s per-shape constants (σ, γ) ([`super::Blend::shape`]).
     pub(crate) blend: (T, T),
     /// The default law's residual tables for this shape ([`super::table::Tables`]).
     pub(crate) table: super::table::Tables<T>,

@@ -52,7 +52,7 @@
 //! when slipping; N_x·N_y nodes (1,024 on 32 × 32, 256 on 16 × 16). M4F, f32, the dimensional
 //! call (firmware stage `rolling`, 64 creep-curve states): 44,340 instructions on 32 × 32,
 //! 11,221 on 16 × 16 (9,418 … 15,662). Not an MCU per-step law at these grids; the default law
-//! [`super::Blend`] is.
+//! [`super::Table`] is.
 
 use super::contact::{Creep, Input, RollingLaw};
 use crate::Real;
