@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """Builds the residual tables of the default rolling law `table` (src/friction/rolling/table.rs)
-from the exact steady-rolling reference tools/data/rolling_ref.csv, writes them as Rust
-(src/friction/rolling/table_data.rs) and prints the law's error against the reference on the
-magnitudes the tables were built from (fit) and on the others (held out).
+from the exact steady-rolling reference, writes them as Rust (src/friction/rolling/table_data.rs)
+and prints the law's error against the reference on the magnitudes the tables hold (fit) and on
+magnitudes they never saw (held out).
 
 The law: `blend` (src/friction/rolling/blend.rs: Kalker's linear theory and the exact full slip
 joined by fitted saturation shapes, exact at both limits) plus a residual
@@ -16,9 +16,15 @@ positive power removed and |F| ≤ fN, as blend does.
 
 Tables per shape a/b ∈ {0.2, 0.5, 1, 2, 5} (ν = 0.25, the reference's creep curves): T_ξ (F_x),
 T_η, T_φ (F_y, M_z), R_ξη (F_x, F_y, M_z), R_ηφ (F_y, M_z) — the reference's residual against
-blend on the pure curves, and on the combined curves what the pure tables leave.
-Nodes: every other magnitude of each curve (8 of 15: indices 0, 2, …, 14); the 7 in between are
-held out and only used to measure the interpolation.
+blend on the pure curves, and on the combined curves what the pure tables leave. Nothing is
+fitted: the node values are the reference's residuals.
+
+Two node sets, both reported:
+  all   (written, the law's tables): the 15 magnitudes per curve of tools/data/rolling_ref.csv;
+        held out: the 14 geometric midpoints of tools/data/rolling_ref_mid.csv (same solver,
+        `cargo run --release --example midpoints` in tools/rolling_exact), never used to build;
+  half  (a check at twice the node spacing): every other magnitude of rolling_ref.csv (8 nodes);
+        held out: the 7 in between and the midpoints.
 
     cargo build --release --bin contact_eval && python3 tools/fit_rolling_table.py [--write]
 """
@@ -26,15 +32,19 @@ import math, pathlib, subprocess, sys
 
 root = pathlib.Path(__file__).resolve().parent.parent
 exe = root / "target/release/contact_eval"
-ref = root / "tools/data/rolling_ref.csv"
 out_rs = root / "src/friction/rolling/table_data.rs"
+SH = [0.2, 0.5, 1.0, 2.0, 5.0]
+DIRS = ["xi", "eta", "phi", "xieta", "etaphi"]
 
-rows = []
-for line in ref.read_text().splitlines():
-    if not line or line.startswith("#") or line.startswith("family"):
-        continue
-    f = line.split(",")
-    rows.append((f[0],) + tuple(float(x) for x in f[1:]))
+
+def read(path):
+    rows = []
+    for line in path.read_text().splitlines():
+        if not line or line.startswith("#") or line.startswith("family"):
+            continue
+        f = line.split(",")
+        rows.append((f[0],) + tuple(float(x) for x in f[1:]))
+    return rows
 
 
 def evaluate(law, inputs):
@@ -49,7 +59,14 @@ def patch(aob):
     return s, 1 / s
 
 
-shapes = sorted({(r[1], r[2]) for r in rows})
+FAMS = ("xi", "eta", "phi", "combined", "fullslip", "contact_example", "contact_testbank")
+ref = [r for r in read(root / "tools/data/rolling_ref.csv") if r[0] in FAMS]
+mid_path = root / "tools/data/rolling_ref_mid.csv"
+mid = read(mid_path) if mid_path.exists() else []
+if not mid:
+    print("warning: no", mid_path, "- held-out set of the 'all' tables missing")
+
+shapes = sorted({(r[1], r[2]) for r in ref})
 unit = []
 for aob, nu in shapes:
     a, b = patch(aob)
@@ -60,18 +77,17 @@ for k, key in enumerate(shapes):
     x, y, p = lin[3 * k: 3 * k + 3]
     coef[key] = (-x[0], -y[1], -p[1])  # C11, C22, C23
 
-FAMS = ("xi", "eta", "phi", "combined", "fullslip", "contact_example", "contact_testbank")
-use = [r for r in rows if r[0] in FAMS]
-inputs = []
-for fam, aob, nu, nl, xi, eta, phic, *_ in use:
-    a, b = patch(aob)
-    inputs.append((a, b, 1, nu, 1, nl, 1, xi, eta, phic))
-blend = [tuple(v / r[3] for v in w) for w, r in zip(evaluate("blend", inputs), use)]
 
-SH = [0.2, 0.5, 1.0, 2.0, 5.0]
-DIRS = ["xi", "eta", "phi", "xieta", "etaphi"]
-NODES = 8
-CUBIC = "--cubic" in sys.argv
+def with_blend(rows):
+    inputs = []
+    for fam, aob, nu, nl, xi, eta, phic, *_ in rows:
+        a, b = patch(aob)
+        inputs.append((a, b, 1, nu, 1, nl, 1, xi, eta, phic))
+    return [(r, tuple(v / r[3] for v in w)) for r, w in zip(rows, evaluate("blend", inputs))]
+
+
+ref_b = with_blend(ref)
+mid_b = with_blend(mid) if mid else []
 
 
 def direction(r):
@@ -88,11 +104,13 @@ def curve_name(r):
     return r[0]
 
 
-# curves per shape: rows in magnitude order
+def on_curves(rb):
+    return [(r, b) for r, b in rb if r[2] == 0.25 and r[0] in ("xi", "eta", "phi", "combined")]
+
+
+# the reference's curves per shape, in magnitude order
 curves = {}
-for r, bw in zip(use, blend):
-    if r[2] != 0.25 or r[0] not in ("xi", "eta", "phi", "combined"):
-        continue
+for r, bw in on_curves(ref_b):
     curves.setdefault((r[1], curve_name(r)), []).append((direction(r)[0], r, bw))
 for v in curves.values():
     v.sort(key=lambda e: e[0])
@@ -112,43 +130,57 @@ def lookup(tab, m):
         return vals[-1] * math.exp(-2 * (u - n + 1) * dx)
     i = min(int(u), n - 2)
     t = u - i
-    if not CUBIC:
-        return vals[i] + t * (vals[i + 1] - vals[i])
-    y = lambda k: vals[min(max(k, 0), n - 1)]
-    sl = lambda k: (y(k + 1) - y(k - 1)) / 2 if 0 < k < n - 1 else (y(k + 1) - y(k) if k == 0 else y(k) - y(k - 1))
-    y0, y1, m0, m1 = y(i), y(i + 1), sl(i), sl(i + 1)
-    t2, t3 = t * t, t * t * t
-    return (2*t3 - 3*t2 + 1)*y0 + (t3 - 2*t2 + t)*m0 + (-2*t3 + 3*t2)*y1 + (t3 - t2)*m1
+    return vals[i] + t * (vals[i + 1] - vals[i])
 
 
 def residual(r, bw):
     return tuple(w - b for w, b in zip(r[7:10], bw))
 
 
-def grid(cv):
-    """Nodes: every other magnitude; ln m uniform (the reference's curves are log-spaced)."""
-    ms = [cv[2 * k][0] for k in range(NODES)]
-    x0 = math.log(ms[0])
-    dx = (math.log(ms[-1]) - x0) / (NODES - 1)
-    # uniform in ln m to 1e-9 relative by construction of the reference curves
-    for k, mm in enumerate(ms):
-        assert abs(math.log(mm) - x0 - k * dx) < 1e-6, (math.log(mm) - x0 - k * dx)
-    return x0, dx
+def build(step):
+    """Tables on every `step`-th magnitude of each curve: {(shape, curve): (x0, dx, vals)}."""
+    idx = list(range(0, 15, step))
+    tables = {}
+
+    def grid(cv):
+        ms = [cv[k][0] for k in idx]
+        x0 = math.log(ms[0])
+        dx = (math.log(ms[-1]) - x0) / (len(ms) - 1)
+        for k, mm in enumerate(ms):  # uniform in ln m (the reference's curves are log-spaced)
+            assert abs(math.log(mm) - x0 - k * dx) < 1e-6
+        return x0, dx
+
+    for aob in SH:
+        for name, chans in (("xi", (0,)), ("eta", (1, 2)), ("phi", (1, 2))):
+            cv = curves[(aob, name)]
+            x0, dx = grid(cv)
+            sign = math.copysign(1.0, direction(cv[0][1])[1][DIRS.index(name)])
+            vals = [[sign * residual(cv[k][1], cv[k][2])[c] if c in chans else 0.0 for k in idx]
+                    for c in range(3)]
+            tables[(aob, name)] = (x0, dx, vals)
+    for aob in SH:
+        for name in ("xieta", "etaphi"):
+            cv = curves[(aob, name)]
+            x0, dx = grid(cv)
+            vals = [[], [], []]
+            for k in idx:
+                m, r, bw = cv[k]
+                _, d = direction(r)
+                p = pure_part(tables, aob, m, d)
+                res = residual(r, bw)
+                if name == "xieta":
+                    w = 2 * abs(d[0] * d[1])
+                    sg = (math.copysign(1, d[0]), math.copysign(1, d[1]), math.copysign(1, d[1]))
+                else:  # ηφ: no F_x
+                    w = 2 * max(0.0, d[1] * d[2])
+                    sg = (0.0, math.copysign(1, d[1]), math.copysign(1, d[1]))
+                for c in range(3):
+                    vals[c].append(sg[c] * (res[c] - p[c]) / w if sg[c] != 0 else 0.0)
+            tables[(aob, name)] = (x0, dx, vals)
+    return tables
 
 
-tables = {}  # (shape, name) -> (x0, dx, [[ch0...], [ch1...], [ch2...]])
-for aob in SH:
-    for name, chans in (("xi", (0,)), ("eta", (1, 2)), ("phi", (1, 2))):
-        cv = curves[(aob, name)]
-        x0, dx = grid(cv)
-        s = 1.0  # residual per unit direction component (d = ±1 on the pure curve)
-        sign = math.copysign(1.0, direction(cv[0][1])[1][DIRS.index(name)])
-        vals = [[sign * residual(cv[2 * k][1], cv[2 * k][2])[c] if c in chans else 0.0
-                 for k in range(NODES)] for c in range(3)]
-        tables[(aob, name)] = (x0, dx, vals)
-
-
-def pure_part(aob, m, d):
+def pure_part(tables, aob, m, d):
     out = [0.0, 0.0, 0.0]
     for name, j in (("xi", 0), ("eta", 1), ("phi", 2)):
         x0, dx, vals = tables[(aob, name)]
@@ -157,28 +189,7 @@ def pure_part(aob, m, d):
     return out
 
 
-for aob in SH:
-    for name in ("xieta", "etaphi"):
-        cv = curves[(aob, name)]
-        x0, dx = grid(cv)
-        vals = [[], [], []]
-        for k in range(NODES):
-            m, r, bw = cv[2 * k]
-            _, d = direction(r)
-            p = pure_part(aob, m, d)
-            res = residual(r, bw)
-            if name == "xieta":
-                w = 2 * abs(d[0] * d[1])
-                sg = (math.copysign(1, d[0]), math.copysign(1, d[1]), math.copysign(1, d[1]))
-            else:
-                w = 2 * max(0.0, d[1] * d[2])
-                sg = (0.0, math.copysign(1, d[1]), math.copysign(1, d[1]))
-            for c in range(3):
-                vals[c].append(sg[c] * (res[c] - p[c]) / w if sg[c] != 0 else 0.0)  # ηφ: no F_x
-        tables[(aob, name)] = (x0, dx, vals)
-
-
-def shape_tables(aob):
+def shape_tables(tables, aob):
     """The tables for a/b: linear in ln(a/b) between the fitted shapes (values and grids)."""
     x = math.log(min(max(aob, 0.2), 5.0))
     i = 0
@@ -194,10 +205,10 @@ def shape_tables(aob):
     return out
 
 
-def law(r, bw):
+def law(tables, r, bw):
     fam, aob, nu, nl, xi, eta, phic = r[:7]
     m, d = direction(r)
-    tb = shape_tables(aob)
+    tb = shape_tables(tables, aob)
     look = lambda name, c: lookup((tb[name][0], tb[name][1], tb[name][2][c]), m)
     dw = [0.0, 0.0, 0.0]
     for name, j in (("xi", 0), ("eta", 1), ("phi", 2)):
@@ -223,18 +234,20 @@ def law(r, bw):
     return out
 
 
-def report():
+def report(name, step):
+    tables = build(step)
     err = {}
-    for r, bw in zip(use, blend):
-        fam = r[0]
-        key = fam
-        if fam in ("xi", "eta", "phi", "combined") and r[2] == 0.25:
-            cv = curves[(r[1], curve_name(r))]
-            idx = [e[1] for e in cv].index(r)
-            part = "fit" if idx % 2 == 0 else "held-out"
+    parts = []
+    for r, bw in ref_b:
+        if r[0] in ("xi", "eta", "phi", "combined") and r[2] == 0.25:
+            k = [e[1] for e in curves[(r[1], curve_name(r))]].index(r)
+            parts.append(("fit" if k % step == 0 else "held-out", r, bw))
         else:
-            part = "outside"
-        g = law(r, bw)
+            parts.append(("outside", r, bw))
+    parts += [("held-out", r, bw) for r, bw in on_curves(mid_b)]
+    for part, r, bw in parts:
+        key = curve_name(r)
+        g = law(tables, r, bw)
         ef = math.hypot(g[0] - r[7], g[1] - r[8])
         em = abs(g[2] - r[9])
         eb = (math.hypot(bw[0] - r[7], bw[1] - r[8]), abs(bw[2] - r[9]))
@@ -242,22 +255,34 @@ def report():
             e = err.setdefault(k, [0, 0, 0, 0])
             e[0], e[1] = max(e[0], ef), max(e[1], em)
             e[2], e[3] = max(e[2], eb[0]), max(e[3], eb[1])
+    print(f"== nodes '{name}': every {step} of 15 magnitudes per curve")
     for (part, key), (f, m, bf, bm) in sorted(err.items()):
+        if "a/b" in key and "-v" not in sys.argv:
+            continue
         print(f"{part:9s} {key:24s} table |dF| {f:.4f} |dMz| {m:.4f}   (blend {bf:.4f} {bm:.4f})")
+    return tables
 
 
-report()
+report("half", 2)
+tables = report("all", 1)
 
 
-def rust():
+def rust(tables):
+    n = len(tables[(SH[0], "xi")][2][0])
     lines = ["//! Generated by `python3 tools/fit_rolling_table.py --write` from",
              "//! tools/data/rolling_ref.csv and the `blend` law: the residual tables of",
              "//! [`super::table`] (see there). Do not edit.",
              "",
+             f"/// Nodes per curve.",
+             f"pub(crate) const NODES: usize = {n};",
+             "",
              "/// Per shape (a/b = 0.2, 0.5, 1, 2, 5) and curve (ξ, η, φ, ξη, ηφ): ln m of the first",
              "/// node, the node spacing in ln m, and the residual F_x, F_y, M_z (fN, fN, fNc) at the",
-             f"/// {NODES} nodes.",
-             f"pub(crate) const TABLES: [[(f64, f64, [[f64; {NODES}]; 3]); 5]; 5] = ["]
+             "/// nodes.",
+             "pub(crate) type Curves = [[(f64, f64, [[f64; NODES]; 3]); 5]; 5];",
+             "",
+             "/// The tables.",
+             "pub(crate) const TABLES: Curves = ["]
     for aob in SH:
         lines.append("    [")
         for name in DIRS:
@@ -273,4 +298,4 @@ def rust():
 
 
 if "--write" in sys.argv:
-    rust()
+    rust(tables)

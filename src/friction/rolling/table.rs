@@ -51,11 +51,9 @@
 
 use super::blend::{bounded, creep as blend_creep};
 use super::contact::{Creep, Input, RollingLaw, passive};
-use super::table_data::TABLES;
+use super::table_data::{NODES, TABLES};
 use crate::Real;
 
-/// Nodes per curve.
-const NODES: usize = 8;
 /// The fitted shapes (a/b).
 const SHAPES: [f64; 5] = [0.2, 0.5, 1.0, 2.0, 5.0];
 
@@ -163,8 +161,8 @@ pub struct Table;
 impl Table {
     /// Measured max error against the exact reference's creep curves on the magnitudes held
     /// out of the tables (|ΔF| in fN, |ΔM_z| in fNc), asserted by `host-tests/rolling_ref.rs`
-    /// with a small margin (measured 0.1142, 0.0644).
-    pub const REF_ERROR_HELD_OUT: (f64, f64) = (0.116, 0.066);
+    /// with a small margin (measured 0.0917, 0.0608).
+    pub const REF_ERROR_HELD_OUT: (f64, f64) = (0.095, 0.063);
 }
 
 impl RollingLaw for Table {
