@@ -19,14 +19,19 @@ T_η, T_φ (F_y, M_z), R_ξη (F_x, F_y, M_z), R_ηφ (F_y, M_z) — the referen
 blend on the pure curves, and on the combined curves what the pure tables leave. Nothing is
 fitted: the node values are the reference's residuals.
 
-Two node sets, both reported:
-  all   (written, the law's tables): the 15 magnitudes per curve of tools/data/rolling_ref.csv;
-        held out: the 14 geometric midpoints of tools/data/rolling_ref_mid.csv (same solver,
-        `cargo run --release --example midpoints` in tools/rolling_exact), never used to build;
-  half  (a check at twice the node spacing): every other magnitude of rolling_ref.csv (8 nodes);
-        held out: the 7 in between and the midpoints.
+The exact reference on each creep curve: the 15 magnitudes of tools/data/rolling_ref.csv, the
+14 geometric midpoints of tools/data/rolling_ref_mid.csv and the 28 quarter points of
+tools/data/rolling_ref_quarter.csv (same solver: `cargo run --release --example midpoints
+[-- quarter]` in tools/rolling_exact). Three node sets, all reported; the rows a set does not
+hold are its held-out rows (never used to build it):
+  all   (written, the law's tables): rolling_ref.csv + the midpoints, 29 nodes per curve;
+        held out: the quarter points;
+  ref   rolling_ref.csv's 15 magnitudes; held out: the midpoints and quarter points;
+  half  every other magnitude of rolling_ref.csv (8 nodes); held out: the rest.
 
-    cargo build --release --bin contact_eval && python3 tools/fit_rolling_table.py [--write]
+    cargo build --release --bin contact_eval && python3 tools/fit_rolling_table.py [--write|--check]
+
+(--check: fail if the committed table_data.rs differs from what the reference and blend give.)
 """
 import math, pathlib, subprocess, sys
 
@@ -61,10 +66,8 @@ def patch(aob):
 
 FAMS = ("xi", "eta", "phi", "combined", "fullslip", "contact_example", "contact_testbank")
 ref = [r for r in read(root / "tools/data/rolling_ref.csv") if r[0] in FAMS]
-mid_path = root / "tools/data/rolling_ref_mid.csv"
-mid = read(mid_path) if mid_path.exists() else []
-if not mid:
-    print("warning: no", mid_path, "- held-out set of the 'all' tables missing")
+mid = read(root / "tools/data/rolling_ref_mid.csv")
+quarter = read(root / "tools/data/rolling_ref_quarter.csv")
 
 shapes = sorted({(r[1], r[2]) for r in ref})
 unit = []
@@ -87,7 +90,8 @@ def with_blend(rows):
 
 
 ref_b = with_blend(ref)
-mid_b = with_blend(mid) if mid else []
+mid_b = with_blend(mid)
+quarter_b = with_blend(quarter)
 
 
 def direction(r):
@@ -108,13 +112,14 @@ def on_curves(rb):
     return [(r, b) for r, b in rb if r[2] == 0.25 and r[0] in ("xi", "eta", "phi", "combined")]
 
 
-# the reference's curves per shape, in magnitude order
+# the reference's curves per shape, in magnitude order: rolling_ref.csv at the even
+# indices, the midpoints at the odd ones
 curves = {}
-for r, bw in on_curves(ref_b):
+for r, bw in on_curves(ref_b) + on_curves(mid_b):
     curves.setdefault((r[1], curve_name(r)), []).append((direction(r)[0], r, bw))
 for v in curves.values():
     v.sort(key=lambda e: e[0])
-    assert len(v) == 15, len(v)
+    assert len(v) == 29, len(v)
 
 
 def lookup(tab, m):
@@ -139,7 +144,7 @@ def residual(r, bw):
 
 def build(step):
     """Tables on every `step`-th magnitude of each curve: {(shape, curve): (x0, dx, vals)}."""
-    idx = list(range(0, 15, step))
+    idx = list(range(0, 29, step))
     tables = {}
 
     def grid(cv):
@@ -238,13 +243,13 @@ def report(name, step):
     tables = build(step)
     err = {}
     parts = []
-    for r, bw in ref_b:
+    for r, bw in ref_b + mid_b:
         if r[0] in ("xi", "eta", "phi", "combined") and r[2] == 0.25:
             k = [e[1] for e in curves[(r[1], curve_name(r))]].index(r)
             parts.append(("fit" if k % step == 0 else "held-out", r, bw))
         else:
             parts.append(("outside", r, bw))
-    parts += [("held-out", r, bw) for r, bw in on_curves(mid_b)]
+    parts += [("held-out", r, bw) for r, bw in on_curves(quarter_b)]
     for part, r, bw in parts:
         key = curve_name(r)
         g = law(tables, r, bw)
@@ -255,7 +260,7 @@ def report(name, step):
             e = err.setdefault(k, [0, 0, 0, 0])
             e[0], e[1] = max(e[0], ef), max(e[1], em)
             e[2], e[3] = max(e[2], eb[0]), max(e[3], eb[1])
-    print(f"== nodes '{name}': every {step} of 15 magnitudes per curve")
+    print(f"== nodes '{name}': every {step} of the 29 magnitudes per curve")
     for (part, key), (f, m, bf, bm) in sorted(err.items()):
         if "a/b" in key and "-v" not in sys.argv:
             continue
@@ -263,7 +268,8 @@ def report(name, step):
     return tables
 
 
-report("half", 2)
+report("half", 4)
+report("ref", 2)
 tables = report("all", 1)
 
 
@@ -282,6 +288,7 @@ def rust(tables):
              "pub(crate) type Curves = [[(f64, f64, [[f64; NODES]; 3]); 5]; 5];",
              "",
              "/// The tables.",
+             "#[rustfmt::skip]",
              "pub(crate) const TABLES: Curves = ["]
     for aob in SH:
         lines.append("    [")
@@ -293,9 +300,44 @@ def rust(tables):
             lines.append("        ]),")
         lines.append("    ],")
     lines.append("];")
-    out_rs.write_text("\n".join(lines) + "\n")
-    print("wrote", out_rs)
+    return "\n".join(lines) + "\n"
 
 
 if "--write" in sys.argv:
-    rust(tables)
+    out_rs.write_text(rust(tables))
+    print("wrote", out_rs)
+if "--check" in sys.argv and out_rs.read_text() != rust(tables):
+    sys.exit(f"{out_rs} is not what the reference and blend give: python3 {sys.argv[0]} --write")
+
+
+def compare_laws():
+    """Every rolling law of contact_eval against the exact reference per curve family, on the
+    quarter points (held out from `table`'s tables; no law was fitted on them) and on all
+    curve points (rolling_ref.csv + midpoints + quarter points), plus CONTACT's cases."""
+    sets = {"quarter": on_curves([(r, None) for r in quarter]),
+            "curves": on_curves([(r, None) for r in ref + mid + quarter]),
+            "contact": [(r, None) for r in ref if r[0].startswith("contact")]}
+    laws = ["table", "blend", "fastsim", "fastsim-16", "full-slip"]
+    print("law        set      " + "  ".join(f"{f:>13s}" for f in ("xi", "eta", "phi", "etaphi", "xieta", "all")))
+    for law_name in laws:
+        for set_name, rows in sets.items():
+            rows = [r for r, _ in rows]
+            inputs = []
+            for fam, aob, nu, nl, xi, eta, phic, *_ in rows:
+                a, b = patch(aob)
+                inputs.append((a, b, 1, nu, 1, nl, 1, xi, eta, phic))
+            got = evaluate(law_name, inputs)
+            err = {}
+            for r, w in zip(rows, got):
+                w = [v / r[3] for v in w]
+                e = (math.hypot(w[0] - r[7], w[1] - r[8]), abs(w[2] - r[9]))
+                for k in (curve_name(r) if set_name != "contact" else "all", "all"):
+                    o = err.setdefault(k, [0, 0])
+                    o[0], o[1] = max(o[0], e[0]), max(o[1], e[1])
+            cols = ("xi", "eta", "phi", "etaphi", "xieta", "all")
+            print(f"{law_name:10s} {set_name:8s} " + "  ".join(
+                f"{err[c][0]:.3f}/{err[c][1]:.3f}" if c in err else f"{'':13s}" for c in cols))
+
+
+if "--laws" in sys.argv:
+    compare_laws()
