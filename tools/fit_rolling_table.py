@@ -289,7 +289,7 @@ def rust(tables):
              "",
              "/// The tables.",
              "#[rustfmt::skip]",
-             "pub(crate) const TABLES: Curves = ["]
+             "pub(crate) static TABLES: Curves = ["]
     for aob in SH:
         lines.append("    [")
         for name in DIRS:

@@ -36,14 +36,15 @@
 //! # Laws
 //!
 //! - [`Table`] (default): [`Blend`] plus per-shape tables of its residual against the exact
-//!   reference over the normalised creepage (every other magnitude of the reference's creep
-//!   curves), the limits kept: exact at both limits, passive, fixed cost (758 M4F f32
-//!   instructions); on the held-out magnitudes 0.114 fN / 0.064 fNc from the exact theory at
-//!   worst (the knee of pure spin at a/b = 5), against `blend`'s 0.101 / 0.162.
+//!   reference over the normalised creepage (29 magnitudes per creep curve), the limits kept:
+//!   exact at both limits, passive, fixed cost (759 M4F f32 instructions); on held-out
+//!   magnitudes 0.045 fN / 0.033 fNc from the exact theory at worst (the knee of pure spin at
+//!   a/b = 5), against `blend`'s 0.148 / 0.168 on the same rows.
 //! - [`Blend`]: Kalker's linear theory and the exact full slip joined channel by
 //!   channel with saturation shapes fitted to the exact reference; exact at both limits by
 //!   construction, passive, fixed cost (414 M4F f32 instructions); 0.10 fN / 0.16 fNc from the
-//!   exact theory at worst (spin-dominated states).
+//!   exact theory at worst on the points it was fitted to, 0.165 / 0.169 between them
+//!   (spin-dominated states).
 //! - [`Fastsim`] ([`FastsimGrid`]): Kalker's FASTSIM with the elliptic traction bound on a fixed
 //!   grid, saturating to the Contensou–Erismann integrals; 0.085 fN / 0.060 fNc from the exact
 //!   theory on 32 × 32 (44,340 M4F instructions).
