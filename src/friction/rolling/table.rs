@@ -30,6 +30,26 @@
 //! - Passive (the projection), |F| ≤ fN (the scaling), continuous (each piece is; d is
 //!   continuous away from rest, and the correction vanishes at rest).
 //!
+//! # Domain and special cases
+//!
+//! Every input, as `blend`: rest → 0; N ≤ 0 or f = 0 → 0; V = 0 → full slip (the correction is
+//! skipped: its limit there is 0); V < 0 by the mirror ([`super::RollingSlip`]). a/b outside
+//! [0.2, 5]: the end shape's tables (not measured); ν ≠ 0.25: the same residuals with ν's own
+//! Kalker coefficients.
+//!
+//! # Example
+//!
+//! ```
+//! use contensou::friction::rolling::{Elasticity, Patch, RollingContact, RollingSlip, Table};
+//!
+//! let contact = RollingContact::new(5.0_f32, Elasticity::new(80e9, 0.25)?)?; // once
+//! let patch = Patch::new(10e-3, 2e-3, 10e3, 0.3)?;
+//! // pure spin near the knee of the spin force (φ·c ≈ 1.6e-3, V = 20 m/s)
+//! let w = contact.wrench::<Table>(&patch, &RollingSlip::from_creepages(0.0, 0.0, 0.36, 20.0)?);
+//! assert!(w.fy < 0.0 && w.mz < 0.0 && w.fy.abs() <= 0.3 * 10e3);
+//! # Ok::<(), contensou::Error>(())
+//! ```
+//!
 //! # Error (against the exact reference, `host-tests/rolling_ref.rs`)
 //!
 //! On the 29 magnitudes per curve the tables hold: the reference to rounding. Held out (never
@@ -51,6 +71,12 @@
 //! 1.8e-5 relative at 1e-6 of saturation; full slip: `best`'s 2.9e-5 fN, 2.0e-6 fNc
 //! (`host-tests/rolling.rs`). Limits, passivity (1e5 random
 //! states), continuity along creep curves and the V < 0 mirror: `host-tests/rolling.rs`.
+//!
+//! # References
+//!
+//! Kalker, *Three-dimensional elastic bodies in rolling contact* (1990): the exact theory the
+//! reference solves (`tools/rolling_exact`, its README) and the linear coefficients
+//! ([`super::Kalker`]).
 //!
 //! # Cost
 //!
