@@ -4,8 +4,8 @@
 //! Inputs: 64 states along creep curves, a = 6 mm, b = 4 mm, N = 80 kN, f = 0.3, V = 30 m/s;
 //! the creepage magnitude log-uniform from 1e-3 of saturation to 30× past it (ξ_sat ≈ 3fN/(Gc²C₁₁)
 //! ≈ 2.5e-3), the direction of (ξ, η, cφ) on a fixed spiral over the sphere (pure and combined
-//! creepage and spin); methods `table` (the default), `blend`, `fastsim-16` (16 × 16 grid), `fastsim`
-//! (32 × 32), `full-slip`.
+//! creepage and spin); methods `table` (the default), `blend`, `fastsim-16` (16 × 16 grid),
+//! `fastsim` (32 × 32), `full-slip`.
 
 use crate::harness::Runner;
 use contensou::Real;
