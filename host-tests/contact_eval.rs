@@ -186,7 +186,7 @@ fn usage_errors_name_the_value_and_exit_2() {
         ),
         (
             &["nope"],
-            "subcommand = nope: unknown (one of wrench, elliptic, eccentricity, hertz, friction)",
+            "subcommand = nope: unknown (one of wrench, elliptic, eccentricity, hertz, friction, rolling)",
         ),
     ] {
         let out = run(args, &header);
@@ -216,13 +216,24 @@ fn help_lists_every_model_and_exits_0() {
         "hertz",
         "friction",
         "best-varying",
+        "rolling",
+        "table",
+        "blend",
+        "fastsim-16",
     ] {
         assert!(text.contains(name), "{name} missing from --help");
     }
     for law in Law::ALL {
         assert!(text.contains(law.name()));
     }
-    for sub in ["wrench", "elliptic", "eccentricity", "hertz", "friction"] {
+    for sub in [
+        "wrench",
+        "elliptic",
+        "eccentricity",
+        "hertz",
+        "friction",
+        "rolling",
+    ] {
         for flag in ["--help", "-h"] {
             let out = run(&[sub, flag], "");
             assert!(out.status.success(), "{sub} {flag}");
@@ -244,4 +255,118 @@ fn floats_print_in_shortest_form() {
         line.starts_with("10,400,1.15e11,0.3,0.2,1e-4,2e-6,0.01,-3e-3,2e-3,25,"),
         "{line}"
     );
+}
+
+/// `rolling` rows (a, b, G, ν, f, N, V, ξ, η, φ): shapes on both sides of the circle, from
+/// tiny creepage to full slip, spin, V < 0 and V = 0.
+const ROLLING: [[f64; 10]; 6] = [
+    [6e-3, 4e-3, 8e10, 0.28, 0.3, 8e4, 30.0, 1e-4, 0.0, 0.0],
+    [2e-3, 5e-3, 8e10, 0.25, 0.3, 5e3, 10.0, -2e-3, 1e-3, 0.5],
+    [1e-4, 1e-4, 1e9, 0.5, 0.5, 1.0, -1.0, 1e-2, -3e-3, 40.0],
+    [3e-3, 3e-4, 8e10, 0.0, 0.2, 1e3, 0.0, 0.3, 0.2, -100.0],
+    [6e-3, 4e-3, 8e10, 0.28, 0.3, 8e4, 30.0, 0.0, 0.0, 0.0],
+    [6e-3, 4e-3, 8e10, 0.28, 0.0, 8e4, 30.0, 1e-3, 0.0, 1.0],
+];
+
+fn rolling_direct<T: Real, L: contensou::friction::rolling::RollingLaw>(r: [T; 10]) -> [T; 3] {
+    use contensou::friction::rolling::{Elasticity, Patch, RollingContact, RollingSlip};
+    let el = Elasticity::new(r[2], r[3]).unwrap();
+    let c = RollingContact::new(r[0] / r[1], el).unwrap();
+    let p = Patch::new(r[0], r[1], r[5], r[4]).unwrap();
+    let v = if r[6] == T::ZERO { T::ONE } else { r[6] };
+    let s = RollingSlip::from_creepages(r[7], r[8], r[9], v).unwrap();
+    let w = c.wrench::<L>(&p, &s);
+    [w.fx, w.fy, w.mz]
+}
+
+fn rolling_matches_the_library<T: Real>(precision: &str) {
+    use contensou::friction::rolling::{Blend, Fastsim, FastsimGrid, FullSlip, Linear, Table};
+    let rows: Vec<[T; 10]> = ROLLING.iter().map(|r| r.map(T::from_f64)).collect();
+    let mut input = "a,b,G,nu,f,N,V,xi,eta,phi\n".to_string();
+    for r in &rows {
+        input += &r
+            .iter()
+            .map(|v| v.to_string())
+            .collect::<Vec<_>>()
+            .join(",");
+        input += "\n";
+    }
+    type Direct<T> = fn([T; 10]) -> [T; 3];
+    let laws: [(&str, Direct<T>); 6] = [
+        ("table", rolling_direct::<T, Table>),
+        ("blend", rolling_direct::<T, Blend>),
+        ("fastsim", rolling_direct::<T, Fastsim>),
+        ("fastsim-16", rolling_direct::<T, FastsimGrid<16, 16>>),
+        ("full-slip", rolling_direct::<T, FullSlip>),
+        ("linear", rolling_direct::<T, Linear>),
+    ];
+    for (name, direct) in laws {
+        let out = run(
+            &["rolling", "--law", name, "--precision", precision],
+            &input,
+        );
+        assert!(
+            out.status.success(),
+            "{name}: {}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let stdout = String::from_utf8(out.stdout).unwrap();
+        let mut lines = stdout.lines();
+        assert_eq!(lines.next().unwrap(), "a,b,G,nu,f,N,V,xi,eta,phi,Fx,Fy,Mz");
+        for (line, r) in lines.zip(&rows) {
+            let got: Vec<T> = line.split(',').map(|f| f.parse().ok().unwrap()).collect();
+            let want = direct(*r);
+            let b = |v: &[T]| v.iter().map(|x| x.to_f64().to_bits()).collect::<Vec<_>>();
+            assert_eq!(b(&got[10..]), b(&want), "{name} {precision}: {line}");
+        }
+    }
+    // the default law is table
+    let out = run(&["rolling", "--precision", precision], &input);
+    let first = String::from_utf8(out.stdout).unwrap();
+    let blend = run(
+        &["rolling", "--law", "table", "--precision", precision],
+        &input,
+    );
+    assert_eq!(first, String::from_utf8(blend.stdout).unwrap());
+}
+
+#[test]
+fn rolling_is_bit_identical_to_the_library() {
+    rolling_matches_the_library::<f64>("f64");
+    rolling_matches_the_library::<f32>("f32");
+}
+
+#[test]
+fn rolling_refuses_bad_rows_naming_the_column() {
+    let good = "6e-3,4e-3,8e10,0.28,0.3,8e4,30,1e-3,0,0";
+    for (bad, message) in [
+        (
+            "6e-3,4e-3,0,0.28,0.3,8e4,30,1e-3,0,0",
+            "G = 0: shear modulus G must be positive (Pa)",
+        ),
+        (
+            "6e-3,4e-3,8e10,0.6,0.3,8e4,30,1e-3,0,0",
+            "nu = 0.6: Poisson's ratio of a rolling contact outside [0, 0.5] (Kalker's table)",
+        ),
+        (
+            "0,4e-3,8e10,0.28,0.3,8e4,30,1e-3,0,0",
+            "a = 0: length must be positive",
+        ),
+        (
+            "6e-3,4e-3,8e10,0.28,-0.3,8e4,30,1e-3,0,0",
+            "f = -0.3: friction coefficient is negative",
+        ),
+        (
+            "1,4e-3,8e10,0.28,0.3,8e4,30,1e-3,0,0",
+            "a/b = 250: semi-axis ratio a/b of a rolling contact outside [0.01, 100]",
+        ),
+    ] {
+        let input = format!("a,b,G,nu,f,N,V,xi,eta,phi\n{good}\n{bad}\n");
+        let out = run(&["rolling"], &input);
+        assert_eq!(out.status.code(), Some(1), "{bad}");
+        assert_eq!(
+            String::from_utf8_lossy(&out.stderr),
+            format!("contact_eval: row 2: {message}\n"),
+        );
+    }
 }

@@ -47,7 +47,7 @@ fn documented() -> Vec<String> {
 #[test]
 fn readme_table_lists_every_variant() {
     let (d, r) = (declared(), documented());
-    assert_eq!(d.len(), 11, "variants parsed from src/error.rs: {d:?}");
+    assert_eq!(d.len(), 14, "variants parsed from src/error.rs: {d:?}");
     assert_eq!(d, r, "src/error.rs vs README Errors table");
 }
 
@@ -197,6 +197,22 @@ fn each_variant<T: Real>() {
     assert_eq!(
         CompressionDamping::new(x(-1.0)).unwrap_err(),
         Error::DampingNegative
+    );
+
+    // Rolling contacts: G ≤ 0, ν outside [0, 0.5], a/b outside [0.01, 100].
+    use contensou::friction::rolling::{Elasticity, RollingContact};
+    assert_eq!(
+        Elasticity::new(x(0.0), x(0.3)).unwrap_err(),
+        Error::ShearModulusNotPositive
+    );
+    assert_eq!(
+        Elasticity::new(x(8e10), x(-0.1)).unwrap_err(),
+        Error::RollingPoissonRatioOutOfRange
+    );
+    let el = Elasticity::new(x(8e10), x(0.3)).unwrap();
+    assert_eq!(
+        RollingContact::new(x(200.0), el).unwrap_err(),
+        Error::RollingAspectOutOfRange
     );
 }
 

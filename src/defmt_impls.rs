@@ -1,6 +1,6 @@
 //! `defmt::Format` for the types firmware logs (feature `defmt`): the error, the patch, the
-//! dimensionless traction, the tangential result and the wrench (branches are left out: they
-//! are diagnostics with a `Debug` form on host).
+//! dimensionless traction, the tangential result, the wrench and the rolling wrench (branches
+//! are left out: they are diagnostics with a `Debug` form on host).
 
 use defmt::{Format, Formatter, write};
 
@@ -59,6 +59,17 @@ impl<T: Format, B> Format for Wrench<T, B> {
             f,
             "Wrench {{ n: {}, fx: {}, fy: {}, tz: {}, a: {}, b: {} }}",
             self.n, self.fx, self.fy, self.tz, self.patch.a, self.patch.b
+        )
+    }
+}
+
+#[cfg_attr(docsrs, doc(cfg(feature = "defmt")))]
+impl<T: Format> Format for crate::friction::rolling::Wrench<T> {
+    fn format(&self, f: Formatter<'_>) {
+        write!(
+            f,
+            "RollingWrench {{ fx: {}, fy: {}, mz: {} }}",
+            self.fx, self.fy, self.mz
         )
     }
 }

@@ -39,6 +39,15 @@ pub enum Error {
     RegularizationSpeedNegative,
     /// A damping coefficient is negative.
     DampingNegative,
+    /// The combined shear modulus G of a rolling contact ([`crate::friction::rolling`]) is ≤ 0
+    /// or its combination from two bodies under- or overflows.
+    ShearModulusNotPositive,
+    /// Poisson's ratio ν of a rolling contact outside [0, 0.5] (the domain of Kalker's
+    /// coefficient table).
+    RollingPoissonRatioOutOfRange,
+    /// The semi-axis ratio a/b of a rolling contact (a along the rolling direction) outside
+    /// [0.01, 100].
+    RollingAspectOutOfRange,
 }
 
 impl Error {
@@ -64,6 +73,13 @@ impl Error {
                 "regularization speed delta must be >= 0 (m/s; 0 = no regularization)"
             }
             Error::DampingNegative => "damping coefficient is negative",
+            Error::ShearModulusNotPositive => "shear modulus G must be positive (Pa)",
+            Error::RollingPoissonRatioOutOfRange => {
+                "Poisson's ratio of a rolling contact outside [0, 0.5] (Kalker's table)"
+            }
+            Error::RollingAspectOutOfRange => {
+                "semi-axis ratio a/b of a rolling contact outside [0.01, 100]"
+            }
         }
     }
 }

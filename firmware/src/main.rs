@@ -31,6 +31,7 @@ stages! {
     bench_wrench,
     bench_frame,
     bench_scene,
+    bench_rolling,
 }
 
 #[entry]

@@ -17,18 +17,19 @@
 use core::hint::black_box;
 
 use contensou::Real;
-use contensou::select::Precision;
 use contensou::contact::{Contact, VaryingContact};
 use contensou::elliptic::{self, Agm, Method, Parameter, Theta, ThetaMicromath};
 use contensou::friction::{
-    self, Best, BestMicromath, BestSeries, Constants, Coulomb, CoulombMicromath, Ellipsoid, EllipsoidMicromath,
-    Exact, Explicit, Friction, FrictionLaw, Pade, Simplified, SimplifiedMicromath, Slip, SlipState,
+    self, Best, BestMicromath, BestSeries, Constants, Coulomb, CoulombMicromath, Ellipsoid,
+    EllipsoidMicromath, Exact, Explicit, Friction, FrictionLaw, Pade, Simplified,
+    SimplifiedMicromath, Slip, SlipState,
 };
 use contensou::geometry::{Curvatures, Principal, Race};
 use contensou::normal::{
     CompressionDamping, Damping, Fitted, Hertz, HertzMicromath, HuntCrossley, Material, Modulus,
     NormalLaw, Undamped, Volumetric,
 };
+use contensou::select::Precision;
 use contensou::shape::{
     self, Eccentricity, HamrockDowson, HamrockDowsonMicromath, Linear, Newton, Ratio,
 };
@@ -141,8 +142,58 @@ law_probes! {
 /// The rest of the API, one probe per entry point.
 mod api {
     use super::*;
+    use contensou::friction::rolling::{
+        Blend, Elasticity, FastsimGrid, FullSlip, Linear as KalkerLinear, Patch, RollingContact,
+        RollingLaw, RollingSlip, Table, Wrench,
+    };
+
+    /// One rolling wrench by law `L` from raw inputs (every constructor on the way).
+    #[allow(clippy::too_many_arguments)]
+    #[inline(always)]
+    fn rolling<T: Real, L: RollingLaw>(
+        r: T,
+        g: T,
+        nu: T,
+        a: T,
+        b: T,
+        n: T,
+        f: T,
+        vx: T,
+        vy: T,
+        om: T,
+        v: T,
+    ) -> Result<Wrench<T>, contensou::Error> {
+        let c = RollingContact::new(r, Elasticity::new(g, nu)?)?;
+        let p = Patch::new(a, b, n, f)?;
+        let s = RollingSlip::new(vx, vy, om, v)?;
+        Ok(c.wrench::<L>(&p, &s))
+    }
 
     probes! {
+        // rolling contact (friction::rolling, issue 20)
+        fn probe_rolling_elasticity<T>(g, nu) { Elasticity::new(g, nu) }
+        fn probe_rolling_dissimilar<T>(g, nu, h, mu) { Elasticity::dissimilar(g, nu, h, mu) }
+        fn probe_rolling_contact<T>(r, g, nu) {
+            Elasticity::new(g, nu).and_then(|e| RollingContact::new(r, e)).map(|c| *c.kalker())
+        }
+        fn probe_rolling_slip<T>(vx, vy, om, v) {
+            RollingSlip::new(vx, vy, om, v).map(|s| (s.creepages(), s.scaled(vx)))
+        }
+        fn probe_rolling_blend<T>(r, g, nu, a, b, n, f, vx, vy, om, v) {
+            rolling::<T, Blend>(r, g, nu, a, b, n, f, vx, vy, om, v)
+        }
+        fn probe_rolling_table<T>(r, g, nu, a, b, n, f, vx, vy, om, v) {
+            rolling::<T, Table>(r, g, nu, a, b, n, f, vx, vy, om, v)
+        }
+        fn probe_rolling_fastsim<T>(r, g, nu, a, b, n, f, vx, vy, om, v) {
+            rolling::<T, FastsimGrid<16, 16>>(r, g, nu, a, b, n, f, vx, vy, om, v)
+        }
+        fn probe_rolling_full_slip<T>(r, g, nu, a, b, n, f, vx, vy, om, v) {
+            rolling::<T, FullSlip>(r, g, nu, a, b, n, f, vx, vy, om, v)
+        }
+        fn probe_rolling_linear<T>(r, g, nu, a, b, n, f, vx, vy, om, v) {
+            rolling::<T, KalkerLinear>(r, g, nu, a, b, n, f, vx, vy, om, v)
+        }
         // elliptic
         fn probe_parameter_new<T>(m) { (Parameter::new(m), Parameter::<T>::min_complement()) }
         fn probe_parameter_from_complement<T>(m1) { Parameter::from_complement(m1).map(|p| (p.m(), p.m1())) }

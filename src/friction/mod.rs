@@ -38,6 +38,7 @@ pub mod exact;
 pub mod law;
 pub mod pade;
 pub mod reference;
+pub mod rolling;
 pub mod simplified;
 pub mod slip;
 mod spin_step;

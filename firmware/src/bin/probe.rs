@@ -294,6 +294,16 @@ fn dynamic_best(form: contensou::dynamic::Form) {
     }
 }
 
+/// One rolling wrench by the law `L` (stage `rolling`): the contact built and called.
+fn rolling<T: Real, L: contensou::friction::rolling::RollingLaw>() {
+    use contensou::friction::rolling::{Elasticity, Patch, RollingContact, RollingSlip};
+    let el = ok(Elasticity::<T>::new(t(8e10), t(0.28)));
+    let c = ok(RollingContact::new(t(1.5), el));
+    let p = ok(Patch::new(t(6e-3), t(4e-3), t(8e4), t(0.3)));
+    let s = ok(RollingSlip::from_creepages(t(1e-3), t(2e-4), t(0.5), t(30.0)));
+    bb(c.wrench::<L>(&p, &s));
+}
+
 /// `probes! { "stage,method,precision" => body; … }`: every key, and the body run for `KEY`.
 macro_rules! probes {
     ($($key:literal => $body:expr;)*) => {
@@ -318,6 +328,14 @@ macro_rules! probes {
 
 probes! {
     "core,call,f32" => bb(t::<f32>(1.0));
+    "rolling,table,f32" => rolling::<f32, contensou::friction::rolling::Table>();
+    "rolling,table,f64" => rolling::<f64, contensou::friction::rolling::Table>();
+    "rolling,blend,f32" => rolling::<f32, contensou::friction::rolling::Blend>();
+    "rolling,blend,f64" => rolling::<f64, contensou::friction::rolling::Blend>();
+    "rolling,full-slip,f32" => rolling::<f32, contensou::friction::rolling::FullSlip>();
+    "rolling,full-slip,f64" => rolling::<f64, contensou::friction::rolling::FullSlip>();
+    "rolling,fastsim-16,f32" => rolling::<f32, contensou::friction::rolling::FastsimGrid<16, 16>>();
+    "rolling,fastsim,f32" => rolling::<f32, contensou::friction::rolling::Fastsim>();
     "wrench,dyn-fixed-best,f32" => dynamic_best(contensou::dynamic::Form::Fixed);
     "wrench,dyn-varying-best,f32" => dynamic_best(contensou::dynamic::Form::Varying);
     "frame,slip,f32" => frame_slip::<f32>();

@@ -24,6 +24,7 @@ mod csv;
 mod elliptic;
 mod friction;
 mod hertz;
+mod rolling;
 mod wrench;
 
 use std::process::ExitCode;
@@ -129,7 +130,7 @@ struct Subcommand {
     run: fn(Args) -> Result<ExitCode, String>,
 }
 
-const SUBCOMMANDS: [Subcommand; 5] = [
+const SUBCOMMANDS: [Subcommand; 6] = [
     Subcommand {
         name: "wrench",
         columns: "P,Q,estar,cd,f,delta,h,hdot,vx,vy,omega -> N,Fx,Fy,Tz,a,b,e2",
@@ -159,6 +160,12 @@ const SUBCOMMANDS: [Subcommand; 5] = [
         columns: "e2,psi,u -> Fx,Fy,Tz",
         help: friction::help,
         run: friction::run,
+    },
+    Subcommand {
+        name: "rolling",
+        columns: "a,b,G,nu,f,N,V,xi,eta,phi -> Fx,Fy,Mz",
+        help: rolling::help,
+        run: rolling::run,
     },
 ];
 

@@ -1,0 +1,271 @@
+//! The per-contact data of the rolling laws ([`RollingContact`]: shape, elasticity, Kalker's
+//! coefficients, the full-slip tables), the per-call patch ([`Patch`]), the law interface
+//! ([`RollingLaw`]) and the dimensional result ([`Wrench`]).
+
+use super::{Elasticity, Kalker, RollingSlip, Scaled};
+use crate::elliptic::Parameter;
+use crate::error::finite;
+use crate::friction::{BestContact, Constants, Slip, SlipState};
+use crate::{Error, Real};
+
+/// Forces (N) and moment about the patch centre (N·m) on body B from body A, in the rolling
+/// frame (x along the rolling direction, z the contact normal).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Wrench<T> {
+    /// F_x (N)
+    pub fx: T,
+    /// F_y (N)
+    pub fy: T,
+    /// M_z (N·m)
+    pub mz: T,
+}
+
+/// Dimensionless rolling traction on body B: F_x/(fN), F_y/(fN), M_z/(fNc), c = √(ab).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Creep<T> {
+    /// F_x/(fN)
+    pub fx: T,
+    /// F_y/(fN)
+    pub fy: T,
+    /// M_z/(fNc)
+    pub mz: T,
+}
+
+/// The patch of one call: semi-axes a (along the rolling direction) and b (m), normal force N
+/// (N) and friction coefficient f. Validated: a, b > 0 ([`Error::LengthNotPositive`]),
+/// f ≥ 0 ([`Error::FrictionCoefficientNegative`]), all finite ([`Error::NonFinite`]: `"a"`,
+/// `"b"`, `"N"`, `"f"`); N ≤ 0 is no contact (zero wrench).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Patch<T> {
+    pub(crate) c: T,
+    pub(crate) fn_: T,
+}
+
+impl<T: Real> Patch<T> {
+    /// See the [type docs](Self).
+    pub fn new(a: T, b: T, n: T, f: T) -> Result<Self, Error> {
+        let (a, b) = (finite(a, "a")?, finite(b, "b")?);
+        let (n, f) = (finite(n, "N")?, finite(f, "f")?);
+        if !(a > T::ZERO && b > T::ZERO) {
+            return Err(Error::LengthNotPositive);
+        }
+        if f < T::ZERO {
+            return Err(Error::FrictionCoefficientNegative);
+        }
+        Ok(Self {
+            c: (a * b).sqrt(),
+            fn_: f * n.max(T::ZERO),
+        })
+    }
+
+    /// c = √(ab) (m)
+    pub fn c(&self) -> T {
+        self.c
+    }
+}
+
+/// What a rolling law sees per call, all dimensionless: the load parameter κ = Gc²/(fN), the
+/// slip in homogeneous form with ω̂ = cω/S, and the contact.
+#[derive(Debug)]
+pub struct Input<'a, T> {
+    /// The contact (shape, coefficients, full-slip tables).
+    pub contact: &'a RollingContact<T>,
+    /// κ = Gc²/(fN) > 0 (the inverse of the load ratio fN/(Gc²)).
+    pub kappa: T,
+    /// v_x/S
+    pub vx: T,
+    /// v_y/S
+    pub vy: T,
+    /// cω/S
+    pub w: T,
+    /// |V|/S ∈ [0, 1]
+    pub v: T,
+}
+
+/// A rolling law: dimensionless creep from the dimensionless input (V ≥ 0 after the mirror).
+pub trait RollingLaw {
+    /// The name `contact_eval rolling --law` takes.
+    const NAME: &'static str;
+    /// F/(fN), M_z/(fNc) on body B.
+    fn creep<T: Real>(input: &Input<'_, T>) -> Creep<T>;
+}
+
+/// A rolling contact: the patch shape a/b (a along the rolling direction), the elasticity, and
+/// what depends on them only, built once (Kalker's coefficients, the full-slip law's tables).
+#[derive(Clone, Debug)]
+pub struct RollingContact<T> {
+    pub(crate) rho: T,
+    pub(crate) kalker: Kalker<T>,
+    pub(crate) g: T,
+    /// a_major/c: √(a/b) or √(b/a)
+    pub(crate) major_over_c: T,
+    /// a ≥ b: the library frame (x along the major axis) is the rolling frame; else it is
+    /// turned by 90°.
+    pub(crate) along_major: bool,
+    pub(crate) best: BestContact<T>,
+    /// `blend`'s per-shape constants (σ, γ) ([`super::Blend::shape`]).
+    pub(crate) blend: (T, T),
+    /// The default law's residual tables for this shape ([`super::table::Tables`]).
+    pub(crate) table: super::table::Tables<T>,
+}
+
+impl<T: Real> RollingContact<T> {
+    /// From the semi-axis ratio a/b ∈ [0.01, 100] ([`Error::RollingAspectOutOfRange`];
+    /// non-finite: [`Error::NonFinite`] `"a/b"`) and the elastic constants. Builds the Kalker
+    /// coefficients ([`Kalker::new`]) and the per-contact tables of `best` for full slip.
+    pub fn new(a_over_b: T, elasticity: Elasticity<T>) -> Result<Self, Error> {
+        let r = finite(a_over_b, "a/b")?;
+        if !(r >= T::from_f64(0.01) && r <= T::from_f64(100.0)) {
+            return Err(Error::RollingAspectOutOfRange);
+        }
+        let along_major = r >= T::ONE;
+        let minor_over_major = if along_major { T::ONE / r } else { r };
+        let m = T::ONE - minor_over_major * minor_over_major;
+        let k = Constants::from_parameter(Parameter::new(m)?);
+        let rho = r.sqrt();
+        Ok(Self {
+            rho,
+            kalker: Kalker::new(r, elasticity.nu()),
+            g: elasticity.g(),
+            major_over_c: if along_major { rho } else { T::ONE / rho },
+            along_major,
+            best: BestContact::new(&k),
+            blend: super::Blend::shape(r),
+            table: super::table::Tables::new(r),
+        })
+    }
+
+    /// Kalker's coefficients of this contact.
+    pub fn kalker(&self) -> &Kalker<T> {
+        &self.kalker
+    }
+
+    /// The wrench on body B by the law `L` for one patch and slip state. Total: rest, N ≤ 0
+    /// or f = 0 give zero; V = 0 gives full slip.
+    #[inline]
+    pub fn wrench<L: RollingLaw>(&self, patch: &Patch<T>, slip: &RollingSlip<T>) -> Wrench<T> {
+        let s = slip.scaled(patch.c);
+        let cr = self.creep::<L>(patch, &s);
+        Wrench {
+            fx: cr.fx * patch.fn_,
+            fy: cr.fy * patch.fn_,
+            mz: cr.mz * patch.fn_ * patch.c,
+        }
+    }
+
+    /// The dimensionless creep by the law `L` (mirror for V < 0 applied).
+    #[inline]
+    pub fn creep<L: RollingLaw>(&self, patch: &Patch<T>, s: &Scaled<T>) -> Creep<T> {
+        if patch.fn_ <= T::ZERO {
+            return Creep::default();
+        }
+        let kappa = self.g * patch.c * patch.c / patch.fn_;
+        let input = Input {
+            contact: self,
+            kappa: if kappa.is_finite() { kappa } else { T::MAX },
+            vx: s.vx,
+            vy: s.vy,
+            w: patch.c * s.omega,
+            v: s.v,
+        };
+        let mut cr = L::creep(&input);
+        if s.mirrored {
+            cr.fx = -cr.fx;
+            cr.mz = -cr.mz;
+        }
+        cr
+    }
+
+    /// Full slip (the Contensou–Erismann integrals by `best`'s per-contact form) for the
+    /// direction of (v_x, v_y, cω) in the rolling frame.
+    #[inline]
+    pub fn full_slip(&self, vx: T, vy: T, w: T) -> Creep<T> {
+        // library frame: x along the major axis; a < b turns the frame by 90°:
+        // x' = y, y' = −x (ω unchanged).
+        let (lx, ly) = if self.along_major {
+            (vx, vy)
+        } else {
+            (vy, -vx)
+        };
+        let st = SlipState::from_slip(Slip::or_rest(lx, ly, w), self.major_over_c, T::ZERO);
+        let (t, _) = self.best.traction(&st);
+        let (fx, fy) = if self.along_major {
+            (t.fx, t.fy)
+        } else {
+            (-t.fy, t.fx)
+        };
+        Creep {
+            fx,
+            fy,
+            mz: t.tz * self.major_over_c,
+        }
+    }
+}
+
+/// Full slip everywhere, whatever V (the sliding law of the library, `best`): the limit every
+/// rolling law meets at large creepage and V → 0.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct FullSlip;
+
+impl RollingLaw for FullSlip {
+    const NAME: &'static str = "full-slip";
+    #[inline]
+    fn creep<T: Real>(i: &Input<'_, T>) -> Creep<T> {
+        i.contact.full_slip(i.vx, i.vy, i.w)
+    }
+}
+
+/// Kalker's linear theory, unsaturated (|F| unbounded: a reference for small creepage, not a
+/// friction law; V = 0 gives zero).
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Linear;
+
+impl Linear {
+    /// F/(fN), M_z/(fNc) of the linear theory times V/S (the numerators of the creepage
+    /// form): the creep is this divided by the scaled rolling speed v.
+    #[inline(always)]
+    pub(crate) fn numerators<T: Real>(i: &Input<'_, T>) -> Creep<T> {
+        let k = &i.contact.kalker;
+        let q = i.kappa;
+        Creep {
+            fx: -q * k.c11 * i.vx,
+            fy: -q * (k.c22 * i.vy + k.c23 * i.w),
+            mz: q * (k.c23 * i.vy - k.c33 * i.w),
+        }
+    }
+}
+
+impl RollingLaw for Linear {
+    const NAME: &'static str = "linear";
+    fn creep<T: Real>(i: &Input<'_, T>) -> Creep<T> {
+        if i.v <= T::ZERO {
+            return Creep::default();
+        }
+        let n = Self::numerators(i);
+        let r = T::ONE / i.v;
+        Creep {
+            fx: n.fx * r,
+            fy: n.fy * r,
+            mz: n.mz * r,
+        }
+    }
+}
+
+/// Removes a positive power P = F·v + M_z·ω from a dimensionless wrench for the slip
+/// direction u = (v_x, v_y, cω): W ← W − P·u/|u|² (only states with P > 0 change; continuous,
+/// the correction vanishing as P → 0⁺). For laws whose cross terms are not exactly
+/// antisymmetric (FASTSIM's simplified theory; `blend`'s channel weights).
+#[inline(always)]
+pub(crate) fn passive<T: Real>(c: Creep<T>, vx: T, vy: T, w: T) -> Creep<T> {
+    let p = c.fx * vx + c.fy * vy + c.mz * w;
+    if p > T::ZERO {
+        let k = p / (vx * vx + vy * vy + w * w);
+        Creep {
+            fx: c.fx - k * vx,
+            fy: c.fy - k * vy,
+            mz: c.mz - k * w,
+        }
+    } else {
+        c
+    }
+}
