@@ -390,7 +390,7 @@ pub fn wrench<T: Real>(
 }
 
 /// Validated, ordered curvatures with P/Q in the solvers' range (both forms: nothing clamped).
-fn curvatures_of<T: Real>(p: T, q: T) -> Result<Curvatures<T>, Invalid> {
+pub(crate) fn curvatures_of<T: Real>(p: T, q: T) -> Result<Curvatures<T>, Invalid> {
     let column = if p.is_finite() { "Q" } else { "P" };
     let curvatures = Curvatures::ordered(p, q).map_err(|error| Invalid {
         column: match error {

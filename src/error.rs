@@ -39,6 +39,9 @@ pub enum Error {
     RegularizationSpeedNegative,
     /// A damping coefficient is negative.
     DampingNegative,
+    /// The columns of a batch call ([`crate::batch`]) have different lengths: the error names
+    /// the first column whose length differs from `h`'s.
+    ColumnLengthMismatch,
 }
 
 impl Error {
@@ -64,6 +67,7 @@ impl Error {
                 "regularization speed delta must be >= 0 (m/s; 0 = no regularization)"
             }
             Error::DampingNegative => "damping coefficient is negative",
+            Error::ColumnLengthMismatch => "batch columns have different lengths",
         }
     }
 }

@@ -130,6 +130,9 @@ pub use stiffness::{ramp_stiffness, spin_stiffness};
 use super::{Constants, FrictionLaw, SlipState, Traction, larger};
 use crate::Real;
 use quartic::Quartic;
+// The batch kernels (src/batch/) mirror the per-contact and per-step forms lane by lane.
+pub(crate) use quartic::Quartic as QuarticCoefficients;
+pub(crate) use varying::coefficients as varying_coefficients;
 
 /// The `best` law with e² read per call (see the [module docs](self)); the per-contact form,
 /// much cheaper per call, is [`BestContact`].

@@ -9,7 +9,7 @@ use crate::friction::{Constants, SlipState, Traction, larger};
 use crate::math::Libm;
 
 /// Number of cubic pieces in z of [`BestContact`].
-const PIECES: usize = 8;
+pub(crate) const PIECES: usize = 8;
 
 /// The `best` law for one contact shape (e² fixed): the quartic's constants and the seven
 /// outside coefficients as 8 cubic pieces in z, built once by [`BestContact::new`]
@@ -79,6 +79,13 @@ impl<T: Real> BestContact<T> {
             g1: T::ONE + gamma,
             pieces,
         }
+    }
+
+    /// The parts the batch kernel (src/batch/best.rs) reads: the quartic, m, 1 + γ and the
+    /// pieces.
+    #[inline(always)]
+    pub(crate) fn parts(&self) -> (&Quartic<T>, T, T, &[[[T; 4]; 7]; PIECES]) {
+        (&self.quartic, self.m, self.g1, &self.pieces)
     }
 
     /// The dimensionless traction (F/(fN), T_z/(fNa)) and the branch for a slip state.

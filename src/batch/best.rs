@@ -1,0 +1,237 @@
+//! `best` lane by lane: the inside quartic, the outside confocal map, the coefficient pieces
+//! (per-contact form) or the per-step table, `assemble` and `bounded`
+//! (src/friction/best.rs, best/contact.rs), every branch a select. Lanes inside and outside
+//! are both evaluated only when the batch holds both; a lane's result is the scalar call's.
+
+use super::lanes::{Lanes, MAX_LANES};
+use super::state::{State, Tr};
+use crate::Real;
+use crate::friction::best::{QuarticCoefficients as Quartic, varying_coefficients};
+use crate::friction::{BestContact, Constants};
+
+/// The quartic's coefficients of a few contacts.
+#[derive(Clone, Copy, Debug)]
+pub struct QuarticLanes<V> {
+    a: V,
+    b: V,
+    c: V,
+    k22: V,
+    k40: V,
+    k40m: V,
+    hb: V,
+    ha: V,
+    t40: V,
+    t22: V,
+    t40m: V,
+    m1: V,
+}
+
+impl<V: Lanes> QuarticLanes<V> {
+    #[inline(always)]
+    fn of(q: &[Quartic<V::T>]) -> Self {
+        let lane = |f: fn(&Quartic<V::T>) -> V::T| {
+            let mut a = [V::T::ZERO; MAX_LANES];
+            for (x, q) in a.iter_mut().zip(q.iter().cycle()) {
+                *x = f(q);
+            }
+            V::from_array(&a)
+        };
+        QuarticLanes {
+            a: lane(|q| q.a),
+            b: lane(|q| q.b),
+            c: lane(|q| q.c),
+            k22: lane(|q| q.k22),
+            k40: lane(|q| q.k40),
+            k40m: lane(|q| q.k40m),
+            hb: lane(|q| q.hb),
+            ha: lane(|q| q.ha),
+            t40: lane(|q| q.t40),
+            t22: lane(|q| q.t22),
+            t40m: lane(|q| q.t40m),
+            m1: lane(|q| q.m1),
+        }
+    }
+
+    /// `Quartic::eval`.
+    #[inline(always)]
+    fn eval(&self, x: V, y: V) -> (V, V, V) {
+        let (x2, y2) = (x * x, y * y);
+        let fx = y * (self.a + self.k22 * x2 + self.k40m * y2);
+        let fy = x * (self.b + self.k40 * x2 + self.k22 * y2);
+        let tz = -self.c
+            + x2 * (self.hb + self.t40 * x2 + self.t22 * y2)
+            + y2 * (self.ha + self.t40m * y2);
+        (fx, fy, tz)
+    }
+}
+
+/// The per-contact form splatted: quartic, m, 1 + γ and the pieces.
+#[derive(Clone, Copy, Debug)]
+pub struct Fixed<V: Lanes> {
+    quartic: QuarticLanes<V>,
+    m: V,
+    g1: V,
+    pieces: [[[V::T; 4]; 7]; 8],
+}
+
+impl<V: Lanes> Fixed<V> {
+    #[inline(always)]
+    pub(crate) fn new(p: &BestContact<V::T>) -> Self {
+        let (q, m, g1, pieces) = p.parts();
+        Fixed {
+            quartic: QuarticLanes::of(core::slice::from_ref(q)),
+            m: V::splat(m),
+            g1: V::splat(g1),
+            pieces: *pieces,
+        }
+    }
+}
+
+/// `inside`: the traction of the lanes inside the ellipse (rest included), and that mask.
+#[inline(always)]
+fn inside<V: Lanes>(q: &QuarticLanes<V>, s: &State<V>) -> (Tr<V>, V::Mask) {
+    let zero = V::splat(V::T::ZERO);
+    let (x, y, w) = (s.x, s.y, s.w);
+    let is_inside = V::not((x * x + q.m1 * y * y).gt(q.m1 * w * w));
+    if !V::any(is_inside) {
+        return (Tr::zero(), is_inside);
+    }
+    let iw = V::splat(V::T::ONE) / w.abs();
+    let (fx, fy, tz) = q.eval(y * iw, x * iw);
+    let t = Tr {
+        fx: -fx,
+        fy: -fy,
+        tz: tz * (w * iw),
+    };
+    (Tr::select(w.eq(zero), Tr::zero(), t), is_inside)
+}
+
+/// `confocal`: (cos ν, sin ν, τ, 1 − |τ|).
+#[inline(always)]
+fn confocal<V: Lanes>(m: V, g1: V, x: V, y: V, w: V) -> (V, V, V, V) {
+    let zero = V::splat(V::T::ZERO);
+    let half = V::splat(V::T::HALF);
+    let two = V::splat(V::T::TWO);
+    let one = V::splat(V::T::ONE);
+    let p = x * x + y * y;
+    let w2 = w * w;
+    let mw2 = m * w2;
+    let dlt = p - mw2;
+    let mx2w2 = mw2 * x * x;
+    let r = (dlt * dlt + V::splat(V::T::from_f64(4.0)) * mx2w2).sqrt();
+    let a2 = half * (p + mw2 + r);
+    let b2 = V::select(dlt.ge(zero), half * (dlt + r), two * mx2w2 / (r - dlt));
+    let (ac, bc) = (a2.sqrt(), b2.sqrt().larger(V::splat(V::T::MIN_POSITIVE)));
+    let tau = g1 * w / (ac + bc);
+    (x / bc, y / ac, tau, one - tau.abs())
+}
+
+/// `assemble` then `bounded`.
+#[inline(always)]
+fn assemble<V: Lanes>(c: V, sn: V, tau: V, k: &[V; 7]) -> Tr<V> {
+    let zero = V::splat(V::T::ZERO);
+    let one = V::splat(V::T::ONE);
+    let q = sn * sn;
+    let t = k[4] + q * (k[5] + k[6] * q);
+    let fx = -c * (k[0] + k[1] * q);
+    let fy = -sn * (k[2] + k[3] * q);
+    let tz = tau * V::select(t.lt(zero), t, zero);
+    let f2 = fx * fx + fy * fy;
+    let over = f2.gt(one);
+    if !V::any(over) {
+        return Tr { fx, fy, tz };
+    }
+    let r = one / f2.sqrt();
+    Tr {
+        fx: V::select(over, fx * r, fx),
+        fy: V::select(over, fy * r, fy),
+        tz,
+    }
+}
+
+/// `BestContact::traction`.
+#[inline(always)]
+pub(crate) fn fixed<V: Lanes>(p: &Fixed<V>, s: &State<V>) -> Tr<V> {
+    let (ins, is_inside) = inside(&p.quartic, s);
+    if !V::any(V::not(is_inside)) {
+        return ins;
+    }
+    let zero = V::splat(V::T::ZERO);
+    let (c, sn, tau, one_minus) = confocal(p.m, p.g1, s.x, s.y, s.w);
+    let zn = one_minus.larger(zero).sqrt() * V::splat(V::T::from_usize(8));
+    // The piece of each lane: i = min(⌊zn⌋, 7), r = zn − i; the cubic's coefficients gathered.
+    let zs = zn.to_array();
+    let mut rs = [V::T::ZERO; MAX_LANES];
+    let mut co = [[V::T::ZERO; MAX_LANES]; 28];
+    for (l, (&z, r)) in zs.iter().zip(rs.iter_mut()).take(V::N).enumerate() {
+        let i = z.trunc_usize().min(7);
+        *r = z - V::T::from_usize(i);
+        let piece = p.pieces.get(i).unwrap_or(&p.pieces[0]);
+        for (j, cubic) in piece.iter().enumerate() {
+            for (k, &value) in cubic.iter().enumerate() {
+                if let Some(slot) = co.get_mut(4 * j + k).and_then(|c| c.get_mut(l)) {
+                    *slot = value;
+                }
+            }
+        }
+    }
+    let r = V::from_array(&rs);
+    let cubic = |j: usize| {
+        let c = |k: usize| V::from_array(&co[4 * j + k]);
+        c(0) + r * (c(1) + r * (c(2) + r * c(3)))
+    };
+    let k = [
+        cubic(0),
+        cubic(1),
+        cubic(2),
+        cubic(3),
+        cubic(4),
+        cubic(5),
+        cubic(6),
+    ];
+    let out = assemble(c, sn, tau, &k);
+    Tr::select(is_inside, ins, out)
+}
+
+/// `Best::traction` (the per-step form: `per_call` with the per-step table) for a few
+/// contacts, each with its own constants `k` (lanes beyond `k.len()` repeat its rows).
+#[inline(always)]
+pub(crate) fn varying<V: Lanes>(k: &[Constants<V::T>], s: &State<V>) -> Tr<V> {
+    let mut quartics = [Quartic::new(&Constants::circle()); MAX_LANES];
+    for (q, k) in quartics.iter_mut().zip(k) {
+        *q = Quartic::new(k);
+    }
+    let n = k.len().clamp(1, MAX_LANES);
+    let quartics = quartics.get(..n).unwrap_or(&[]);
+    let q = QuarticLanes::of(quartics);
+    let (ins, is_inside) = inside(&q, s);
+    if !V::any(V::not(is_inside)) {
+        return ins;
+    }
+    let zero = V::splat(V::T::ZERO);
+    let one = V::splat(V::T::ONE);
+    let m = super::laws::Shape::<V>::of_lanes(k).m;
+    let gamma = q.m1.sqrt();
+    let g1 = one + gamma;
+    let (c, sn, tau, one_minus) = confocal(m, g1, s.x, s.y, s.w);
+    let z = one_minus.larger(zero).sqrt();
+    let (zs, gs) = (z.to_array(), gamma.to_array());
+    let mut co = [[V::T::ZERO; MAX_LANES]; 7];
+    for (l, ((&z, &g), q)) in zs
+        .iter()
+        .zip(&gs)
+        .zip(quartics.iter().cycle())
+        .take(V::N)
+        .enumerate()
+    {
+        let lane = varying_coefficients(q, g, z);
+        for (j, &value) in lane.iter().enumerate() {
+            if let Some(slot) = co.get_mut(j).and_then(|c| c.get_mut(l)) {
+                *slot = value;
+            }
+        }
+    }
+    let k = co.map(|c| V::from_array(&c));
+    let out = assemble(c, sn, tau, &k);
+    Tr::select(is_inside, ins, out)
+}
