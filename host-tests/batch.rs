@@ -156,9 +156,9 @@ fn cast<T: Real>(v: &[f64]) -> Vec<T> {
 }
 
 fn levels() -> Vec<Level> {
-    batch::cap_level(Level::Avx);
+    batch::cap_level(Level::Avx2);
     let best = batch::level();
-    [Level::Scalar, Level::Sse2, Level::Avx]
+    [Level::Scalar, Level::Sse2, Level::Avx2]
         .into_iter()
         .filter(|&l| l <= best)
         .collect()
@@ -272,7 +272,7 @@ fn fixed_case<T: Real + BatchReal, D: BatchDamping<T> + Copy, L: BatchLaw>(
             &scalar,
         );
     }
-    batch::cap_level(Level::Avx);
+    batch::cap_level(Level::Avx2);
     ROWS
 }
 
@@ -329,7 +329,7 @@ fn varying_case<T: Real + BatchReal, L: BatchLaw>(name: &str, delta: f64) -> usi
             &scalar,
         );
     }
-    batch::cap_level(Level::Avx);
+    batch::cap_level(Level::Avx2);
     ROWS
 }
 
@@ -450,5 +450,5 @@ fn the_first_bad_row_is_reported_and_rows_before_it_written() {
         assert!(short[0].iter().all(|&x| x == -7.0));
         omega[21] = f64::NAN;
     }
-    batch::cap_level(Level::Avx);
+    batch::cap_level(Level::Avx2);
 }

@@ -34,21 +34,21 @@ impl<V: Lanes> QuarticLanes<V> {
             for (x, q) in a.iter_mut().zip(q.iter().cycle()) {
                 *x = f(q);
             }
-            V::from_array(&a)
+            a
         };
         QuarticLanes {
-            a: lane(|q| q.a),
-            b: lane(|q| q.b),
-            c: lane(|q| q.c),
-            k22: lane(|q| q.k22),
-            k40: lane(|q| q.k40),
-            k40m: lane(|q| q.k40m),
-            hb: lane(|q| q.hb),
-            ha: lane(|q| q.ha),
-            t40: lane(|q| q.t40),
-            t22: lane(|q| q.t22),
-            t40m: lane(|q| q.t40m),
-            m1: lane(|q| q.m1),
+            a: V::from_array(&lane(|q| q.a)),
+            b: V::from_array(&lane(|q| q.b)),
+            c: V::from_array(&lane(|q| q.c)),
+            k22: V::from_array(&lane(|q| q.k22)),
+            k40: V::from_array(&lane(|q| q.k40)),
+            k40m: V::from_array(&lane(|q| q.k40m)),
+            hb: V::from_array(&lane(|q| q.hb)),
+            ha: V::from_array(&lane(|q| q.ha)),
+            t40: V::from_array(&lane(|q| q.t40)),
+            t22: V::from_array(&lane(|q| q.t22)),
+            t40m: V::from_array(&lane(|q| q.t40m)),
+            m1: V::from_array(&lane(|q| q.m1)),
         }
     }
 
@@ -71,7 +71,9 @@ pub struct Fixed<V: Lanes> {
     quartic: QuarticLanes<V>,
     m: V,
     g1: V,
-    pieces: [[[V::T; 4]; 7]; 8],
+    /// table[4j + k][i] = coefficient k of the cubic j on piece i (one 8-entry table per
+    /// coefficient: a lane's piece is a cross-lane lookup).
+    table: [[V::T; 8]; 28],
 }
 
 impl<V: Lanes> Fixed<V> {
@@ -82,7 +84,7 @@ impl<V: Lanes> Fixed<V> {
             quartic: QuarticLanes::of(core::slice::from_ref(q)),
             m: V::splat(m),
             g1: V::splat(g1),
-            pieces: *pieces,
+            table: core::array::from_fn(|jk| core::array::from_fn(|i| pieces[i][jk / 4][jk % 4])),
         }
     }
 }
@@ -149,6 +151,19 @@ fn assemble<V: Lanes>(c: V, sn: V, tau: V, k: &[V; 7]) -> Tr<V> {
     }
 }
 
+/// Coefficient j on each lane's piece i at r: c₀ + r(c₁ + r(c₂ + r c₃)).
+#[inline(always)]
+fn cubic<V: Lanes>(table: &[[V::T; 8]; 28], j: usize, i: V::Idx, r: V) -> V {
+    let c = |k: usize| table.get(4 * j + k).unwrap_or(&table[0]);
+    let (c0, c1, c2, c3) = (
+        V::lookup8(c(0), i),
+        V::lookup8(c(1), i),
+        V::lookup8(c(2), i),
+        V::lookup8(c(3), i),
+    );
+    c0 + r * (c1 + r * (c2 + r * c3))
+}
+
 /// `BestContact::traction`.
 #[inline(always)]
 pub(crate) fn fixed<V: Lanes>(p: &Fixed<V>, s: &State<V>) -> Tr<V> {
@@ -159,35 +174,16 @@ pub(crate) fn fixed<V: Lanes>(p: &Fixed<V>, s: &State<V>) -> Tr<V> {
     let zero = V::splat(V::T::ZERO);
     let (c, sn, tau, one_minus) = confocal(p.m, p.g1, s.x, s.y, s.w);
     let zn = one_minus.larger(zero).sqrt() * V::splat(V::T::from_usize(8));
-    // The piece of each lane: i = min(⌊zn⌋, 7), r = zn − i; the cubic's coefficients gathered.
-    let zs = zn.to_array();
-    let mut rs = [V::T::ZERO; MAX_LANES];
-    let mut co = [[V::T::ZERO; MAX_LANES]; 28];
-    for (l, (&z, r)) in zs.iter().zip(rs.iter_mut()).take(V::N).enumerate() {
-        let i = z.trunc_usize().min(7);
-        *r = z - V::T::from_usize(i);
-        let piece = p.pieces.get(i).unwrap_or(&p.pieces[0]);
-        for (j, cubic) in piece.iter().enumerate() {
-            for (k, &value) in cubic.iter().enumerate() {
-                if let Some(slot) = co.get_mut(4 * j + k).and_then(|c| c.get_mut(l)) {
-                    *slot = value;
-                }
-            }
-        }
-    }
-    let r = V::from_array(&rs);
-    let cubic = |j: usize| {
-        let c = |k: usize| V::from_array(&co[4 * j + k]);
-        c(0) + r * (c(1) + r * (c(2) + r * c(3)))
-    };
+    // The piece of each lane: i = min(⌊zn⌋, 7), r = zn − i; the cubic's coefficients looked up.
+    let (i, r) = zn.piece();
     let k = [
-        cubic(0),
-        cubic(1),
-        cubic(2),
-        cubic(3),
-        cubic(4),
-        cubic(5),
-        cubic(6),
+        cubic(&p.table, 0, i, r),
+        cubic(&p.table, 1, i, r),
+        cubic(&p.table, 2, i, r),
+        cubic(&p.table, 3, i, r),
+        cubic(&p.table, 4, i, r),
+        cubic(&p.table, 5, i, r),
+        cubic(&p.table, 6, i, r),
     ];
     let out = assemble(c, sn, tau, &k);
     Tr::select(is_inside, ins, out)

@@ -62,6 +62,13 @@ pub trait Lanes:
     fn not(m: Self::Mask) -> Self::Mask;
     /// Some lane set.
     fn any(m: Self::Mask) -> bool;
+    /// A per-lane index into an 8-entry table (see [`Lanes::piece`]).
+    type Idx: Copy;
+    /// (i, r) with i = min(⌊self⌋, 7) (as the scalar `trunc_usize().min(7)`) and r = self − i,
+    /// for lanes 0 ≤ self < 2³¹; any other lane gets some i in 0..8.
+    fn piece(self) -> (Self::Idx, Self);
+    /// Lane l is `table[i_l]`.
+    fn lookup8(table: &[Self::T; 8], i: Self::Idx) -> Self;
     /// Lane `i` of the vector as a scalar array (`out[..N]`).
     fn to_array(self) -> [Self::T; MAX_LANES] {
         let mut out = [Self::T::ZERO; MAX_LANES];
@@ -99,6 +106,26 @@ pub trait Lanes:
     fn min_real(self, o: Self) -> Self {
         Self::select(Self::or(o.lt(self), self.is_nan()), o, self)
     }
+}
+
+/// [`Lanes::piece`] lane by lane through arrays (the lane types without a table instruction).
+#[inline(always)]
+pub(crate) fn piece_by_lane<V: Lanes>(v: V) -> ([u8; MAX_LANES], V) {
+    let a = v.to_array();
+    let mut i = [0u8; MAX_LANES];
+    let mut r = [V::T::ZERO; MAX_LANES];
+    for ((&x, i), r) in a.iter().zip(i.iter_mut()).zip(r.iter_mut()).take(V::N) {
+        let k = x.trunc_usize().min(7);
+        *i = k as u8;
+        *r = x - V::T::from_usize(k);
+    }
+    (i, V::from_array(&r))
+}
+
+/// [`Lanes::lookup8`] lane by lane through arrays.
+#[inline(always)]
+pub(crate) fn lookup_by_lane<V: Lanes>(table: &[V::T; 8], i: &[u8; MAX_LANES]) -> V {
+    V::from_array(&i.map(|k| table[usize::from(k & 7)]))
 }
 
 /// One lane: the scalar fallback (every target without a vector implementation, and the tail
@@ -197,5 +224,14 @@ impl<T: Real> Lanes for One<T> {
     #[inline(always)]
     fn any(m: bool) -> bool {
         m
+    }
+    type Idx = [u8; MAX_LANES];
+    #[inline(always)]
+    fn piece(self) -> (Self::Idx, Self) {
+        piece_by_lane(self)
+    }
+    #[inline(always)]
+    fn lookup8(table: &[T; 8], i: Self::Idx) -> Self {
+        lookup_by_lane(table, &i)
     }
 }

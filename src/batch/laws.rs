@@ -45,17 +45,17 @@ impl<V: Lanes> Shape<V> {
             for (x, k) in a.iter_mut().zip(k) {
                 *x = f(k);
             }
-            V::from_array(&a)
+            a
         };
         Shape {
-            m: lane(Constants::m),
-            m1: lane(Constants::m1),
-            a: lane(Constants::slope_x),
-            b: lane(Constants::slope_y),
-            c: lane(Constants::spin_torque),
-            inv_a: lane(Constants::knee_x),
-            inv_b: lane(Constants::knee_y),
-            inv_5c: lane(Constants::knee_z_max),
+            m: V::from_array(&lane(Constants::m)),
+            m1: V::from_array(&lane(Constants::m1)),
+            a: V::from_array(&lane(Constants::slope_x)),
+            b: V::from_array(&lane(Constants::slope_y)),
+            c: V::from_array(&lane(Constants::spin_torque)),
+            inv_a: V::from_array(&lane(Constants::knee_x)),
+            inv_b: V::from_array(&lane(Constants::knee_y)),
+            inv_5c: V::from_array(&lane(Constants::knee_z_max)),
         }
     }
 }

@@ -31,7 +31,7 @@
 //!
 //! # Lanes
 //!
-//! On x86-64: AVX (8 × f32, 4 × f64) where the CPU and OS have it, detected at run time
+//! On x86-64: AVX2 (8 × f32, 4 × f64) where the CPU and OS have it, detected at run time
 //! (CPUID + XGETBV, no `std`), else SSE2 (4 × f32, 2 × f64, the x86-64 baseline), through
 //! `core::arch`; elsewhere (thumbv7em included) one lane, the same kernels. The rows past the
 //! last full vector go through the scalar call. [`level`] says which is used;
@@ -155,17 +155,17 @@ pub enum Level {
     Scalar,
     /// x86-64 SSE2: 4 × f32, 2 × f64.
     Sse2,
-    /// x86-64 AVX: 8 × f32, 4 × f64.
-    Avx,
+    /// x86-64 AVX2: 8 × f32, 4 × f64.
+    Avx2,
 }
 
 impl Level {
-    /// `"scalar"`, `"sse2"`, `"avx"`.
+    /// `"scalar"`, `"sse2"`, `"avx2"`.
     pub fn name(self) -> &'static str {
         match self {
             Level::Scalar => "scalar",
             Level::Sse2 => "sse2",
-            Level::Avx => "avx",
+            Level::Avx2 => "avx2",
         }
     }
 }
@@ -178,11 +178,11 @@ pub fn level() -> Level {
     match found.min(CAP.load(Ordering::Relaxed)) {
         0 => Level::Scalar,
         1 => Level::Sse2,
-        _ => Level::Avx,
+        _ => Level::Avx2,
     }
 }
 
-/// Lowers (or, with [`Level::Avx`], restores) the level for every later batch call of the
+/// Lowers (or, with [`Level::Avx2`], restores) the level for every later batch call of the
 /// process: for tests and benchmarks comparing the levels. Results do not change with it.
 pub fn cap_level(cap: Level) {
     CAP.store(cap as u8, Ordering::Relaxed);
@@ -238,18 +238,18 @@ macro_rules! batch_real {
                     #[cfg(target_arch = "x86_64")]
                     Level::Sse2 => k.run::<x86::$sse>(),
                     #[cfg(target_arch = "x86_64")]
-                    // SAFETY: `level` returns Avx only when CPUID and XGETBV found AVX.
+                    // SAFETY: `level` returns Avx2 only when CPUID and XGETBV found AVX2.
                     #[allow(unsafe_code)]
-                    Level::Avx => unsafe { $avx_fn(k) },
+                    Level::Avx2 => unsafe { $avx_fn(k) },
                     #[cfg(not(target_arch = "x86_64"))]
                     _ => k.run::<One<$t>>(),
                 }
             }
         }
 
-        /// The kernel compiled for AVX.
+        /// The kernel compiled for AVX2.
         #[cfg(target_arch = "x86_64")]
-        #[target_feature(enable = "avx")]
+        #[target_feature(enable = "avx2")]
         fn $avx_fn<K: Kernel<$t>>(k: K) -> usize {
             k.run::<x86::$avx>()
         }
@@ -449,18 +449,10 @@ fn store_outputs<V: Lanes>(out: &mut Wrenches<'_, V::T>, r: usize, values: [V; 7
     store(e2, out.e2, r);
 }
 
-/// The friction of a few contacts from the patch: (F_x, F_y, T_z).
+/// The dimensional friction (F_x, F_y, T_z) = fN·(F̂_x, F̂_y, a·T̂_z).
 #[inline(always)]
-fn friction_of<V: Lanes, L: FrictionLaw>(
-    f_delta: [V; 2],
-    a: V,
-    n: V,
-    slip: [V; 3],
-    core: impl FnOnce(&State<V>) -> Tr<V>,
-) -> (V, V, V) {
-    let sc = scaled(L::RAMP_BELOW_DELTA, f_delta, a, n, slip);
-    let t = core(&sc.state);
-    (sc.fn_ * t.fx, sc.fn_ * t.fy, sc.fn_ * (a * t.tz))
+fn dimensional<V: Lanes>(fn_: V, a: V, t: Tr<V>) -> (V, V, V) {
+    (fn_ * t.fx, fn_ * t.fy, fn_ * (a * t.tz))
 }
 
 /// The fixed-form kernel.
@@ -482,9 +474,9 @@ impl<T: BatchReal, D: BatchDamping<T>, L: BatchLaw> Kernel<T> for FixedKernel<'_
         let mut r = 0;
         while let Some([h, hdot, vx, vy, omega]) = load_steps::<V>(self.steps, r) {
             let (a, b, n) = hertz.patch(damping, h, hdot);
-            let (fx, fy, tz) = friction_of::<V, L>([f, delta], a, n, [vx, vy, omega], |s| {
-                L::traction_fixed(&law, s)
-            });
+            let sc = scaled(L::RAMP_BELOW_DELTA, [f, delta], a, n, [vx, vy, omega]);
+            let t = L::traction_fixed(&law, &sc.state);
+            let (fx, fy, tz) = dimensional(sc.fn_, a, t);
             store_outputs(self.out, r, [n, fx, fy, tz, a, b, hertz.e2]);
             r += V::N;
         }
@@ -575,9 +567,9 @@ impl<T: BatchReal, D: BatchDamping<T>, L: BatchLaw> Kernel<T>
             let hertz = normal::HertzLanes::<V>::of(&coef);
             let (a, b, n) = hertz.patch(damping, h, hdot);
             let rows = k.get(..V::N).unwrap_or(&[]);
-            let (fx, fy, tz) = friction_of::<V, L>([f, delta], a, n, [vx, vy, omega], |s| {
-                L::traction_varying(rows, s)
-            });
+            let sc = scaled(L::RAMP_BELOW_DELTA, [f, delta], a, n, [vx, vy, omega]);
+            let t = L::traction_varying(rows, &sc.state);
+            let (fx, fy, tz) = dimensional(sc.fn_, a, t);
             store_outputs(self.out, r, [n, fx, fy, tz, a, b, hertz.e2]);
             r += V::N;
         }

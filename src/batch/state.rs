@@ -15,6 +15,19 @@ pub struct State<V> {
     pub d: V,
 }
 
+impl<V: Lanes> State<V> {
+    /// Lane by lane `if m { a } else { b }`.
+    #[inline(always)]
+    fn select(m: V::Mask, a: Self, b: Self) -> Self {
+        State {
+            x: V::select(m, a.x, b.x),
+            y: V::select(m, a.y, b.y),
+            w: V::select(m, a.w, b.w),
+            d: V::select(m, a.d, b.d),
+        }
+    }
+}
+
 /// The dimensionless traction F/(fN), T_z/(fNa) of a few contacts.
 #[derive(Clone, Copy, Debug)]
 pub struct Tr<V> {
@@ -99,12 +112,7 @@ fn divided<V: Lanes>(vx: V, vy: V, aw: V, s: V, delta: V) -> State<V> {
         return common;
     }
     let unusual = unusual(vx, vy, aw, delta);
-    State {
-        x: V::select(normal, common.x, unusual.x),
-        y: V::select(normal, common.y, unusual.y),
-        w: V::select(normal, common.w, unusual.w),
-        d: V::select(normal, common.d, unusual.d),
-    }
+    State::select(normal, common, unusual)
 }
 
 /// `SlipState::unusual` with its three cases as masks.
@@ -136,11 +144,6 @@ fn unusual<V: Lanes>(vx: V, vy: V, aw: V, delta: V) -> State<V> {
         w: one.copysign(aw),
         d: min_pos,
     };
-    let pick = |a: V, b: V, c: V| V::select(infinite, a, V::select(positive, b, c));
-    State {
-        x: pick(spin.x, by_m.x, rest.x),
-        y: pick(spin.y, by_m.y, rest.y),
-        w: pick(spin.w, by_m.w, rest.w),
-        d: pick(spin.d, by_m.d, rest.d),
-    }
+    let by_m = State::select(positive, by_m, rest);
+    State::select(infinite, spin, by_m)
 }

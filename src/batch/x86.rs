@@ -1,13 +1,14 @@
 //! x86-64 lane vectors over `core::arch`: SSE2 (the x86-64 baseline: 4 × f32, 2 × f64) and
-//! AVX (8 × f32, 4 × f64, detected at run time), and the run-time detection.
+//! AVX2 (8 × f32, 4 × f64, detected at run time; AVX for the arithmetic, AVX2 for the
+//! cross-lane table lookup `vpermps`), and the run-time detection.
 //!
 //! Only IEEE-exact instructions are used (`add/sub/mul/div/sqrt`, compares, bitwise
 //! and/or/xor for signs and selects): no FMA, no approximate reciprocal, no `max` (whose
 //! −0/+0 and NaN rules differ from [`crate::Real::max`]). Each lane therefore returns the
 //! bits of the scalar operation.
 //!
-//! Safety: an AVX vector exists only inside [`with_avx`], entered after [`level`] found AVX
-//! enabled by the CPU and the OS; SSE2 is part of x86-64. Loads and stores read and write
+//! Safety: an AVX2 vector exists only inside the batch dispatch's `avx2_*` functions, entered
+//! after [`level`] found AVX2 enabled by the CPU and the OS; SSE2 is part of x86-64. Loads and stores read and write
 //! exactly `N` values from a slice of at least `N` (the callers pass `chunks_exact(N)`).
 #![allow(unsafe_code)]
 
@@ -15,7 +16,7 @@ use core::arch::x86_64::*;
 use core::ops::{Add, Div, Mul, Neg, Sub};
 use core::sync::atomic::{AtomicU8, Ordering};
 
-use super::lanes::Lanes;
+use super::lanes::{Lanes, MAX_LANES, lookup_by_lane, piece_by_lane};
 
 macro_rules! vector {
     (
@@ -28,7 +29,10 @@ macro_rules! vector {
         le |$ea:ident, $eb:ident| $le:expr,
         eq |$qa:ident, $qb:ident| $eq:expr,
         nan |$na:ident| $nan:expr,
-        select |$sm:ident, $sa:ident, $sb:ident| $select:expr
+        select |$sm:ident, $sa:ident, $sb:ident| $select:expr,
+        idx $idx:ty,
+        piece |$pv:ident| $piece:expr,
+        lookup |$tt:ident, $li:ident| $lookup:expr
     ) => {
         #[doc = concat!($n, " lanes of `", stringify!($t), "` (", $feat, ").")]
         #[derive(Clone, Copy, Debug)]
@@ -149,6 +153,22 @@ macro_rules! vector {
             fn any(m: $mask) -> bool {
                 unsafe { $movemask(m.0) != 0 }
             }
+            type Idx = $idx;
+            #[inline(always)]
+            fn piece(self) -> ($idx, Self) {
+                let $pv = self;
+                #[allow(unused_unsafe)]
+                unsafe {
+                    $piece
+                }
+            }
+            #[inline(always)]
+            fn lookup8($tt: &[$t; 8], $li: $idx) -> Self {
+                #[allow(unused_unsafe)]
+                unsafe {
+                    $lookup
+                }
+            }
         }
     };
 }
@@ -163,7 +183,10 @@ vector!(
     le |a, b| _mm_cmple_ps(a, b),
     eq |a, b| _mm_cmpeq_ps(a, b),
     nan |a| _mm_cmpunord_ps(a, a),
-    select |m, a, b| _mm_or_ps(_mm_and_ps(m, a), _mm_andnot_ps(m, b))
+    select |m, a, b| _mm_or_ps(_mm_and_ps(m, a), _mm_andnot_ps(m, b)),
+    idx [u8; MAX_LANES],
+    piece |v| piece_by_lane(v),
+    lookup |t, i| lookup_by_lane(t, &i)
 );
 
 vector!(
@@ -176,11 +199,14 @@ vector!(
     le |a, b| _mm_cmple_pd(a, b),
     eq |a, b| _mm_cmpeq_pd(a, b),
     nan |a| _mm_cmpunord_pd(a, a),
-    select |m, a, b| _mm_or_pd(_mm_and_pd(m, a), _mm_andnot_pd(m, b))
+    select |m, a, b| _mm_or_pd(_mm_and_pd(m, a), _mm_andnot_pd(m, b)),
+    idx [u8; MAX_LANES],
+    piece |v| piece_by_lane(v),
+    lookup |t, i| lookup_by_lane(t, &i)
 );
 
 vector!(
-    F32x8, M32x8, f32, __m256, 8, "AVX",
+    F32x8, M32x8, f32, __m256, 8, "AVX2",
     add _mm256_add_ps, sub _mm256_sub_ps, mul _mm256_mul_ps, div _mm256_div_ps,
     sqrt _mm256_sqrt_ps,
     and _mm256_and_ps, andnot _mm256_andnot_ps, or _mm256_or_ps, xor _mm256_xor_ps,
@@ -191,11 +217,18 @@ vector!(
     le |a, b| _mm256_cmp_ps::<_CMP_LE_OQ>(a, b),
     eq |a, b| _mm256_cmp_ps::<_CMP_EQ_OQ>(a, b),
     nan |a| _mm256_cmp_ps::<_CMP_UNORD_Q>(a, a),
-    select |m, a, b| _mm256_blendv_ps(b, a, m)
+    select |m, a, b| _mm256_blendv_ps(b, a, m),
+    idx __m256i,
+    piece |v| {
+        let i = _mm256_cvttps_epi32(v.0);
+        let i = _mm256_min_epi32(_mm256_max_epi32(i, _mm256_setzero_si256()), _mm256_set1_epi32(7));
+        (i, F32x8(_mm256_sub_ps(v.0, _mm256_cvtepi32_ps(i))))
+    },
+    lookup |t, i| F32x8(_mm256_permutevar8x32_ps(_mm256_loadu_ps(t.as_ptr()), i))
 );
 
 vector!(
-    F64x4, M64x4, f64, __m256d, 4, "AVX",
+    F64x4, M64x4, f64, __m256d, 4, "AVX2",
     add _mm256_add_pd, sub _mm256_sub_pd, mul _mm256_mul_pd, div _mm256_div_pd,
     sqrt _mm256_sqrt_pd,
     and _mm256_and_pd, andnot _mm256_andnot_pd, or _mm256_or_pd, xor _mm256_xor_pd,
@@ -206,10 +239,28 @@ vector!(
     le |a, b| _mm256_cmp_pd::<_CMP_LE_OQ>(a, b),
     eq |a, b| _mm256_cmp_pd::<_CMP_EQ_OQ>(a, b),
     nan |a| _mm256_cmp_pd::<_CMP_UNORD_Q>(a, a),
-    select |m, a, b| _mm256_blendv_pd(b, a, m)
+    select |m, a, b| _mm256_blendv_pd(b, a, m),
+    // (the 32-bit word pairs of each lane's double within a half-table, the upper-half mask)
+    idx (__m256i, __m256d),
+    piece |v| {
+        let i = _mm256_cvttpd_epi32(v.0);
+        let i = _mm_min_epi32(_mm_max_epi32(i, _mm_setzero_si128()), _mm_set1_epi32(7));
+        let r = F64x4(_mm256_sub_pd(v.0, _mm256_cvtepi32_pd(i)));
+        let j = _mm256_slli_epi64::<1>(_mm256_cvtepi32_epi64(_mm_and_si128(i, _mm_set1_epi32(3))));
+        let pairs = _mm256_or_si256(j, _mm256_slli_epi64::<32>(_mm256_add_epi64(j, _mm256_set1_epi64x(1))));
+        let upper = _mm256_castsi256_pd(_mm256_cvtepi32_epi64(_mm_cmpgt_epi32(i, _mm_set1_epi32(3))));
+        ((pairs, upper), r)
+    },
+    lookup |t, i| {
+        let lo = _mm256_castpd_ps(_mm256_loadu_pd(t.as_ptr()));
+        let hi = _mm256_castpd_ps(_mm256_loadu_pd(t.as_ptr().add(4)));
+        let lo = _mm256_castps_pd(_mm256_permutevar8x32_ps(lo, i.0));
+        let hi = _mm256_castps_pd(_mm256_permutevar8x32_ps(hi, i.0));
+        F64x4(_mm256_blendv_pd(lo, hi, i.1))
+    }
 );
 
-/// The vector level found on this CPU: 1 = SSE2 (always on x86-64), 2 = AVX (CPU and OS).
+/// The vector level found on this CPU: 1 = SSE2 (always on x86-64), 2 = AVX2 (CPU and OS).
 /// Detected once (CPUID + XGETBV, no `std`), cached.
 pub(crate) fn level() -> u8 {
     static LEVEL: AtomicU8 = AtomicU8::new(0);
@@ -222,14 +273,16 @@ pub(crate) fn level() -> u8 {
     found
 }
 
-/// CPUID.1:ECX.AVX[28] and OSXSAVE[27], and XCR0 saving the XMM and YMM state (bits 1, 2).
+/// CPUID.1:ECX.AVX[28] and OSXSAVE[27], CPUID.7.0:EBX.AVX2[5], and XCR0 saving the XMM and
+/// YMM state (bits 1, 2).
 fn avx_enabled() -> bool {
     // SAFETY: CPUID exists on every x86-64 CPU; XGETBV is executed only when OSXSAVE says the
     // OS enabled it.
     unsafe {
         let ecx = __cpuid(1).ecx;
         let (osxsave, avx) = (ecx & (1 << 27) != 0, ecx & (1 << 28) != 0);
-        osxsave && avx && xcr0() & 0b110 == 0b110
+        let avx2 = __cpuid(0).eax >= 7 && __cpuid_count(7, 0).ebx & (1 << 5) != 0;
+        osxsave && avx && avx2 && xcr0() & 0b110 == 0b110
     }
 }
 
