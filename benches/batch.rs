@@ -19,40 +19,10 @@ use criterion::{Criterion, Throughput, criterion_group, criterion_main};
 
 const ROWS: usize = 4096;
 
-/// Columns P, Q, h, hdot, vx, vy, omega (a fixed pseudo-random set).
-fn columns<T: Real>() -> [Vec<T>; 7] {
-    let mut s = 0x2545_f491_4f6c_dd1du64;
-    let mut unit = move || {
-        s ^= s << 13;
-        s ^= s >> 7;
-        s ^= s << 17;
-        (s >> 11) as f64 / (1u64 << 53) as f64
-    };
-    let mut cols: [Vec<T>; 7] = Default::default();
-    for _ in 0..ROWS {
-        let sign = |u: f64| if u < 0.5 { -1.0 } else { 1.0 };
-        let row = [
-            40.0,
-            60.0 + 60.0 * unit(),
-            10f64.powf(-7.0 + 2.0 * unit()),
-            1e-3 * (unit() - 0.5),
-            sign(unit()) * 10f64.powf(-5.0 + 3.0 * unit()),
-            sign(unit()) * 10f64.powf(-5.0 + 3.0 * unit()),
-            if unit() < 0.2 {
-                0.0
-            } else {
-                sign(unit()) * 10f64.powf(3.0 * unit())
-            },
-        ];
-        for (c, v) in cols.iter_mut().zip(row) {
-            c.push(T::from_f64(v));
-        }
-    }
-    cols
-}
+include!("batch_set.rs");
 
 fn law<T: Real + BatchReal, L: BatchLaw>(c: &mut Criterion) {
-    let [p, q, h, hdot, vx, vy, omega] = columns::<T>();
+    let [p, q, h, hdot, vx, vy, omega] = columns::<T>(ROWS);
     let estar = Modulus::new(T::from_f64(1.15e11)).unwrap();
     let damping = HuntCrossley::new(T::from_f64(0.5)).unwrap();
     let friction = Friction::<T, L>::with_law(T::from_f64(0.3), T::from_f64(1e-4)).unwrap();

@@ -452,3 +452,68 @@ fn the_first_bad_row_is_reported_and_rows_before_it_written() {
     }
     batch::cap_level(Level::Avx2);
 }
+
+/// `DynContact::wrench_many` (the shells' path) against `DynContact::wrench`, every law and
+/// form (the varying form at the contact's own curvatures: `wrench_many_at`).
+fn dynamic_case<T: Real + BatchReal>() {
+    use contensou::dynamic::{DynContact, Form, Law, Spec, Step};
+    let spec = Spec {
+        p: T::from_f64(40.0),
+        q: T::from_f64(60.0),
+        estar: T::from_f64(1.15e11),
+        cd: T::from_f64(0.5),
+        f: T::from_f64(0.3),
+        delta: T::from_f64(1e-4),
+    };
+    for law in Law::ALL {
+        for form in Form::ALL {
+            let c = DynContact::new(&spec, law, form).unwrap();
+            let a1 = c
+                .wrench(&Step {
+                    h: T::ONE,
+                    ..Default::default()
+                })
+                .unwrap()
+                .a
+                .to_f64();
+            let r = rows::<T>(
+                |_, _, h| (if h > 0.0 { a1 * h.sqrt() } else { 0.0 }, 0.6),
+                (40.0, 60.0),
+            );
+            let cols = [&r.h, &r.hdot, &r.vx, &r.vy, &r.omega].map(|c| cast::<T>(c));
+            let [h, hdot, vx, vy, omega] = &cols;
+            let scalar: Vec<[T; 7]> = (0..ROWS)
+                .map(|i| {
+                    let s = Step {
+                        h: h[i],
+                        hdot: hdot[i],
+                        vx: vx[i],
+                        vy: vy[i],
+                        omega: omega[i],
+                    };
+                    c.wrench(&s).unwrap().to_array()
+                })
+                .collect();
+            let steps = Steps {
+                h,
+                hdot,
+                vx,
+                vy,
+                omega,
+            };
+            let mut out = outputs::<T>(ROWS);
+            c.wrench_many(&steps, &mut wrenches(&mut out)).unwrap();
+            compare(
+                &format!("dynamic {} {} {}", law.name(), form.name(), T::NAME),
+                &out,
+                &scalar,
+            );
+        }
+    }
+}
+
+#[test]
+fn dynamic_batch_equals_dynamic_rows() {
+    dynamic_case::<f32>();
+    dynamic_case::<f64>();
+}

@@ -86,7 +86,7 @@ use core::sync::atomic::{AtomicU8, Ordering};
 use crate::contact::{Contact, VaryingContact};
 use crate::friction::{Best, Constants, Coulomb, Ellipsoid, FrictionLaw, Pade, Simplified, Slip};
 use crate::geometry::Curvatures;
-use crate::normal::Hertz;
+use crate::normal::{Hertz, Modulus};
 use crate::shape::{self, Eccentricity, Ratio};
 use crate::{Error, Real};
 use lanes::{Lanes, MAX_LANES, One};
@@ -528,10 +528,46 @@ fn curvature_row<T: Real>(
     })
 }
 
+/// Where a varying contact's rows take their curvatures from.
+#[derive(Clone, Copy)]
+enum Source<'c, 'i, T> {
+    /// One pair per row.
+    Columns(&'c CurvatureColumns<'i, T>),
+    /// The same curvatures on every row.
+    One(&'c Curvatures<T>),
+}
+
+/// The per-row work of `VaryingContact::wrench` before the patch: the shape by table, the
+/// Hertz coefficients and the friction constants.
+#[inline(always)]
+fn varying_shape<T: Real>(curv: &Curvatures<T>, estar: Modulus<T>) -> ([T; 4], Constants<T>) {
+    let shape = shape::Table::shape(Ratio::clamped(curv.ratio()));
+    let hertz = Hertz::from_shape(curv, &shape, estar);
+    (normal::coefficients(&hertz), Constants::from_shape(&shape))
+}
+
+/// Lane l of the per-lane Hertz coefficients and constants.
+#[inline(always)]
+fn set_lane<T: Real>(
+    coef: &mut [[T; MAX_LANES]; 4],
+    k: &mut [Constants<T>; MAX_LANES],
+    l: usize,
+    (c, kl): ([T; 4], Constants<T>),
+) {
+    for (col, v) in coef.iter_mut().zip(c) {
+        if let Some(x) = col.get_mut(l) {
+            *x = v;
+        }
+    }
+    if let Some(x) = k.get_mut(l) {
+        *x = kl;
+    }
+}
+
 /// The varying-form kernel.
 struct VaryingKernel<'c, 'o, 'i, T: Real, D, L> {
     contact: &'c VaryingContact<T, D, L>,
-    curvatures: &'c CurvatureColumns<'i, T>,
+    curvatures: Source<'c, 'i, T>,
     steps: &'c Steps<'i, T>,
     out: &'c mut Wrenches<'o, T>,
 }
@@ -544,24 +580,25 @@ impl<T: BatchReal, D: BatchDamping<T>, L: BatchLaw> Kernel<T>
         let (estar, damping, friction) = self.contact.parts();
         let f = V::splat(friction.coefficient());
         let delta = V::splat(friction.delta());
+        // Per row (scalar, as VaryingContact::wrench): the shape by table, Hertz, constants;
+        // once for a single pair.
+        let mut coef = [[T::ZERO; MAX_LANES]; 4];
+        let mut k = [Constants::circle(); MAX_LANES];
+
+        if let Source::One(curv) = self.curvatures {
+            let one = varying_shape(curv, estar);
+            for l in 0..V::N {
+                set_lane(&mut coef, &mut k, l, one);
+            }
+        }
         let mut r = 0;
         'rows: while let Some([h, hdot, vx, vy, omega]) = load_steps::<V>(self.steps, r) {
-            // Per row (scalar, as VaryingContact::wrench): the shape by table, Hertz, constants.
-            let mut coef = [[T::ZERO; MAX_LANES]; 4];
-            let mut k = [Constants::circle(); MAX_LANES];
-            for l in 0..V::N {
-                let Ok(curv) = curvature_row(self.curvatures, r + l) else {
-                    break 'rows;
-                };
-                let shape = shape::Table::shape(Ratio::clamped(curv.ratio()));
-                let hertz = Hertz::from_shape(&curv, &shape, estar);
-                for (c, v) in coef.iter_mut().zip(normal::coefficients(&hertz)) {
-                    if let Some(x) = c.get_mut(l) {
-                        *x = v;
-                    }
-                }
-                if let Some(x) = k.get_mut(l) {
-                    *x = Constants::from_shape(&shape);
+            if let Source::Columns(columns) = self.curvatures {
+                for l in 0..V::N {
+                    let Ok(curv) = curvature_row(columns, r + l) else {
+                        break 'rows;
+                    };
+                    set_lane(&mut coef, &mut k, l, varying_shape(&curv, estar));
                 }
             }
             let hertz = normal::HertzLanes::<V>::of(&coef);
@@ -596,7 +633,7 @@ impl<T: BatchReal, D: BatchDamping<T>, L: BatchLaw> VaryingContact<T, D, L> {
         let n = check_lengths(Some(curvatures), steps, out)?;
         let done = T::dispatch(VaryingKernel {
             contact: self,
-            curvatures,
+            curvatures: Source::Columns(curvatures),
             steps,
             out: &mut *out,
         });
@@ -604,6 +641,34 @@ impl<T: BatchReal, D: BatchDamping<T>, L: BatchLaw> VaryingContact<T, D, L> {
             let curv = curvature_row(curvatures, i)?;
             let (h, hdot, slip) = step_row(steps, i)?;
             let w = self.wrench(&curv, h, hdot, slip);
+            put(
+                out,
+                i,
+                [w.n, w.fx, w.fy, w.tz, w.patch.a, w.patch.b, w.patch.e2],
+            );
+        }
+        Ok(())
+    }
+
+    /// [`VaryingContact::wrench_many`] with the same curvatures on every row (the shape
+    /// solved once): row i is bit for bit `self.wrench(curvatures, h[i], hdot[i], slip_i)`.
+    /// Errors as [`Contact::wrench_many`].
+    pub fn wrench_many_at(
+        &self,
+        curvatures: &Curvatures<T>,
+        steps: &Steps<'_, T>,
+        out: &mut Wrenches<'_, T>,
+    ) -> Result<(), RowError> {
+        let n = check_lengths(None, steps, out)?;
+        let done = T::dispatch(VaryingKernel {
+            contact: self,
+            curvatures: Source::One(curvatures),
+            steps,
+            out: &mut *out,
+        });
+        for i in done..n {
+            let (h, hdot, slip) = step_row(steps, i)?;
+            let w = self.wrench(curvatures, h, hdot, slip);
             put(
                 out,
                 i,
