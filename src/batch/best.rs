@@ -122,7 +122,14 @@ fn confocal<V: Lanes>(m: V, g1: V, x: V, y: V, w: V) -> (V, V, V, V) {
     let mx2w2 = mw2 * x * x;
     let r = (dlt * dlt + V::splat(V::T::from_f64(4.0)) * mx2w2).sqrt();
     let a2 = half * (p + mw2 + r);
-    let b2 = V::select(dlt.ge(zero), half * (dlt + r), two * mx2w2 / (r - dlt));
+    let positive = dlt.ge(zero);
+    let b2 = half * (dlt + r);
+    // The cancellation-free form, where some lane has Δ < 0 (its division only then).
+    let b2 = if V::any(V::not(positive)) {
+        V::select(positive, b2, two * mx2w2 / (r - dlt))
+    } else {
+        b2
+    };
     let (ac, bc) = (a2.sqrt(), b2.sqrt().larger(V::splat(V::T::MIN_POSITIVE)));
     let tau = g1 * w / (ac + bc);
     (x / bc, y / ac, tau, one - tau.abs())
