@@ -1,5 +1,5 @@
 //! The dimensionless cores of `simplified`, `pade`, `ellipsoid` and `coulomb` lane by lane:
-//! each is its scalar `traction` (src/friction/<law>.rs) with every branch a select, the same
+//! each is its scalar `traction` (`src/friction/<law>.rs`) with every branch a select, the same
 //! operations in the same order.
 
 use super::lanes::Lanes;

@@ -615,7 +615,7 @@ impl<T: BatchReal, D: BatchDamping<T>, L: BatchLaw> Kernel<T>
 }
 
 impl<T: BatchReal, D: BatchDamping<T>, L: BatchLaw> VaryingContact<T, D, L> {
-    /// The wrench of every row into `out`, row i at the curvatures (P[i], Q[i]) (see the
+    /// The wrench of every row into `out`, row i at the curvatures (`P[i]`, `Q[i]`) (see the
     /// [module docs](self)): bit for bit `self.wrench(&Curvatures::ordered(P[i], Q[i])?,
     /// h[i], hdot[i], Slip::new(vx[i], vy[i], omega[i])?)`.
     ///
