@@ -161,9 +161,16 @@ fn cast<T: Real>(v: &[f64]) -> Vec<T> {
     v.iter().map(|&x| T::from_f64(x)).collect()
 }
 
+/// The level cap is process-wide and the tests run on parallel threads: each level's batch call
+/// holds this lock, so that it runs at the level it names.
+static LEVEL: std::sync::Mutex<()> = std::sync::Mutex::new(());
+
 fn levels() -> Vec<Level> {
-    batch::cap_level(Level::Avx2);
-    let best = batch::level();
+    let best = {
+        let _held = LEVEL.lock().unwrap_or_else(|e| e.into_inner());
+        batch::cap_level(Level::Avx2);
+        batch::level()
+    };
     [Level::Scalar, Level::Sse2, Level::Avx2]
         .into_iter()
         .filter(|&l| l <= best)
@@ -269,7 +276,9 @@ fn fixed_case<T: Real + BatchReal, D: BatchDamping<T> + Copy, L: BatchLaw>(
         omega: &omega,
     };
     for level in levels() {
+        let _held = LEVEL.lock().unwrap_or_else(|e| e.into_inner());
         batch::cap_level(level);
+        assert_eq!(batch::level(), level);
         let mut out = outputs::<T>(ROWS);
         c.wrench_many(&steps, &mut wrenches(&mut out)).unwrap();
         compare(
@@ -278,7 +287,6 @@ fn fixed_case<T: Real + BatchReal, D: BatchDamping<T> + Copy, L: BatchLaw>(
             &scalar,
         );
     }
-    batch::cap_level(Level::Avx2);
     ROWS
 }
 
@@ -325,7 +333,9 @@ fn varying_case<T: Real + BatchReal, L: BatchLaw>(name: &str, delta: f64) -> usi
     };
     let curvatures = CurvatureColumns { p: &p, q: &q };
     for level in levels() {
+        let _held = LEVEL.lock().unwrap_or_else(|e| e.into_inner());
         batch::cap_level(level);
+        assert_eq!(batch::level(), level);
         let mut out = outputs::<T>(ROWS);
         c.wrench_many(&curvatures, &steps, &mut wrenches(&mut out))
             .unwrap();
@@ -335,7 +345,6 @@ fn varying_case<T: Real + BatchReal, L: BatchLaw>(name: &str, delta: f64) -> usi
             &scalar,
         );
     }
-    batch::cap_level(Level::Avx2);
     ROWS
 }
 
@@ -394,7 +403,9 @@ fn the_first_bad_row_is_reported_and_rows_before_it_written() {
     omega[21] = f64::NAN;
     p[30] = 70.0; // P > Q
     for level in levels() {
+        let _held = LEVEL.lock().unwrap_or_else(|e| e.into_inner());
         batch::cap_level(level);
+        assert_eq!(batch::level(), level);
         let mut out = outputs::<f64>(n);
         let steps = Steps {
             h: &ones,
@@ -456,7 +467,6 @@ fn the_first_bad_row_is_reported_and_rows_before_it_written() {
         assert!(short[0].iter().all(|&x| x == -7.0));
         omega[21] = f64::NAN;
     }
-    batch::cap_level(Level::Avx2);
 }
 
 /// `DynContact::wrench_many` (the shells' path) against `DynContact::wrench`, every law and
@@ -508,7 +518,11 @@ fn dynamic_case<T: Real + BatchReal>() {
                 omega,
             };
             let mut out = outputs::<T>(ROWS);
-            c.wrench_many(&steps, &mut wrenches(&mut out)).unwrap();
+            {
+                let _held = LEVEL.lock().unwrap_or_else(|e| e.into_inner());
+                batch::cap_level(Level::Avx2);
+                c.wrench_many(&steps, &mut wrenches(&mut out)).unwrap();
+            }
             compare(
                 &format!("dynamic {} {} {}", law.name(), form.name(), T::NAME),
                 &out,
