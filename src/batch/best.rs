@@ -6,7 +6,9 @@
 use super::lanes::{Lanes, MAX_LANES};
 use super::state::{State, Tr};
 use crate::Real;
-use crate::friction::best::{QuarticCoefficients as Quartic, varying_coefficients};
+use crate::friction::best::{
+    QuarticCoefficients as Quartic, VARYING_NS, VARYING_NZ, VARYING_S0, VARYING_TABLE,
+};
 use crate::friction::{BestContact, Constants};
 
 /// The quartic's coefficients of a few contacts.
@@ -197,7 +199,7 @@ pub(crate) fn fixed<V: Lanes>(p: &Fixed<V>, s: &State<V>) -> Tr<V> {
 }
 
 /// `Best::traction` (the per-step form: `per_call` with the per-step table) for a few
-/// contacts, each with its own constants `k` (lanes beyond `k.len()` repeat its rows).
+/// contacts, each with its own constants `k` (`V::N` rows).
 #[inline(always)]
 pub(crate) fn varying<V: Lanes>(k: &[Constants<V::T>], s: &State<V>) -> Tr<V> {
     let mut quartics = [Quartic::new(&Constants::circle()); MAX_LANES];
@@ -218,23 +220,87 @@ pub(crate) fn varying<V: Lanes>(k: &[Constants<V::T>], s: &State<V>) -> Tr<V> {
     let g1 = one + gamma;
     let (c, sn, tau, one_minus) = confocal(m, g1, s.x, s.y, s.w);
     let z = one_minus.larger(zero).sqrt();
-    let (zs, gs) = (z.to_array(), gamma.to_array());
-    let mut co = [[V::T::ZERO; MAX_LANES]; 7];
-    for (l, ((&z, &g), q)) in zs
-        .iter()
-        .zip(&gs)
-        .zip(quartics.iter().cycle())
-        .take(V::N)
-        .enumerate()
-    {
-        let lane = varying_coefficients(q, g, z);
-        for (j, &value) in lane.iter().enumerate() {
-            if let Some(slot) = co.get_mut(j).and_then(|c| c.get_mut(l)) {
-                *slot = value;
+    // The ends of `coefficients`: the quartic's boundary values (per lane, scalar) and the
+    // limits at z = 1.
+    let gs = gamma.to_array();
+    let mut e0 = [[V::T::ZERO; MAX_LANES]; 7];
+    for (l, (q, &g)) in quartics.iter().cycle().zip(&gs).take(V::N).enumerate() {
+        for (col, v) in e0.iter_mut().zip(q.boundary(g)) {
+            if let Some(x) = col.get_mut(l) {
+                *x = v;
             }
         }
     }
-    let k = co.map(|c| V::from_array(&c));
+    let g4 = V::splat(V::T::from_f64(0.4));
+    let ends1 = [
+        one,
+        zero,
+        one,
+        zero,
+        -g4 / (one + gamma),
+        g4 * (one - gamma),
+        zero,
+    ];
+    let ends0 = e0.map(|c| V::from_array(&c));
+    let k = coefficients(gamma, z, &ends0, &ends1);
     let out = assemble(c, sn, tau, &k);
     Tr::select(is_inside, ins, out)
+}
+
+/// `best::varying::coefficients` lane by lane: the per-step table's three-node stencil in
+/// s = m₁^¼ (weights w) and cubic piece in z, gathered per lane, plus the ends.
+#[inline(always)]
+fn coefficients<V: Lanes>(gamma: V, z: V, ends0: &[V; 7], ends1: &[V; 7]) -> [V; 7] {
+    let table = VARYING_TABLE.as_flattened().as_flattened().as_flattened();
+    let (one, two, half) = (
+        V::splat(V::T::ONE),
+        V::splat(V::T::TWO),
+        V::splat(V::T::HALF),
+    );
+    let scale = V::splat(V::T::from_f64(VARYING_NS as f64 / (1.0 - VARYING_S0)));
+    let x = ((gamma.sqrt() - V::splat(V::T::from_f64(VARYING_S0))) * scale)
+        .max_real(V::splat(V::T::ZERO))
+        .min_real(V::splat(V::T::from_usize(VARYING_NS)));
+    let zn = z * V::splat(V::T::from_usize(VARYING_NZ));
+    // Per lane: the stencil's first node j0, the piece i, and the table offset of (j0, i).
+    let (xs, zs) = (x.to_array(), zn.to_array());
+    let (mut j0s, mut is) = ([V::T::ZERO; MAX_LANES], [V::T::ZERO; MAX_LANES]);
+    let mut base = [0u32; MAX_LANES];
+    for l in 0..V::N {
+        let (Some(&x), Some(&zn)) = (xs.get(l), zs.get(l)) else {
+            break;
+        };
+        let j0 = x.trunc_usize().min(VARYING_NS - 1).min(VARYING_NS - 2);
+        let i = zn.trunc_usize().min(VARYING_NZ - 1);
+        if let (Some(a), Some(b), Some(o)) = (j0s.get_mut(l), is.get_mut(l), base.get_mut(l)) {
+            (*a, *b) = (V::T::from_usize(j0), V::T::from_usize(i));
+            *o = ((j0 * VARYING_NZ + i) * 28) as u32;
+        }
+    }
+    let t = x - V::from_array(&j0s);
+    let (t1, t2) = (t - one, t - two);
+    let w = [half * t1 * t2, -t * t2, half * t * t1];
+    let r = zn - V::from_array(&is);
+    let mut v = [V::splat(V::T::ZERO); 7];
+    for (node, &wk) in w.iter().enumerate() {
+        for (jj, vj) in v.iter_mut().enumerate() {
+            let at = |c: usize| {
+                let off = ((node * VARYING_NZ * 7 + jj) * 4 + c) as u32;
+                base.map(|b| b + off)
+            };
+            let (c0, c1, c2, c3) = (
+                V::gather_f32(table, &at(0)),
+                V::gather_f32(table, &at(1)),
+                V::gather_f32(table, &at(2)),
+                V::gather_f32(table, &at(3)),
+            );
+            *vj = *vj + wk * (c0 + r * (c1 + r * (c2 + r * c3)));
+        }
+    }
+    let z2 = z * z;
+    let mut out = v;
+    for ((o, &e0), &e1) in out.iter_mut().zip(ends0).zip(ends1) {
+        *o = *o + e0 + (e1 - e0) * z2;
+    }
+    out
 }

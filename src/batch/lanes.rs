@@ -69,6 +69,10 @@ pub trait Lanes:
     fn piece(self) -> (Self::Idx, Self);
     /// Lane l is `table[i_l]`.
     fn lookup8(table: &[Self::T; 8], i: Self::Idx) -> Self;
+    /// Lane l is `table[idx[l]]` converted (exactly) to `T`. Every `idx[l]` (l < N) must be
+    /// `< table.len()`; an index past the end gives 0 on the lane-by-lane path and is the
+    /// caller's bug (the AVX2 gather reads it).
+    fn gather_f32(table: &[f32], idx: &[u32; MAX_LANES]) -> Self;
     /// Lane `i` of the vector as a scalar array (`out[..N]`).
     fn to_array(self) -> [Self::T; MAX_LANES] {
         let mut out = [Self::T::ZERO; MAX_LANES];
@@ -126,6 +130,17 @@ pub(crate) fn piece_by_lane<V: Lanes>(v: V) -> ([u8; MAX_LANES], V) {
 #[inline(always)]
 pub(crate) fn lookup_by_lane<V: Lanes>(table: &[V::T; 8], i: &[u8; MAX_LANES]) -> V {
     V::from_array(&i.map(|k| table[usize::from(k & 7)]))
+}
+
+/// [`Lanes::gather_f32`] lane by lane.
+#[inline(always)]
+pub(crate) fn gather_by_lane<V: Lanes>(table: &[f32], idx: &[u32; MAX_LANES]) -> V {
+    let mut a = [V::T::ZERO; MAX_LANES];
+    for (x, &i) in a.iter_mut().zip(idx.iter()).take(V::N) {
+        let v = table.get(i as usize).copied().unwrap_or(0.0);
+        *x = V::T::from_f64(f64::from(v));
+    }
+    V::from_array(&a)
 }
 
 /// One lane: the scalar fallback (every target without a vector implementation, and the tail
@@ -233,5 +248,9 @@ impl<T: Real> Lanes for One<T> {
     #[inline(always)]
     fn lookup8(table: &[T; 8], i: Self::Idx) -> Self {
         lookup_by_lane(table, &i)
+    }
+    #[inline(always)]
+    fn gather_f32(table: &[f32], idx: &[u32; MAX_LANES]) -> Self {
+        gather_by_lane(table, idx)
     }
 }

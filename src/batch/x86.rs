@@ -16,7 +16,7 @@ use core::arch::x86_64::*;
 use core::ops::{Add, Div, Mul, Neg, Sub};
 use core::sync::atomic::{AtomicU8, Ordering};
 
-use super::lanes::{Lanes, MAX_LANES, lookup_by_lane, piece_by_lane};
+use super::lanes::{Lanes, MAX_LANES, gather_by_lane, lookup_by_lane, piece_by_lane};
 
 macro_rules! vector {
     (
@@ -32,7 +32,8 @@ macro_rules! vector {
         select |$sm:ident, $sa:ident, $sb:ident| $select:expr,
         idx $idx:ty,
         piece |$pv:ident| $piece:expr,
-        lookup |$tt:ident, $li:ident| $lookup:expr
+        lookup |$tt:ident, $li:ident| $lookup:expr,
+        gather |$gt:ident, $gi:ident| $gather:expr
     ) => {
         #[doc = concat!($n, " lanes of `", stringify!($t), "` (", $feat, ").")]
         #[derive(Clone, Copy, Debug)]
@@ -169,6 +170,13 @@ macro_rules! vector {
                     $lookup
                 }
             }
+            #[inline(always)]
+            fn gather_f32($gt: &[f32], $gi: &[u32; MAX_LANES]) -> Self {
+                #[allow(unused_unsafe)]
+                unsafe {
+                    $gather
+                }
+            }
         }
     };
 }
@@ -186,7 +194,8 @@ vector!(
     select |m, a, b| _mm_or_ps(_mm_and_ps(m, a), _mm_andnot_ps(m, b)),
     idx [u8; MAX_LANES],
     piece |v| piece_by_lane(v),
-    lookup |t, i| lookup_by_lane(t, &i)
+    lookup |t, i| lookup_by_lane(t, &i),
+    gather |t, i| gather_by_lane(t, i)
 );
 
 vector!(
@@ -202,7 +211,8 @@ vector!(
     select |m, a, b| _mm_or_pd(_mm_and_pd(m, a), _mm_andnot_pd(m, b)),
     idx [u8; MAX_LANES],
     piece |v| piece_by_lane(v),
-    lookup |t, i| lookup_by_lane(t, &i)
+    lookup |t, i| lookup_by_lane(t, &i),
+    gather |t, i| gather_by_lane(t, i)
 );
 
 vector!(
@@ -224,7 +234,8 @@ vector!(
         let i = _mm256_min_epi32(_mm256_max_epi32(i, _mm256_setzero_si256()), _mm256_set1_epi32(7));
         (i, F32x8(_mm256_sub_ps(v.0, _mm256_cvtepi32_ps(i))))
     },
-    lookup |t, i| F32x8(_mm256_permutevar8x32_ps(_mm256_loadu_ps(t.as_ptr()), i))
+    lookup |t, i| F32x8(_mm256_permutevar8x32_ps(_mm256_loadu_ps(t.as_ptr()), i)),
+    gather |t, i| F32x8(_mm256_i32gather_ps::<4>(t.as_ptr(), _mm256_loadu_si256(i.as_ptr().cast())))
 );
 
 vector!(
@@ -257,7 +268,8 @@ vector!(
         let lo = _mm256_castps_pd(_mm256_permutevar8x32_ps(lo, i.0));
         let hi = _mm256_castps_pd(_mm256_permutevar8x32_ps(hi, i.0));
         F64x4(_mm256_blendv_pd(lo, hi, i.1))
-    }
+    },
+    gather |t, i| F64x4(_mm256_cvtps_pd(_mm_i32gather_ps::<4>(t.as_ptr(), _mm_loadu_si128(i.as_ptr().cast()))))
 );
 
 /// The vector level found on this CPU: 1 = SSE2 (always on x86-64), 2 = AVX2 (CPU and OS).

@@ -132,7 +132,9 @@ use crate::Real;
 use quartic::Quartic;
 // The batch kernels (src/batch/) mirror the per-contact and per-step forms lane by lane.
 pub(crate) use quartic::Quartic as QuarticCoefficients;
-pub(crate) use varying::coefficients as varying_coefficients;
+pub(crate) use varying_table::{
+    NS as VARYING_NS, NZ as VARYING_NZ, S0 as VARYING_S0, TABLE as VARYING_TABLE,
+};
 
 /// The `best` law with e² read per call (see the [module docs](self)); the per-contact form,
 /// much cheaper per call, is [`BestContact`].

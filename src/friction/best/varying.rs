@@ -29,7 +29,7 @@ use crate::Real;
 /// The seven coefficients (a_x, b_x, a_y, b_y, a_T, b_T, c_T) at this shape (quartic, γ) and
 /// z ∈ [0, 1]. Total.
 #[inline(always)]
-pub(crate) fn coefficients<T: Real>(q: &Quartic<T>, gamma: T, z: T) -> [T; 7] {
+pub(super) fn coefficients<T: Real>(q: &Quartic<T>, gamma: T, z: T) -> [T; 7] {
     // position in s = m₁^¼ in cell units, clamped to the table
     let scale = T::from_f64(NS as f64 / (1.0 - S0));
     let x = ((gamma.sqrt() - T::from_f64(S0)) * scale)

@@ -8,14 +8,14 @@
 //! as traction: F_x 1.3e-05 (e² = 0.9896, z = 0.067), F_y 5.1e-06 (e² = 0.8640, z = 0.650), T_z 2.0e-06 (e² = 0.9884, z = 0.467).
 
 /// Cells in s = m₁^¼ over [S0, 1].
-pub(super) const NS: usize = 20;
+pub(crate) const NS: usize = 20;
 /// Cubic pieces in z.
-pub(super) const NZ: usize = 12;
+pub(crate) const NZ: usize = 12;
 /// s at e² = 0.99 (m₁ = 0.01): √0.1.
-pub(super) const S0: f64 = 0.31622776601683794;
+pub(crate) const S0: f64 = 0.31622776601683794;
 
 /// `TABLE[node][piece][coefficient]`: the cubic's monomial coefficients in r.
-pub(super) static TABLE: [[[[f32; 4]; 7]; NZ]; NS + 1] = [
+pub(crate) static TABLE: [[[[f32; 4]; 7]; NZ]; NS + 1] = [
     [
         [
             [0.0, 0.0, 0.01383755, -0.00073449675],
