@@ -1,7 +1,9 @@
 //! criterion: the batch path (`wrench_many`, src/batch/) against the scalar loop over the same
 //! rows (`wrench` per row, the seven outputs stored), every law × form × precision, in the
 //! same run: group `batch/<law>/<form>/<precision>`, functions `scalar` and `batch`, 4,096
-//! rows per iteration (throughput in elements). The contract's contact (Hunt–Crossley
+//! rows per iteration (throughput in elements). Forms: `fixed` (`Contact`), `varying`
+//! (`VaryingContact`, curvatures per row), `varying_at` (`VaryingContact::wrench_many_at`, one
+//! pair for every row: the path of `DynContact`, the C API and Python). The contract's contact (Hunt–Crossley
 //! c_d = 0.5 s/m, f = 0.3, δ = 1e-4 m/s), P = 40, Q = 60 1/m (varying: Q per row in 60…120),
 //! rows in contact with mixed slips (inside and outside `best`'s ellipse, spin and no spin).
 //! `tools/batch-bench.sh` turns the estimates into bench-results/batch.csv and batch.md.
@@ -107,6 +109,44 @@ fn law<T: Real + BatchReal, L: BatchLaw>(c: &mut Criterion) {
             };
             varying
                 .wrench_many(black_box(&curvatures), black_box(&steps), &mut w)
+                .unwrap();
+            black_box(&mut out);
+        })
+    });
+    g.finish();
+
+    // The varying form at one pair of curvatures for every row (`wrench_many_at`: the shape
+    // solved once; the path of DynContact, the C API and Python).
+    let at = Curvatures::ordered(T::from_f64(40.0), T::from_f64(60.0)).unwrap();
+    let mut g = c.benchmark_group(format!("batch/{}/varying_at/{}", L::NAME, T::NAME));
+    g.throughput(Throughput::Elements(ROWS as u64));
+    g.bench_function("scalar", |b| {
+        b.iter(|| {
+            for i in 0..ROWS {
+                let slip = Slip::new(vx[i], vy[i], omega[i]).unwrap();
+                let w = varying.wrench(black_box(&at), h[i], hdot[i], slip);
+                let row = [w.n, w.fx, w.fy, w.tz, w.patch.a, w.patch.b, w.patch.e2];
+                for (c, v) in out.iter_mut().zip(row) {
+                    c[i] = v;
+                }
+            }
+            black_box(&mut out);
+        })
+    });
+    g.bench_function("batch", |b| {
+        b.iter(|| {
+            let [n, fx, fy, tz, a, b_, e2] = &mut out;
+            let mut w = Wrenches {
+                n,
+                fx,
+                fy,
+                tz,
+                a,
+                b: b_,
+                e2,
+            };
+            varying
+                .wrench_many_at(black_box(&at), black_box(&steps), &mut w)
                 .unwrap();
             black_box(&mut out);
         })

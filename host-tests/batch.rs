@@ -398,54 +398,41 @@ fn the_first_bad_row_is_reported_and_rows_before_it_written() {
     );
     let n = 37;
     let ones = vec![1e-6; n];
-    let (mut p, q) = (vec![40.0; n], vec![60.0; n]);
+    let q = vec![60.0; n];
+    let mut p = vec![40.0; n];
+    p[30] = 70.0; // P > Q
     let mut omega = vec![3.0; n];
     omega[21] = f64::NAN;
-    p[30] = 70.0; // P > Q
+    let mut fixed_omega = omega.clone();
+    fixed_omega[21] = 3.0;
+    // The call on columns P (with its bad row 30), `omega` and the outputs `out`.
+    let call = |omega: &[f64], out: &mut [Vec<f64>; 7]| {
+        let (h, curvatures) = (&ones[..], CurvatureColumns { p: &p, q: &q });
+        let steps = Steps {
+            h,
+            hdot: h,
+            vx: h,
+            vy: h,
+            omega,
+        };
+        c.wrench_many(&curvatures, &steps, &mut wrenches(out))
+            .unwrap_err()
+    };
     for level in levels() {
         let _held = LEVEL.lock().unwrap_or_else(|e| e.into_inner());
         batch::cap_level(level);
         assert_eq!(batch::level(), level);
         let mut out = outputs::<f64>(n);
-        let steps = Steps {
-            h: &ones,
-            hdot: &ones,
-            vx: &ones,
-            vy: &ones,
-            omega: &omega,
+        let e = call(&omega, &mut out);
+        let nan = RowError {
+            row: 21,
+            column: "omega",
+            error: Error::NonFinite("omega"),
         };
-        let e = c
-            .wrench_many(
-                &CurvatureColumns { p: &p, q: &q },
-                &steps,
-                &mut wrenches(&mut out),
-            )
-            .unwrap_err();
-        assert_eq!(
-            e,
-            RowError {
-                row: 21,
-                column: "omega",
-                error: Error::NonFinite("omega")
-            }
-        );
+        assert_eq!(e, nan);
         assert!(out[0][..21].iter().all(|&x| x > 0.0), "{level:?}");
         assert_eq!(out[0][21], -7.0);
-        omega[21] = 3.0;
-        let steps = Steps {
-            h: &ones,
-            hdot: &ones,
-            vx: &ones,
-            vy: &ones,
-            omega: &omega,
-        };
-        let e = c
-            .wrench_many(
-                &CurvatureColumns { p: &p, q: &q },
-                &steps,
-                &mut wrenches(&mut out),
-            )
-            .unwrap_err();
+        let e = call(&fixed_omega, &mut out);
         assert_eq!(
             (e.row, e.column, e.error),
             (30, "P", Error::CurvaturesNotOrdered)
@@ -453,19 +440,12 @@ fn the_first_bad_row_is_reported_and_rows_before_it_written() {
         // a short output column: nothing written
         let mut short = outputs::<f64>(n);
         short[5].pop();
-        let e = c
-            .wrench_many(
-                &CurvatureColumns { p: &p, q: &q },
-                &steps,
-                &mut wrenches(&mut short),
-            )
-            .unwrap_err();
+        let e = call(&fixed_omega, &mut short);
         assert_eq!(
             (e.row, e.column, e.error),
             (n - 1, "b", Error::ColumnLengthMismatch)
         );
         assert!(short[0].iter().all(|&x| x == -7.0));
-        omega[21] = f64::NAN;
     }
 }
 

@@ -25,7 +25,7 @@ import json, sys
 from pathlib import Path
 rows = ["law,form,precision,scalar_ns,batch_ns,speedup"]
 for law in ["best", "simplified", "pade", "ellipsoid", "coulomb"]:
-    for form in ["fixed", "varying"]:
+    for form in ["fixed", "varying", "varying_at"]:
         for precision in ["f32", "f64"]:
             d = Path(f"target/criterion/batch_{law}_{form}_{precision}")
             ns = [json.loads((d / k / "new/estimates.json").read_text())["mean"]["point_estimate"] / 4096
@@ -55,7 +55,9 @@ cpu="$(grep -m1 'model name' /proc/cpuinfo 2>/dev/null | sed 's/.*: //' || uname
     echo "## Rust: scalar loop against \`wrench_many\` (criterion, same run)"
     echo
     echo "ns per contact on 4,096 rows (benches/batch.rs: the contract's contact, Hunt–Crossley damping, rows in"
-    echo "contact with mixed slips); every batch row is bit for bit the scalar call's (host-tests/batch.rs)."
+    echo "contact with mixed slips); every batch row is bit for bit the scalar call's (host-tests/batch.rs). Forms:"
+    echo "\`fixed\` (Contact), \`varying\` (VaryingContact, P, Q per row), \`varying_at\` (one P, Q for every row:"
+    echo "\`wrench_many_at\`, the path of DynContact, the C API and Python)."
     echo
     echo "| law | form | precision | scalar ns | batch ns | speedup |"
     echo "|---|---|---|---:|---:|---:|"

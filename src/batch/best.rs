@@ -4,10 +4,11 @@
 //! are both evaluated only when the batch holds both; a lane's result is the scalar call's.
 
 use super::lanes::{Lanes, MAX_LANES};
+use super::laws::Shape;
 use super::state::{State, Tr};
 use crate::Real;
 use crate::friction::best::{
-    QuarticCoefficients as Quartic, VARYING_NS, VARYING_NZ, VARYING_S0, VARYING_TABLE,
+    C40_SERIES, QuarticCoefficients as Quartic, VARYING_NS, VARYING_NZ, VARYING_S0, VARYING_TABLE,
 };
 use crate::friction::{BestContact, Constants};
 
@@ -54,6 +55,60 @@ impl<V: Lanes> QuarticLanes<V> {
         }
     }
 
+    /// `Quartic::new` lane by lane (each lane's constants in `k`).
+    #[inline(always)]
+    fn from_shape(k: &Shape<V>) -> Self {
+        let (m, m1, a, b) = (k.m, k.m1, k.a, k.b);
+        let small = m.lt(splat::<V>(0.05));
+        let mut series = splat(0.0);
+        for &x in C40_SERIES.iter().rev() {
+            series = series * m + splat(x);
+        }
+        let formula = -(b - m1 * a) / (splat::<V>(12.0) * m);
+        let c40 = V::select(small, series, formula);
+        let half = V::splat(V::T::HALF);
+        let c22 = -half * (a + splat::<V>(12.0) * c40);
+        let k40 = splat::<V>(4.0) * c40;
+        let three = splat::<V>(3.0);
+        let t40 = three * c40;
+        let im1 = V::splat(V::T::ONE) / m1;
+        QuarticLanes {
+            a,
+            b,
+            c: k.c,
+            k22: V::splat(V::T::TWO) * c22,
+            k40,
+            k40m: k40 * im1,
+            hb: half * b,
+            ha: half * a,
+            t40,
+            t22: three * c22,
+            t40m: t40 * im1,
+            m1,
+        }
+    }
+
+    /// `Quartic::boundary`: the coefficients at the ellipse (z = 0).
+    #[inline(always)]
+    fn boundary(&self, gamma: V) -> [V; 7] {
+        let (a, b, c, m1) = (self.a, self.b, self.c, self.m1);
+        let half = V::splat(V::T::HALF);
+        let two = V::splat(V::T::TWO);
+        let one = V::splat(V::T::ONE);
+        let c40 = V::splat(V::T::from_f64(0.25)) * self.k40;
+        let c22 = half * self.k22;
+        let three = V::splat(V::T::from_f64(3.0));
+        [
+            gamma * (a + self.k40),
+            gamma * (self.k22 - self.k40),
+            b + self.k22 * m1,
+            self.k40 - self.k22 * m1,
+            -c + half * a * m1 + three * c40 * m1,
+            half * (b - a * m1) + three * m1 * (c22 - two * c40),
+            three * (c40 * (one + m1) - c22 * m1),
+        ]
+    }
+
     /// `Quartic::eval`.
     #[inline(always)]
     fn eval(&self, x: V, y: V) -> (V, V, V) {
@@ -65,6 +120,12 @@ impl<V: Lanes> QuarticLanes<V> {
             + y2 * (self.ha + self.t40m * y2);
         (fx, fy, tz)
     }
+}
+
+/// A constant in every lane.
+#[inline(always)]
+fn splat<V: Lanes>(x: f64) -> V {
+    V::splat(V::T::from_f64(x))
 }
 
 /// The per-contact form splatted: quartic, m, 1 + γ and the pieces.
@@ -202,35 +263,20 @@ pub(crate) fn fixed<V: Lanes>(p: &Fixed<V>, s: &State<V>) -> Tr<V> {
 /// contacts, each with its own constants `k` (`V::N` rows).
 #[inline(always)]
 pub(crate) fn varying<V: Lanes>(k: &[Constants<V::T>], s: &State<V>) -> Tr<V> {
-    let mut quartics = [Quartic::new(&Constants::circle()); MAX_LANES];
-    for (q, k) in quartics.iter_mut().zip(k) {
-        *q = Quartic::new(k);
-    }
-    let n = k.len().clamp(1, MAX_LANES);
-    let quartics = quartics.get(..n).unwrap_or(&[]);
-    let q = QuarticLanes::of(quartics);
+    let shape = Shape::<V>::of_lanes(k);
+    let q = QuarticLanes::from_shape(&shape);
     let (ins, is_inside) = inside(&q, s);
     if !V::any(V::not(is_inside)) {
         return ins;
     }
     let zero = V::splat(V::T::ZERO);
     let one = V::splat(V::T::ONE);
-    let m = super::laws::Shape::<V>::of_lanes(k).m;
     let gamma = q.m1.sqrt();
     let g1 = one + gamma;
-    let (c, sn, tau, one_minus) = confocal(m, g1, s.x, s.y, s.w);
+    let (c, sn, tau, one_minus) = confocal(shape.m, g1, s.x, s.y, s.w);
     let z = one_minus.larger(zero).sqrt();
-    // The ends of `coefficients`: the quartic's boundary values (per lane, scalar) and the
-    // limits at z = 1.
-    let gs = gamma.to_array();
-    let mut e0 = [[V::T::ZERO; MAX_LANES]; 7];
-    for (l, (q, &g)) in quartics.iter().cycle().zip(&gs).take(V::N).enumerate() {
-        for (col, v) in e0.iter_mut().zip(q.boundary(g)) {
-            if let Some(x) = col.get_mut(l) {
-                *x = v;
-            }
-        }
-    }
+    // The ends of `coefficients`: the quartic's boundary values and the limits at z = 1.
+    let ends0 = q.boundary(gamma);
     let g4 = V::splat(V::T::from_f64(0.4));
     let ends1 = [
         one,
@@ -241,7 +287,6 @@ pub(crate) fn varying<V: Lanes>(k: &[Constants<V::T>], s: &State<V>) -> Tr<V> {
         g4 * (one - gamma),
         zero,
     ];
-    let ends0 = e0.map(|c| V::from_array(&c));
     let k = coefficients(gamma, z, &ends0, &ends1);
     let out = assemble(c, sn, tau, &k);
     Tr::select(is_inside, ins, out)

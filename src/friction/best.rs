@@ -131,7 +131,7 @@ use super::{Constants, FrictionLaw, SlipState, Traction, larger};
 use crate::Real;
 use quartic::Quartic;
 // The batch kernels (src/batch/) mirror the per-contact and per-step forms lane by lane.
-pub(crate) use quartic::Quartic as QuarticCoefficients;
+pub(crate) use quartic::{C40_SERIES, Quartic as QuarticCoefficients};
 pub(crate) use varying_table::{
     NS as VARYING_NS, NZ as VARYING_NZ, S0 as VARYING_S0, TABLE as VARYING_TABLE,
 };

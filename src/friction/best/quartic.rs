@@ -27,7 +27,7 @@ pub(crate) struct Quartic<T> {
 }
 
 /// c₄₀(m) = −[(2−m)E − 2(1−m)K]/(8m²), Taylor coefficients (m < 0.05: error < 1e-13).
-const C40_SERIES: [f64; 8] = [
+pub(crate) const C40_SERIES: [f64; 8] = [
     -0.07363107781851078,
     -0.018407769454627694,
     -0.008628641931856732,
