@@ -45,7 +45,7 @@ pub const G: f64 = 9.81;
 pub const V0: f64 = 1.0;
 /// Initial spin about the vertical (rad/s).
 pub const SPIN0: f64 = 100.0;
-/// Pure rolling is declared when the slip speed |v_P| first falls below this fraction of v₀.
+/// Pure rolling is declared when the slip speed |v_P| first falls to this fraction of v₀.
 pub const ROLLING: f64 = 1e-3;
 /// The spin decay is measured over this time after pure rolling starts (s).
 pub const SPIN_WINDOW: (f64, f64) = (0.05, 0.45);
@@ -59,9 +59,9 @@ pub struct Outcome {
     pub steps: usize,
     /// (2/7)·v₀/(f g) (s).
     pub t_roll_analytic: f64,
-    /// First time with |v_P| < `ROLLING`·v₀ (s).
+    /// First time with |v_P| = `ROLLING`·v₀ (s), located between steps (linear interpolation).
     pub t_roll: f64,
-    /// Centre speed at `t_roll` (m/s); analytic (5/7)·v₀.
+    /// Centre speed at `t_roll` (m/s, interpolated the same way); analytic (5/7)·v₀.
     pub v_roll: f64,
     /// (3π/16)·f·N·a/I (rad/s²).
     pub spin_rate_analytic: f64,
@@ -69,8 +69,14 @@ pub struct Outcome {
     pub spin_rate: f64,
 }
 
-/// Builds the contact, picks the step and integrates (semi-implicit Euler).
+/// Builds the contact, picks the step (half the smallest stable step) and integrates
+/// (semi-implicit Euler).
 pub fn run() -> Result<Outcome, contensou::Error> {
+    run_at(0.5)
+}
+
+/// [`run`] with the step `fraction` × the smallest stable step (the step-halving check).
+pub fn run_at(fraction: f64) -> Result<Outcome, contensou::Error> {
     let steel = Material::new(2.1e11, 0.3)?;
     let estar = Modulus::of(steel, steel)?;
     let contact = Contact::hertz::<Newton>(
@@ -87,12 +93,12 @@ pub fn run() -> Result<Outcome, contensou::Error> {
     let h0 = contact.normal().approach(weight);
     let a0 = contact.normal().patch(h0).a;
 
-    // The step: half the smallest stable step (slip with the rolling ball's effective mass
-    // 2m/7, spin, and the vertical contact oscillation, stiffness dN/dh = (3/2)N/h).
+    // The step: `fraction` of the smallest stable step (slip with the rolling ball's effective
+    // mass 2m/7, spin, and the vertical contact oscillation, stiffness dN/dh = (3/2)N/h).
     let dt_slip = contact.stable_step(2.0 * mass / 7.0, weight, Explicit::Euler);
     let dt_spin = contact.stable_spin_step(a0, inertia, weight, Explicit::Euler);
     let omega_n = (1.5 * weight / h0 / mass).sqrt();
-    let dt = 0.5 * dt_slip.min(dt_spin).min(2.0 / omega_n);
+    let dt = fraction * dt_slip.min(dt_spin).min(2.0 / omega_n);
 
     // Body B = the ball (centre G, velocity v, angular velocity w, world frame); body A = the
     // plane, at rest. Contact frame: normal up (A → B), x along the world x (a circle: any
@@ -106,6 +112,8 @@ pub fn run() -> Result<Outcome, contensou::Error> {
     let t_end = 1.1 * t_roll_analytic + SPIN_WINDOW.1;
     let (mut t, mut steps) = (0.0, 0);
     let mut roll: Option<(f64, f64)> = None;
+    // The previous state's (t, slip speed, speed), for locating pure rolling between steps.
+    let mut before: Option<(f64, f64, f64)> = None;
     let mut spin_at: [Option<(f64, f64)>; 2] = [None; 2];
     while t < t_end {
         // The patch centre P: the plane's point under the centre; arm = P − G.
@@ -115,6 +123,20 @@ pub fn run() -> Result<Outcome, contensou::Error> {
         let slip = frame.slip(v_rel, w)?;
         let wrench = contact.wrench(h, frame.approach_rate(v_rel), slip);
         let load = frame.on_b(&wrench, arm); // force at P, torque about G
+
+        // Pure rolling: the slip speed at this state (time t) falls through ROLLING·v₀. Located
+        // between this state and the previous one by linear interpolation — semi-implicit
+        // Euler's own dense output (velocities are linear in t over a step); not the step's end.
+        let slip_speed = slip.vx().hypot(slip.vy());
+        let speed = v[0].hypot(v[1]);
+        if roll.is_none()
+            && let Some((t0, s0, u0)) = before
+            && slip_speed <= ROLLING * V0
+        {
+            let s = (s0 - ROLLING * V0) / (s0 - slip_speed);
+            roll = Some((t0 + s * (t - t0), u0 + s * (speed - u0)));
+        }
+        before = Some((t, slip_speed, speed));
 
         // Semi-implicit Euler: velocities first, then the position with the new velocity.
         for i in 0..3 {
@@ -127,11 +149,6 @@ pub fn run() -> Result<Outcome, contensou::Error> {
         }
         t += dt;
         steps += 1;
-
-        let slip_speed = slip.vx().hypot(slip.vy());
-        if roll.is_none() && slip_speed < ROLLING * V0 {
-            roll = Some((t, v[0].hypot(v[1])));
-        }
         if let Some((t_r, _)) = roll {
             for (k, at) in [SPIN_WINDOW.0, SPIN_WINDOW.1].into_iter().enumerate() {
                 if spin_at[k].is_none() && t >= t_r + at {

@@ -6,12 +6,17 @@
 //! cargo run --release --features scenes --example rattleback -- DIR  # into DIR
 //! ```
 //!
-//! `RATTLEBACK_H` (s) and `RATTLEBACK_ESTAR` (Pa) override the step and E* (README: step and
-//! stiffness checks).
+//! `RATTLEBACK_H` (s), `RATTLEBACK_ESTAR` (Pa) and `RATTLEBACK_SAMPLE` (s, the output
+//! interval, default 10 ms) override the step, E* and the sampling (README: step, stiffness
+//! and sampling checks).
 //!
 //! Writes `rattleback_summary.csv` (`law,direction,reversal_s,stall_s,peak_rock_rad,
-//! final_spin,energy_start,energy_end`, empty fields when there is none) and one labelled PNG
-//! of ω·ẑ(t) per law (`rattleback_<law>.png`, both directions).
+//! final_spin,energy_start,energy_end,reversal_sampled_s,stall_sampled_s`, empty fields when
+//! there is none) and one labelled PNG of ω·ẑ(t) per law (`rattleback_<law>.png`, both
+//! directions). `reversal_s`, `stall_s`: located between the RK4 steps on every step
+//! ([`SpinEvents`], Hermite interpolant + bisection), independent of the output sampling;
+//! `*_sampled_s`: the first output sample past the threshold (the figures before event
+//! location, for comparison).
 //!
 //! Start (Kane & Levinson 1982): roll = pitch = 0.5°, rolling (the contact point at rest),
 //! the static approach. Spin ω₀ = ∓2 rad/s instead of their 5 rad/s: with the compliant contact
@@ -23,13 +28,13 @@
 //!
 //! - **reversal**: the first time the spin has turned and reached 10 % of |ω₀| the other way;
 //! - **stall**: no reversal within the run, and the spin was braked to below 10 % of |ω₀|:
-//!   the first time it got there.
+//!   the first time it got there (the spin wobbles with the rocking: the first dip counts).
 
 use std::fmt::Write as _;
 
 use contensou::friction::{Best, Coulomb, Ellipsoid, Friction, FrictionLaw, Simplified};
 use contensou::scenes::integrate::rk4;
-use contensou::scenes::rattleback::{Params, Probe, Rattleback};
+use contensou::scenes::rattleback::{Params, Probe, Rattleback, SpinEvents};
 use plotters::prelude::*;
 use plotters::style::{FontStyle, register_font};
 
@@ -45,25 +50,42 @@ fn step() -> f64 {
         .unwrap_or(1e-4)
 }
 const T_END: f64 = 20.0;
-const SAMPLE: usize = 100; // steps of 0.1 ms: every 10 ms
+/// Output interval (s); `RATTLEBACK_SAMPLE` overrides it (the sampling check in the README).
+fn sample() -> f64 {
+    std::env::var("RATTLEBACK_SAMPLE")
+        .ok()
+        .and_then(|h| h.parse().ok())
+        .unwrap_or(1e-2)
+}
 
 struct Run {
     law: &'static str,
     direction: &'static str,
     spin0: f64,
     rows: Vec<(f64, Probe<f64>)>,
+    events: SpinEvents<f64>,
 }
 
 impl Run {
+    /// Located between steps.
     fn reversal(&self) -> Option<f64> {
+        self.events.reversal()
+    }
+    /// Located between steps.
+    fn stall(&self) -> Option<f64> {
+        self.events.stall()
+    }
+    /// The first output sample past the reversal threshold.
+    fn sampled_reversal(&self) -> Option<f64> {
         let s = self.spin0.signum();
         self.rows
             .iter()
             .find(|(_, p)| p.spin * s <= -0.1 * self.spin0.abs())
             .map(|r| r.0)
     }
-    fn stall(&self) -> Option<f64> {
-        if self.reversal().is_some() {
+    /// The first output sample past the stall threshold.
+    fn sampled_stall(&self) -> Option<f64> {
+        if self.sampled_reversal().is_some() {
             return None;
         }
         self.rows
@@ -96,6 +118,8 @@ fn run<L: FrictionLaw>(law: &'static str, direction: &'static str, spin0: f64) -
     let rb = Rattleback::new(&params(), Friction::<f64, L>::with_law(F, DELTA).unwrap()).unwrap();
     let y0 = rb.initial_state(TILT_DEG.to_radians(), spin0);
     let mut rows = vec![(0.0, rb.probe(&y0))];
+    let mut events = SpinEvents::new(&rb, 0.0, &y0, spin0, 0.1);
+    let every = ((sample() / step()).round() as usize).max(1);
     rk4(
         &rb,
         0.0,
@@ -103,7 +127,8 @@ fn run<L: FrictionLaw>(law: &'static str, direction: &'static str, spin0: f64) -
         step(),
         (T_END / step()).round() as usize,
         |i, t, y| {
-            if i % ((SAMPLE as f64 * 1e-4 / step()).round() as usize).max(1) == 0 {
+            events.update(&rb, t, y);
+            if i % every == 0 {
                 rows.push((t, rb.probe(y)));
             }
         },
@@ -113,6 +138,7 @@ fn run<L: FrictionLaw>(law: &'static str, direction: &'static str, spin0: f64) -
         direction,
         spin0,
         rows,
+        events,
     }
 }
 
@@ -125,7 +151,12 @@ fn both<L: FrictionLaw>(law: &'static str) -> [Run; 2] {
 }
 
 fn opt(x: Option<f64>) -> String {
-    x.map_or(String::new(), |t| format!("{t:.3}"))
+    x.map_or(String::new(), |t| format!("{t:.4}"))
+}
+
+/// A located time to the µs (the step-halving checks).
+fn fine(x: Option<f64>) -> String {
+    x.map_or(String::new(), |t| format!("{t:.6}"))
 }
 
 fn main() {
@@ -137,11 +168,12 @@ fn main() {
     }
     let p = params();
     println!(
-        "Kane–Levinson rattleback: δ = {:.5} rad, I = {:?} kg·m², E* = {:e} Pa, f = {F}, δ_v = {DELTA} m/s, ω₀ = ±{SPIN} rad/s, tilt {TILT_DEG}°, RK4 h = {} s, T = {T_END} s",
+        "Kane–Levinson rattleback: δ = {:.5} rad, I = {:?} kg·m², E* = {:e} Pa, f = {F}, δ_v = {DELTA} m/s, ω₀ = ±{SPIN} rad/s, tilt {TILT_DEG}°, RK4 h = {} s, T = {T_END} s, output every {} s",
         p.skew,
         p.inertia,
         p.estar,
-        step()
+        step(),
+        sample()
     );
     let laws = [
         both::<Best>("best"),
@@ -150,14 +182,14 @@ fn main() {
         both::<Coulomb>("coulomb"),
     ];
     let mut csv = String::from(
-        "law,direction,reversal_s,stall_s,peak_rock_rad,final_spin,energy_start,energy_end\n",
+        "law,direction,reversal_s,stall_s,peak_rock_rad,final_spin,energy_start,energy_end,reversal_sampled_s,stall_sampled_s\n",
     );
     for runs in &laws {
         for r in runs {
             let (first, last) = (r.rows[0].1, r.rows[r.rows.len() - 1].1);
             writeln!(
                 csv,
-                "{},{},{},{},{:.5},{:.4},{:.6},{:.6}",
+                "{},{},{},{},{:.5},{:.4},{:.6},{:.6},{},{}",
                 r.law,
                 r.direction,
                 opt(r.reversal()),
@@ -165,19 +197,24 @@ fn main() {
                 r.peak_rock(),
                 last.spin,
                 first.energy,
-                last.energy
+                last.energy,
+                opt(r.sampled_reversal()),
+                opt(r.sampled_stall())
             )
             .unwrap();
             println!(
-                "{:10} {:8} ω₀ = {:+.1}: reversal {:>7} s, stall {:>7} s, peak pitch {:.4} / roll {:.4} rad, final spin {:+.3} rad/s, energy {:.6} → {:.6} J, peak |F_t|/N = {:.3}",
+                "{:10} {:8} ω₀ = {:+.1}: reversal {:>8} s (sampled {:>6}), stall {:>8} s (sampled {:>6}), peak pitch {:.4} / roll {:.4} rad, final spin {:+.3} rad/s, peak reversed spin {:+.3} rad/s, energy {:.6} → {:.6} J, peak |F_t|/N = {:.3}",
                 r.law,
                 r.direction,
                 r.spin0,
-                opt(r.reversal()),
-                opt(r.stall()),
+                fine(r.reversal()),
+                opt(r.sampled_reversal()),
+                fine(r.stall()),
+                opt(r.sampled_stall()),
                 r.peak(|p| p.pitch.abs()),
                 r.peak(|p| p.roll.abs()),
                 last.spin,
+                r.peak(|p| -p.spin * r.spin0.signum()),
                 first.energy,
                 last.energy,
                 r.peak(|p| p.friction_ratio)

@@ -11,6 +11,11 @@
 //! committed font): θ (rad) against t (s), one labelled curve per law with its δ, the line
 //! θ* = arccos(−10/13) where both spheres touch, legend and title.
 //!
+//! Events — t(θ = π/2), the inversion θ = θ* and the small sphere's touch-down — are located
+//! between the RK4 steps on every step ([`Events`]: Hermite interpolant + bisection), not read
+//! off the 2 ms output; the sampled inversion (first output row with θ ≥ θ*) is printed beside
+//! it. `TIPPE_H` (s) and `TIPPE_SAMPLE` (s) override the step and the output interval.
+//!
 //! Runs (f64, fixed-step RK4, h = 10 µs ≈ 1/68 of the 1.5 kHz contact period, T = 8 s):
 //! `simplified` (the paper's simplified Contensou law, δ = 1e-4 m/s), `coulomb-steep`
 //! (δ = 1e-4 m/s) and `coulomb-gentle` (δ = 1e-2 m/s). Then the cost comparison: Dormand–Prince
@@ -21,7 +26,7 @@ use std::time::Instant;
 
 use contensou::friction::{Best, Coulomb, Friction, FrictionLaw, Simplified};
 use contensou::scenes::integrate::{Tolerance, dopri45, rk4};
-use contensou::scenes::tippe_top::{N, Params, Probe, TippeTop};
+use contensou::scenes::tippe_top::{Events, N, Params, Probe, TippeTop};
 
 /// The report's chart renderer (plotters with the committed font); only `lines` is used here.
 #[path = "report/plot.rs"]
@@ -32,8 +37,21 @@ const THETA0: f64 = 0.1;
 const SPIN: f64 = 180.0;
 const F: f64 = 0.3;
 const T_END: f64 = 8.0;
-const H: f64 = 1e-5;
-const SAMPLE: f64 = 2e-3;
+/// `name` (s) from the environment, or `default`.
+fn env_or(name: &str, default: f64) -> f64 {
+    std::env::var(name)
+        .ok()
+        .and_then(|h| h.parse().ok())
+        .unwrap_or(default)
+}
+/// RK4 step (s); `TIPPE_H` overrides it (the step-halving check in the README).
+fn step() -> f64 {
+    env_or("TIPPE_H", 1e-5)
+}
+/// Output interval (s); `TIPPE_SAMPLE` overrides it (the sampling check in the README).
+fn sample() -> f64 {
+    env_or("TIPPE_SAMPLE", 2e-3)
+}
 /// Both spheres touch at θ* = arccos(−10/13).
 fn theta_star() -> f64 {
     (-10.0f64 / 13.0).acos()
@@ -43,12 +61,13 @@ struct Run {
     name: &'static str,
     delta: f64,
     rows: Vec<(f64, Probe<f64>)>,
+    events: Events<f64>,
     wall: f64,
 }
 
 impl Run {
-    /// First time θ reaches θ* (the small sphere touches down).
-    fn inversion(&self) -> Option<f64> {
+    /// First output sample with θ ≥ θ* (the figure before event location).
+    fn sampled_inversion(&self) -> Option<f64> {
         self.rows
             .iter()
             .find(|(_, p)| p.theta >= theta_star())
@@ -74,11 +93,13 @@ fn fixed<L: FrictionLaw>(name: &'static str, delta: f64) -> Run {
     )
     .unwrap();
     let y0 = top.initial_state(THETA0, SPIN);
-    let steps = (T_END / H).round() as usize;
-    let every = (SAMPLE / H).round() as usize;
+    let steps = (T_END / step()).round() as usize;
+    let every = ((sample() / step()).round() as usize).max(1);
     let mut rows = vec![(0.0, top.probe(&y0))];
+    let mut events = Events::new(&top, 0.0, &y0);
     let start = Instant::now();
-    rk4(&top, 0.0, y0, H, steps, |i, t, y| {
+    rk4(&top, 0.0, y0, step(), steps, |i, t, y| {
+        events.update(&top, t, y);
         if i % every == 0 {
             rows.push((t, top.probe(y)));
         }
@@ -87,6 +108,7 @@ fn fixed<L: FrictionLaw>(name: &'static str, delta: f64) -> Run {
         name,
         delta,
         rows,
+        events,
         wall: start.elapsed().as_secs_f64(),
     }
 }
@@ -113,16 +135,21 @@ fn main() {
         }
         std::fs::write(format!("{dir}/tippe_top_{}.csv", r.name), csv).unwrap();
         let last = r.last();
+        let at = |t: Option<f64>| t.map_or("never".into(), |t| format!("{t:.6} s"));
         println!(
-            "{:15} inversion (θ ≥ θ*) at {}, θ(T) = {:.3} rad, spin ω·e₃(T) = {:.1} rad/s, on the head {:.0}% of the last second, energy {:.3e} → {:.3e} J, RK4 h = {H:e} s: {:.2} s wall",
+            "{:15} θ = π/2 at {}, inversion (θ = θ*) at {} (sampled every {} s: {}), small sphere touches at {}, θ(T) = {:.3} rad, spin ω·e₃(T) = {:.1} rad/s, on the head {:.0}% of the last second, energy {:.3e} → {:.3e} J, RK4 h = {:e} s: {:.2} s wall",
             r.name,
-            r.inversion()
-                .map_or("never".into(), |t| format!("{t:.3} s")),
+            at(r.events.half()),
+            at(r.events.inversion()),
+            sample(),
+            at(r.sampled_inversion()),
+            at(r.events.touch_down()),
             last.theta,
             last.spin,
             100.0 * r.on_head_last_second(),
             r.rows[0].1.energy,
             last.energy,
+            step(),
             r.wall
         );
     }
@@ -135,25 +162,19 @@ fn main() {
             Friction::<f32, Simplified>::with_law(0.3, 1e-4).unwrap(),
         )
         .unwrap();
-        let mut inversion = None;
-        let y = rk4(
-            &top,
-            0.0,
-            top.initial_state(0.1, 180.0),
-            h,
-            (4.0 / h).round() as usize,
-            |i, _, y| {
-                if inversion.is_none() && f64::from(top.probe(y).theta) >= theta_star() {
-                    inversion = Some(i as f32 * h);
-                }
-            },
-        );
+        let y0 = top.initial_state(0.1, 180.0);
+        let mut events = Events::new(&top, 0.0, &y0);
+        let y = rk4(&top, 0.0, y0, h, (4.0 / h).round() as usize, |_, t, y| {
+            events.update(&top, t, y)
+        });
         let p = top.probe(&y);
         println!(
             "f32 RK4 h = {:2.0} µs ({:4.1} steps per contact period): inversion at {}, θ(4 s) = {:.3}, spin {:.1} rad/s",
             h * 1e6,
             1.0 / (1470.0 * h),
-            inversion.map_or("never".into(), |t| format!("{t:.3} s")),
+            events
+                .inversion()
+                .map_or("never".into(), |t| format!("{t:.5} s")),
             p.theta,
             p.spin
         );
@@ -233,7 +254,8 @@ fn plot(runs: &[Run], path: &str) {
         vec![(0.0, theta_star()), (T_END, theta_star())],
     ));
     let title = format!(
-        "Tippe top: tilt θ(t) by friction law (θ₀ = {THETA0} rad, ω₃ = {SPIN} rad/s, f = {F}, RK4 h = {H:.0e} s)"
+        "Tippe top: tilt θ(t) by friction law (θ₀ = {THETA0} rad, ω₃ = {SPIN} rad/s, f = {F}, RK4 h = {:.0e} s)",
+        step()
     );
     let t = plot::Axis {
         title: "t (s)",

@@ -7,8 +7,9 @@
 //! cargo run --release --features scenes --example tippe_top_step
 //! ```
 //!
-//! Touch-down: the first step after which the small sphere penetrates the floor
-//! ([`TippeTop::penetrations`]). Start θ₀ = 0.1 rad, ω₃ = 180 rad/s, simplified Contensou
+//! Touch-down: the time the small sphere first reaches the floor ([`TippeTop::penetrations`]
+//! = 0), located inside the step where it changes sign ([`Events`]: Hermite interpolant +
+//! bisection; before event location: the end of that step, up to one step later). Start θ₀ = 0.1 rad, ω₃ = 180 rad/s, simplified Contensou
 //! friction f = 0.3, δ = 1e-4 m/s (as examples/tippe_top.rs). Stable-step bound:
 //! [`Friction::stable_step`] for RK4 with the top's mass and its weight as the normal force
 //! (the ramp below δ; the rotational spin step is far larger here).
@@ -16,7 +17,7 @@
 use contensou::Real;
 use contensou::friction::{Constants, Explicit, Friction, Simplified};
 use contensou::scenes::integrate::rk4_step;
-use contensou::scenes::tippe_top::{Params, TippeTop};
+use contensou::scenes::tippe_top::{Events, Params, TippeTop};
 
 const T_END: f64 = 8.0;
 const TOLERANCE: f64 = 5e-3;
@@ -30,12 +31,14 @@ fn touch_down<T: Real>(h: T) -> Option<f64> {
     )
     .unwrap();
     let mut y = top.initial_state(T::from_f64(0.1), T::from_f64(180.0));
+    let mut events = Events::new(&top, T::ZERO, &y);
     let steps = (T_END / h.to_f64()).ceil() as usize;
     for i in 0..steps {
         let t = h * T::from_usize(i);
         y = rk4_step(&top, t, &y, h);
-        if top.penetrations(&y)[1] > T::ZERO {
-            return Some((i + 1) as f64 * h.to_f64());
+        events.update(&top, t + h, &y);
+        if let Some(t) = events.touch_down() {
+            return Some(t.to_f64());
         }
     }
     None
@@ -51,7 +54,7 @@ fn main() {
         Explicit::Rk4,
     );
     let reference = touch_down(1e-5f64).expect("the f64 10 µs run touches down");
-    println!("f64 RK4 h = 10 µs: small sphere touches down at {reference:.4} s");
+    println!("f64 RK4 h = 10 µs: small sphere touches down at {reference:.6} s");
     println!(
         "stable-step bound (Friction::stable_step, RK4, m, N = mg): {:.1} µs",
         bound * 1e6
@@ -66,7 +69,7 @@ fn main() {
         println!(
             "f32 RK4 h = {us:3} µs: touch-down {}{}",
             td.map_or("never".into(), |t| format!(
-                "{t:.4} s ({:+.1} ms)",
+                "{t:.6} s ({:+.2} ms)",
                 (t - reference) * 1e3
             )),
             if h > bound {

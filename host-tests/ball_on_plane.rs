@@ -1,6 +1,7 @@
 //! The guide's worked example (`examples/ball_on_plane.rs`) against the analytic results: pure
 //! rolling at t = (2/7)·v₀/(f g) with v = (5/7)·v₀, then the spin decaying at
-//! (3π/16)·f·N·a/I, each within 1 %.
+//! (3π/16)·f·N·a/I, each within 1 %; the rolling time located between steps converges with the
+//! step.
 
 #[path = "../examples/ball_on_plane.rs"]
 #[allow(dead_code)]
@@ -20,4 +21,15 @@ fn rolls_and_spins_down_as_the_analytic_solution() {
     // Rolling is reached after the Coulomb time, never before it (the spin only softens the
     // force at the end of the sliding phase).
     assert!(o.t_roll >= o.t_roll_analytic, "{o:?}");
+}
+
+/// Pure rolling is located between steps (linear interpolation, semi-implicit Euler's dense
+/// output): halving the step (11.5 → 5.8 µs) moves it by the first-order integrator's own
+/// error only, measured 2.5 µs (0.2913066 → 0.2913091 s), far below 1 ms.
+#[test]
+fn rolling_time_converges_with_the_step() {
+    let (full, half) = (example::run().unwrap(), example::run_at(0.25).unwrap());
+    let change = (full.t_roll - half.t_roll).abs();
+    println!("t_roll {} → {} s", full.t_roll, half.t_roll);
+    assert!(change < 5e-6, "{change:e} s vs dt = {:e} s", full.dt);
 }

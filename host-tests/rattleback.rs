@@ -9,11 +9,12 @@
 //! ω_c = √(1.5 N/(h m)) ≈ 2.5e3 rad/s gives h·ω_c ≈ 0.5; the regularised friction's rate
 //! f N/(δ m_eff) ≈ 4.4e3 1/s (f = 0.3, δ = 1e-3 m/s, m_eff ≈ 0.67 kg at the contact) gives
 //! 0.9 — both inside RK4's real-axis bound 2.78. The example runs h = 0.1 ms; its reversal and
-//! stall times are the same at h = 0.05, 0.1 and 0.2 ms to its 10 ms sampling (README).
+//! stall times, located between steps, are the same to 1 µs at h = 0.05 ms and within 0.3 ms at
+//! 0.2 ms (`Ellipsoid`: 11 ms; README).
 
 use contensou::friction::{Best, Coulomb, Friction, FrictionLaw};
 use contensou::scenes::integrate::rk4;
-use contensou::scenes::rattleback::{Params, Probe, Rattleback};
+use contensou::scenes::rattleback::{Params, Probe, Rattleback, SpinEvents};
 
 const H: f64 = 2e-4;
 const F: f64 = 0.3;
@@ -26,16 +27,30 @@ fn body<L: FrictionLaw>(p: &Params<f64>) -> Rattleback<f64, L> {
 
 /// Probes every 10 steps over `t_end` from Kane–Levinson's tilt and spin `spin`.
 fn run<L: FrictionLaw>(p: &Params<f64>, spin: f64, t_end: f64) -> Vec<(f64, Probe<f64>)> {
+    run_with::<L>(p, spin, t_end, H, 10).0
+}
+
+/// RK4 at step `h` over `t_end`: probes every `every` steps, and the spin events located
+/// between steps (threshold 10 % of |ω₀|).
+fn run_with<L: FrictionLaw>(
+    p: &Params<f64>,
+    spin: f64,
+    t_end: f64,
+    h: f64,
+    every: usize,
+) -> (Vec<(f64, Probe<f64>)>, SpinEvents<f64>) {
     let rb = body::<L>(p);
     let y0 = rb.initial_state(TILT, spin);
     let mut out = vec![(0.0, rb.probe(&y0))];
-    let y = rk4(&rb, 0.0, y0, H, (t_end / H).round() as usize, |i, t, y| {
-        if i % 10 == 0 {
+    let mut events = SpinEvents::new(&rb, 0.0, &y0, spin, 0.1);
+    let y = rk4(&rb, 0.0, y0, h, (t_end / h).round() as usize, |i, t, y| {
+        events.update(&rb, t, y);
+        if i % every == 0 {
             out.push((t, rb.probe(y)));
         }
     });
     assert!(y.iter().all(|v| v.is_finite()));
-    out
+    (out, events)
 }
 
 /// First time the spin has reversed to 10 % of |ω₀|.
@@ -108,10 +123,11 @@ fn geometry_matches_the_independent_mpmath_reference() {
 fn coulomb_reverses_the_unstable_spin_only_and_energy_never_increases() {
     let p = Params::kane_levinson();
     // ω₀ = −2 rad/s: the unstable direction for these parameters (δ > 0).
-    let unstable = run::<Coulomb>(&p, -2.0, 4.0);
-    let t = reversal(&unstable, -2.0);
-    // h = 0.1 ms in the example: 2.44 s.
-    assert!(t.is_some_and(|t| (1.5..3.5).contains(&t)), "{t:?}");
+    let (unstable, events) = run_with::<Coulomb>(&p, -2.0, 4.0, H, 10);
+    let t = events.reversal();
+    // h = 0.1 ms in the example: 2.4305 s (located between steps; first 10 ms sample 2.44 s).
+    assert!(t.is_some_and(|t| (t - 2.4305).abs() < 2e-3), "{t:?}");
+    assert!(reversal(&unstable, -2.0).is_some_and(|s| s >= t.unwrap()));
     assert_energy_never_increases(&unstable);
     // Rolling, not sliding: the friction ratio stays below f.
     let peak = unstable
@@ -154,6 +170,37 @@ fn contensou_drilling_torque_stalls_the_spin_without_reversal() {
     let stall = rows.iter().find(|(_, p)| p.spin.abs() < 0.2).map(|r| r.0);
     assert!(stall.is_some_and(|t| t < 2.0), "{stall:?}");
     assert_energy_never_increases(&rows);
+}
+
+/// The stall of the default law is located between steps: the same time whatever the output
+/// sampling (2 ms or 10 ms), 26 ms before the first 10 ms sample past the threshold (the spin
+/// wobbles with the rocking and first dips below 10 % between samples), and it converges with
+/// the step. Measured: h = 0.2 ms 0.843840 s (first 10 ms sample 0.870 s), 0.1 ms 0.843558 s
+/// (−0.28 ms), 0.05 ms 0.843558 s (< 1 µs; the example).
+#[test]
+fn stall_is_located_between_steps_whatever_the_sampling_and_converges_with_the_step() {
+    let p = Params::kane_levinson();
+    let (rows2, coarse) = run_with::<Best>(&p, -2.0, 1.0, H, 10);
+    let (rows10, coarse10) = run_with::<Best>(&p, -2.0, 1.0, H, 50);
+    let stall = coarse.stall().expect("stalls within 1 s");
+    assert!(coarse.reversal().is_none());
+    // Output sampling does not enter the located time.
+    let by_sampling = (coarse10.stall().unwrap() - stall).abs();
+    assert!(by_sampling < 1e-6, "{by_sampling:e} s");
+    // …but does enter the first sample past the threshold.
+    let sampled = |rows: &[(f64, Probe<f64>)]| {
+        rows.iter()
+            .find(|(_, p)| p.spin.abs() < 0.2)
+            .map(|r| r.0)
+            .unwrap()
+    };
+    assert!(sampled(&rows10) - stall > 0.02, "{}", sampled(&rows10));
+    assert!(sampled(&rows2) >= stall && sampled(&rows10) >= sampled(&rows2));
+    // Halving the step moves it by well under a millisecond.
+    let (_, fine) = run_with::<Best>(&p, -2.0, 1.0, H / 2.0, 50);
+    let by_step = (fine.stall().unwrap() - stall).abs();
+    assert!(by_step < 5e-4, "{stall} vs {:?}", fine.stall());
+    assert!((0.835..0.855).contains(&stall), "{stall}");
 }
 
 #[test]

@@ -469,8 +469,9 @@ fn best_stiffness_is_largest_inside_the_ramp_and_the_ellipse() {
     // eigenvalue (Euler's |λ|²/Re λ for a complex pair) never exceeds κ, for the exact law and
     // for `best`. The maximisation of the generator covers only the IC inside the ellipse.
     let delta = 1.0;
-    for e2 in [0.0, 0.5, 0.9, 0.99] {
-        let p = Parameter::new(e2).unwrap();
+    // through the thin patches to the contract's end (P/Q = 1e-4: m₁ = 1.70e-5; issue 21)
+    for e2 in [0.0, 0.5, 0.9, 0.99, 0.999, 0.9999, 1.0 - 1.7014448227e-5] {
+        let p = Parameter::from_complement(1.0 - e2).unwrap();
         let k = Constants::from_parameter(p);
         let kappa = ramp_stiffness(&k);
         let best = shared::BestBlock::new(&k, 1.0, delta, 1.0, 1.0, 0.0);
@@ -636,8 +637,8 @@ fn spin_stiffness_is_largest_inside_the_ramp_and_the_ellipse() {
     // |v_x| + |v_y| + a|ω| = s, first octant, just inside (s = 0.999δ) and past (1.001δ) the
     // ramp: never above κ_T for the exact law and for `best`, never above 2/5 for `simplified`
     // (which it approaches); the scan comes within 3 % of κ_T.
-    for e2 in [0.0, 0.5, 0.9, 0.99] {
-        let p = Parameter::new(e2).unwrap();
+    for e2 in [0.0, 0.5, 0.9, 0.99, 0.999, 0.9999, 1.0 - 1.7014448227e-5] {
+        let p = Parameter::from_complement(1.0 - e2).unwrap();
         let k = Constants::from_parameter(p);
         let kappa_t = spin_stiffness(&k);
         let n = 24;

@@ -4,10 +4,15 @@
 
 use contensou::friction::{Constants, Coulomb, Friction, FrictionLaw, Simplified};
 use contensou::scenes::integrate::{Tolerance, dopri45, rk4};
-use contensou::scenes::tippe_top::{N, Params, Probe, TippeTop};
+use contensou::scenes::tippe_top::{Events, N, Params, Probe, TippeTop};
 
 /// Adaptive run of the paper's top to `t_end`: the probes after every accepted step.
 fn run<L: FrictionLaw>(delta: f64, t_end: f64) -> Vec<(f64, Probe<f64>)> {
+    run_events::<L>(delta, t_end).0
+}
+
+/// [`run`] and the events located between its accepted steps.
+fn run_events<L: FrictionLaw>(delta: f64, t_end: f64) -> (Vec<(f64, Probe<f64>)>, Events<f64>) {
     let top = TippeTop::new(
         &Params::paper(),
         Friction::<f64, L>::with_law(0.3, delta).unwrap(),
@@ -20,20 +25,44 @@ fn run<L: FrictionLaw>(delta: f64, t_end: f64) -> Vec<(f64, Probe<f64>)> {
     atol[10..13].fill(1e-4);
     let tol = Tolerance { rtol: 1e-6, atol };
     let mut out = vec![(0.0, top.probe(&y0))];
+    let mut events = Events::new(&top, 0.0, &y0);
     let (t, _, s) = dopri45(&top, 0.0, y0, t_end, 1e-6, 1e-3, &tol, 1_000_000, |t, y| {
+        events.update(&top, t, y);
         out.push((t, top.probe(y)))
     });
     assert!(s.finished && t == t_end);
-    out
+    (out, events)
 }
 
 fn theta_star() -> f64 {
     (-10.0f64 / 13.0).acos()
 }
 
+// The simplified law's events with f64 RK4 at h = 10 µs, located between steps
+// (`cargo run --release --features scenes --example tippe_top`; README).
+/// θ = π/2 (s).
+const T_HALF: f64 = 1.148067;
+/// θ = θ* (s).
+const T_INVERSION: f64 = 1.847504;
+/// The small sphere touches down (s).
+const T_TOUCH: f64 = 1.847495;
+
 #[test]
 fn simplified_inverts_and_energy_does_not_grow() {
-    let rows = run::<Simplified>(1e-4, 2.5);
+    let (rows, events) = run_events::<Simplified>(1e-4, 2.5);
+    // Located between the adaptive steps (up to 1 ms long) as between RK4's 10 µs steps
+    // (example: θ = π/2 at T_HALF, θ* at T_INVERSION, touch-down at T_TOUCH).
+    for (what, got, rk4) in [
+        ("θ = π/2", events.half(), T_HALF),
+        ("θ = θ*", events.inversion(), T_INVERSION),
+        ("touch-down", events.touch_down(), T_TOUCH),
+    ] {
+        println!("{what}: Dormand–Prince {got:?}, RK4 10 µs {rk4}");
+        assert!(
+            got.is_some_and(|t| (t - rk4).abs() < 2e-4),
+            "{what}: {got:?} vs RK4 {rk4}"
+        );
+    }
     let e0 = rows[0].1.energy;
     // Non-increasing up to integration error: never above any earlier value by > 1e-6·E₀.
     let mut min_so_far = e0;
@@ -79,22 +108,15 @@ fn f32_rk4_with_a_40us_step_inverts_like_f64() {
         Friction::<f32, Simplified>::with_law(0.3, 1e-4).unwrap(),
     )
     .unwrap();
-    let mut inversion = None;
-    rk4(
-        &top,
-        0.0,
-        top.initial_state(0.1, 180.0),
-        4e-5,
-        50_000,
-        |i, _, y| {
-            if inversion.is_none() && f64::from(top.probe(y).theta) >= theta_star() {
-                inversion = Some(i as f64 * 4e-5);
-            }
-        },
-    );
-    // f64 with the adaptive integrator and with RK4 at h = 10 µs: 1.848 s.
+    let y0 = top.initial_state(0.1, 180.0);
+    let mut events = Events::new(&top, 0.0, &y0);
+    rk4(&top, 0.0, y0, 4e-5, 50_000, |_, t, y| {
+        events.update(&top, t, y)
+    });
+    // f64 RK4 at h = 10 µs: T_INVERSION (located; the adaptive integrator agrees, above).
+    let inversion = events.inversion().map(f64::from);
     assert!(
-        inversion.is_some_and(|t| (t - 1.848).abs() < 0.02),
+        inversion.is_some_and(|t| (t - T_INVERSION).abs() < 0.02),
         "{inversion:?}"
     );
 }
@@ -126,7 +148,8 @@ fn f32_rk4_resolves_the_contact_and_stays_finite() {
 }
 
 /// The MCU configuration (firmware/src/bin/tippe.rs): f32 RK4 at 94 µs, just under the
-/// stable-step bound, touches the small sphere down within 5 ms of the f64 10 µs run (1.8475 s,
+/// stable-step bound, touches the small sphere down within 5 ms of the f64 10 µs run (both
+/// located between steps: 1.847327 s against 1.847495 s,
 /// `cargo run --release --features scenes --example tippe_top_step`); `penetrations` agrees
 /// with the contact evaluation.
 #[test]
@@ -145,9 +168,12 @@ fn f32_rk4_at_94us_touches_down_within_5ms_of_f64() {
     );
     let top = TippeTop::new(&p, friction).unwrap();
     let mut y = top.initial_state(0.1, 180.0);
+    let mut events = Events::new(&top, 0.0, &y);
     let mut touch = None;
     for i in 0..30_000 {
-        y = contensou::scenes::integrate::rk4_step(&top, 0.0, &y, h);
+        let t = i as f32 * h;
+        y = contensou::scenes::integrate::rk4_step(&top, t, &y, h);
+        events.update(&top, t + h, &y);
         let [hb, hs] = top.penetrations(&y);
         let [big, small] = top.contacts(&y);
         assert!(
@@ -156,13 +182,14 @@ fn f32_rk4_at_94us_touches_down_within_5ms_of_f64() {
             big.h,
             small.h
         );
-        if hs > 0.0 {
-            touch = Some((i + 1) as f64 * f64::from(h));
+        if let Some(t) = events.touch_down() {
+            assert!(hs >= 0.0 && t <= (i + 1) as f32 * h);
+            touch = Some(f64::from(t));
             break;
         }
     }
     assert!(
-        touch.is_some_and(|t| (t - 1.8475).abs() <= 5e-3),
+        touch.is_some_and(|t| (t - T_TOUCH).abs() <= 5e-3),
         "{touch:?}"
     );
 }

@@ -81,7 +81,7 @@ fn wrench_of<T: Real, B>(patch: Patch<T>, t: Tangential<T, B>) -> Wrench<T, B> {
 /// precomputed; [`Contact::wrench`] is the per-step call.
 ///
 /// The friction law defaults to [`Best`] (exact-grade, per-contact tables built here once:
-/// 182 M4F instructions per `f32` wrench, 948 bytes). `Best`'s per-step form, which needs no
+/// 182 M4F instructions per `f32` wrench, 1,404 bytes of tables). `Best`'s per-step form, which needs no
 /// build, would cost 521 here, so a fixed contact keeps the per-contact tables.
 ///
 /// Cost per step (f32, Cortex-M4F, Hertz + undamped): `bench-results/qemu.csv`, stage `wrench`,
@@ -318,11 +318,11 @@ impl<T: Real, N: NormalLaw<T>, D: Damping<T>, L: FrictionLaw> Contact<T, N, D, L
 ///
 /// The friction law defaults to [`Best`], evaluated in its per-step form (nothing precomputed,
 /// e² may change every call: the outside coefficients from one flash table with e²
-/// interpolated, 28,224 bytes of `f32` table, no RAM; see [`crate::friction::best`]). Measured
+/// interpolated, 34,944 bytes of `f32` table, no RAM; see [`crate::friction::best`]). Measured
 /// (`f32`, Cortex-M4F, QEMU): **521** instructions per wrench on the `wrench` set (1.85× the
 /// 281 of [`crate::friction::Simplified`]), 750 on the worst input of an input search (row
-/// `wrench,table_each_step-best-worst`); friction within 1.4e-5 fN / 1.9e-6 fNa of the exact
-/// integrals for e² ≤ 0.99. `VaryingContact<f32, Undamped>` is 12 bytes. For a geometry given
+/// `wrench,table_each_step-best-worst`); friction within 4.7e-5 fN / 3.3e-6 fNa of the exact
+/// integrals for every accepted shape (e² to 0.99998 at P/Q = 1e-4). `VaryingContact<f32, Undamped>` is 12 bytes. For a geometry given
 /// as two bodies' principal curvatures and their relative angle every step, build the
 /// [`Curvatures`] with [`Curvatures::from_bodies_cos_sin`] (no trigonometry, no `f64`: 723
 /// instructions per step for both, row `wrench,table_each_step-best-from-bodies`).

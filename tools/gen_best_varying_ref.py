@@ -11,7 +11,12 @@ extended precision (independent of the Rust code), at steps 1/32 and 1/64; the d
 the `err` column.
 
 Output: tools/data/best_varying_ref.csv, columns e2,psi,u,fx,fy,tz,err (F in fN, T_z in fNa).
-Run from the repository root:  python3 tools/gen_best_varying_ref.py   (≈3 min on an idle core)
+With --thin: tools/data/best_thin_ref.csv, the same at the thin patches (issue 21): e² = 0.992,
+0.995, 0.999, 0.9995, 0.9999, 0.99995, 0.99999, the contract's end (P/Q = 1e-4) and the middle
+of the per-step table's cells in s = m₁^⅛ over m₁ ∈ [1.7e-5, 0.01] (both `best` forms are
+checked against it).
+Run from the repository root:  python3 tools/gen_best_varying_ref.py [--thin]
+(≈3 min on an idle core; --thin ≈2 min)
 """
 import math
 import sys
@@ -36,11 +41,27 @@ def e2_values():
     return sorted(set(round(e, 15) for e in out))
 
 
+M1_END = 1.7014448227e-5  # e² = 0.999982985551773 at P/Q = 1e-4 (contact_eval eccentricity)
+
+
+def thin_e2_values():
+    """The named thin patches and the middle of the per-step table's cells in s = m₁^⅛
+    (NS = 25 over s ∈ [(1e-5)^⅛, 1]) between m₁ = 1.7e-5 and 0.01."""
+    out = [0.992, 0.995, 0.999, 0.9995, 0.9999, 0.99995, 0.99999, 1 - M1_END]
+    s0, ns = 1e-5 ** 0.125, 25
+    for n in range(ns):
+        s = s0 + (1 - s0) * (n + 0.5) / ns
+        if M1_END <= s ** 8 <= 0.01:
+            out.append(1 - s ** 8)
+    return sorted(set(round(e, 15) for e in out))
+
+
 def main():
+    thin = "--thin" in sys.argv[1:]
     t0 = time.time()
     rows = []
     worst = 0.0
-    for m in e2_values():
+    for m in thin_e2_values() if thin else e2_values():
         for psi in (0.0, 0.0131, 0.7, 2.5):
             ub = u_boundary(m, psi)
             for u in (ub * (1 - 1e-6), ub * (1 + 1e-6), ub * 1.01, ub * 1.03, ub * 1.1, 3.0):
@@ -51,7 +72,8 @@ def main():
                 err = float(np.max(np.abs(v1 - v2)))
                 worst = max(worst, err)
                 rows.append((m, psi, u, *map(float, v2), err))
-    with open("tools/data/best_varying_ref.csv", "w") as fh:
+    name = "best_thin_ref.csv" if thin else "best_varying_ref.csv"
+    with open(f"tools/data/{name}", "w") as fh:
         fh.write("e2,psi,u,fx,fy,tz,err\n")
         for r in rows:
             fh.write(",".join(repr(float(x)) for x in r) + "\n")

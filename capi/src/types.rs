@@ -75,9 +75,9 @@ pub struct contensou_curvatures<T> {
 }
 
 /// Bytes of [`contensou_contact_f32`].
-pub const CONTENSOU_CONTACT_F32_SIZE: usize = 1072;
+pub const CONTENSOU_CONTACT_F32_SIZE: usize = 1528;
 /// Bytes of [`contensou_contact_f64`].
-pub const CONTENSOU_CONTACT_F64_SIZE: usize = 2144;
+pub const CONTENSOU_CONTACT_F64_SIZE: usize = 3048;
 /// Alignment (bytes) of both contact storage types.
 pub const CONTENSOU_CONTACT_ALIGN: usize = 8;
 
@@ -90,7 +90,7 @@ pub const CONTENSOU_CONTACT_ALIGN: usize = 8;
 #[derive(Debug)]
 pub struct contensou_contact_f32 {
     /// Opaque.
-    pub opaque: [u64; 134],
+    pub opaque: [u64; 191],
 }
 
 /// Caller-owned storage of one `double` contact: opaque, [`CONTENSOU_CONTACT_F64_SIZE`]
@@ -99,7 +99,7 @@ pub struct contensou_contact_f32 {
 #[derive(Debug)]
 pub struct contensou_contact_f64 {
     /// Opaque.
-    pub opaque: [u64; 268],
+    pub opaque: [u64; 381],
 }
 
 /// What the storage holds: a tag that only a constructor writes, then the contact.

@@ -12,7 +12,7 @@ use crate::measure::traction_error;
 use crate::plot::{self, Axis, Panel};
 
 /// e² of the map panels.
-pub const MAP_E2: [f64; 4] = [0.0, 0.5, 0.9, 0.99];
+pub const MAP_E2: [f64; 6] = [0.0, 0.5, 0.9, 0.99, 0.999, 0.9999];
 /// Grid: u log-spaced over [1e-2, 1e2] (cells), ψ over [0, π/2] (cells).
 const NU: usize = 128;
 const NPSI: usize = 64;

@@ -456,7 +456,7 @@ const FRICTION_MAPS: &str = "
 Error of the law (f64, per-contact form) against the library's exact integrals
 (`friction::Exact`, 5e-15 against mpmath) on a 128 × 64 grid of cell centres: u = v/(aω)
 log-spaced over [1e-2, 1e2], ψ over [0, π/2] (the symmetries ψ → −ψ, ψ → π − ψ cover the rest),
-for e² ∈ {0, 0.5, 0.9, 0.99}. Force: |ΔF|/(fN); torque: |ΔT_z|/(fNa). Shared logarithmic colour
+for e² ∈ {0, 0.5, 0.9, 0.99, 0.999, 0.9999}. Force: |ΔF|/(fN); torque: |ΔT_z|/(fNa). Shared logarithmic colour
 scale per image (at most 12 decades; values below its floor take the floor colour).
 
 ";

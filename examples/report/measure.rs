@@ -184,8 +184,12 @@ pub fn hertz_volumetric<T: Real>(r: &Refs) -> Vec<Vec<f64>> {
     hertz_rows::<T, _>(r, false, |c, e| Some(Volumetric::new(c, e)))
 }
 
+/// The contract's thinnest patch: e² at P/Q = 1e-4 (`contact_eval eccentricity`).
+const E2_CONTRACT_END: f64 = 0.999982985551773;
+
 /// Every friction reference row through `law` (given the constants at the row's e²):
-/// [|ΔF|, |ΔT_z|] if e² ≤ 0.99 (else NaN: not counted), then [|ΔF|, |ΔT_z|] on every row.
+/// [|ΔF|, |ΔT_z|] if e² is one the contract accepts (up to the e² of P/Q = 1e-4; else NaN:
+/// not counted), then [|ΔF|, |ΔT_z|] on every row.
 fn friction_rows<T: Real>(
     r: &Refs,
     mut law: impl FnMut(&Constants<T>, &SlipState<T>) -> Traction<T>,
@@ -196,7 +200,7 @@ fn friction_rows<T: Real>(
             let k = Constants::from_parameter(Parameter::new(T::from_f64(e2)).ok()?);
             let s = SlipState::from_polar(T::from_f64(psi), T::from_f64(u)).ok()?;
             let (f, t) = traction_error(&law(&k, &s), &want);
-            let (fd, td) = if e2 <= 0.99 {
+            let (fd, td) = if e2 <= E2_CONTRACT_END {
                 (f, t)
             } else {
                 (f64::NAN, f64::NAN)

@@ -69,15 +69,16 @@ pub const FRICTION: Section = Section {
     id: "friction",
     title: "Friction laws (dimensionless core)",
     components: &[
-        "ΔF/(fN), e² ≤ 0.99",
-        "ΔT_z/(fNa), e² ≤ 0.99",
+        "ΔF/(fN), accepted e²",
+        "ΔT_z/(fNa), accepted e²",
         "ΔF/(fN), all e²",
         "ΔT_z/(fNa), all e²",
     ],
     chart: &[0, 1],
     how: "every row of `tools/data/friction_ref.csv` and `friction_ref_random.csv` (mpmath \
           integrals; e² from 0 to 1 − 1.5e-12, u from 0 to ∞): |ΔF| = |(ΔF_x, ΔF_y)| in fN and |ΔT_z| \
-          in fNa (ΔF, ΔT_z in the tables), over e² ≤ 0.99 (the range `best` is fitted on; the chart) \
+          in fNa (ΔF, ΔT_z in the tables), over the e² the contract accepts, up to 0.999982985551773 at P/Q = 1e-4 (`best`'s exact-grade \
+          domain; the chart) \
           and over every row (e² up to 1 − 1.5e-12). Laws in their per-contact form (`prepare` once per e²); `best-varying` is \
           `Best`'s per-step form (its coefficients from the flash table with e² interpolated, \
           every call: what `VaryingContact` calls). f32 skips the rows whose e² rounds \

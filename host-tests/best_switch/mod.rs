@@ -4,14 +4,14 @@ use contensou::Real;
 use contensou::friction::Traction;
 use contensou::friction::best::Branch;
 
-/// Bisects the inside/outside switch of `at` along u ∈ [0.05, 1.5] (inside at 0.05, outside
+/// Bisects the inside/outside switch of `at` along u ∈ [1e-4, 1.5] (inside at 1e-4, outside
 /// at 1.5, asserted) down to adjacent floats (`next_up`, asserted), and returns the largest
 /// component of |traction(outside) − traction(inside)| there.
 pub fn switch_jump<T: Real>(
     at: impl Fn(T) -> (Traction<T>, Branch),
     next_up: impl Fn(T) -> T,
 ) -> f64 {
-    let (mut lo, mut hi) = (T::from_f64(0.05), T::from_f64(1.5));
+    let (mut lo, mut hi) = (T::from_f64(1e-4), T::from_f64(1.5));
     assert_eq!(at(lo).1, Branch::Inside);
     assert_eq!(at(hi).1, Branch::Outside);
     for _ in 0..200 {

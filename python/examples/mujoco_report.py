@@ -23,6 +23,24 @@ import mujoco_tippe_top as top  # noqa: E402
 
 DOCS = Path(__file__).resolve().parents[2] / "docs"
 
+# The native plugin (mujoco/): a fixed section, its figures live in mujoco/README.md.
+PLUGIN_SECTION = """
+## Natively: the `contensou.contact` engine plugin (`mujoco/`)
+
+The same contact without callback code: a MuJoCo engine plugin in C over the C API, declared in
+the model file (`<extension><plugin plugin="contensou.contact">`, `<body><plugin instance=…/>`),
+built by `mujoco/build.sh` against the `mujoco` Python package, loaded by
+`mujoco.mj_loadPluginLibrary`, `mj_loadPluginLibrary` from C, or `simulate`'s `mujoco_plugin/`
+directory. Sphere, capsule and ellipsoid geoms against planes, sphere–sphere between plugin
+bodies; a sensor with N, F_x, F_y, T_z, a, b, h per contact; bad configurations refused at load
+naming the attribute and value. Its trajectory equals this page's callback path bit for bit
+(tippe top Euler and RK4, ball); models `mujoco/models/{tippe_top,ball,rattleback}.xml`
+(keyframe 0 = the scene's start). Use, geometry, refusals, MuJoCo's limits (explicit contact
+forces: the step must respect the library's `stable_step`) and figures:
+[`mujoco/README.md`](../mujoco/README.md); speed (`python mujoco/bench.py`):
+[`bench-results/mujoco.md`](../bench-results/mujoco.md).
+"""
+
 
 def chart_top(rows, path):
     fig, ax = plt.subplots(figsize=(9, 4.5))
@@ -127,6 +145,7 @@ rolls at the analytic 2v₀/(7fg) and its spin follows the analytic pure-spin de
 
 ![ω_z(t)](mujoco_ball.png)
 """
+    text += PLUGIN_SECTION
     args.out.write_text(text)
     print(f"wrote {args.out}", file=sys.stderr)
 

@@ -3,7 +3,7 @@
 //! (src/friction/best.rs, best/contact.rs), every branch a select. Lanes inside and outside
 //! are both evaluated only when the batch holds both; a lane's result is the scalar call's.
 
-use super::lanes::{Lanes, MAX_LANES};
+use super::lanes::{Lanes, MAX_LANES, PIECE_TABLE};
 use super::laws::Shape;
 use super::state::{State, Tr};
 use crate::Real;
@@ -128,26 +128,37 @@ fn splat<V: Lanes>(x: f64) -> V {
     V::splat(V::T::from_f64(x))
 }
 
-/// The per-contact form splatted: quartic, m, 1 + γ and the pieces.
+/// The per-contact form splatted: quartic, m, 1 + γ, the number of pieces used and the pieces.
 #[derive(Clone, Copy, Debug)]
 pub struct Fixed<V: Lanes> {
     quartic: QuarticLanes<V>,
     m: V,
     g1: V,
-    /// table[4j + k][i] = coefficient k of the cubic j on piece i (one 8-entry table per
-    /// coefficient: a lane's piece is a cross-lane lookup).
-    table: [[V::T; 8]; 28],
+    /// The pieces used (8, or 12 for the thin patches), as `T`.
+    nt: V,
+    /// table[4j + k][i] = coefficient k of the cubic j on piece i (one 16-entry table per
+    /// coefficient, the 12 stored pieces then zeros: a lane's piece is a cross-lane lookup).
+    table: [[V::T; PIECE_TABLE]; 28],
 }
 
 impl<V: Lanes> Fixed<V> {
     #[inline(always)]
     pub(crate) fn new(p: &BestContact<V::T>) -> Self {
-        let (q, m, g1, pieces) = p.parts();
+        let (q, m, g1, nt, pieces) = p.parts();
+        let coefficient = |i: usize, jk: usize| {
+            pieces
+                .get(i)
+                .and_then(|piece| piece.get(jk / 4))
+                .and_then(|cubic| cubic.get(jk % 4))
+                .copied()
+                .unwrap_or(V::T::ZERO)
+        };
         Fixed {
             quartic: QuarticLanes::of(core::slice::from_ref(q)),
             m: V::splat(m),
             g1: V::splat(g1),
-            table: core::array::from_fn(|jk| core::array::from_fn(|i| pieces[i][jk / 4][jk % 4])),
+            nt: V::splat(nt),
+            table: core::array::from_fn(|jk| core::array::from_fn(|i| coefficient(i, jk))),
         }
     }
 }
@@ -223,13 +234,13 @@ fn assemble<V: Lanes>(c: V, sn: V, tau: V, k: &[V; 7]) -> Tr<V> {
 
 /// Coefficient j on each lane's piece i at r: c₀ + r(c₁ + r(c₂ + r c₃)).
 #[inline(always)]
-fn cubic<V: Lanes>(table: &[[V::T; 8]; 28], j: usize, i: V::Idx, r: V) -> V {
+fn cubic<V: Lanes>(table: &[[V::T; PIECE_TABLE]; 28], j: usize, i: V::Idx, r: V) -> V {
     let c = |k: usize| table.get(4 * j + k).unwrap_or(&table[0]);
     let (c0, c1, c2, c3) = (
-        V::lookup8(c(0), i),
-        V::lookup8(c(1), i),
-        V::lookup8(c(2), i),
-        V::lookup8(c(3), i),
+        V::lookup(c(0), i),
+        V::lookup(c(1), i),
+        V::lookup(c(2), i),
+        V::lookup(c(3), i),
     );
     c0 + r * (c1 + r * (c2 + r * c3))
 }
@@ -243,8 +254,9 @@ pub(crate) fn fixed<V: Lanes>(p: &Fixed<V>, s: &State<V>) -> Tr<V> {
     }
     let zero = V::splat(V::T::ZERO);
     let (c, sn, tau, one_minus) = confocal(p.m, p.g1, s.x, s.y, s.w);
-    let zn = one_minus.larger(zero).sqrt() * V::splat(V::T::from_usize(8));
-    // The piece of each lane: i = min(⌊zn⌋, 7), r = zn − i; the cubic's coefficients looked up.
+    let zn = one_minus.larger(zero).sqrt() * p.nt;
+    // The piece of each lane: i = min(⌊zn⌋, 11), r = zn − i (with 8 pieces z = 1 lands on the
+    // constant piece 8); the cubic's coefficients looked up.
     let (i, r) = zn.piece();
     let k = [
         cubic(&p.table, 0, i, r),
@@ -293,7 +305,7 @@ pub(crate) fn varying<V: Lanes>(k: &[Constants<V::T>], s: &State<V>) -> Tr<V> {
 }
 
 /// `best::varying::coefficients` lane by lane: the per-step table's three-node stencil in
-/// s = m₁^¼ (weights w) and cubic piece in z, gathered per lane, plus the ends.
+/// s = m₁^⅛ = √√γ (weights w) and cubic piece in z, gathered per lane, plus the ends.
 #[inline(always)]
 fn coefficients<V: Lanes>(gamma: V, z: V, ends0: &[V; 7], ends1: &[V; 7]) -> [V; 7] {
     let table = VARYING_TABLE.as_flattened().as_flattened().as_flattened();
@@ -303,7 +315,7 @@ fn coefficients<V: Lanes>(gamma: V, z: V, ends0: &[V; 7], ends1: &[V; 7]) -> [V;
         V::splat(V::T::HALF),
     );
     let scale = V::splat(V::T::from_f64(VARYING_NS as f64 / (1.0 - VARYING_S0)));
-    let x = ((gamma.sqrt() - V::splat(V::T::from_f64(VARYING_S0))) * scale)
+    let x = ((gamma.sqrt().sqrt() - V::splat(V::T::from_f64(VARYING_S0))) * scale)
         .max_real(V::splat(V::T::ZERO))
         .min_real(V::splat(V::T::from_usize(VARYING_NS)));
     let zn = z * V::splat(V::T::from_usize(VARYING_NZ));

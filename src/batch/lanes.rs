@@ -15,6 +15,13 @@ use crate::Real;
 /// The widest vector, in lanes (AVX f32): the size of the per-lane scratch arrays.
 pub(crate) const MAX_LANES: usize = 8;
 
+/// The last cubic piece of `BestContact` (`PIECES − 1`): [`Lanes::piece`] clamps to it.
+pub(crate) const LAST_PIECE: usize = crate::friction::best::CONTACT_PIECES - 1;
+/// Entries of a [`Lanes::lookup`] table: the pieces padded to 16 (two 8-float or four
+/// 4-double registers; the padding is never selected).
+pub(crate) const PIECE_TABLE: usize = 16;
+const _: () = assert!(LAST_PIECE < PIECE_TABLE);
+
 /// A vector of `N` values of `T` (see the [module docs](self)). `Mask` is a per-lane
 /// boolean; `select(m, a, b)` is `if m { a } else { b }` lane by lane.
 pub trait Lanes:
@@ -62,13 +69,14 @@ pub trait Lanes:
     fn not(m: Self::Mask) -> Self::Mask;
     /// Some lane set.
     fn any(m: Self::Mask) -> bool;
-    /// A per-lane index into an 8-entry table (see [`Lanes::piece`]).
+    /// A per-lane index into a [`PIECE_TABLE`]-entry table (see [`Lanes::piece`]).
     type Idx: Copy;
-    /// (i, r) with i = min(⌊self⌋, 7) (as the scalar `trunc_usize().min(7)`) and r = self − i,
-    /// for lanes 0 ≤ self < 2³¹; any other lane gets some i in 0..8.
+    /// (i, r) with i = min(⌊self⌋, [`LAST_PIECE`]) (as the scalar
+    /// `trunc_usize().min(PIECES − 1)` of `BestContact::traction`) and r = self − i, for lanes
+    /// 0 ≤ self < 2³¹; any other lane gets some i in 0..=[`LAST_PIECE`].
     fn piece(self) -> (Self::Idx, Self);
-    /// Lane l is `table[i_l]`.
-    fn lookup8(table: &[Self::T; 8], i: Self::Idx) -> Self;
+    /// Lane l is `table[i_l]` (i from [`Lanes::piece`]).
+    fn lookup(table: &[Self::T; PIECE_TABLE], i: Self::Idx) -> Self;
     /// Lane l is `table[idx[l]]` converted (exactly) to `T`. Every `idx[l]` (l < N) must be
     /// `< table.len()`; an index past the end gives 0 on the lane-by-lane path and is the
     /// caller's bug (the AVX2 gather reads it).
@@ -119,17 +127,17 @@ pub(crate) fn piece_by_lane<V: Lanes>(v: V) -> ([u8; MAX_LANES], V) {
     let mut i = [0u8; MAX_LANES];
     let mut r = [V::T::ZERO; MAX_LANES];
     for ((&x, i), r) in a.iter().zip(i.iter_mut()).zip(r.iter_mut()).take(V::N) {
-        let k = x.trunc_usize().min(7);
+        let k = x.trunc_usize().min(LAST_PIECE);
         *i = k as u8;
         *r = x - V::T::from_usize(k);
     }
     (i, V::from_array(&r))
 }
 
-/// [`Lanes::lookup8`] lane by lane through arrays.
+/// [`Lanes::lookup`] lane by lane through arrays.
 #[inline(always)]
-pub(crate) fn lookup_by_lane<V: Lanes>(table: &[V::T; 8], i: &[u8; MAX_LANES]) -> V {
-    V::from_array(&i.map(|k| table[usize::from(k & 7)]))
+pub(crate) fn lookup_by_lane<V: Lanes>(table: &[V::T; PIECE_TABLE], i: &[u8; MAX_LANES]) -> V {
+    V::from_array(&i.map(|k| table[usize::from(k) % PIECE_TABLE]))
 }
 
 /// [`Lanes::gather_f32`] lane by lane.
@@ -246,7 +254,7 @@ impl<T: Real> Lanes for One<T> {
         piece_by_lane(self)
     }
     #[inline(always)]
-    fn lookup8(table: &[T; 8], i: Self::Idx) -> Self {
+    fn lookup(table: &[T; PIECE_TABLE], i: Self::Idx) -> Self {
         lookup_by_lane(table, &i)
     }
     #[inline(always)]

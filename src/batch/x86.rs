@@ -16,7 +16,9 @@ use core::arch::x86_64::*;
 use core::ops::{Add, Div, Mul, Neg, Sub};
 use core::sync::atomic::{AtomicU8, Ordering};
 
-use super::lanes::{Lanes, MAX_LANES, gather_by_lane, lookup_by_lane, piece_by_lane};
+use super::lanes::{
+    LAST_PIECE, Lanes, MAX_LANES, PIECE_TABLE, gather_by_lane, lookup_by_lane, piece_by_lane,
+};
 
 macro_rules! vector {
     (
@@ -164,7 +166,7 @@ macro_rules! vector {
                 }
             }
             #[inline(always)]
-            fn lookup8($tt: &[$t; 8], $li: $idx) -> Self {
+            fn lookup($tt: &[$t; PIECE_TABLE], $li: $idx) -> Self {
                 #[allow(unused_unsafe)]
                 unsafe {
                     $lookup
@@ -228,13 +230,20 @@ vector!(
     eq |a, b| _mm256_cmp_ps::<_CMP_EQ_OQ>(a, b),
     nan |a| _mm256_cmp_ps::<_CMP_UNORD_Q>(a, a),
     select |m, a, b| _mm256_blendv_ps(b, a, m),
-    idx __m256i,
+    // (the index, whose low 3 bits pick within a half-table, and the upper-half mask i > 7)
+    idx (__m256i, __m256),
     piece |v| {
         let i = _mm256_cvttps_epi32(v.0);
-        let i = _mm256_min_epi32(_mm256_max_epi32(i, _mm256_setzero_si256()), _mm256_set1_epi32(7));
-        (i, F32x8(_mm256_sub_ps(v.0, _mm256_cvtepi32_ps(i))))
+        let last = _mm256_set1_epi32(LAST_PIECE as i32);
+        let i = _mm256_min_epi32(_mm256_max_epi32(i, _mm256_setzero_si256()), last);
+        let upper = _mm256_castsi256_ps(_mm256_cmpgt_epi32(i, _mm256_set1_epi32(7)));
+        ((i, upper), F32x8(_mm256_sub_ps(v.0, _mm256_cvtepi32_ps(i))))
     },
-    lookup |t, i| F32x8(_mm256_permutevar8x32_ps(_mm256_loadu_ps(t.as_ptr()), i)),
+    lookup |t, i| {
+        let lo = _mm256_permutevar8x32_ps(_mm256_loadu_ps(t.as_ptr()), i.0);
+        let hi = _mm256_permutevar8x32_ps(_mm256_loadu_ps(t.as_ptr().add(8)), i.0);
+        F32x8(_mm256_blendv_ps(lo, hi, i.1))
+    },
     gather |t, i| F32x8(_mm256_i32gather_ps::<4>(t.as_ptr(), _mm256_loadu_si256(i.as_ptr().cast())))
 );
 
@@ -251,23 +260,30 @@ vector!(
     eq |a, b| _mm256_cmp_pd::<_CMP_EQ_OQ>(a, b),
     nan |a| _mm256_cmp_pd::<_CMP_UNORD_Q>(a, a),
     select |m, a, b| _mm256_blendv_pd(b, a, m),
-    // (the 32-bit word pairs of each lane's double within a half-table, the upper-half mask)
-    idx (__m256i, __m256d),
+    // (the 32-bit word pairs of each lane's double within a quarter-table, the masks of
+    // bit 2 (odd quarter) and of i > 7 (upper half))
+    idx (__m256i, __m256d, __m256d),
     piece |v| {
         let i = _mm256_cvttpd_epi32(v.0);
-        let i = _mm_min_epi32(_mm_max_epi32(i, _mm_setzero_si128()), _mm_set1_epi32(7));
+        let last = _mm_set1_epi32(LAST_PIECE as i32);
+        let i = _mm_min_epi32(_mm_max_epi32(i, _mm_setzero_si128()), last);
         let r = F64x4(_mm256_sub_pd(v.0, _mm256_cvtepi32_pd(i)));
         let j = _mm256_slli_epi64::<1>(_mm256_cvtepi32_epi64(_mm_and_si128(i, _mm_set1_epi32(3))));
         let pairs = _mm256_or_si256(j, _mm256_slli_epi64::<32>(_mm256_add_epi64(j, _mm256_set1_epi64x(1))));
-        let upper = _mm256_castsi256_pd(_mm256_cvtepi32_epi64(_mm_cmpgt_epi32(i, _mm_set1_epi32(3))));
-        ((pairs, upper), r)
+        let four = _mm_set1_epi32(4);
+        let odd = _mm_cmpeq_epi32(_mm_and_si128(i, four), four);
+        let odd = _mm256_castsi256_pd(_mm256_cvtepi32_epi64(odd));
+        let upper = _mm256_castsi256_pd(_mm256_cvtepi32_epi64(_mm_cmpgt_epi32(i, _mm_set1_epi32(7))));
+        ((pairs, odd, upper), r)
     },
     lookup |t, i| {
-        let lo = _mm256_castpd_ps(_mm256_loadu_pd(t.as_ptr()));
-        let hi = _mm256_castpd_ps(_mm256_loadu_pd(t.as_ptr().add(4)));
-        let lo = _mm256_castps_pd(_mm256_permutevar8x32_ps(lo, i.0));
-        let hi = _mm256_castps_pd(_mm256_permutevar8x32_ps(hi, i.0));
-        F64x4(_mm256_blendv_pd(lo, hi, i.1))
+        let quarter = |k: usize| {
+            let q = _mm256_castpd_ps(_mm256_loadu_pd(t.as_ptr().add(4 * k)));
+            _mm256_castps_pd(_mm256_permutevar8x32_ps(q, i.0))
+        };
+        let lo = _mm256_blendv_pd(quarter(0), quarter(1), i.1);
+        let hi = _mm256_blendv_pd(quarter(2), quarter(3), i.1);
+        F64x4(_mm256_blendv_pd(lo, hi, i.2))
     },
     gather |t, i| F64x4(_mm256_cvtps_pd(_mm_i32gather_ps::<4>(t.as_ptr(), _mm_loadu_si128(i.as_ptr().cast()))))
 );

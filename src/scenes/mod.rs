@@ -3,6 +3,7 @@
 //!
 //! - [`rigid`]: 3-vectors, quaternion attitude, Euler's equations in the body frame.
 //! - [`integrate`]: fixed-step RK4 (MCU) and adaptive Dormand–Prince 5(4) (host reference).
+//! - [`event`]: event times located between steps (sign change, Hermite interpolant, bisection).
 //! - [`tippe_top`]: the tippe top of the paper's §5 with Hertz + damping + a friction law.
 //! - [`bearing`]: a deep-groove ball bearing, balls in Hertz + friction contact with both races.
 //! - [`rattleback`]: the rattleback (celt), an ellipsoid whose contact geometry changes every step.
@@ -10,6 +11,7 @@
 //! All `no_std`, allocation-free, generic over [`Real`](crate::Real).
 
 pub mod bearing;
+pub mod event;
 pub mod integrate;
 pub mod rattleback;
 pub mod rigid;

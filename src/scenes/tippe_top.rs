@@ -31,6 +31,7 @@
 //!   moment about G is perpendicular to G − P = Rẑ − ε_R e₃); the Contensou drilling torque and
 //!   contact on the small sphere change it.
 
+use super::event::{Crossing, Direction};
 use super::integrate::Ode;
 use super::rigid::{Quat, Vec3, euler_rate_inv};
 use crate::contact::Contact;
@@ -263,6 +264,24 @@ impl<T: Real, L: FrictionLaw> TippeTop<T, L> {
         ]
     }
 
+    /// cos θ = e₃·ẑ at state `y` (θ the tilt of the symmetry axis from the vertical: 1 stem
+    /// up, −1 inverted): the event function of [`Events`]' θ crossings — no trigonometry, no
+    /// contact evaluation; the attitude is normalised here (the interpolated states between
+    /// steps are not unit).
+    #[inline]
+    pub fn cos_tilt(&self, y: &State<T>) -> T {
+        let (_, _, q, _) = split(y);
+        let (ww, xx, yy, zz) = (q.w * q.w, q.x * q.x, q.y * q.y, q.z * q.z);
+        // z component of q·e₃·q* over |q|².
+        (ww - xx - yy + zz) / (ww + xx + yy + zz)
+    }
+
+    /// cos θ* = (r − R)/(ε_r − ε_R): at θ* both spheres can touch a flat floor (for the
+    /// paper's top −10/13, θ* ≈ 2.448 rad).
+    pub fn cos_theta_star(&self) -> T {
+        (self.small.radius - self.big.radius) / (self.small.offset - self.big.offset)
+    }
+
     /// θ, both normal forces, energy, Jellett's quantity and the spin at state `y`.
     pub fn probe(&self, y: &State<T>) -> Probe<T> {
         let [big, small] = self.contacts(y);
@@ -307,6 +326,63 @@ impl<T: Real, L: FrictionLaw> Ode<T, N> for TippeTop<T, L> {
         let q = split(y).2.normalized();
         let [_, _, _, _, _, _, qw, qx, qy, qz, _, _, _] = y;
         (*qw, *qx, *qy, *qz) = (q.w, q.x, q.y, q.z);
+    }
+}
+
+/// The top's events located between integration steps ([`crate::scenes::event`]): the first
+/// time θ reaches π/2 (the axis horizontal), θ reaches θ* ([`TippeTop::cos_theta_star`], where
+/// both spheres can touch: the "inversion" of the README's table), and the small sphere first
+/// reaches the floor (touch-down, [`TippeTop::penetrations`]). The θ events are located on
+/// cos θ ([`TippeTop::cos_tilt`], the same roots). Feed it every accepted step.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Events<T: Real> {
+    cos_star: T,
+    half: Crossing<T, N>,
+    inversion: Crossing<T, N>,
+    touch: Crossing<T, N>,
+}
+
+impl<T: Real> Events<T> {
+    /// Tracking from the start (t₀, y₀).
+    pub fn new<L: FrictionLaw>(top: &TippeTop<T, L>, t0: T, y0: &State<T>) -> Self {
+        let cos_star = top.cos_theta_star();
+        let mut e = Events {
+            cos_star,
+            half: Crossing::new(Direction::Falling),
+            inversion: Crossing::new(Direction::Falling),
+            touch: Crossing::new(Direction::Rising),
+        };
+        e.half.start(t0, y0, |y| top.cos_tilt(y));
+        e.inversion.start(t0, y0, |y| top.cos_tilt(y) - cos_star);
+        e.touch.start(t0, y0, |y| top.penetrations(y)[1]);
+        e
+    }
+
+    /// After an accepted step ending at (t, y). Cost: one cos θ and one penetration
+    /// evaluation (≈ 20 flops), plus two right-hand sides and the bisections on a step that
+    /// crosses.
+    pub fn update<L: FrictionLaw>(&mut self, top: &TippeTop<T, L>, t: T, y: &State<T>) {
+        let cos_star = self.cos_star;
+        let c = top.cos_tilt(y);
+        self.half.update_with(top, t, y, c, |y| top.cos_tilt(y));
+        self.inversion
+            .update_with(top, t, y, c - cos_star, |y| top.cos_tilt(y) - cos_star);
+        self.touch.update(top, t, y, |y| top.penetrations(y)[1]);
+    }
+
+    /// First time θ = π/2 (s).
+    pub fn half(&self) -> Option<T> {
+        self.half.first()
+    }
+
+    /// First time θ = θ* (s).
+    pub fn inversion(&self) -> Option<T> {
+        self.inversion.first()
+    }
+
+    /// First time the small sphere touches the floor (s).
+    pub fn touch_down(&self) -> Option<T> {
+        self.touch.first()
     }
 }
 

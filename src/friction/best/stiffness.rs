@@ -35,7 +35,8 @@ use crate::friction::{Constants, larger};
 /// bounds the excess of the off-axis maximum (0 as e² → 1, 40.7 % at the circle). With the IC
 /// outside the ellipse, and past the ramp (s ≥ δ: fN/s times the core's own stiffness, whose
 /// sup is lower), the stiffness is smaller: checked on the whole direction sphere, for the
-/// exact law and for `best` (`host-tests/stability.rs`; complex eigenvalue pairs, small, are
+/// exact law and for `best` (`host-tests/stability.rs`, e² from the circle to the contract's
+/// end m₁ = 1.70e-5: sup 10.694 against κ = 10.709 there; complex eigenvalue pairs, small, are
 /// counted by Euler's |λ|²/Re λ). `best` is exact inside the ellipse, so its κ is the exact
 /// law's.
 ///
@@ -102,8 +103,9 @@ pub fn ramp_stiffness<T: Real>(k: &Constants<T>) -> T {
 /// Every valid e²; finite, ≥ C. Against the maximisation of `tools/gen_spin_stiffness.py`
 /// (mpmath; `tools/data/spin_stiffness.csv`, m₁ from 1 to 1e-12): measured within 7.5e-15
 /// (`f64`) and 1.9e-7 (`f32`) relative (asserted ≤ 1e-12 and ≤ 1e-6 by
-/// `host-tests/stability.rs`). Below m₁ ≈ 1e-5 the maximiser lies on the ellipse and the sphere
-/// check (e² ≤ 0.99) does not cover the outside there. Cost: ≈ 9,000 evaluations of a quintic
+/// `host-tests/stability.rs`). The sphere check covers e² from the circle to the contract's end
+/// (m₁ = 1.70e-5: sup 0.73596 against κ_T = 0.73621); below m₁ ≈ 1e-5, reachable only through a
+/// `Parameter` built directly, the maximiser lies on the ellipse and the outside is unchecked. Cost: ≈ 9,000 evaluations of a quintic
 /// and 133 sine–cosines (host ≈ 26 µs, `f32` or `f64`) — construction or host use, not per
 /// step; not measured on the Cortex-M4F.
 pub fn spin_stiffness<T: Real>(k: &Constants<T>) -> T {

@@ -1,0 +1,88 @@
+/*
+ * contensou.contact (MuJoCo engine plugin): the types shared by its three files —
+ * config.c (the configuration and the model's checks, refusals at load), pairs.c (the contact
+ * pairs of a model and their geometry per step), plugin.c (the mjpPlugin: lifecycle, passive
+ * forces, sensor). Overview in plugin.c and mujoco/README.md.
+ */
+#ifndef CONTENSOU_MUJOCO_H
+#define CONTENSOU_MUJOCO_H
+
+#include <mujoco/mujoco.h>
+
+#include "contensou.h"
+
+#define PLUGIN_NAME "contensou.contact"
+
+/* Values per pair in the sensor: N, Fx, Fy, Tz, a, b, h. */
+enum { OUT_N, OUT_FX, OUT_FY, OUT_TZ, OUT_A, OUT_B, OUT_H, NOUT };
+
+enum pair_kind { SPHERE_PLANE, ELLIPSOID_PLANE, SPHERE_SPHERE };
+enum form_choice { FORM_AUTO, FORM_FIXED, FORM_VARYING };
+
+typedef struct {
+  int kind;
+  int geom_a;    /* the plane, or A's sphere */
+  int geom_b;    /* the plugin body's geom */
+  int body_a;    /* geom_a's body (0: the world) */
+  int body_b;
+  double offset; /* capsule: the end sphere's centre at ±half-length along the geom's z */
+  double radius; /* sphere, capsule: r (of B); sphere–sphere: r_b */
+  double radius_a;
+  contensou_contact_f64 contact; /* caller-owned storage of the C API */
+} pair;
+
+typedef struct {
+  contensou_spec_f64 spec; /* estar, cd, f, delta (P, Q per pair) */
+  contensou_law law;
+  int form;
+} config;
+
+/* The geometry of one pair at this state: approach h, patch centre, contact frame (n from A
+ * to B, x the major axis, y = n × x); for an ellipsoid also P ≤ Q (0: degenerate). */
+typedef struct {
+  double h;
+  double point[3];
+  double n[3], x[3], y[3];
+  double p, q;
+} geometry;
+
+/*------------------------------------------------------------------------ small vector maths */
+
+static inline double dot3(const double a[3], const double b[3]) {
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+/* v + w × r in the operation order of floor_contact.py (vx + wy*az − wz*ay, …). */
+static inline void point_velocity(const double v[3], const double w[3], const double r[3], double out[3]) {
+  out[0] = v[0] + w[1] * r[2] - w[2] * r[1];
+  out[1] = v[1] + w[2] * r[0] - w[0] * r[2];
+  out[2] = v[2] + w[0] * r[1] - w[1] * r[0];
+}
+
+static inline void cross3(const double a[3], const double b[3], double out[3]) {
+  out[0] = a[1] * b[2] - a[2] * b[1];
+  out[1] = a[2] * b[0] - a[0] * b[2];
+  out[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+/* A geom type the plugin computes contacts of. */
+static inline int is_supported(int type) {
+  return type == mjGEOM_SPHERE || type == mjGEOM_CAPSULE || type == mjGEOM_ELLIPSOID;
+}
+
+/* config.c */
+/* The validated configuration of instance; −1 after a warning naming attribute and value. */
+int read_config(const mjModel* m, int instance, config* c);
+/* The plugin bodies' geoms and their pairs are computable and not also native; else −1 + warning. */
+int check_geoms(const mjModel* m, int instance, const pair* pairs, int npair);
+const char* geom_name(const mjModel* m, int g);
+
+/* pairs.c */
+/* The pairs of instance in their fixed order (written to out unless NULL); their count. */
+int enumerate_pairs(const mjModel* m, int instance, pair* out);
+/* P ≤ Q of ellipsoid geom g resting on its −z pole (construction-time curvatures). */
+void ellipsoid_rest(const mjModel* m, int g, double* p, double* q);
+/* The geometry of pair k at the state of d; 0 if they touch (h > 0), −1 if apart (g->h set). */
+int pair_geometry(const mjModel* m, const mjData* d, const pair* k, geometry* g);
+
+#endif /* CONTENSOU_MUJOCO_H */

@@ -1,0 +1,312 @@
+/*
+ * contensou.contact: a MuJoCo engine plugin (passive forces + sensor) over the contensou C API.
+ *
+ * For every body that carries an instance of the plugin ("plugin body", body B) it computes,
+ * at every evaluation of the passive forces, the Hertz normal force with Hunt–Crossley damping
+ * and the Contensou–Erismann friction force and drilling torque (contensou::dynamic through
+ * capi/include/contensou.h, f64) of
+ *   - each sphere, capsule (its two end spheres) and ellipsoid geom of the body against every
+ *     plane geom of the model (body A: the plane's body, usually the world), and
+ *   - each sphere geom of the body against each sphere geom of another body of the same
+ *     instance (the body earlier in the model is A),
+ * and adds the wrench on B (and its opposite on A unless A is welded to the world) to qfrc_passive by
+ * mj_applyFT. Crate conventions: forces on B from A, contact frame z = the normal from A to B,
+ * x = the patch's major axis.
+ *
+ * Per pair and step (mujoco/README.md, "What it computes"; pairs.c):
+ *   sphere/plane: h = r − (c − p₀)·n, patch centre P = c − ((c − p₀)·n) n (on the plane),
+ *                 P = Q = 1/(2r), x = the plane's x axis;
+ *   ellipsoid/plane: the support point of the ellipsoid in the direction −n in closed form,
+ *                 x*ᵢ = aᵢ²uᵢ/s, s = √(Σaᵢ²uᵢ²) (u = −n in the geom frame), h = −(x* − p₀)·n,
+ *                 P ≤ Q and the major axis from the 2×2 form ½s·Tᵀdiag(1/aᵢ²)T over the plane's
+ *                 (x, y) axes T (quadratic_form below, the twin of Curvatures::from_quadratic),
+ *                 as src/scenes/rattleback.rs; varying form: contensou_contact_set_curvatures;
+ *   sphere/sphere: h = r_a + r_b − |c_b − c_a|, n = (c_b − c_a)/|c_b − c_a|,
+ *                 P = c_a + n (r_a − h r_b/(r_a + r_b)), P = Q = ½(1/r_a + 1/r_b).
+ * Slip v_B(P) − v_A(P) in (x, y), ḣ = −(v_B(P) − v_A(P))·n, spin (ω_B − ω_A)·n; the material
+ * point velocities from the bodies' free-joint velocities (a free body, the arithmetic of
+ * python/examples/floor_contact.py, so that both agree bit for bit) or mj_objectVelocity.
+ *
+ * Configuration (<config key="…" value="…"/>): estar (Pa) or young1, poisson1, young2,
+ * poisson2; f; cd (s/m, default 0); delta (m/s, default 1e-4); law (best|simplified|pade|
+ * ellipsoid|coulomb, default best); form (auto|fixed|varying, default auto: fixed for spheres
+ * and capsules, varying for ellipsoids). A bad value, an unsupported geom, or a plugin geom that
+ * MuJoCo would also collide with a plane (contype/conaffinity) refuses the model at load:
+ * init() warns with the attribute and the value and returns −1, which the compiler turns into
+ * the load error.
+ *
+ * Sensor (<sensor><plugin instance="…"/></sensor>): per pair, in the order above, the seven
+ * values N, F_x, F_y, T_z, a, b, h (contact frame; zeros but h when apart).
+ */
+#include <stdlib.h>
+#include <string.h>
+
+#include "contensou_mujoco.h"
+
+static const char* const ATTRIBUTES[] = {"estar", "young1", "poisson1", "young2", "poisson2",
+                                         "cd",    "f",      "delta",    "law",    "form"};
+#define NATTRIBUTE ((int)(sizeof(ATTRIBUTES) / sizeof(ATTRIBUTES[0])))
+
+/* A body's velocity this step: ω (world) and the velocity of its origin xpos (world). */
+typedef struct {
+  double w[3];
+  double v[3];
+  double force[3];
+  double torque[3]; /* about xpos */
+  int active;
+} body_state;
+
+typedef struct {
+  int npair;
+  pair* pairs;
+  double* out;       /* NOUT per pair */
+  int nbody;         /* bodies that move and take loads (not welded to the world) */
+  int* bodies;       /* their ids */
+  body_state* state; /* per entry of bodies */
+  int* slot;         /* model body id → index into bodies, −1 */
+} instance_data;
+
+static void free_instance(instance_data* x) {
+  if (!x) return;
+  free(x->pairs);
+  free(x->out);
+  free(x->bodies);
+  free(x->state);
+  free(x->slot);
+  free(x);
+}
+
+static int init(const mjModel* m, mjData* d, int instance) {
+  config c;
+  if (read_config(m, instance, &c)) return -1;
+  instance_data* x = calloc(1, sizeof(*x));
+  if (!x) return -1;
+  x->npair = enumerate_pairs(m, instance, NULL);
+  x->pairs = calloc(x->npair ? x->npair : 1, sizeof(pair));
+  x->out = calloc(x->npair ? (size_t)x->npair * NOUT : 1, sizeof(double));
+  x->slot = malloc(sizeof(int) * m->nbody);
+  x->bodies = calloc(m->nbody, sizeof(int));
+  x->state = calloc(m->nbody, sizeof(body_state));
+  if (!x->pairs || !x->out || !x->slot || !x->bodies || !x->state) {
+    free_instance(x);
+    return -1;
+  }
+  enumerate_pairs(m, instance, x->pairs);
+  if (check_geoms(m, instance, x->pairs, x->npair)) {
+    free_instance(x);
+    return -1;
+  }
+  for (int b = 0; b < m->nbody; b++) x->slot[b] = -1;
+  for (int k = 0; k < x->npair; k++) {
+    pair* p = &x->pairs[k];
+    int ids[2] = {p->body_b, p->body_a};
+    for (int i = 0; i < 2; i++) {
+      /* A body welded to the world (a plane's static body) neither moves nor takes a load. */
+      if (ids[i] > 0 && m->body_weldid[ids[i]] != 0 && x->slot[ids[i]] < 0) {
+        x->slot[ids[i]] = x->nbody;
+        x->bodies[x->nbody++] = ids[i];
+      }
+    }
+    contensou_curvatures_f64 k0;
+    contensou_status s;
+    int varying;
+    if (p->kind == ELLIPSOID_PLANE) {
+      ellipsoid_rest(m, p->geom_b, &k0.p, &k0.q);
+      s = CONTENSOU_STATUS_OK;
+      varying = c.form != FORM_FIXED;
+    } else if (p->kind == SPHERE_PLANE) {
+      s = contensou_curvatures_sphere_plane_f64(p->radius, &k0);
+      varying = c.form == FORM_VARYING;
+    } else {
+      s = contensou_curvatures_sphere_sphere_f64(p->radius_a, p->radius, &k0);
+      varying = c.form == FORM_VARYING;
+    }
+    contensou_spec_f64 spec = c.spec;
+    spec.p = k0.p;
+    spec.q = k0.q;
+    contensou_column column = CONTENSOU_COLUMN_NONE;
+    if (s == CONTENSOU_STATUS_OK) {
+      s = contensou_contact_new_f64(&p->contact, &spec, c.law,
+                                    varying ? CONTENSOU_FORM_VARYING : CONTENSOU_FORM_FIXED, &column);
+    }
+    if (s != CONTENSOU_STATUS_OK) {
+      mju_warning(PLUGIN_NAME ": geom '%s' (size %g) against '%s': curvatures P = %g, Q = %g: %s",
+                  geom_name(m, p->geom_b), m->geom_size[3 * p->geom_b], geom_name(m, p->geom_a), spec.p, spec.q,
+                  contensou_status_message(s));
+      free_instance(x);
+      return -1;
+    }
+  }
+  d->plugin_data[instance] = (uintptr_t)x;
+  return 0;
+}
+
+static void destroy(mjData* d, int instance) {
+  free_instance((instance_data*)d->plugin_data[instance]);
+  d->plugin_data[instance] = 0;
+}
+
+static void copy(mjData* dest, const mjModel* m, const mjData* src, int instance) {
+  (void)m;
+  instance_data* to = (instance_data*)dest->plugin_data[instance];
+  const instance_data* from = (const instance_data*)src->plugin_data[instance];
+  if (!to || !from || to->npair != from->npair) return;
+  memcpy(to->pairs, from->pairs, sizeof(pair) * (size_t)from->npair);
+  memcpy(to->out, from->out, sizeof(double) * NOUT * (size_t)from->npair);
+}
+
+static void reset(const mjModel* m, mjtNum* plugin_state, void* plugin_data, int instance) {
+  (void)m;
+  (void)plugin_state;
+  (void)instance;
+  instance_data* x = (instance_data*)plugin_data;
+  if (x) memset(x->out, 0, sizeof(double) * NOUT * (size_t)x->npair);
+}
+
+static int nstate(const mjModel* m, int instance) {
+  (void)m;
+  (void)instance;
+  return 0;
+}
+
+static int nsensordata(const mjModel* m, int instance, int sensor_id) {
+  (void)sensor_id;
+  return NOUT * enumerate_pairs(m, instance, NULL);
+}
+
+/* ω (world) and the velocity of the origin xpos (world) of body b. */
+static void body_velocity(const mjModel* m, const mjData* d, int b, body_state* s) {
+  int j = m->body_jntadr[b];
+  if (m->body_jntnum[b] == 1 && m->jnt_type[j] == mjJNT_FREE) {
+    /* As floor_contact.py: qvel[0:3] the origin's world velocity, qvel[3:6] ω in the body frame. */
+    const mjtNum* qv = d->qvel + m->jnt_dofadr[j];
+    const mjtNum* r = d->xmat + 9 * b;
+    double bx = qv[3], by = qv[4], bz = qv[5];
+    s->v[0] = qv[0];
+    s->v[1] = qv[1];
+    s->v[2] = qv[2];
+    s->w[0] = r[0] * bx + r[1] * by + r[2] * bz;
+    s->w[1] = r[3] * bx + r[4] * by + r[5] * bz;
+    s->w[2] = r[6] * bx + r[7] * by + r[8] * bz;
+  } else {
+    mjtNum res[6];
+    mj_objectVelocity(m, d, mjOBJ_BODY, b, res, 0);
+    for (int i = 0; i < 3; i++) {
+      s->w[i] = res[i];
+      s->v[i] = res[3 + i];
+    }
+  }
+}
+
+static void passive(const mjModel* m, mjData* d, instance_data* x) {
+  for (int i = 0; i < x->nbody; i++) {
+    body_state* s = &x->state[i];
+    body_velocity(m, d, x->bodies[i], s);
+    memset(s->force, 0, sizeof(s->force));
+    memset(s->torque, 0, sizeof(s->torque));
+    s->active = 0;
+  }
+  for (int k = 0; k < x->npair; k++) {
+    pair* p = &x->pairs[k];
+    double* out = x->out + NOUT * k;
+    geometry g;
+    int touching = pair_geometry(m, d, p, &g) == 0;
+    memset(out, 0, sizeof(double) * NOUT);
+    out[OUT_H] = g.h;
+    if (!touching) continue;
+    if (p->kind == ELLIPSOID_PLANE && g.p > 0.0) {
+      /* On error (a ratio beyond the library's range) the contact keeps its last curvatures. */
+      contensou_contact_set_curvatures_f64(&p->contact, g.p, g.q, NULL);
+    }
+    /* A body welded to the world (no slot) is at rest and takes no load. */
+    body_state* sb = x->slot[p->body_b] >= 0 ? &x->state[x->slot[p->body_b]] : NULL;
+    body_state* sa = x->slot[p->body_a] >= 0 ? &x->state[x->slot[p->body_a]] : NULL;
+    const mjtNum* ob = d->xpos + 3 * p->body_b;
+    double arm_b[3] = {g.point[0] - ob[0], g.point[1] - ob[1], g.point[2] - ob[2]};
+    double vrel[3] = {0, 0, 0}, wrel[3] = {0, 0, 0};
+    if (sb) {
+      point_velocity(sb->v, sb->w, arm_b, vrel);
+      memcpy(wrel, sb->w, sizeof(wrel));
+    }
+    double arm_a[3] = {0, 0, 0};
+    if (sa) {
+      const mjtNum* oa = d->xpos + 3 * p->body_a;
+      double va[3];
+      for (int i = 0; i < 3; i++) arm_a[i] = g.point[i] - oa[i];
+      point_velocity(sa->v, sa->w, arm_a, va);
+      for (int i = 0; i < 3; i++) {
+        vrel[i] -= va[i];
+        wrel[i] -= sa->w[i];
+      }
+    }
+    contensou_step_f64 step = {g.h, -dot3(vrel, g.n), dot3(vrel, g.x), dot3(vrel, g.y), dot3(wrel, g.n)};
+    contensou_wrench_f64 w;
+    if (contensou_contact_wrench_f64(&p->contact, &step, &w, NULL) != CONTENSOU_STATUS_OK) {
+      continue; /* a non-finite state: no load (MuJoCo's own checks then reset the state) */
+    }
+    out[OUT_N] = w.n;
+    out[OUT_FX] = w.fx;
+    out[OUT_FY] = w.fy;
+    out[OUT_TZ] = w.tz;
+    out[OUT_A] = w.a;
+    out[OUT_B] = w.b;
+    double force[3], moment[3];
+    for (int i = 0; i < 3; i++) force[i] = w.n * g.n[i] + w.fx * g.x[i] + w.fy * g.y[i];
+    if (sb) {
+      cross3(arm_b, force, moment);
+      for (int i = 0; i < 3; i++) {
+        sb->force[i] += force[i];
+        sb->torque[i] += moment[i] + w.tz * g.n[i];
+      }
+      sb->active = 1;
+    }
+    if (sa) {
+      cross3(arm_a, force, moment);
+      for (int i = 0; i < 3; i++) {
+        sa->force[i] -= force[i];
+        sa->torque[i] -= moment[i] + w.tz * g.n[i];
+      }
+      sa->active = 1;
+    }
+  }
+  for (int i = 0; i < x->nbody; i++) {
+    body_state* s = &x->state[i];
+    if (s->active) {
+      int b = x->bodies[i];
+      mj_applyFT(m, d, s->force, s->torque, d->xpos + 3 * b, b, d->qfrc_passive);
+    }
+  }
+}
+
+static void sensor(const mjModel* m, mjData* d, int instance, const instance_data* x) {
+  for (int j = 0; j < m->nsensor; j++) {
+    if (m->sensor_type[j] == mjSENS_PLUGIN && m->sensor_plugin[j] == instance) {
+      memcpy(d->sensordata + m->sensor_adr[j], x->out, sizeof(double) * NOUT * (size_t)x->npair);
+    }
+  }
+}
+
+static void compute(const mjModel* m, mjData* d, int instance, int capability_bit) {
+  instance_data* x = (instance_data*)d->plugin_data[instance];
+  if (!x) return;
+  if (capability_bit & mjPLUGIN_PASSIVE) passive(m, d, x);
+  if (capability_bit & mjPLUGIN_SENSOR) sensor(m, d, instance, x);
+}
+
+mjPLUGIN_LIB_INIT(contensou_contact) {
+  mjpPlugin plugin;
+  mjp_defaultPlugin(&plugin);
+  plugin.name = PLUGIN_NAME;
+  plugin.capabilityflags = mjPLUGIN_PASSIVE | mjPLUGIN_SENSOR;
+  plugin.needstage = mjSTAGE_VEL;
+  plugin.nattribute = NATTRIBUTE;
+  plugin.attributes = ATTRIBUTES;
+  plugin.nstate = nstate;
+  plugin.nsensordata = nsensordata;
+  plugin.init = init;
+  plugin.destroy = destroy;
+  plugin.copy = copy;
+  plugin.reset = reset;
+  plugin.compute = compute;
+  mjp_registerPlugin(&plugin);
+}

@@ -1,0 +1,105 @@
+//! The discretised Hertz ellipse: `m` strips along y, each cut into `n` equal elements that
+//! exactly cover the strip's chord, plus one "ghost" point per strip just upstream of its
+//! leading edge (where the displacement is needed by the upwind derivative, traction zero).
+
+/// One rectangular element with piecewise-constant traction.
+#[derive(Clone, Copy, Debug)]
+pub struct Element {
+    /// Centre.
+    pub x: f64,
+    pub y: f64,
+    /// Half widths.
+    pub hx: f64,
+    pub hy: f64,
+    /// Traction bound f·p averaged over the element (exact in x at the strip's centre line).
+    pub bound: f64,
+}
+
+/// The element grid of one (a, b) ellipse.
+#[derive(Clone, Debug)]
+pub struct Grid {
+    /// Strips (along y) and elements per strip (along x).
+    pub m: usize,
+    pub n: usize,
+    pub a: f64,
+    pub b: f64,
+    /// `m·n` elements, strip-major: element (j, i) at `j·n + i`, i = 0 at the trailing edge −a_j.
+    pub elements: Vec<Element>,
+    /// Per strip: the ghost point upstream of the leading edge, x = a_j + dx_j/2.
+    pub ghosts: Vec<(f64, f64)>,
+}
+
+impl Grid {
+    /// `m` strips of width 2b/m, `n` elements per strip; the traction bound is f·p with the
+    /// Hertz pressure p = p0 √(1 − x²/a² − y²/b²) whose p0 is set so that the discrete total
+    /// Σ bound·area equals f·N exactly (`f_n` = f·N).
+    pub fn new(a: f64, b: f64, m: usize, n: usize, f_n: f64) -> Self {
+        let dy = 2.0 * b / m as f64;
+        let mut elements = Vec::with_capacity(m * n);
+        let mut ghosts = Vec::with_capacity(m);
+        // ∫ √(A² − x²) dx, clamped to the chord.
+        let h = |x: f64, big_a: f64| {
+            let x = x.clamp(-big_a, big_a);
+            0.5 * (x * (big_a * big_a - x * x).max(0.0).sqrt() + big_a * big_a * (x / big_a).asin())
+        };
+        let mut total = 0.0;
+        for j in 0..m {
+            let y = -b + (j as f64 + 0.5) * dy;
+            let aj = a * (1.0 - (y / b).powi(2)).sqrt();
+            let dx = 2.0 * aj / n as f64;
+            for i in 0..n {
+                let x0 = -aj + i as f64 * dx;
+                // mean of √(a_j² − x²)/a over the element; p0 applied below
+                let mean = (h(x0 + dx, aj) - h(x0, aj)) / (dx * a);
+                elements.push(Element {
+                    x: x0 + 0.5 * dx,
+                    y,
+                    hx: 0.5 * dx,
+                    hy: 0.5 * dy,
+                    bound: mean,
+                });
+                total += mean * dx * dy;
+            }
+            ghosts.push((aj + 0.5 * dx, y));
+        }
+        let p0 = f_n / total;
+        for e in &mut elements {
+            e.bound *= p0;
+        }
+        Grid {
+            m,
+            n,
+            a,
+            b,
+            elements,
+            ghosts,
+        }
+    }
+
+    pub fn len(&self) -> usize {
+        self.elements.len()
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.elements.is_empty()
+    }
+
+    /// Index of the point upstream (+x) of element `k`: an element, or `len() + j` for strip j's ghost.
+    pub fn upstream(&self, k: usize) -> usize {
+        let (j, i) = (k / self.n, k % self.n);
+        if i + 1 < self.n {
+            k + 1
+        } else {
+            self.len() + j
+        }
+    }
+
+    /// Coordinates of point `p` (element centre or ghost).
+    pub fn point(&self, p: usize) -> (f64, f64) {
+        if p < self.len() {
+            (self.elements[p].x, self.elements[p].y)
+        } else {
+            self.ghosts[p - self.len()]
+        }
+    }
+}
