@@ -230,17 +230,22 @@ vector!(
     eq |a, b| _mm256_cmp_ps::<_CMP_EQ_OQ>(a, b),
     nan |a| _mm256_cmp_ps::<_CMP_UNORD_Q>(a, a),
     select |m, a, b| _mm256_blendv_ps(b, a, m),
-    // (the index, whose low 3 bits pick within a half-table, and the upper-half mask i > 7)
-    idx (__m256i, __m256),
+    // (the index, whose low 3 bits pick within a half-table, the upper-half mask i > 7, and
+    // whether any lane is there: wide contacts reach piece 8 only at u = ∞)
+    idx (__m256i, __m256, bool),
     piece |v| {
         let i = _mm256_cvttps_epi32(v.0);
         let last = _mm256_set1_epi32(LAST_PIECE as i32);
         let i = _mm256_min_epi32(_mm256_max_epi32(i, _mm256_setzero_si256()), last);
         let upper = _mm256_castsi256_ps(_mm256_cmpgt_epi32(i, _mm256_set1_epi32(7)));
-        ((i, upper), F32x8(_mm256_sub_ps(v.0, _mm256_cvtepi32_ps(i))))
+        let any = _mm256_movemask_ps(upper) != 0;
+        ((i, upper, any), F32x8(_mm256_sub_ps(v.0, _mm256_cvtepi32_ps(i))))
     },
     lookup |t, i| {
         let lo = _mm256_permutevar8x32_ps(_mm256_loadu_ps(t.as_ptr()), i.0);
+        if !i.2 {
+            return F32x8(lo);
+        }
         let hi = _mm256_permutevar8x32_ps(_mm256_loadu_ps(t.as_ptr().add(8)), i.0);
         F32x8(_mm256_blendv_ps(lo, hi, i.1))
     },
@@ -261,8 +266,8 @@ vector!(
     nan |a| _mm256_cmp_pd::<_CMP_UNORD_Q>(a, a),
     select |m, a, b| _mm256_blendv_pd(b, a, m),
     // (the 32-bit word pairs of each lane's double within a quarter-table, the masks of
-    // bit 2 (odd quarter) and of i > 7 (upper half))
-    idx (__m256i, __m256d, __m256d),
+    // bit 2 (odd quarter) and of i > 7 (the third quarter), and whether any lane is there)
+    idx (__m256i, __m256d, __m256d, bool),
     piece |v| {
         let i = _mm256_cvttpd_epi32(v.0);
         let last = _mm_set1_epi32(LAST_PIECE as i32);
@@ -274,16 +279,21 @@ vector!(
         let odd = _mm_cmpeq_epi32(_mm_and_si128(i, four), four);
         let odd = _mm256_castsi256_pd(_mm256_cvtepi32_epi64(odd));
         let upper = _mm256_castsi256_pd(_mm256_cvtepi32_epi64(_mm_cmpgt_epi32(i, _mm_set1_epi32(7))));
-        ((pairs, odd, upper), r)
+        let any = _mm256_movemask_pd(upper) != 0;
+        ((pairs, odd, upper, any), r)
     },
     lookup |t, i| {
         let quarter = |k: usize| {
             let q = _mm256_castpd_ps(_mm256_loadu_pd(t.as_ptr().add(4 * k)));
             _mm256_castps_pd(_mm256_permutevar8x32_ps(q, i.0))
         };
+        // i ≤ LAST_PIECE = 11: the fourth quarter (12…15, padding) is never selected
+        const { assert!(LAST_PIECE < 12) };
         let lo = _mm256_blendv_pd(quarter(0), quarter(1), i.1);
-        let hi = _mm256_blendv_pd(quarter(2), quarter(3), i.1);
-        F64x4(_mm256_blendv_pd(lo, hi, i.2))
+        if !i.3 {
+            return F64x4(lo);
+        }
+        F64x4(_mm256_blendv_pd(lo, quarter(2), i.2))
     },
     gather |t, i| F64x4(_mm256_cvtps_pd(_mm_i32gather_ps::<4>(t.as_ptr(), _mm_loadu_si128(i.as_ptr().cast()))))
 );
