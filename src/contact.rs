@@ -239,6 +239,12 @@ impl<T: Real, N: NormalLaw<T>, D: Damping<T>, L: FrictionLaw> Contact<T, N, D, L
         wrench_of(patch, t)
     }
 
+    /// The damping law (for the batch kernels, src/batch/).
+    #[inline(always)]
+    pub(crate) fn damping(&self) -> &D {
+        &self.damping
+    }
+
     /// The normal law (for its stiffness, energy and inverse).
     pub fn normal(&self) -> &N {
         &self.normal
@@ -366,6 +372,12 @@ impl<T: Real, D: Damping<T>, L: FrictionLaw> VaryingContact<T, D, L> {
             damping,
             friction,
         }
+    }
+
+    /// E*, the damping law and the friction law (for the batch kernels, src/batch/).
+    #[inline(always)]
+    pub(crate) fn parts(&self) -> (Modulus<T>, &D, &Friction<T, L>) {
+        (self.estar, &self.damping, &self.friction)
     }
 
     /// One step at this step's curvatures. P/Q below the table's range (1e-4) is clamped to

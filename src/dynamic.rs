@@ -390,7 +390,7 @@ pub fn wrench<T: Real>(
 }
 
 /// Validated, ordered curvatures with P/Q in the solvers' range (both forms: nothing clamped).
-fn curvatures_of<T: Real>(p: T, q: T) -> Result<Curvatures<T>, Invalid> {
+pub(crate) fn curvatures_of<T: Real>(p: T, q: T) -> Result<Curvatures<T>, Invalid> {
     let column = if p.is_finite() { "Q" } else { "P" };
     let curvatures = Curvatures::ordered(p, q).map_err(|error| Invalid {
         column: match error {
@@ -401,4 +401,33 @@ fn curvatures_of<T: Real>(p: T, q: T) -> Result<Curvatures<T>, Invalid> {
     })?;
     at("P", Ratio::of(&curvatures))?;
     Ok(curvatures)
+}
+
+impl<T: crate::batch::BatchReal> DynContact<T> {
+    /// [`DynContact::wrench`] over columns ([`crate::batch`]): row i of `out` is bit for bit
+    /// `self.wrench(&Step { h: h[i], … })`, several rows per instruction. A varying contact
+    /// evaluates every row at its current curvatures (as [`DynContact::wrench`] does).
+    /// Errors: the first rejected row, its column and the error as [`DynContact::wrench`]
+    /// reports them (rows before it written), or [`Error::ColumnLengthMismatch`].
+    pub fn wrench_many(
+        &self,
+        steps: &crate::batch::Steps<'_, T>,
+        out: &mut crate::batch::Wrenches<'_, T>,
+    ) -> Result<(), crate::batch::RowError> {
+        macro_rules! many {
+            ($formed:expr) => {
+                match $formed {
+                    Formed::Fixed(c) => c.wrench_many(steps, out),
+                    Formed::Varying(c) => c.wrench_many_at(&self.curvatures, steps, out),
+                }
+            };
+        }
+        match &self.contact {
+            ByLaw::Best(x) => many!(x),
+            ByLaw::Simplified(x) => many!(x),
+            ByLaw::Pade(x) => many!(x),
+            ByLaw::Ellipsoid(x) => many!(x),
+            ByLaw::Coulomb(x) => many!(x),
+        }
+    }
 }

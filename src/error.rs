@@ -48,6 +48,9 @@ pub enum Error {
     /// The semi-axis ratio a/b of a rolling contact (a along the rolling direction) outside
     /// [0.01, 100].
     RollingAspectOutOfRange,
+    /// The columns of a batch call ([`crate::batch`]) have different lengths: the error names
+    /// the first column whose length differs from `h`'s.
+    ColumnLengthMismatch,
 }
 
 impl Error {
@@ -80,6 +83,7 @@ impl Error {
             Error::RollingAspectOutOfRange => {
                 "semi-axis ratio a/b of a rolling contact outside [0.01, 100]"
             }
+            Error::ColumnLengthMismatch => "batch columns have different lengths",
         }
     }
 }

@@ -46,6 +46,7 @@
     warn(clippy::unwrap_used, clippy::expect_used, clippy::panic)
 )]
 
+pub mod batch;
 pub mod contact;
 #[cfg(feature = "defmt")]
 mod defmt_impls;

@@ -248,6 +248,14 @@ impl<T: Real> HuntCrossley<T> {
     }
 }
 
+impl<T: Real> HuntCrossley<T> {
+    /// (3/2)·c_d, for the batch kernels (src/batch/).
+    #[inline(always)]
+    pub(crate) fn three_halves_cd(&self) -> T {
+        self.three_halves_cd
+    }
+}
+
 impl<T: Real> Damping<T> for HuntCrossley<T> {
     #[inline(always)]
     fn force(&self, elastic: T, _h: T, hdot: T) -> T {
@@ -269,6 +277,14 @@ impl<T: Real> CompressionDamping<T> {
         Ok(CompressionDamping {
             d: non_negative_damping(d)?,
         })
+    }
+}
+
+impl<T: Real> CompressionDamping<T> {
+    /// The coefficient d, for the batch kernels (src/batch/).
+    #[inline(always)]
+    pub(crate) fn coefficient(&self) -> T {
+        self.d
     }
 }
 

@@ -231,6 +231,76 @@ typedef struct {
   double e2;
 } contensou_wrench_f64;
 
+// The step columns of `contensou_contact_wrench_many_*`: five caller arrays of `rows`
+// values each (`h, hdot, vx, vy, omega`, as [`contensou_step`]).
+typedef struct {
+  // Approach h (m) per row.
+  const float *h;
+  // ḣ (m/s) per row.
+  const float *hdot;
+  // v_Px (m/s) per row.
+  const float *vx;
+  // v_Py (m/s) per row.
+  const float *vy;
+  // ω (rad/s) per row.
+  const float *omega;
+} contensou_step_columns_f32;
+
+// The output columns of `contensou_contact_wrench_many_*`: seven caller arrays of `rows`
+// values each (`N, Fx, Fy, Tz, a, b, e2`, as [`contensou_wrench`]), distinct and not
+// overlapping the inputs.
+typedef struct {
+  // N (N) per row.
+  float *n;
+  // F_x (N) per row.
+  float *fx;
+  // F_y (N) per row.
+  float *fy;
+  // T_z (N·m) per row.
+  float *tz;
+  // a (m) per row.
+  float *a;
+  // b (m) per row.
+  float *b;
+  // e² per row.
+  float *e2;
+} contensou_wrench_columns_f32;
+
+// The step columns of `contensou_contact_wrench_many_*`: five caller arrays of `rows`
+// values each (`h, hdot, vx, vy, omega`, as [`contensou_step`]).
+typedef struct {
+  // Approach h (m) per row.
+  const double *h;
+  // ḣ (m/s) per row.
+  const double *hdot;
+  // v_Px (m/s) per row.
+  const double *vx;
+  // v_Py (m/s) per row.
+  const double *vy;
+  // ω (rad/s) per row.
+  const double *omega;
+} contensou_step_columns_f64;
+
+// The output columns of `contensou_contact_wrench_many_*`: seven caller arrays of `rows`
+// values each (`N, Fx, Fy, Tz, a, b, e2`, as [`contensou_wrench`]), distinct and not
+// overlapping the inputs.
+typedef struct {
+  // N (N) per row.
+  double *n;
+  // F_x (N) per row.
+  double *fx;
+  // F_y (N) per row.
+  double *fy;
+  // T_z (N·m) per row.
+  double *tz;
+  // a (m) per row.
+  double *a;
+  // b (m) per row.
+  double *b;
+  // e² per row.
+  double *e2;
+} contensou_wrench_columns_f64;
+
 // `best`, the exact-grade default.
 #define CONTENSOU_LAW_BEST 0
 
@@ -464,6 +534,39 @@ contensou_status contensou_contact_wrench_f64(const contensou_contact_f64 *stora
                                               const contensou_step_f64 *step,
                                               contensou_wrench_f64 *out,
                                               contensou_column *column);
+
+// Many steps of one contact over caller arrays (structure of arrays): row i of the seven
+// output arrays is bit for bit what [`contensou_contact_wrench_f32`] gives for row i of the
+// five step arrays, several rows per instruction (SIMD lanes: AVX2 or SSE2 on x86-64,
+// detected at run time; one lane elsewhere). `rows` = 0 writes nothing and succeeds.
+//
+// On a non-finite input the call stops at that row: rows before it are written, `*row` gets
+// its index and `*column` its column (`CONTENSOU_COLUMN_H` … `_OMEGA`); on success `*row` =
+// `rows`. `row` and `column` may be NULL. A NULL or misaligned array (for `rows` > 0) is
+// refused before anything is written; so is a `rows` larger than any array can be
+// (> PTRDIFF_MAX / sizeof(float): `NullPointer`).
+//
+// # Safety
+// `storage` is NULL or readable; `steps`, `out` NULL or readable, their arrays NULL or
+// holding `rows` values (the output arrays writable, distinct, not overlapping the inputs);
+// `row`, `column` NULL or writable.
+contensou_status contensou_contact_wrench_many_f32(const contensou_contact_f32 *storage,
+                                                   size_t rows,
+                                                   const contensou_step_columns_f32 *steps,
+                                                   const contensou_wrench_columns_f32 *out,
+                                                   size_t *row,
+                                                   contensou_column *column);
+
+// [`contensou_contact_wrench_many_f32`] in `double`.
+//
+// # Safety
+// As [`contensou_contact_wrench_many_f32`].
+contensou_status contensou_contact_wrench_many_f64(const contensou_contact_f64 *storage,
+                                                   size_t rows,
+                                                   const contensou_step_columns_f64 *steps,
+                                                   const contensou_wrench_columns_f64 *out,
+                                                   size_t *row,
+                                                   contensou_column *column);
 
 #ifdef __cplusplus
 } // extern "C"

@@ -307,3 +307,46 @@ pub unsafe extern "C" fn contensou_contact_wrench_f64(
 ) -> contensou_status {
     unsafe { shell::contact_wrench(storage, step, out, column) }
 }
+
+/// Many steps of one contact over caller arrays (structure of arrays): row i of the seven
+/// output arrays is bit for bit what [`contensou_contact_wrench_f32`] gives for row i of the
+/// five step arrays, several rows per instruction (SIMD lanes: AVX2 or SSE2 on x86-64,
+/// detected at run time; one lane elsewhere). `rows` = 0 writes nothing and succeeds.
+///
+/// On a non-finite input the call stops at that row: rows before it are written, `*row` gets
+/// its index and `*column` its column (`CONTENSOU_COLUMN_H` … `_OMEGA`); on success `*row` =
+/// `rows`. `row` and `column` may be NULL. A NULL or misaligned array (for `rows` > 0) is
+/// refused before anything is written; so is a `rows` larger than any array can be
+/// (> PTRDIFF_MAX / sizeof(float): `NullPointer`).
+///
+/// # Safety
+/// `storage` is NULL or readable; `steps`, `out` NULL or readable, their arrays NULL or
+/// holding `rows` values (the output arrays writable, distinct, not overlapping the inputs);
+/// `row`, `column` NULL or writable.
+#[no_mangle]
+pub unsafe extern "C" fn contensou_contact_wrench_many_f32(
+    storage: *const contensou_contact_f32,
+    rows: usize,
+    steps: *const contensou_step_columns<f32>,
+    out: *const contensou_wrench_columns<f32>,
+    row: *mut usize,
+    column: *mut contensou_column,
+) -> contensou_status {
+    unsafe { shell::contact_wrench_many(storage, rows, steps, out, row, column) }
+}
+
+/// [`contensou_contact_wrench_many_f32`] in `double`.
+///
+/// # Safety
+/// As [`contensou_contact_wrench_many_f32`].
+#[no_mangle]
+pub unsafe extern "C" fn contensou_contact_wrench_many_f64(
+    storage: *const contensou_contact_f64,
+    rows: usize,
+    steps: *const contensou_step_columns<f64>,
+    out: *const contensou_wrench_columns<f64>,
+    row: *mut usize,
+    column: *mut contensou_column,
+) -> contensou_status {
+    unsafe { shell::contact_wrench_many(storage, rows, steps, out, row, column) }
+}

@@ -12,6 +12,9 @@ use crate::cstr::c_str;
 use crate::status::contensou_status as S;
 use crate::types::*;
 
+mod many;
+pub(crate) use many::contact_wrench_many;
+
 /// A precision of the C API: its storage type and the tag a constructor writes.
 pub(crate) trait Precision: Real {
     /// `contensou_contact_f32` or `contensou_contact_f64`.

@@ -178,3 +178,42 @@ pub const CONTENSOU_COLUMN_VY: contensou_column = 9;
 pub const CONTENSOU_COLUMN_OMEGA: contensou_column = 10;
 /// No column: success, or an error not tied to a contract column (a NULL pointer, …).
 pub const CONTENSOU_COLUMN_NONE: contensou_column = 11;
+
+/// The step columns of `contensou_contact_wrench_many_*`: five caller arrays of `rows`
+/// values each (`h, hdot, vx, vy, omega`, as [`contensou_step`]).
+#[repr(C)]
+#[derive(Clone, Copy, Debug)]
+pub struct contensou_step_columns<T> {
+    /// Approach h (m) per row.
+    pub h: *const T,
+    /// ḣ (m/s) per row.
+    pub hdot: *const T,
+    /// v_Px (m/s) per row.
+    pub vx: *const T,
+    /// v_Py (m/s) per row.
+    pub vy: *const T,
+    /// ω (rad/s) per row.
+    pub omega: *const T,
+}
+
+/// The output columns of `contensou_contact_wrench_many_*`: seven caller arrays of `rows`
+/// values each (`N, Fx, Fy, Tz, a, b, e2`, as [`contensou_wrench`]), distinct and not
+/// overlapping the inputs.
+#[repr(C)]
+#[derive(Clone, Copy, Debug)]
+pub struct contensou_wrench_columns<T> {
+    /// N (N) per row.
+    pub n: *mut T,
+    /// F_x (N) per row.
+    pub fx: *mut T,
+    /// F_y (N) per row.
+    pub fy: *mut T,
+    /// T_z (N·m) per row.
+    pub tz: *mut T,
+    /// a (m) per row.
+    pub a: *mut T,
+    /// b (m) per row.
+    pub b: *mut T,
+    /// e² per row.
+    pub e2: *mut T,
+}

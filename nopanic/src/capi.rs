@@ -17,7 +17,7 @@ fn ptr<P>(p: P) -> P {
 /// One module of probes per precision (the exported names differ only by their suffix).
 macro_rules! precision_probes {
     ($m:ident: $T:ty, $storage:ident, $words:expr,
-     $new:ident, $set:ident, $wrench:ident,
+     $new:ident, $set:ident, $wrench:ident, $many:ident,
      $curv_new:ident, $sphere_plane:ident, $sphere_sphere:ident, $ball_race:ident, $modulus:ident) => {
         pub(crate) mod $m {
             use super::*;
@@ -81,6 +81,42 @@ macro_rules! precision_probes {
             }
 
             #[inline(never)]
+            fn probe_capi_contact_wrench_many() {
+                let s = storage();
+                let x = [v(1e-6); 9];
+                let mut o: [[$T; 9]; 7] = [[v(0.0); 9]; 7];
+                let steps = contensou_step_columns::<$T> {
+                    h: ptr(x.as_ptr()),
+                    hdot: ptr(x.as_ptr()),
+                    vx: ptr(x.as_ptr()),
+                    vy: ptr(x.as_ptr()),
+                    omega: ptr(x.as_ptr()),
+                };
+                let [n, fx, fy, tz, a, b, e2] = o.each_mut().map(|c| ptr(c.as_mut_ptr()));
+                let out = contensou_wrench_columns::<$T> {
+                    n,
+                    fx,
+                    fy,
+                    tz,
+                    a,
+                    b,
+                    e2,
+                };
+                let (mut row, mut col) = (black_box(0), black_box(0));
+                let r = unsafe {
+                    $many(
+                        ptr(&s),
+                        black_box(9),
+                        ptr(&steps),
+                        ptr(&out),
+                        ptr(&mut row),
+                        ptr(&mut col),
+                    )
+                };
+                black_box((r, o, row, col));
+            }
+
+            #[inline(never)]
             fn probe_capi_curvatures() {
                 let mut c = contensou_curvatures::<$T>::default();
                 let r = unsafe {
@@ -105,6 +141,7 @@ macro_rules! precision_probes {
                 probe_capi_contact_new();
                 probe_capi_contact_set_curvatures();
                 probe_capi_contact_wrench();
+                probe_capi_contact_wrench_many();
                 probe_capi_curvatures();
                 probe_capi_modulus_of();
             }
@@ -114,10 +151,12 @@ macro_rules! precision_probes {
 
 precision_probes!(single: f32, contensou_contact_f32, CONTENSOU_CONTACT_F32_SIZE / 8,
     contensou_contact_new_f32, contensou_contact_set_curvatures_f32, contensou_contact_wrench_f32,
+    contensou_contact_wrench_many_f32,
     contensou_curvatures_new_f32, contensou_curvatures_sphere_plane_f32,
     contensou_curvatures_sphere_sphere_f32, contensou_curvatures_ball_race_f32, contensou_modulus_of_f32);
 precision_probes!(double: f64, contensou_contact_f64, CONTENSOU_CONTACT_F64_SIZE / 8,
     contensou_contact_new_f64, contensou_contact_set_curvatures_f64, contensou_contact_wrench_f64,
+    contensou_contact_wrench_many_f64,
     contensou_curvatures_new_f64, contensou_curvatures_sphere_plane_f64,
     contensou_curvatures_sphere_sphere_f64, contensou_curvatures_ball_race_f64, contensou_modulus_of_f64);
 

@@ -437,6 +437,115 @@ mod mm_api {
     }
 }
 
+/// The batch path (`contensou::batch`): both forms of every law and `DynContact::wrench_many`,
+/// on black-boxed columns of a black-boxed length (one lane on this target).
+mod batch_api {
+    use super::*;
+    use contensou::batch::{BatchLaw, BatchReal, CurvatureColumns, Steps, Wrenches};
+    use contensou::dynamic::{DynContact, Form, Law, Spec};
+
+    /// Nine black-boxed rows of each column, cut to a black-boxed length.
+    fn run_columns<T: Precision + BatchReal>(
+        f: impl FnOnce(&[T], &Steps<'_, T>, &mut Wrenches<'_, T>),
+    ) {
+        let vals = [x::<T>(0.5); 9];
+        let len = black_box(9usize).min(9);
+        let c = vals.get(..len).unwrap_or(&[]);
+        let mut o = [[x::<T>(0.0); 9]; 7];
+        let [n, fx, fy, tz, a, b, e2] = o.each_mut().map(|c| &mut c[..]);
+        let steps = Steps {
+            h: c,
+            hdot: c,
+            vx: c,
+            vy: c,
+            omega: c,
+        };
+        f(
+            c,
+            &steps,
+            &mut Wrenches {
+                n,
+                fx,
+                fy,
+                tz,
+                a,
+                b,
+                e2,
+            },
+        );
+        black_box(o);
+    }
+
+    fn fixed<T: Precision + BatchReal, L: BatchLaw>() {
+        let (Ok(c), Ok(e), Ok(fr), Ok(hc)) = (
+            Curvatures::new(x::<T>(0.5), x(0.5)),
+            Modulus::new(x::<T>(0.5)),
+            Friction::<T, L>::with_law(x(0.5), x(0.5)),
+            HuntCrossley::new(x::<T>(0.5)),
+        ) else {
+            return;
+        };
+        let Ok(contact) = Contact::hertz::<Newton>(&c, e, hc, fr) else {
+            return;
+        };
+        run_columns::<T>(|_, s, o| {
+            black_box(contact.wrench_many(s, o)).ok();
+        });
+    }
+
+    fn varying<T: Precision + BatchReal, L: BatchLaw>() {
+        let (Ok(c), Ok(e), Ok(fr), Ok(d)) = (
+            Curvatures::new(x::<T>(0.5), x(0.5)),
+            Modulus::new(x::<T>(0.5)),
+            Friction::<T, L>::with_law(x(0.5), x(0.5)),
+            CompressionDamping::new(x::<T>(0.5)),
+        ) else {
+            return;
+        };
+        let contact = VaryingContact::new(e, d, fr);
+        run_columns::<T>(|col, s, o| {
+            black_box(contact.wrench_many(&CurvatureColumns { p: col, q: col }, s, o)).ok();
+            black_box(contact.wrench_many_at(&c, s, o)).ok();
+        });
+    }
+
+    macro_rules! batch_probes {
+        ($( fn $name:ident<T>() $body:block )*) => {
+            $(
+                #[inline(never)]
+                fn $name<T: Precision + BatchReal>() $body
+            )*
+            pub(crate) fn run<R: Precision + BatchReal>() {
+                $( $name::<R>(); )*
+            }
+        };
+    }
+
+    batch_probes! {
+        fn probe_batch_fixed_best<T>() { fixed::<T, Best>() }
+        fn probe_batch_fixed_simplified<T>() { fixed::<T, Simplified>() }
+        fn probe_batch_fixed_pade<T>() { fixed::<T, Pade>() }
+        fn probe_batch_fixed_ellipsoid<T>() { fixed::<T, Ellipsoid>() }
+        fn probe_batch_fixed_coulomb<T>() { fixed::<T, Coulomb>() }
+        fn probe_batch_varying_best<T>() { varying::<T, Best>() }
+        fn probe_batch_varying_simplified<T>() { varying::<T, Simplified>() }
+        fn probe_batch_varying_pade<T>() { varying::<T, Pade>() }
+        fn probe_batch_varying_ellipsoid<T>() { varying::<T, Ellipsoid>() }
+        fn probe_batch_varying_coulomb<T>() { varying::<T, Coulomb>() }
+        fn probe_batch_dynamic<T>() {
+            let spec = Spec { p: x::<T>(0.5), q: x(0.5), estar: x(0.5), cd: x(0.5), f: x(0.5), delta: x(0.5) };
+            for law in Law::ALL {
+                for form in Form::ALL {
+                    let Ok(c) = DynContact::new(&spec, black_box(law), black_box(form)) else { continue };
+                    run_columns::<T>(|_, s, o| {
+                        black_box(c.wrench_many(s, o)).ok();
+                    });
+                }
+            }
+        }
+    }
+}
+
 /// `--features canary`: a probe that can panic (an unchecked slice index), to show that the
 /// proof detects one (`tools/no-panic.sh` requires this build to fail).
 #[cfg(feature = "canary")]
@@ -456,6 +565,8 @@ fn main() -> ! {
     api::run::<f64>();
     mm_laws::run();
     mm_api::run();
+    batch_api::run::<f32>();
+    batch_api::run::<f64>();
     capi::run();
     loop {
         core::hint::spin_loop();

@@ -1,8 +1,13 @@
-//! The row loop: every row of the broadcast shape through [`DynContact::wrench`], the GIL
+//! The row loop: the rows of the broadcast shape through [`DynContact::wrench_many`] (the
+//! batch path, SIMD lanes; each run of rows sharing one contact in one call), the GIL
 //! released, the first rejected row reported as a `ValueError` (argument, index, reason).
+//! Every row is bit for bit [`DynContact::wrench`]'s.
+
+use std::borrow::Cow;
 
 use ::contensou::Real;
-use ::contensou::dynamic::{DynContact, Form, INPUTS, Invalid, Law, OUTPUTS, Output, Spec, Step};
+use ::contensou::batch::{BatchReal, Steps, Wrenches};
+use ::contensou::dynamic::{DynContact, Form, INPUTS, Invalid, Law, OUTPUTS, Spec};
 use numpy::{Element, PyArray1, PyArrayMethods};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
@@ -11,7 +16,7 @@ use pyo3::types::PyDict;
 use crate::columns::{Arg, Column, convert, index_of};
 
 /// A float type the package evaluates in: the crate's [`Real`] and a numpy element.
-pub trait Precision: Real + Element + Send + Sync + std::fmt::Display {
+pub trait Precision: Real + BatchReal + Element + Send + Sync + std::fmt::Display {
     /// The bit pattern, to recognise a row whose contact columns repeat the previous row's.
     fn bits(self) -> u64;
 
@@ -48,6 +53,9 @@ pub type SpecColumns<'a, T> = [Column<'a, T>; 6];
 pub trait Contacts<T: Real> {
     /// The contact of row `i`.
     fn at(&mut self, i: usize) -> Result<&DynContact<T>, Invalid>;
+
+    /// The end of the run of rows from `i` (< `rows`) that share row `i`'s contact.
+    fn run_end(&self, i: usize, rows: usize) -> usize;
 }
 
 /// One contact for every row (a built `Contact`).
@@ -55,6 +63,10 @@ impl<T: Real> Contacts<T> for &DynContact<T> {
     #[inline(always)]
     fn at(&mut self, _: usize) -> Result<&DynContact<T>, Invalid> {
         Ok(self)
+    }
+
+    fn run_end(&self, _: usize, rows: usize) -> usize {
+        rows
     }
 }
 
@@ -80,7 +92,23 @@ impl<'a, T: Precision> PerRow<'a, T> {
     }
 }
 
+impl<T: Precision> PerRow<'_, T> {
+    /// The bits of row `i`'s contact columns.
+    fn key(&self, i: usize) -> [u64; 6] {
+        self.columns.each_ref().map(|c| c.at(i).bits())
+    }
+}
+
 impl<T: Precision> Contacts<T> for PerRow<'_, T> {
+    fn run_end(&self, i: usize, rows: usize) -> usize {
+        // Every contact column one shared value: one contact for all rows.
+        if self.columns.iter().all(|c| c.rows(rows).is_none()) {
+            return rows;
+        }
+        let key = self.key(i);
+        (i + 1..rows).find(|&j| self.key(j) != key).unwrap_or(rows)
+    }
+
     #[inline]
     fn at(&mut self, i: usize) -> Result<&DynContact<T>, Invalid> {
         let [p, q, estar, cd, f, delta] = self.columns.each_ref().map(|c| c.at(i));
@@ -113,45 +141,47 @@ pub struct Outputs<T> {
 pub fn evaluate<T: Precision>(
     rows: usize,
     steps: &StepColumns<'_, T>,
-    contacts: impl Contacts<T>,
-) -> Result<Outputs<T>, (usize, Invalid)> {
-    let [h, hdot, vx, vy, omega] = steps;
-    // The common case, every step column an array: plain slices of length `rows`, so the
-    // loop indexes without bounds checks.
-    match steps.each_ref().map(|c| c.rows(rows)) {
-        [Some(h), Some(hdot), Some(vx), Some(vy), Some(omega)] => fill(rows, contacts, |i| Step {
-            h: h[i],
-            hdot: hdot[i],
-            vx: vx[i],
-            vy: vy[i],
-            omega: omega[i],
-        }),
-        _ => fill(rows, contacts, |i| Step {
-            h: h.at(i),
-            hdot: hdot.at(i),
-            vx: vx.at(i),
-            vy: vy.at(i),
-            omega: omega.at(i),
-        }),
-    }
-}
-
-/// The row loop over `step(i)`, into output columns allocated once.
-#[inline(always)]
-fn fill<T: Precision>(
-    rows: usize,
     mut contacts: impl Contacts<T>,
-    step: impl Fn(usize) -> Step<T>,
 ) -> Result<Outputs<T>, (usize, Invalid)> {
+    // Every step column as `rows` values (a shared value expanded once).
+    let [h, hdot, vx, vy, omega] = steps.each_ref().map(|c| match c.rows(rows) {
+        Some(s) => Cow::Borrowed(s),
+        None => Cow::Owned((0..rows).map(|i| c.at(i)).collect::<Vec<T>>()),
+    });
     let mut columns: [Vec<T>; 7] = core::array::from_fn(|_| vec![T::ZERO; rows]);
-    let [n, fx, fy, tz, a, b, e2] = columns.each_mut().map(|c| &mut c[..rows]);
-    for i in 0..rows {
-        let out: Output<T> = contacts
-            .at(i)
-            .and_then(|c| c.wrench(&step(i)))
-            .map_err(|e| (i, e))?;
-        (n[i], fx[i], fy[i], tz[i]) = (out.n, out.fx, out.fy, out.tz);
-        (a[i], b[i], e2[i]) = (out.a, out.b, out.e2);
+    let mut i = 0;
+    while i < rows {
+        let end = contacts.run_end(i, rows);
+        let contact = contacts.at(i).map_err(|e| (i, e))?;
+        let [n, fx, fy, tz, a, b, e2] = columns.each_mut().map(|c| &mut c[i..end]);
+        let steps = Steps {
+            h: &h[i..end],
+            hdot: &hdot[i..end],
+            vx: &vx[i..end],
+            vy: &vy[i..end],
+            omega: &omega[i..end],
+        };
+        contact
+            .wrench_many(
+                &steps,
+                &mut Wrenches {
+                    n,
+                    fx,
+                    fy,
+                    tz,
+                    a,
+                    b,
+                    e2,
+                },
+            )
+            .map_err(|e| {
+                let why = Invalid {
+                    column: e.column,
+                    error: e.error,
+                };
+                (i + e.row, why)
+            })?;
+        i = end;
     }
     Ok(Outputs { columns })
 }

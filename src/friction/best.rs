@@ -160,6 +160,12 @@ use super::{Constants, FrictionLaw, SlipState, Traction, larger};
 use crate::Real;
 use confocal::{assemble, bounded, confocal};
 use quartic::Quartic;
+// The batch kernels (src/batch/) mirror the per-contact and per-step forms lane by lane.
+pub(crate) use contact::PIECES as CONTACT_PIECES;
+pub(crate) use quartic::{C40_SERIES, Quartic as QuarticCoefficients};
+pub(crate) use varying_table::{
+    NS as VARYING_NS, NZ as VARYING_NZ, S0 as VARYING_S0, TABLE as VARYING_TABLE,
+};
 
 /// The `best` law with e² read per call (see the [module docs](self)); the per-contact form,
 /// much cheaper per call, is [`BestContact`].

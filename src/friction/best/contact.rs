@@ -10,8 +10,11 @@ use crate::math::Libm;
 
 /// Number of cubic pieces in z of [`BestContact`]: 8 for e² ≤ 0.99, 12 for the thinner
 /// patches (m₁ < 0.01), whose coefficients bend faster near the ellipse.
-const PIECES: usize = 12;
+pub(crate) const PIECES: usize = 12;
 const PIECES_WIDE: usize = 8;
+
+/// The stored pieces: `[piece][coefficient][monomial]`.
+pub(crate) type Pieces<T> = [[[T; 4]; 7]; PIECES];
 
 /// The `best` law for one contact shape (e² fixed): the quartic's constants and the seven
 /// outside coefficients as 8 cubic pieces in z, built once by [`BestContact::new`]
@@ -25,7 +28,7 @@ pub struct BestContact<T> {
     /// layout on every target, which the C API's storage relies on).
     nt: T,
     /// `pieces[i][j]`: cubic in r = n·z − i of coefficient j (monomial, r ∈ [0, 1]).
-    pieces: [[[T; 4]; 7]; PIECES],
+    pieces: Pieces<T>,
 }
 
 impl<T: Real> BestContact<T> {
@@ -42,7 +45,7 @@ impl<T: Real> BestContact<T> {
         let quartic = Quartic::new(k);
         let gamma = k.m1().sqrt();
         let series = Series::new::<Libm>(k, &quartic, gamma);
-        let mut pieces = [[[T::ZERO; 4]; 7]; PIECES];
+        let mut pieces: Pieces<T> = [[[T::ZERO; 4]; 7]; PIECES];
         let n = if k.m1() >= T::from_f64(M1_THIN) {
             PIECES_WIDE
         } else {
@@ -102,6 +105,13 @@ impl<T: Real> BestContact<T> {
             nt,
             pieces,
         }
+    }
+
+    /// The parts the batch kernel (src/batch/best.rs) reads: the quartic, m, 1 + γ, the number
+    /// of pieces used (as `T`) and the pieces.
+    #[inline(always)]
+    pub(crate) fn parts(&self) -> (&Quartic<T>, T, T, T, &Pieces<T>) {
+        (&self.quartic, self.m, self.g1, self.nt, &self.pieces)
     }
 
     /// The dimensionless traction (F/(fN), T_z/(fNa)) and the branch for a slip state.

@@ -6,28 +6,28 @@ use crate::friction::Constants;
 
 /// The quartic's constants (first quadrant, X = |X₀|, Y = |Y₀|).
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub(super) struct Quartic<T> {
-    pub(super) a: T,
-    pub(super) b: T,
-    pub(super) c: T,
+pub(crate) struct Quartic<T> {
+    pub(crate) a: T,
+    pub(crate) b: T,
+    pub(crate) c: T,
     /// 2c₂₂
-    pub(super) k22: T,
+    pub(crate) k22: T,
     /// 4c₄₀
-    pub(super) k40: T,
+    pub(crate) k40: T,
     /// 4c₄₀/m₁
-    pub(super) k40m: T,
+    pub(crate) k40m: T,
     /// B/2, A/2
-    pub(super) hb: T,
-    pub(super) ha: T,
+    pub(crate) hb: T,
+    pub(crate) ha: T,
     /// 3c₄₀, 3c₂₂, 3c₄₀/m₁
-    pub(super) t40: T,
-    pub(super) t22: T,
-    pub(super) t40m: T,
-    pub(super) m1: T,
+    pub(crate) t40: T,
+    pub(crate) t22: T,
+    pub(crate) t40m: T,
+    pub(crate) m1: T,
 }
 
 /// c₄₀(m) = −[(2−m)E − 2(1−m)K]/(8m²), Taylor coefficients (m < 0.05: error < 1e-13).
-const C40_SERIES: [f64; 8] = [
+pub(crate) const C40_SERIES: [f64; 8] = [
     -0.07363107781851078,
     -0.018407769454627694,
     -0.008628641931856732,
@@ -40,7 +40,7 @@ const C40_SERIES: [f64; 8] = [
 
 impl<T: Real> Quartic<T> {
     #[inline(always)]
-    pub(super) fn new(k: &Constants<T>) -> Self {
+    pub(crate) fn new(k: &Constants<T>) -> Self {
         let (m, m1, a, b) = (k.m(), k.m1(), k.slope_x(), k.slope_y());
         let c40 = if m < T::from_f64(0.05) {
             C40_SERIES
@@ -75,7 +75,7 @@ impl<T: Real> Quartic<T> {
     /// (−F_x, −F_y, T_z) for X = y/|w|, Y = x/|w| (T_z for w > 0): F_x is odd in Y and even in
     /// X, F_y the reverse, T_z even in both.
     #[inline(always)]
-    pub(super) fn eval(&self, x: T, y: T) -> (T, T, T) {
+    pub(crate) fn eval(&self, x: T, y: T) -> (T, T, T) {
         let (x2, y2) = (x * x, y * y);
         let fx = y * (self.a + self.k22 * x2 + self.k40m * y2);
         let fy = x * (self.b + self.k40 * x2 + self.k22 * y2);
@@ -88,7 +88,7 @@ impl<T: Real> Quartic<T> {
 
     /// The seven outside coefficients on the boundary (a_c = 1, τ = 1), from the quartic at
     /// (X₀, Y₀) = (−sin ν, γ cos ν).
-    pub(super) fn boundary(&self, gamma: T) -> [T; 7] {
+    pub(crate) fn boundary(&self, gamma: T) -> [T; 7] {
         let (a, b, c, m1) = (self.a, self.b, self.c, self.m1);
         let c40 = T::from_f64(0.25) * self.k40;
         let c22 = T::HALF * self.k22;

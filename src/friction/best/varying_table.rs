@@ -8,14 +8,14 @@
 //! as traction: F_x 4.7e-05 (e² = 0.999901, z = 0.067), F_y 1.3e-05 (e² = 0.993987, z = 0.617), T_z 3.4e-06 (e² = 0.985656, z = 0.467).
 
 /// Cells in s = m₁^⅛ over [S0, 1].
-pub(super) const NS: usize = 25;
+pub(crate) const NS: usize = 25;
 /// Cubic pieces in z.
-pub(super) const NZ: usize = 12;
+pub(crate) const NZ: usize = 12;
 /// s at the table's thin end m₁ = 1e-05 (e² = 0.99999).
-pub(super) const S0: f64 = 0.23713737056616552;
+pub(crate) const S0: f64 = 0.23713737056616552;
 
 /// `TABLE[node][piece][coefficient]`: the cubic's monomial coefficients in r.
-pub(super) static TABLE: [[[[f32; 4]; 7]; NZ]; NS + 1] = [
+pub(crate) static TABLE: [[[[f32; 4]; 7]; NZ]; NS + 1] = [
     [
         [
             [0.0, 0.0, 0.04871704, -0.010488706],

@@ -1,0 +1,93 @@
+//! `contensou_contact_wrench_many_*`: the batch path (`contensou::batch`, through
+//! `DynContact::wrench_many`) over caller arrays. The pointer checks are paid once per array,
+//! the dispatch once per call; every row is bit for bit `contensou_contact_wrench_*`'s.
+
+use contensou::batch::{BatchReal, Steps, Wrenches};
+
+use super::{bare, check, column_of, read, report, slot, Precision};
+use crate::status::contensou_status as S;
+use crate::types::*;
+
+/// `rows` values of `T` from `p` (no pointer is read for 0 rows).
+///
+/// # Safety
+/// `p` NULL or valid for `rows` reads (C's contract).
+unsafe fn input<'a, T>(p: *const T, rows: usize) -> Result<&'a [T], S> {
+    if rows == 0 {
+        return Ok(&[]);
+    }
+    check(p)?;
+    // SAFETY: non-NULL, aligned (checked), `rows` readable values by the caller's contract;
+    // `rows` ≤ isize::MAX / size_of::<T>() (checked by the caller of `input`).
+    Ok(unsafe { core::slice::from_raw_parts(p, rows) })
+}
+
+/// `rows` writable values of `T` at `p`.
+///
+/// # Safety
+/// `p` NULL or valid for `rows` writes, not overlapping any other column (C's contract).
+unsafe fn output<'a, T>(p: *mut T, rows: usize) -> Result<&'a mut [T], S> {
+    if rows == 0 {
+        return Ok(&mut []);
+    }
+    check(p)?;
+    // SAFETY: as `input`, writable and not aliased by the caller's contract.
+    Ok(unsafe { core::slice::from_raw_parts_mut(p, rows) })
+}
+
+/// `contensou_contact_wrench_many_*`.
+///
+/// # Safety
+/// Pointers NULL or valid for their types; the arrays hold `rows` values, the output arrays
+/// distinct and not overlapping the inputs.
+pub(crate) unsafe fn contact_wrench_many<T: Precision + BatchReal>(
+    storage: *const T::Storage,
+    rows: usize,
+    steps: *const contensou_step_columns<T>,
+    out: *const contensou_wrench_columns<T>,
+    row: *mut usize,
+    column: *mut contensou_column,
+) -> S {
+    let mut first_bad = rows;
+    let r = (|| {
+        // SAFETY (this block's calls): caller's contract.
+        let slot = unsafe { slot::<T>(storage) }.map_err(bare)?;
+        let s = unsafe { read(steps) }.map_err(bare)?;
+        let o = unsafe { read(out) }.map_err(bare)?;
+        // No array of more values than this exists (the slice length limit).
+        if rows > isize::MAX as usize / core::mem::size_of::<T>() {
+            return Err(bare(S::NullPointer));
+        }
+        let i = |p| unsafe { input(p, rows) };
+        let (h, hdot, vx, vy, omega) = (i(s.h), i(s.hdot), i(s.vx), i(s.vy), i(s.omega));
+        let steps = Steps {
+            h: h.map_err(bare)?,
+            hdot: hdot.map_err(bare)?,
+            vx: vx.map_err(bare)?,
+            vy: vy.map_err(bare)?,
+            omega: omega.map_err(bare)?,
+        };
+        let o_ = |p| unsafe { output(p, rows) };
+        let mut wrenches = Wrenches {
+            n: o_(o.n).map_err(bare)?,
+            fx: o_(o.fx).map_err(bare)?,
+            fy: o_(o.fy).map_err(bare)?,
+            tz: o_(o.tz).map_err(bare)?,
+            a: o_(o.a).map_err(bare)?,
+            b: o_(o.b).map_err(bare)?,
+            e2: o_(o.e2).map_err(bare)?,
+        };
+        slot.contact
+            .wrench_many(&steps, &mut wrenches)
+            .map_err(|e| {
+                first_bad = e.row;
+                (S::from(e.error), column_of(e.column))
+            })
+    })();
+    if check(row).is_ok() {
+        // SAFETY: non-NULL and aligned; writable by the caller's contract.
+        unsafe { row.write(first_bad) };
+    }
+    // SAFETY: caller's contract.
+    unsafe { report(column, r) }
+}
