@@ -172,20 +172,24 @@ def main():
         f.write(f"//! (monomial in r = NZ·z − i). Stored as `f32`: {nbytes:,} bytes.\n")
         f.write("//! Max error on an independent grid (s, z between the nodes), per coefficient:\n")
         f.write(f"//! {per};\n//! as traction: {summary}.\n\n")
-        f.write(f"/// Cells in s = m₁^⅛ over [S0, 1].\npub(super) const NS: usize = {NS};\n")
-        f.write(f"/// Cubic pieces in z.\npub(super) const NZ: usize = {NZ};\n")
-        f.write(f"/// s at the table's thin end m₁ = {M1_LO} (e² = {1 - M1_LO}).\npub(super) const S0: f64 = {S0!r};\n\n")
-        f.write("/// `TABLE[node][piece][coefficient]`: the cubic's monomial coefficients in r.\n")
-        f.write(f"pub(super) static TABLE: [[[[f32; 4]; 7]; NZ]; NS + 1] = [\n")
-        for n in range(NS + 1):
-            f.write("    [\n")
-            for i in range(NZ):
-                f.write("        [\n")
-                for j in range(7):
-                    f.write("            [" + ", ".join(f32(x) for x in table[n, i, j]) + "],\n")
-                f.write("        ],\n")
-            f.write("    ],\n")
-        f.write("];\n")
+        f.write(f"/// Cells in s = m₁^⅛ over [S0, 1].\npub(crate) const NS: usize = {NS};\n")
+        f.write(f"/// Cubic pieces in z.\npub(crate) const NZ: usize = {NZ};\n")
+        f.write(f"/// s at the table's thin end m₁ = {M1_LO} (e² = {1 - M1_LO}).\npub(crate) const S0: f64 = {S0!r};\n\n")
+        write_table(f, [[[[f32(x) for x in table[n, i, j]] for j in range(7)] for i in range(NZ)] for n in range(NS + 1)])
+
+
+def write_table(f, rows):
+    """The table, one cubic piece (7 coefficients × 4 monomials) per line: the crate ships
+    this file, so it is kept compact (`cargo package` size bound in .ci/run)."""
+    f.write("/// `TABLE[node][piece][coefficient]`: the cubic's monomial coefficients in r.\n")
+    f.write("#[rustfmt::skip]\n")
+    f.write("pub(crate) static TABLE: [[[[f32; 4]; 7]; NZ]; NS + 1] = [\n")
+    for n, node in enumerate(rows):
+        f.write(f"// s node {n}\n[\n")
+        for piece in node:
+            f.write("[" + ",".join("[" + ",".join(c) + "]" for c in piece) + "],\n")
+        f.write("],\n")
+    f.write("];\n")
 
 
 if __name__ == "__main__":
