@@ -1,6 +1,7 @@
 //! The README's "Errors" table (issue 8): it lists every `Error` variant of src/error.rs, and
 //! each variant is produced by the inputs the table names, in `f32` and `f64`.
 
+use contensou::batch::{BatchReal, Steps, Wrenches};
 use contensou::elliptic::Parameter;
 use contensou::friction::{Friction, Simplified, Slip, SlipState};
 use contensou::geometry::{Curvatures, Principal, Race};
@@ -47,7 +48,7 @@ fn documented() -> Vec<String> {
 #[test]
 fn readme_table_lists_every_variant() {
     let (d, r) = (declared(), documented());
-    assert_eq!(d.len(), 14, "variants parsed from src/error.rs: {d:?}");
+    assert_eq!(d.len(), 15, "variants parsed from src/error.rs: {d:?}");
     assert_eq!(d, r, "src/error.rs vs README Errors table");
 }
 
@@ -216,10 +217,42 @@ fn each_variant<T: Real>() {
     );
 }
 
+/// ColumnLengthMismatch: a batch call whose columns differ in length (here `vy`).
+fn column_length_mismatch<T: BatchReal>() {
+    let x = T::from_f64;
+    let sphere = Curvatures::new(x(50.0), x(50.0)).unwrap();
+    let fr = Friction::<T, Simplified>::with_law(x(0.1), x(0.0)).unwrap();
+    let e = Modulus::new(x(1e11)).unwrap();
+    let contact = Contact::hertz::<Newton>(&sphere, e, Undamped, fr).unwrap();
+    let (three, two) = ([x(1e-6); 3], [x(0.0); 2]);
+    let steps = Steps {
+        h: &three,
+        hdot: &three,
+        vx: &three,
+        vy: &two,
+        omega: &three,
+    };
+    let mut o = [[x(0.0); 3]; 7];
+    let [n, fx, fy, tz, a, b, e2] = &mut o;
+    let mut out = Wrenches {
+        n,
+        fx,
+        fy,
+        tz,
+        a,
+        b,
+        e2,
+    };
+    let err = contact.wrench_many(&steps, &mut out).unwrap_err();
+    assert_eq!((err.column, err.error), ("vy", Error::ColumnLengthMismatch));
+}
+
 #[test]
 fn each_variant_is_produced_by_the_documented_input() {
     each_variant::<f32>();
     each_variant::<f64>();
+    column_length_mismatch::<f32>();
+    column_length_mismatch::<f64>();
 }
 
 #[test]
@@ -237,6 +270,10 @@ fn messages_are_nonempty_and_name_the_input() {
         Error::LengthNotPositive,
         Error::RegularizationSpeedNegative,
         Error::DampingNegative,
+        Error::ShearModulusNotPositive,
+        Error::RollingPoissonRatioOutOfRange,
+        Error::RollingAspectOutOfRange,
+        Error::ColumnLengthMismatch,
     ] {
         assert!(!v.as_str().is_empty() && v.to_string() == v.as_str());
     }
