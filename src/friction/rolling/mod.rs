@@ -6,7 +6,7 @@
 //! the force and the moment in that regime from the creepages, and the full-slip law of the
 //! library (`best`) at large creepage or V → 0.
 //!
-//! # Conventions (Kalker's; `/work/shared/notes/rolling.md` digest in the repository notes)
+//! # Conventions (Kalker's, as in Kalker 1990 and Johnson, *Contact Mechanics*, ch. 8)
 //!
 //! - **Rolling frame**: x along the rolling direction, z the contact normal; the Hertz ellipse
 //!   has semi-axis a along x and b along y (a may be smaller than b), c = √(ab),
