@@ -14,30 +14,13 @@ W_lin and W_fs come from the library itself
 
     cargo build --release --bin contact_eval && python3 tools/fit_rolling_blend.py
 """
-import csv, io, itertools, math, pathlib, subprocess, sys
+import csv, io, itertools, math, pathlib, sys
 
-root = pathlib.Path(__file__).resolve().parent.parent
-exe = root / "target/release/contact_eval"
-ref = root / "tools/data/rolling_ref.csv"
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
+from rolling_ref import evaluate, patch, read, root  # noqa: E402
 
-rows = []
-for line in ref.read_text().splitlines():
-    if not line or line.startswith("#") or line.startswith("family"):
-        continue
-    f = line.split(",")
-    rows.append((f[0],) + tuple(float(x) for x in f[1:]))
+rows = read(root / "tools/data/rolling_ref.csv")
 
-def evaluate(law, inputs):
-    text = "a,b,G,nu,f,N,V,xi,eta,phi\n" + "\n".join(",".join(repr(x) for x in r) for r in inputs) + "\n"
-    out = subprocess.run([str(exe), "rolling", "--law", law], input=text, capture_output=True,
-                         text=True, check=True).stdout
-    return [tuple(float(x) for x in l.split(",")[10:]) for l in out.splitlines()[1:]]
-
-def patch(aob):
-    s = math.sqrt(aob)
-    return s, 1 / s
-
-# Kalker coefficients per (a/b, ν) from the linear law at κ = 1
 shapes = sorted({(r[1], r[2]) for r in rows})
 unit = []
 for aob, nu in shapes:

@@ -33,35 +33,14 @@ hold are its held-out rows (never used to build it):
 
 (--check: fail if the committed table_data.rs differs from what the reference and blend give.)
 """
-import math, pathlib, subprocess, sys
+import math, pathlib, sys
 
-root = pathlib.Path(__file__).resolve().parent.parent
-exe = root / "target/release/contact_eval"
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
+from rolling_ref import evaluate, patch, read, root  # noqa: E402
+
 out_rs = root / "src/friction/rolling/table_data.rs"
 SH = [0.2, 0.5, 1.0, 2.0, 5.0]
 DIRS = ["xi", "eta", "phi", "xieta", "etaphi"]
-
-
-def read(path):
-    rows = []
-    for line in path.read_text().splitlines():
-        if not line or line.startswith("#") or line.startswith("family"):
-            continue
-        f = line.split(",")
-        rows.append((f[0],) + tuple(float(x) for x in f[1:]))
-    return rows
-
-
-def evaluate(law, inputs):
-    text = "a,b,G,nu,f,N,V,xi,eta,phi\n" + "\n".join(",".join(repr(x) for x in r) for r in inputs) + "\n"
-    out = subprocess.run([str(exe), "rolling", "--law", law], input=text, capture_output=True,
-                         text=True, check=True).stdout
-    return [tuple(float(x) for x in l.split(",")[10:]) for l in out.splitlines()[1:]]
-
-
-def patch(aob):
-    s = math.sqrt(aob)
-    return s, 1 / s
 
 
 FAMS = ("xi", "eta", "phi", "combined", "fullslip", "contact_example", "contact_testbank")
