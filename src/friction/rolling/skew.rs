@@ -95,8 +95,10 @@ pub struct ShapePath<T> {
     x: [T; PATH_NODES],
     /// ln of Kalker's coefficients at the nodes
     kalker: [Kalker<T>; PATH_NODES],
-    /// bit j: node j is a kink (slopes one-sided)
-    kinks: u64,
+    /// bit j: node j is a kink (slopes one-sided); kinks are interior nodes (j ≤ 31). A `u32`,
+    /// not a `u64`: an 8-byte-aligned `DynContact<f32>` made the firmware's `dyn-fixed-best`
+    /// stage fault under QEMU (not root-caused; see the branch's report).
+    kinks: u32,
 }
 
 impl<T: Real> ShapePath<T> {
@@ -127,7 +129,7 @@ impl<T: Real> ShapePath<T> {
         let mut xs = [0.0f64; PATH_NODES];
         let mut at = 0usize;
         let mut left = PATH_NODES - 1;
-        let mut kinks = 0u64;
+        let mut kinks = 0u32;
         for s in 0..n.saturating_sub(1) {
             let (a, b) = (
                 br.get(s).copied().unwrap_or(lo),
@@ -147,7 +149,7 @@ impl<T: Real> ShapePath<T> {
             at += k;
             left -= k;
             if rest > 0 {
-                kinks |= 1 << at; // the next segment starts at a kink
+                kinks |= 1u32.checked_shl(at as u32).unwrap_or(0); // the next segment starts at a kink
             }
         }
         if let Some(x) = xs.get_mut(PATH_NODES - 1) {
