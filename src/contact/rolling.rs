@@ -1,13 +1,22 @@
 //! The per-step wrench of a rolling contact: the contact's normal law and patch, the tangential
 //! part by a rolling law ([`crate::friction::rolling`]) from the slip and the rolling velocity.
 //!
+//! # Conventions
+//!
+//! As the crate's ([`crate::guide`]): the contact frame has x along the major axis, y along
+//! the minor axis, z the normal from A into B; the slip (v_x, v_y, ω) is body B's velocity
+//! relative to A at the patch centre and their relative spin about z; the wrench is on B from
+//! A. The rolling velocity V ([`RollingVelocity`]) is the velocity of the contact point over
+//! both surfaces, relative to their material, averaged (a wheel rolling forward along +x: V
+//! along +x, material flows through the patch towards −x). Creepages are (v_x, v_y, ω)/|V| in
+//! the rolling frame, Kalker's signs ([`crate::friction::rolling`]).
+//!
 //! # Formula
 //!
 //! Per step: the patch (a ≥ b along the contact frame's x, y; N) from the contact's normal law
-//! as in [`Contact::wrench`]; the rolling velocity V = (V_x, V_y) ([`RollingVelocity`]) sets
-//! the **rolling frame**: x_r along V, (c_θ, s_θ) = V/|V| (θ = 0 when V = 0), y_r = z × x_r.
-//! In that frame the slip (v_x, v_y, ω) of B relative to A is
-//! (c_θ v_x + s_θ v_y, −s_θ v_x + c_θ v_y, ω), the rolling speed is |V| > 0, and the rolling law
+//! as in [`Contact::wrench`]; V = (V_x, V_y) sets the **rolling frame**: x_r along V,
+//! (c_θ, s_θ) = V/|V| (θ = 0 when V = 0), y_r = z × x_r. In that frame the slip is
+//! (c_θ v_x + s_θ v_y, −s_θ v_x + c_θ v_y, ω), the rolling speed |V| ≥ 0, and the rolling law
 //! `L` evaluates Kalker's creepages on the **aligned ellipse**
 //! ([`crate::friction::rolling::aligned_ellipse`]): semi-axis a_r = ab/√(b²c_θ² + a²s_θ²)
 //! along V (the patch's extent in that direction), b_r = ab/a_r across (same area, same
@@ -21,19 +30,24 @@
 //!
 //! Every validated input; total (no panic, finite output).
 //!
-//! - **V along an axis** (V_y = 0 or V_x = 0; every direction for a circle): the aligned
-//!   ellipse is the patch, the rolling law's own domain — exact (the law's error only).
-//!   `Rolling` over a fixed [`Contact`] caches the two shapes; otherwise the shape is built per
-//!   call.
-//! - **V skewed**: the aligned ellipse is an approximation of the patch (Kalker's theory and
-//!   the laws' data are for rolling along an axis): exact along both axes, continuous in θ.
-//!   The full slip stays exact (the real patch's).
+//! - **V along an axis** (V_y = 0 or V_x = 0; every direction for a circle) of a fixed
+//!   contact: the aligned ellipse is the patch, the rolling law's own domain, with the creep
+//!   shapes of both axes cached at construction: the rolling law's error only
+//!   (`RollingContact` on the patch: within 8.7e-16 fN along +x, 1.5e-7 along the other
+//!   directions, `host-tests/rolling_wrench.rs`).
+//! - **V skewed** (and every step of a varying contact): the creep shape of a_r/b_r per call
+//!   from the contact's [`ShapePath`] (within 9.2e-4 fN / fNc of the `f64` build,
+//!   [`Rolling::wrench_aligned`]). The aligned ellipse itself is the approximation (Kalker's
+//!   theory and the laws' data are for rolling along an axis): exact along both axes,
+//!   continuous in θ (3.7e-8 fN across the axes), not measured in between (the exact
+//!   reference rolls along an axis only). The full slip stays exact (the real patch's).
 //! - **V = 0** (and creepage → ∞): the full slip of `best` on the real patch, in every
-//!   direction (`table`, `blend`: exactly, up to rounding; FASTSIM: its grid's full slip on the
-//!   patch, 7.4e-3 fN from the exact integrals on 32 × 32).
+//!   direction (`table`, `blend`: within 6.4e-16 fN of [`Contact::wrench`] with δ = 0; FASTSIM:
+//!   its grid's full slip on the patch, 4.8e-2 fN on 16 × 16 at a/b ≈ 4.3).
+//! - V < 0 along x is the half-turn of the rolling frame (not `RollingSlip`'s mirror; the
+//!   two agree within 1.5e-7 fN, `best`'s own mirror symmetry).
 //! - h ≤ 0 (apart), N ≤ 0, f = 0: zero tangential wrench. The contact's δ is not used.
-//! - a_r/b_r outside [0.01, 100] (patches more elongated than the laws' domain): the shape of
-//!   the nearer end (Kalker's asymptotes, the end tables).
+//! - a_r/b_r outside [0.01, 100]: the shape of the nearer end.
 //!
 //! # Example
 //!
@@ -62,10 +76,17 @@
 //!
 //! # Cost
 //!
-//! A fixed contact rolling along an axis (or a circle): the normal law, one `best` traction,
-//! the law's call, two rotations. Otherwise also the creep shape of a_r/b_r
-//! ([`RollingShape::new`], `f64`) per call. Measured: `bench-results/qemu.csv`, stage
-//! `rolling`, methods `wrench-*`; host: the README's rolling section.
+//! Cortex-M4F, `f32`, `table`, 64 creep states (`bench-results/qemu.csv`, stage `rolling`):
+//! fixed contact, V along an axis **899** instructions (`RollingContact::wrench` alone: 797);
+//! V skewed 10,082 (the creep shape per call: 435 table values, 14 `exp`); varying contact
+//! 10,345. Host (x86-64, criterion, per call): 377 ns, 1.26 µs, 1.55 µs (`RollingContact`
+//! 338 ns in the same run). Per contact: two [`RollingShape`]s (1,848 bytes each in `f32`)
+//! and a [`ShapePath`] (fixed), a [`ShapePath`] (varying).
+//!
+//! # References
+//!
+//! Kalker, *Three-dimensional elastic bodies in rolling contact* (1990): the theory the laws
+//! approximate, for rolling along a semi-axis.
 
 use core::marker::PhantomData;
 
