@@ -716,16 +716,31 @@ impl<T: crate::batch::BatchReal> DynContact<T> {
         rolling: Option<&RollingSteps<'_, T>>,
         out: &mut crate::batch::Wrenches<'_, T>,
     ) -> Result<(), crate::batch::RowError> {
-        let n = crate::batch::check_lengths(None, steps, out)?;
-        if let Some(r) = rolling {
-            for (column, len) in [("vrx", r.vrx.len()), ("vry", r.vry.len())] {
-                if len != n {
-                    return Err(crate::batch::RowError {
-                        row: len.min(n),
-                        column,
-                        error: Error::ColumnLengthMismatch,
-                    });
-                }
+        let n = steps.h.len();
+        let empty: &[T] = &[];
+        let (vrx, vry) = rolling.map_or((empty, empty), |r| (r.vrx, r.vry));
+        let lengths = [
+            ("hdot", steps.hdot.len()),
+            ("vx", steps.vx.len()),
+            ("vy", steps.vy.len()),
+            ("omega", steps.omega.len()),
+            ("vrx", if rolling.is_some() { vrx.len() } else { n }),
+            ("vry", if rolling.is_some() { vry.len() } else { n }),
+            ("N", out.n.len()),
+            ("Fx", out.fx.len()),
+            ("Fy", out.fy.len()),
+            ("Tz", out.tz.len()),
+            ("a", out.a.len()),
+            ("b", out.b.len()),
+            ("e2", out.e2.len()),
+        ];
+        for (column, len) in lengths {
+            if len != n {
+                return Err(crate::batch::RowError {
+                    row: len.min(n),
+                    column,
+                    error: Error::ColumnLengthMismatch,
+                });
             }
         }
         let get = |c: &[T], i: usize| c.get(i).copied().unwrap_or(T::ZERO);

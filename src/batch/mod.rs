@@ -322,7 +322,7 @@ const STEP_COLUMNS: [&str; 5] = ["h", "hdot", "vx", "vy", "omega"];
 const OUTPUT_COLUMNS: [&str; 7] = ["N", "Fx", "Fy", "Tz", "a", "b", "e2"];
 
 /// Every column as long as `h`.
-pub(crate) fn check_lengths<T>(
+fn check_lengths<T>(
     curvatures: Option<&CurvatureColumns<'_, T>>,
     steps: &Steps<'_, T>,
     out: &Wrenches<'_, T>,
@@ -338,19 +338,33 @@ pub(crate) fn check_lengths<T>(
         out.b.len(),
         out.e2.len(),
     ];
-    let curv = curvatures.map(|c| [("P", c.p.len()), ("Q", c.q.len())]);
-    let all = curv
-        .into_iter()
-        .flatten()
-        .chain(STEP_COLUMNS.into_iter().zip(inputs.map(<[T]>::len)))
-        .chain(OUTPUT_COLUMNS.into_iter().zip(outputs));
-    for (column, len) in all {
-        if len != n {
-            return Err(RowError {
-                row: len.min(n),
-                column,
-                error: Error::ColumnLengthMismatch,
-            });
+    // curvatures absent: their lengths read as n (no error)
+    let curv = curvatures.map_or([("P", n), ("Q", n)], |c| {
+        [("P", c.p.len()), ("Q", c.q.len())]
+    });
+    let ins = [
+        (STEP_COLUMNS[0], inputs[0].len()),
+        (STEP_COLUMNS[1], inputs[1].len()),
+        (STEP_COLUMNS[2], inputs[2].len()),
+        (STEP_COLUMNS[3], inputs[3].len()),
+        (STEP_COLUMNS[4], inputs[4].len()),
+    ];
+    let outs: [(&'static str, usize); 7] = core::array::from_fn(|k| {
+        (
+            OUTPUT_COLUMNS.get(k).copied().unwrap_or(""),
+            outputs.get(k).copied().unwrap_or(n),
+        )
+    });
+    // slices, not chained array iterators: no bounds-check panic path at any opt-level
+    for list in [&curv[..], &ins[..], &outs[..]] {
+        for &(column, len) in list {
+            if len != n {
+                return Err(RowError {
+                    row: len.min(n),
+                    column,
+                    error: Error::ColumnLengthMismatch,
+                });
+            }
         }
     }
     Ok(n)

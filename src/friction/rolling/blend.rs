@@ -91,7 +91,7 @@ impl Blend {
     /// (σ, γ) for a/b: piecewise linear in ln(a/b) between the fitted shapes, the end values
     /// outside [0.2, 5] (built once per contact, f64).
     pub fn shape<T: Real>(a_over_b: T) -> (T, T) {
-        let x = libm::log(a_over_b.to_f64().clamp(0.2, 5.0));
+        let x = libm::log(super::within(a_over_b.to_f64(), 0.2, 5.0));
         let mut i = 0;
         while i < 3 && x > libm::log(SHAPES.get(i + 1).copied().unwrap_or(5.0)) {
             i += 1;
@@ -99,7 +99,7 @@ impl Blend {
         // `get`: no bounds-check panic path (i ≤ 3 by the loop)
         let at = |v: &[f64; 5], k: usize| v.get(k).copied().unwrap_or(1.0);
         let (x0, x1) = (libm::log(at(&SHAPES, i)), libm::log(at(&SHAPES, i + 1)));
-        let u = ((x - x0) / (x1 - x0)).clamp(0.0, 1.0);
+        let u = super::within((x - x0) / (x1 - x0), 0.0, 1.0);
         let lerp = |v: [f64; 5]| T::from_f64(at(&v, i) + u * (at(&v, i + 1) - at(&v, i)));
         (lerp(Self::SIGMA), lerp(Self::GAMMA))
     }

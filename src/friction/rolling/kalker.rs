@@ -118,7 +118,7 @@ fn c33_simplified(r: f64, c23: f64) -> f64 {
 /// [`C33_EXACT`] of ln C₃₃ per column, then 1/C quadratic in ν; outside, the simplified
 /// theory's value times its ratio to the exact one at the nearer end row (continuous).
 fn c33(r: f64, nu: f64) -> f64 {
-    let x = libm::log(r.clamp(0.2, 5.0));
+    let x = libm::log(super::within(r, 0.2, 5.0));
     // the nodes' logarithms once (the same values as evaluated in the loop: bit for bit)
     let ln_nodes = C33_NODES.map(libm::log);
     let col = |j: usize| {
@@ -139,7 +139,7 @@ fn c33(r: f64, nu: f64) -> f64 {
     if (0.2..=5.0).contains(&r) {
         return inside;
     }
-    let end = r.clamp(0.2, 5.0);
+    let end = super::within(r, 0.2, 5.0);
     let ratio = inside / c33_simplified(end, coefficients_f64(end, nu)[2]);
     ratio * c33_simplified(r, coefficients_f64(r, nu)[2])
 }
@@ -167,7 +167,7 @@ pub fn table_node(narrow: bool, i: usize, j: usize) -> Option<[f64; 3]> {
 /// Cubic Hermite interpolation of a column over g ∈ [0.1, 1] on 10 uniform nodes, with
 /// finite-difference slopes (one-sided at the ends).
 fn hermite(rows: &[[f64; 9]; 10], col: usize, g: f64) -> f64 {
-    let t = ((g - 0.1) * 10.0).clamp(0.0, 9.0);
+    let t = super::within((g - 0.1) * 10.0, 0.0, 9.0);
     let i = (t as usize).min(8);
     let u = t - i as f64;
     // `get`: no bounds-check panic path (k ≤ 9 and col ≤ 8 by construction)

@@ -87,3 +87,17 @@ pub use skew::{ShapePath, aligned_ellipse};
 pub use slip::{RollingSlip, Scaled};
 pub use table::Table;
 pub use velocity::RollingVelocity;
+
+/// `x.clamp(lo, hi)` for constant bounds lo ≤ hi without `clamp`'s bounds assertion (a panic
+/// path that survives at `opt-level = "z"`, `tools/no-panic.sh`'s variant); the same value for
+/// every x, NaN included.
+#[inline(always)]
+pub(crate) fn within(x: f64, lo: f64, hi: f64) -> f64 {
+    if x < lo {
+        lo
+    } else if x > hi {
+        hi
+    } else {
+        x
+    }
+}

@@ -105,8 +105,8 @@ impl<T: Real> ShapePath<T> {
     /// For aligned ratios in [e^{lo}, e^{hi}] and ν ∈ [0, 0.5] (an [`super::Elasticity`]'s).
     pub fn new(lo: T, hi: T, nu: T) -> Self {
         let ln100 = libm::log(100.0);
-        let lo = lo.to_f64().clamp(-ln100, ln100);
-        let hi = hi.to_f64().clamp(-ln100, ln100).max(lo + 1e-9);
+        let lo = super::within(lo.to_f64(), -ln100, ln100);
+        let hi = super::within(hi.to_f64(), -ln100, ln100).max(lo + 1e-9);
         // breakpoints: the ends and the kinks strictly inside
         let mut br = [0.0f64; 7];
         let mut n = 0;
@@ -139,7 +139,8 @@ impl<T: Real> ShapePath<T> {
             let k = if rest == 0 {
                 left
             } else {
-                (((b - a) / total * (PATH_NODES - 1) as f64) as usize).clamp(1, left - rest)
+                let share = ((b - a) / total * (PATH_NODES - 1) as f64) as usize;
+                share.max(1).min(left.saturating_sub(rest).max(1))
             };
             for j in 0..k {
                 if let Some(x) = xs.get_mut(at + j) {

@@ -151,13 +151,13 @@ impl<T: Real> Tables<T> {
     /// For a/b: the generated tables linear in ln(a/b) between the fitted shapes, the end
     /// shapes outside [0.2, 5] (f64, once per contact).
     pub fn new(a_over_b: T) -> Self {
-        let x = libm::log(a_over_b.to_f64().clamp(0.2, 5.0));
+        let x = libm::log(super::within(a_over_b.to_f64(), 0.2, 5.0));
         let mut i = 0;
         while i < 3 && x > libm::log(SHAPES.get(i + 1).copied().unwrap_or(5.0)) {
             i += 1;
         }
         let s = |k: usize| libm::log(SHAPES.get(k).copied().unwrap_or(1.0));
-        let u = ((x - s(i)) / (s(i + 1) - s(i))).clamp(0.0, 1.0);
+        let u = super::within((x - s(i)) / (s(i + 1) - s(i)), 0.0, 1.0);
         let (lo, hi) = (TABLES.get(i), TABLES.get(i + 1));
         let curve = |k: usize| {
             let (Some(a), Some(b)) = (lo.and_then(|t| t.get(k)), hi.and_then(|t| t.get(k))) else {
