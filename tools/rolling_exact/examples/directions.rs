@@ -27,7 +27,7 @@
 //!   nodes, one point per window interval at ¼ and ¾ alternately (the same six curves),
 //!   `../data/rolling_ref_half_held.csv` (48 cases; held out);
 //! - `plane`: the η–φ directions halfway between the plane's curves (u = 1½, 2½, 3½) at
-//!   a/b = 2 and 5, on the node magnitudes from the 11th (q ≥ 0.026) on,
+//!   a/b = 2 and 5, on the node magnitudes from the 11th (q ≥ 0.04) on,
 //!   `../data/rolling_ref_plane.csv` (114 cases).
 //!
 //! With a/b arguments only those shapes are computed (to split the work; concatenate the rows).
