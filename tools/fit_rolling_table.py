@@ -134,7 +134,9 @@ for key, v in coarse.items():
     dx = (math.log(v[-1][0]) - x0) / (COARSE - 1)
     for k, e in enumerate(v):  # uniform in ln m (the reference's curves are log-spaced)
         assert abs(math.log(e[0]) - x0 - k * dx) < 1e-6, key
-    grids[key] = (x0, dx)
+    # 12 digits: curves on the same magnitudes get bit-identical grids (the law then finds
+    # their common node once)
+    grids[key] = (float(f"{x0:.12g}"), float(f"{dx:.12g}"))
 for aob in SH:  # the u = ½ … 3½ curves: phi's grid (m = 3q on the spin magnitudes)
     for name in HALF:
         grids[(aob, name)] = grids[(aob, "phi")]

@@ -106,14 +106,16 @@
 //!
 //! `blend`'s call plus a square root, two divisions, one `ln` and 1 to 4 curve look-ups (1 to 3
 //! channels each). M4F, f32, the dimensional call (firmware stage `rolling`, 64 creep states on
-//! a spiral of directions): 853 instructions on average (629 … 969; `blend` 417; f64: 33,455;
-//! before the direction curves 759). Per contact 12 curves, 1,287 numbers (f32: 5.3 KB) in
+//! a spiral of directions): 787 instructions on average (578 … 897; `blend` 416; f64: 32,724;
+//! before the direction curves 759); two neighbouring curves on the same magnitudes share one
+//! node search. Per contact 12 curves, 1,287 numbers (f32: 5.3 KB) in
 //! [`super::RollingContact`], built once; the generated data: 5 shapes × 1,287 `f32` + 60 pairs
 //! of `f64` (26.7 KB of flash when a/b is known only at run time; before 17.8 KB of `f64`); the
 //! size probe (a/b fixed at build time, `tools/flash-bench.sh --stage rolling`) measures
-//! `table` 68.6 KB, 3.0 KB over `blend` (f32; before 55.8 KB, 2.0 KB over `blend`): every
-//! rolling law's probe grew by 11.8 KB, since [`super::RollingContact::new`] builds these
-//! tables whatever the law and the two shapes' data are no longer folded at build time.
+//! `table` 70.3 KB, 4.1 KB over `blend` (f32; before 55.8 KB, 2.0 KB over `blend`): every
+//! rolling law's probe grew by ≈ 12 KB (`blend` 53.8 → 66.3 KB), since
+//! [`super::RollingContact::new`] builds these tables whatever the law and the two shapes' data
+//! are no longer folded at build time.
 
 use super::blend::{bounded, creep as blend_creep};
 use super::contact::{Creep, Input, RollingLaw, passive};
@@ -164,6 +166,11 @@ impl<T: Real, const N: usize, const C: usize> Curve<T, N, C> {
         }
     }
 
+    /// The same nodes in ln m (so one [`Self::at`] serves both).
+    fn same_grid(&self, other: &Self) -> bool {
+        self.x0 == other.x0 && self.inv_dx == other.inv_dx
+    }
+
     #[inline(always)]
     fn at(&self, lnm: T, m: T, inv_m: T) -> At<T> {
         let u = (lnm - self.x0) * self.inv_dx;
@@ -190,7 +197,12 @@ impl<T: Real, const N: usize, const C: usize> Curve<T, N, C> {
     /// F_y, M_z, one is F_x).
     #[inline(always)]
     fn eval(&self, lnm: T, m: T, inv_m: T) -> [T; 3] {
-        let at = self.at(lnm, m, inv_m);
+        self.value(self.at(lnm, m, inv_m))
+    }
+
+    /// [`Self::eval`] at a place found by [`Self::at`] (on this curve or one on the same grid).
+    #[inline(always)]
+    fn value(&self, at: At<T>) -> [T; 3] {
         let mut out = [T::ZERO; 3];
         let first = if C == 2 { 1 } else { 0 };
         for (o, v) in out.iter_mut().skip(first).zip(self.v.iter()) {
@@ -215,6 +227,9 @@ pub struct Tables<T> {
     xieta: Curve<T, COARSE, 3>,
     plane: [Curve<T, FINE, 2>; 6],
     ring: [Curve<T, FINE, 3>; 3],
+    /// plane[k] and plane[k + 1] (ring[k], ring[k + 1]) share their grid: one look-up for both.
+    plane_shared: [bool; 5],
+    ring_shared: [bool; 2],
 }
 
 impl<T: Real> Tables<T> {
@@ -229,12 +244,56 @@ impl<T: Real> Tables<T> {
         let s = |k: usize| libm::log(SHAPES.get(k).copied().unwrap_or(1.0));
         let u = ((x - s(i)) / (s(i + 1) - s(i))).clamp(0.0, 1.0);
         let (lo, hi) = (&DATA[i.min(3)], &DATA[i.min(3) + 1]);
+        let plane: [Curve<T, FINE, 2>; 6] =
+            core::array::from_fn(|k| Curve::new(&lo.plane[k], &hi.plane[k], u));
+        let ring: [Curve<T, FINE, 3>; 3] =
+            core::array::from_fn(|k| Curve::new(&lo.ring[k], &hi.ring[k], u));
         Self {
             xi: Curve::new(&lo.xi, &hi.xi, u),
             eta: Curve::new(&lo.eta, &hi.eta, u),
             xieta: Curve::new(&lo.xieta, &hi.xieta, u),
-            plane: core::array::from_fn(|k| Curve::new(&lo.plane[k], &hi.plane[k], u)),
-            ring: core::array::from_fn(|k| Curve::new(&lo.ring[k], &hi.ring[k], u)),
+            plane_shared: core::array::from_fn(|k| plane[k].same_grid(&plane[k + 1])),
+            ring_shared: core::array::from_fn(|k| ring[k].same_grid(&ring[k + 1])),
+            plane,
+            ring,
+        }
+    }
+
+    /// The plane's nodes `j` and `j + 1` mixed at `t` ∈ [0, 1).
+    #[inline(always)]
+    fn plane_mix(&self, j: usize, t: T, lnm: T, m: T, inv_m: T) -> [T; 3] {
+        if t > T::ZERO
+            && j >= 1
+            && self.plane_shared.get(j - 1) == Some(&true)
+            && let (Some(a), Some(b)) = (self.plane.get(j - 1), self.plane.get(j))
+        {
+            let at = a.at(lnm, m, inv_m);
+            return lerp(a.value(at), b.value(at), t);
+        }
+        let a = self.plane(j, lnm, m, inv_m);
+        if t > T::ZERO {
+            lerp(a, self.plane(j + 1, lnm, m, inv_m), t)
+        } else {
+            a
+        }
+    }
+
+    /// The ring's nodes `j` and `j + 1` mixed at `t` ∈ [0, 1).
+    #[inline(always)]
+    fn ring_mix(&self, j: usize, t: T, lnm: T, m: T, inv_m: T) -> [T; 3] {
+        if t > T::ZERO
+            && j >= 1
+            && self.ring_shared.get(j - 1) == Some(&true)
+            && let (Some(a), Some(b)) = (self.ring.get(j - 1), self.ring.get(j))
+        {
+            let at = a.at(lnm, m, inv_m);
+            return lerp(a.value(at), b.value(at), t);
+        }
+        let a = self.ring(j, lnm, m, inv_m);
+        if t > T::ZERO {
+            lerp(a, self.ring(j + 1, lnm, m, inv_m), t)
+        } else {
+            a
         }
     }
 
@@ -334,18 +393,10 @@ impl RollingLaw for Table {
             };
             let j = x.trunc_usize().min(last);
             let t = x - T::from_usize(j);
-            let node = |j| {
-                if ring {
-                    tb.ring(j, lnm, m, inv_m)
-                } else {
-                    tb.plane(j, lnm, m, inv_m)
-                }
-            };
-            let a = node(j);
-            if t > T::ZERO {
-                lerp(a, node(j + 1), t)
+            if ring {
+                tb.ring_mix(j, t, lnm, m, inv_m)
             } else {
-                a
+                tb.plane_mix(j, t, lnm, m, inv_m)
             }
         };
         let c = if v <= T::ONE {
