@@ -259,7 +259,8 @@ impl<T: Real> Tables<T> {
         }
     }
 
-    /// The plane's nodes `j` and `j + 1` mixed at `t` ∈ [0, 1).
+    /// The plane's nodes `j` and `j + 1` mixed at `t` ∈ [0, 1). (`ring_mix` has the same shape:
+    /// one generic function over both measured 863 against 787 M4F instructions per call.)
     #[inline(always)]
     fn plane_mix(&self, j: usize, t: T, lnm: T, m: T, inv_m: T) -> [T; 3] {
         if t > T::ZERO
