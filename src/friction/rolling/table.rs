@@ -75,9 +75,9 @@
 //! ([`Table::REF_ERROR_HELD_OUT`]): pure ξ 0.006 fN; pure η 0.013 / 0.010; pure φ 0.009 /
 //! 0.009; ξ with η 0.010 / 0.005; η with φ 0.026 / 0.012; η against φ 0.020 / 0.007; ξ with η
 //! and φ (the ring) 0.025 / 0.012: the aim (0.03 fN, 0.05 fNc) holds on every creep-curve
-//! family. Before the knee window and the direction curves: 0.045 / 0.033 on the first five
-//! families (the knee of pure spin at a/b = 5), and on the new families up to 0.50 / 0.37 (ξ
-//! with φ). On the same held-out points `blend` is 0.495 / 0.489, FASTSIM 32 × 32 0.119 / 0.063.
+//! family; the knee of pure spin 0.004 fN at a/b = 5, 0.002 at a/b = 2. Before the knee
+//! window and the direction curves: 0.045 / 0.033 on the first five families (the knee of pure
+//! spin at a/b = 5; 0.027 at a/b = 2), and on the new families up to 0.50 / 0.37 (ξ with φ). On the same held-out points `blend` is 0.495 / 0.489, FASTSIM 32 × 32 0.119 / 0.063.
 //!
 //! Off the curves: 30 random directions and magnitudes (`rolling_ref_dir_random.csv`, q from
 //! 0.01 to 10): 0.061 / 0.057 ([`Table::REF_ERROR_DIRECTIONS`]; before 0.111 / 0.168, `blend`
