@@ -336,6 +336,39 @@ fn table_is_continuous_along_creep_curves() {
     continuous_along_creep_curves::<Table>();
 }
 
+#[test]
+fn table_is_continuous_across_directions() {
+    // `table` interpolates its residual between directions and reflects it by the signs of ξ
+    // and of (η, φ): around the η–φ plane (through d_φ = 0, both signs of η) and along meridians
+    // from +ξ to −ξ (through d_ξ = 0), at magnitudes below, at and past the knee: no step (a
+    // jump of a sign or a mirror would be ≥ 0.05; the steepest measured is `blend`'s own slope
+    // near pure spin at a/b = 5, 0.006 per step).
+    for r in SHAPES {
+        let (c, p) = setup(r, 0.25, 0.1);
+        LOAD.with(|l| l.set(0.1));
+        for e in [2e-3, 1e-2, 3e-2, 1e-1] {
+            let circles: [&dyn Fn(f64) -> [f64; 3]; 3] = [
+                &|t: f64| [0.0, t.cos(), t.sin()],
+                &|t: f64| [t.cos(), 0.6 * t.sin(), 0.8 * t.sin()],
+                &|t: f64| [t.cos(), -0.8 * t.sin(), 0.6 * t.sin()],
+            ];
+            for (k, dir) in circles.iter().enumerate() {
+                let mut prev: Option<Creep<f64>> = None;
+                for i in 0..=16_000 {
+                    let d = dir(std::f64::consts::TAU * i as f64 / 16_000.0);
+                    let cur = creep::<Table>(&c, &p, [d[0] * e, d[1] * e, d[2] * e, 1.0]);
+                    if let Some(q) = prev {
+                        let step =
+                            (cur.fx - q.fx).abs() + (cur.fy - q.fy).abs() + (cur.mz - q.mz).abs();
+                        assert!(step < 1e-2, "a/b {r} e {e} circle {k} step {i}: {step}");
+                    }
+                    prev = Some(cur);
+                }
+            }
+        }
+    }
+}
+
 fn continuous_along_creep_curves<L: RollingLaw>() {
     // ξ, η, φ swept finely through the saturation point t = 1: no step above the slope's.
     for r in SHAPES {

@@ -88,6 +88,8 @@ pub trait Real:
 
     /// Nearest value of `Self` to `x` (exact for `f64`). Constant-folds for literal `x`.
     fn from_f64(x: f64) -> Self;
+    /// `x` in `Self` (exact: identity for `f32`, widening for `f64`).
+    fn from_f32(x: f32) -> Self;
     /// Exact widening to `f64`.
     fn to_f64(self) -> f64;
     /// `i as Self` (exact for |i| < 2²⁴).
@@ -173,6 +175,10 @@ macro_rules! impl_real {
             }
             #[inline(always)]
             fn from_f64(x: f64) -> Self {
+                x as $t
+            }
+            #[inline(always)]
+            fn from_f32(x: f32) -> Self {
                 x as $t
             }
             #[inline(always)]

@@ -1,37 +1,44 @@
 #!/usr/bin/env python3
 """Builds the residual tables of the default rolling law `table` (src/friction/rolling/table.rs)
 from the exact steady-rolling reference, writes them as Rust (src/friction/rolling/table_data.rs)
-and prints the law's error against the reference on the magnitudes the tables hold (fit) and on
-magnitudes they never saw (held out).
+and prints the law's error against the reference on its nodes (fit), on points it never saw
+(held out) and on CONTACT's published cases (outside).
 
 The law: `blend` (src/friction/rolling/blend.rs: Kalker's linear theory and the exact full slip
-joined by fitted saturation shapes, exact at both limits) plus a residual
-  ΔW = d_x·T_ξ(m) + d_y·T_η(m) + d_φ·T_φ(m)
-       + 2|d_x d_y|·(sgn d_x R_ξη,x, sgn d_y R_ξη,y, sgn d_y R_ξη,m)(m)
-       + 2 max(0, d_y d_φ)·sgn d_y·(0, R_ηφ,y, R_ηφ,m)(m),
-l = κ(C11 ξ, C22 η, C23 cφ) (Kalker's linear forces, fN), m = |l|, d = l/m, each table a
-function of ln m, piecewise linear between its nodes, ∝ (m/m_0)² below the first node and
-∝ (m_N/m)² above the last (so the linear limit and full slip stay blend's, i.e. exact); then a
-positive power removed and |F| ≤ fN, as blend does.
+joined by fitted saturation shapes, exact at both limits) plus the reference's residual against
+blend, tabulated on nine creep curves per shape and interpolated between them. With
+l = κ(C11 ξ, C22 η, C23 cφ) (Kalker's linear forces, fN), m = |l|, d = l/m:
 
-Tables per shape a/b ∈ {0.2, 0.5, 1, 2, 5} (ν = 0.25, the reference's creep curves): T_ξ (F_x),
-T_η, T_φ (F_y, M_z), R_ξη (F_x, F_y, M_z), R_ηφ (F_y, M_z) — the reference's residual against
-blend on the pure curves, and on the combined curves what the pure tables leave. Nothing is
-fitted: the node values are the reference's residuals.
+- symmetry: F_x is odd in ξ, (F_y, M_z) odd in (η, φ) (the y-reflection, and the reversal of all
+  creepages), so d is reduced to d_x ≥ 0, d_φ ≥ 0 and the signs put back at the end;
+- direction: u = 2 − 2 d_y/(|d_y| + d_φ) ∈ [0, 4] around the η–φ half plane (0: η, 1: η with φ
+  of the same sign, 2: φ, 3: opposite signs, 4: −η) and v = 2 d_x² ∈ [0, 2] towards ξ (0: the
+  η–φ plane, 1: 45°, 2: ξ); the residual is bilinear in (u, v) between the curves
+      plane (v = 0): eta, etaphi, phi, etaphi_opp, (−eta)
+      ring  (v = 1): xieta, xi_etaphi, xi_phi, xi_etaphi_opp, (xieta mirrored)
+      ξ     (v = 2): xi;
+- magnitude: each curve piecewise linear in ln m between its nodes, ∝ (m/m_0)² below the first
+  and ∝ (m_N/m)² above the last (so the linear limit and full slip stay blend's, i.e. exact);
+  then a positive power removed and |F| ≤ fN, as blend does.
 
-The exact reference on each creep curve: the 15 magnitudes of tools/data/rolling_ref.csv, the
-14 geometric midpoints of tools/data/rolling_ref_mid.csv and the 28 quarter points of
-tools/data/rolling_ref_quarter.csv (same solver: `cargo run --release --example midpoints
-[-- quarter]` in tools/rolling_exact). Three node sets, all reported; the rows a set does not
-hold are its held-out rows (never used to build it):
-  all   (written, the law's tables): rolling_ref.csv + the midpoints, 29 nodes per curve;
-        held out: the quarter points;
-  ref   rolling_ref.csv's 15 magnitudes; held out: the midpoints and quarter points;
-  half  every other magnitude of rolling_ref.csv (8 nodes); held out: the rest.
+Nodes: the 29 magnitudes per curve uniform in ln m (rolling_ref.csv's 15 and the 14 geometric
+midpoints of rolling_ref_mid.csv; rolling_ref_dir.csv for the four new curves); on the curves
+with φ at a/b = 2 and 5 (the sharp knee of the spin force) the intervals KNEE (q ≈ 0.08–1.6)
+are cut in four: their ½ points (rolling_ref_quarter.csv, rolling_ref_dir_quarter.csv) and ¼, ¾
+points (rolling_ref_knee.csv). Shapes without knee nodes get the window filled linearly (the
+same law), so the tables interpolate in ln(a/b) node by node. Nothing is fitted: the node values
+are the reference's residuals.
 
-    cargo build --release --bin contact_eval && python3 tools/fit_rolling_table.py [--write|--check]
+Held out (never used to build the tables): the ½ points of the other intervals (the quarter
+files), the ⅛ and ⅝ points of the knee intervals (rolling_ref_knee_held.csv), 12 random
+directions per shape (rolling_ref_dir_random.csv); outside: CONTACT's cases (ν = 0.28, own load
+ratios) and the full-slip family. All from tools/rolling_exact (examples `midpoints` and
+`directions`).
 
-(--check: fail if the committed table_data.rs differs from what the reference and blend give.)
+    cargo build --release --bin contact_eval && python3 tools/fit_rolling_table.py [--write|--check] [--laws] [-v]
+
+(--check: fail if the committed table_data.rs differs from what the reference and blend give;
+--laws: every rolling law per family and set; -v: per shape.)
 """
 import math, pathlib, sys
 
@@ -39,14 +46,35 @@ sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
 from rolling_ref import evaluate, patch, read, root  # noqa: E402
 
 out_rs = root / "src/friction/rolling/table_data.rs"
+data = root / "tools/data"
 SH = [0.2, 0.5, 1.0, 2.0, 5.0]
-DIRS = ["xi", "eta", "phi", "xieta", "etaphi"]
+COARSE = 29
+KNEE = (12, 8)  # first interval and number of intervals cut in four (spin curves)
+FINE = COARSE + 3 * KNEE[1]
+HALF = ["plane_u1.5", "plane_u2.5", "plane_u3.5"]
+PLANE = ["eta", "etaphi", HALF[0], "phi", HALF[1], "etaphi_opp", HALF[2]]  # u = 0, 1, 1½, … 3½
+RING = ["xieta", "xi_etaphi", "xi_phi", "xi_etaphi_opp"]  # u = 0, 1, 2, 3
+SPIN = PLANE[1:] + RING[1:]  # the windowed curves
+CHANNELS = {"xi": (0,), **{n: (1, 2) for n in PLANE}, **{n: (0, 1, 2) for n in RING}}
+PLANE_SHAPES = (2.0, 5.0)  # the shapes with the u = ½ … 3½ curves (elsewhere: their neighbours' mean)
+WINDOW_SHAPES = (1.0, 2.0, 5.0)  # knee window nodes: ½ points (all three), ¼ and ¾ (2 and 5)
 
-
-FAMS = ("xi", "eta", "phi", "combined", "fullslip", "contact_example", "contact_testbank")
-ref = [r for r in read(root / "tools/data/rolling_ref.csv") if r[0] in FAMS]
-mid = read(root / "tools/data/rolling_ref_mid.csv")
-quarter = read(root / "tools/data/rolling_ref_quarter.csv")
+CURVE_FAMS = ("xi", "eta", "phi", "combined", "etaphi_opp", "xi_etaphi", "xi_phi", "xi_etaphi_opp") + tuple(HALF)
+FAMS = CURVE_FAMS + ("fullslip", "contact_example", "contact_testbank", "direction")
+ref = [r for r in read(data / "rolling_ref.csv") if r[0] in FAMS]
+sets = {
+    "ref": ref,
+    "mid": read(data / "rolling_ref_mid.csv"),
+    "quarter": read(data / "rolling_ref_quarter.csv"),
+    "dir": read(data / "rolling_ref_dir.csv"),
+    "dir_quarter": read(data / "rolling_ref_dir_quarter.csv"),
+    "dir_quarter_knee": read(data / "rolling_ref_dir_quarter_knee.csv"),
+    "knee": read(data / "rolling_ref_knee.csv"),
+    "knee_held": read(data / "rolling_ref_knee_held.csv"),
+    "half_held": read(data / "rolling_ref_half_held.csv"),
+    "random": read(data / "rolling_ref_dir_random.csv"),
+    "plane": read(data / "rolling_ref_plane.csv"),
+}
 
 shapes = sorted({(r[1], r[2]) for r in ref})
 unit = []
@@ -68,9 +96,7 @@ def with_blend(rows):
     return [(r, tuple(v / r[3] for v in w)) for r, w in zip(rows, evaluate("blend", inputs))]
 
 
-ref_b = with_blend(ref)
-mid_b = with_blend(mid)
-quarter_b = with_blend(quarter)
+blended = {k: with_blend(v) for k, v in sets.items()}
 
 
 def direction(r):
@@ -88,89 +114,153 @@ def curve_name(r):
 
 
 def on_curves(rb):
-    return [(r, b) for r, b in rb if r[2] == 0.25 and r[0] in ("xi", "eta", "phi", "combined")]
-
-
-# the reference's curves per shape, in magnitude order: rolling_ref.csv at the even
-# indices, the midpoints at the odd ones
-curves = {}
-for r, bw in on_curves(ref_b) + on_curves(mid_b):
-    curves.setdefault((r[1], curve_name(r)), []).append((direction(r)[0], r, bw))
-for v in curves.values():
-    v.sort(key=lambda e: e[0])
-    assert len(v) == 29, len(v)
-
-
-def lookup(tab, m):
-    """tab = (ln m_0, Δ ln m, [values...]); piecewise linear in ln m, quadratic tails."""
-    x0, dx, vals = tab
-    n = len(vals)
-    if m <= 0:
-        return 0.0
-    u = (math.log(m) - x0) / dx
-    if u <= 0:
-        return vals[0] * math.exp(2 * u * dx)
-    if u >= n - 1:
-        return vals[-1] * math.exp(-2 * (u - n + 1) * dx)
-    i = min(int(u), n - 2)
-    t = u - i
-    return vals[i] + t * (vals[i + 1] - vals[i])
+    return [(r, b) for r, b in rb if r[2] == 0.25 and r[0] in CURVE_FAMS]
 
 
 def residual(r, bw):
     return tuple(w - b for w, b in zip(r[7:10], bw))
 
 
-def build(step):
-    """Tables on every `step`-th magnitude of each curve: {(shape, curve): (x0, dx, vals)}."""
-    idx = list(range(0, 29, step))
+# the coarse grid of each (shape, curve): the 29 magnitudes of rolling_ref.csv + midpoints, or
+# of rolling_ref_dir.csv
+coarse = {}
+for r, bw in on_curves(blended["ref"] + blended["mid"] + blended["dir"]):
+    coarse.setdefault((r[1], curve_name(r)), []).append((direction(r)[0], r, bw))
+grids = {}
+for key, v in coarse.items():
+    v.sort(key=lambda e: e[0])
+    assert len(v) == COARSE, (key, len(v))
+    x0 = math.log(v[0][0])
+    dx = (math.log(v[-1][0]) - x0) / (COARSE - 1)
+    for k, e in enumerate(v):  # uniform in ln m (the reference's curves are log-spaced)
+        assert abs(math.log(e[0]) - x0 - k * dx) < 1e-6, key
+    # 12 digits: curves on the same magnitudes get bit-identical grids (the law then finds
+    # their common node once)
+    grids[key] = (float(f"{x0:.12g}"), float(f"{dx:.12g}"))
+for aob in SH:  # the u = ½ … 3½ curves: phi's grid (m = 3q on the spin magnitudes)
+    for name in HALF:
+        grids[(aob, name)] = grids[(aob, "phi")]
+
+
+def position(r):
+    """Where a curve row sits on its curve's coarse grid (node index units)."""
+    x0, dx = grids[(r[1], curve_name(r))]
+    return (math.log(direction(r)[0]) - x0) / dx
+
+
+def fine(pos, windowed):
+    """Coarse position → index in the curve's node array (the knee window cut in four)."""
+    if not windowed:
+        return pos
+    return pos + 3 * min(max(pos - KNEE[0], 0.0), KNEE[1])
+
+
+def node_rows(use_knee):
+    """{(shape, curve): {fine index: (row, blend)}} — the tables' nodes."""
+    out = {}
+    for r, bw in on_curves(blended["ref"] + blended["mid"] + blended["dir"]):
+        key = (r[1], curve_name(r))
+        out.setdefault(key, {})[round(fine(position(r), key[1] in SPIN))] = (r, bw)
+    if use_knee:
+        for r, bw in on_curves(blended["quarter"] + blended["dir_quarter"] + blended["dir_quarter_knee"]
+                               + blended["knee"]):
+            key = (r[1], curve_name(r))
+            if key[1] not in SPIN or r[1] not in WINDOW_SHAPES:
+                continue
+            p = position(r)
+            if KNEE[0] < p < KNEE[0] + KNEE[1]:
+                g = fine(p, True)
+                assert abs(g - round(g)) < 1e-6, (key, p)
+                out[key][round(g)] = (r, bw)
+    for r, bw in on_curves(blended["plane"]):
+        g = fine(position(r), True)
+        assert abs(g - round(g)) < 1e-6, (r, g)
+        out.setdefault((r[1], curve_name(r)), {})[round(g)] = (r, bw)
+    return out
+
+
+def coarse_position(i, windowed):
+    """Fine index → coarse position (the inverse of `fine`)."""
+    if not windowed or i <= KNEE[0]:
+        return float(i)
+    if i <= KNEE[0] + 4 * KNEE[1]:
+        return KNEE[0] + (i - KNEE[0]) / 4
+    return i - 3.0 * KNEE[1]
+
+
+def build(use_knee=True):
+    """{(shape, curve): (x0, dx, [[value per node] per channel])}."""
+    nodes = node_rows(use_knee)
     tables = {}
-
-    def grid(cv):
-        ms = [cv[k][0] for k in idx]
-        x0 = math.log(ms[0])
-        dx = (math.log(ms[-1]) - x0) / (len(ms) - 1)
-        for k, mm in enumerate(ms):  # uniform in ln m (the reference's curves are log-spaced)
-            assert abs(math.log(mm) - x0 - k * dx) < 1e-6
-        return x0, dx
-
     for aob in SH:
-        for name, chans in (("xi", (0,)), ("eta", (1, 2)), ("phi", (1, 2))):
-            cv = curves[(aob, name)]
-            x0, dx = grid(cv)
-            sign = math.copysign(1.0, direction(cv[0][1])[1][DIRS.index(name)])
-            vals = [[sign * residual(cv[k][1], cv[k][2])[c] if c in chans else 0.0 for k in idx]
-                    for c in range(3)]
-            tables[(aob, name)] = (x0, dx, vals)
-    for aob in SH:
-        for name in ("xieta", "etaphi"):
-            cv = curves[(aob, name)]
-            x0, dx = grid(cv)
-            vals = [[], [], []]
-            for k in idx:
-                m, r, bw = cv[k]
-                _, d = direction(r)
-                p = pure_part(tables, aob, m, d)
-                res = residual(r, bw)
-                if name == "xieta":
-                    w = 2 * abs(d[0] * d[1])
-                    sg = (math.copysign(1, d[0]), math.copysign(1, d[1]), math.copysign(1, d[1]))
-                else:  # ηφ: no F_x
-                    w = 2 * max(0.0, d[1] * d[2])
-                    sg = (0.0, math.copysign(1, d[1]), math.copysign(1, d[1]))
-                for c in range(3):
-                    vals[c].append(sg[c] * (res[c] - p[c]) / w if sg[c] != 0 else 0.0)
-            tables[(aob, name)] = (x0, dx, vals)
+        for name in ["xi"] + [n for n in PLANE if n not in HALF] + RING + HALF:
+            tables[(aob, name)] = curve_table(tables, aob, name, nodes.get((aob, name), {}))
     return tables
 
 
-def pure_part(tables, aob, m, d):
-    out = [0.0, 0.0, 0.0]
-    for name, j in (("xi", 0), ("eta", 1), ("phi", 2)):
-        x0, dx, vals = tables[(aob, name)]
-        for c in range(3):
-            out[c] += d[j] * lookup((x0, dx, vals[c]), m)
-    return out
+def curve_table(tables, aob, name, pts):
+    """One curve's (x0, dx, values): the nodes' residuals; the u = 1½, 2½, 3½ curves outside
+    their nodes (and at shapes without them) the mean of their neighbours in u; the rest of the
+    knee window linear between the curve's own nodes."""
+    n = FINE if name in SPIN else COARSE
+    vals = [[0.0] * n for _ in range(3)]
+    have = [False] * n
+    for i, (r, bw) in pts.items():
+        res = residual(r, bw)
+        for c in CHANNELS[name]:
+            vals[c][i] = res[c]
+        have[i] = True
+    if name in HALF:
+        k = PLANE.index(name)
+        left = PLANE[k - 1]
+        right = PLANE[k + 1] if k + 1 < len(PLANE) else None
+        x0, dx = grids[(aob, name)]
+        first, last = (min(pts), max(pts)) if pts else (n, n)
+        for i in [i for i in range(n) if i < first or i > last]:
+            m = math.exp(x0 + dx * coarse_position(i, True))
+            a = lookup(tables[(aob, left)], left, m)
+            b = lookup(tables[(aob, right)], right, m) if right else [-v for v in lookup(tables[(aob, "eta")], "eta", m)]
+            for c in (1, 2):
+                vals[c][i] = 0.5 * (a[c] + b[c])
+            have[i] = True
+    for i in range(n):  # the window of shapes without knee nodes: linear between nodes
+        if not have[i]:
+            lo = max(j for j in range(i) if have[j])
+            hi = min(j for j in range(i + 1, n) if have[j])
+            t = (i - lo) / (hi - lo)
+            for c in range(3):
+                vals[c][i] = vals[c][lo] + t * (vals[c][hi] - vals[c][lo])
+    # the values as the library holds them (f32)
+    vals = [[f32(v) for v in ch] for ch in vals]
+    return (*grids[(aob, name)], vals)
+
+
+def f32(x):
+    import struct
+    return struct.unpack("f", struct.pack("f", x))[0]
+
+
+def f32_literal(v):
+    """The shortest decimal that reads back as the same f32."""
+    for p in range(1, 10):
+        t = f"{v:.{p}e}"
+        if f32(float(t)) == v:
+            return t
+    return repr(v)
+
+
+def lookup(tab, name, m):
+    """Piecewise linear in ln m between the nodes, quadratic tails; [F_x, F_y, M_z]."""
+    x0, dx, vals = tab
+    u = (math.log(m) - x0) / dx
+    if u <= 0:
+        return [v[0] * math.exp(2 * u * dx) for v in vals]
+    if u >= COARSE - 1:
+        return [v[-1] * math.exp(-2 * (u - COARSE + 1) * dx) for v in vals]
+    g = fine(u, name in SPIN)
+    i = min(int(g), len(vals[0]) - 2)
+    t = g - i
+    return [v[i] + t * (v[i + 1] - v[i]) for v in vals]
 
 
 def shape_tables(tables, aob):
@@ -182,32 +272,55 @@ def shape_tables(tables, aob):
     x0, x1 = math.log(SH[i]), math.log(SH[i + 1])
     u = min(max((x - x0) / (x1 - x0), 0.0), 1.0)
     out = {}
-    for name in DIRS:
+    for name in ["xi"] + PLANE + RING:
         a, b = tables[(SH[i], name)], tables[(SH[i + 1], name)]
         out[name] = (a[0] + u * (b[0] - a[0]), a[1] + u * (b[1] - a[1]),
                      [[p + u * (q - p) for p, q in zip(ca, cb)] for ca, cb in zip(a[2], b[2])])
     return out
 
 
+def correction(tb, m, d):
+    """The interpolated residual at magnitude m, unit direction d."""
+    sx = math.copysign(1.0, d[0])
+    sy = -1.0 if d[2] < 0 else 1.0
+    dy, dp = sy * d[1], sy * d[2]
+    s1 = abs(dy) + dp
+    u = 2 - 2 * dy / s1 if s1 > 0 else 0.0
+    v = 2 * d[0] * d[0]
+    def around(names, j):
+        if j == len(names):  # u = 4: the first curve mirrored
+            w = lookup(tb[names[0]], names[0], m)
+            return [w[0], -w[1], -w[2]]
+        return lookup(tb[names[j]], names[j], m)
+
+    def mix(names):
+        # node units: the ring u; the plane u up to 1, then 2u − 1 (nodes every ½)
+        x = u if names is RING or u < 1 else 2 * u - 1
+        j = min(int(x), len(names) - 1)
+        t = x - j
+        a = around(names, j)
+        if t == 0:
+            return a
+        b = around(names, j + 1)
+        return [p + t * (q - p) for p, q in zip(a, b)]
+
+    if v <= 1:
+        w = [(1 - v) * x for x in mix(PLANE)]
+        if v > 0:
+            w = [x + v * y for x, y in zip(w, mix(RING))]
+    else:
+        w = [(2 - v) * x for x in mix(RING)]
+        w = [x + (v - 1) * y for x, y in zip(w, lookup(tb["xi"], "xi", m))]
+    return [sx * w[0], sy * w[1], sy * w[2]]
+
+
 def law(tables, r, bw):
     fam, aob, nu, nl, xi, eta, phic = r[:7]
     m, d = direction(r)
-    tb = shape_tables(tables, aob)
-    look = lambda name, c: lookup((tb[name][0], tb[name][1], tb[name][2][c]), m)
-    dw = [0.0, 0.0, 0.0]
-    for name, j in (("xi", 0), ("eta", 1), ("phi", 2)):
-        for c in range(3):
-            dw[c] += d[j] * look(name, c)
-    w = 2 * abs(d[0] * d[1])
-    if w > 0:
-        dw[0] += math.copysign(w, d[0]) * look("xieta", 0)
-        dw[1] += math.copysign(w, d[1]) * look("xieta", 1)
-        dw[2] += math.copysign(w, d[1]) * look("xieta", 2)
-    w = 2 * max(0.0, d[1] * d[2])
-    if w > 0:
-        dw[1] += math.copysign(w, d[1]) * look("etaphi", 1)
-        dw[2] += math.copysign(w, d[1]) * look("etaphi", 2)
-    out = [b + e for b, e in zip(bw, dw)]
+    out = list(bw)
+    if m > 0:
+        dw = correction(shape_tables(tables, aob), m, d)
+        out = [b + e for b, e in zip(bw, dw)]
     P = out[0] * xi + out[1] * eta + out[2] * phic
     if P > 0:
         u2 = xi * xi + eta * eta + phic * phic
@@ -218,66 +331,107 @@ def law(tables, r, bw):
     return out
 
 
-def report(name, step):
-    tables = build(step)
+def parts(use_knee):
+    """(part, row, blend): nodes 'fit', the rest of the curves 'held-out', random directions
+    'directions', CONTACT's cases and full slip 'outside'."""
+    nodes = node_rows(use_knee)
+    is_node = {id(r) for pts in nodes.values() for r, _ in pts.values()}
+    out = []
+    for name in ("ref", "mid", "quarter", "dir", "dir_quarter", "dir_quarter_knee", "knee", "knee_held",
+                 "half_held", "plane"):
+        for r, bw in blended[name]:
+            if r[2] == 0.25 and r[0] in CURVE_FAMS:
+                out.append(("fit" if id(r) in is_node else "held-out", r, bw))
+            elif name == "ref":
+                out.append(("outside", r, bw))
+    out += [("directions", r, bw) for r, bw in blended["random"]]
+    return out
+
+
+def report(use_knee):
+    tables = build(use_knee)
     err = {}
-    parts = []
-    for r, bw in ref_b + mid_b:
-        if r[0] in ("xi", "eta", "phi", "combined") and r[2] == 0.25:
-            k = [e[1] for e in curves[(r[1], curve_name(r))]].index(r)
-            parts.append(("fit" if k % step == 0 else "held-out", r, bw))
-        else:
-            parts.append(("outside", r, bw))
-    parts += [("held-out", r, bw) for r, bw in on_curves(quarter_b)]
-    for part, r, bw in parts:
-        key = curve_name(r)
+    for part, r, bw in parts(use_knee):
+        key = curve_name(r) if part != "outside" else r[0]
         g = law(tables, r, bw)
         ef = math.hypot(g[0] - r[7], g[1] - r[8])
         em = abs(g[2] - r[9])
         eb = (math.hypot(bw[0] - r[7], bw[1] - r[8]), abs(bw[2] - r[9]))
         for k in ((part, key), (part, "all"), (part, f"{key} a/b={r[1]:g}")):
-            e = err.setdefault(k, [0, 0, 0, 0])
+            e = err.setdefault(k, [0, 0, 0, 0, 0])
             e[0], e[1] = max(e[0], ef), max(e[1], em)
             e[2], e[3] = max(e[2], eb[0]), max(e[3], eb[1])
-    print(f"== nodes '{name}': every {step} of the 29 magnitudes per curve")
-    for (part, key), (f, m, bf, bm) in sorted(err.items()):
+            e[4] += 1
+    print(f"== nodes: 29 per curve{', knee window cut in four at a/b = 2, 5' if use_knee else ''}")
+    for (part, key), (f, m, bf, bm, n) in sorted(err.items()):
         if "a/b" in key and "-v" not in sys.argv:
             continue
-        print(f"{part:9s} {key:24s} table |dF| {f:.4f} |dMz| {m:.4f}   (blend {bf:.4f} {bm:.4f})")
+        print(f"{part:10s} {key:26s} {n:4d}  table |dF| {f:.4f} |dMz| {m:.4f}   (blend {bf:.4f} {bm:.4f})")
     return tables
 
 
-report("half", 4)
-report("ref", 2)
-tables = report("all", 1)
+report(False)
+tables = report(True)
 
 
 def rust(tables):
-    n = len(tables[(SH[0], "xi")][2][0])
-    lines = ["//! Generated by `python3 tools/fit_rolling_table.py --write` from",
-             "//! tools/data/rolling_ref.csv and the `blend` law: the residual tables of",
+    def block(name, indent):
+        x0, dx, vals = tables[name]
+        pad = " " * indent
+        lines = [f"{pad}({x0!r}, {dx!r}, ["]
+        for c in CHANNELS[name[1]]:
+            lines.append(f"{pad}    [" + ", ".join(f32_literal(v) for v in vals[c]) + "],")
+        lines.append(f"{pad}]),")
+        return lines
+
+    lines = ["//! Generated by `python3 tools/fit_rolling_table.py --write` from the exact rolling",
+             "//! reference (tools/data/rolling_ref*.csv) and the `blend` law: the residual tables of",
              "//! [`super::table`] (see there). Do not edit.",
              "",
-             f"/// Nodes per curve.",
-             f"pub(crate) const NODES: usize = {n};",
+             "/// Nodes per curve, uniform in ln m.",
+             f"pub(crate) const COARSE: usize = {COARSE};",
+             "/// The curves with φ: the coarse intervals `KNEE_START..KNEE_START + KNEE_WIDTH` cut in",
+             "/// four.",
+             f"pub(crate) const KNEE_START: usize = {KNEE[0]};",
+             "/// See [`KNEE_START`].",
+             f"pub(crate) const KNEE_WIDTH: usize = {KNEE[1]};",
+             "/// Nodes of the curves with φ.",
+             "pub(crate) const FINE: usize = COARSE + 3 * KNEE_WIDTH;",
              "",
-             "/// Per shape (a/b = 0.2, 0.5, 1, 2, 5) and curve (ξ, η, φ, ξη, ηφ): ln m of the first",
-             "/// node, the node spacing in ln m, and the residual F_x, F_y, M_z (fN, fN, fNc) at the",
-             "/// nodes.",
-             "pub(crate) type Curves = [[(f64, f64, [[f64; NODES]; 3]); 5]; 5];",
+             "/// One curve: ln m of the first node, the coarse node spacing in ln m, and the residual",
+             "/// at the nodes per channel.",
+             "pub(crate) type Data<const N: usize, const C: usize> = (f64, f64, [[f32; N]; C]);",
              "",
-             "/// The tables.",
+             "/// One shape's curves (directions of the linear forces (ξ, η, φ) as named;",
+             "/// u = 2 − 2d_η/(|d_η| + d_φ)).",
+             "pub(crate) struct Shape {",
+             "    /// ξ: F_x",
+             "    pub(crate) xi: Data<COARSE, 1>,",
+             "    /// η: F_y, M_z",
+             "    pub(crate) eta: Data<COARSE, 2>,",
+             "    /// ξ with η, equal shares: F_x, F_y, M_z",
+             "    pub(crate) xieta: Data<COARSE, 3>,",
+             "    /// the η–φ plane at u = 1 (η with φ, same sign), 1½, 2 (φ), 2½, 3 (η with φ,",
+             "    /// opposite signs), 3½: F_y, M_z",
+             "    pub(crate) plane: [Data<FINE, 2>; 6],",
+             "    /// ξ at 45° to the plane at u = 1, 2, 3: F_x, F_y, M_z",
+             "    pub(crate) ring: [Data<FINE, 3>; 3],",
+             "}",
+             "",
+             "/// Per shape a/b = 0.2, 0.5, 1, 2, 5 (ν = 0.25).",
              "#[rustfmt::skip]",
-             "pub(crate) static TABLES: Curves = ["]
+             "pub(crate) static SHAPES: [Shape; 5] = ["]
     for aob in SH:
-        lines.append("    [")
-        for name in DIRS:
-            x0, dx, vals = tables[(aob, name)]
-            lines.append(f"        ({x0!r}, {dx!r}, [")
-            for c in range(3):
-                lines.append("            [" + ", ".join(f"{v:.6e}" for v in vals[c]) + "],")
-            lines.append("        ]),")
-        lines.append("    ],")
+        lines.append("    Shape {")
+        for field, names in (("xi", ["xi"]), ("eta", ["eta"]), ("xieta", ["xieta"])):
+            lines.append(f"        {field}:")
+            lines += block((aob, names[0]), 12)
+        for field, names in (("plane", PLANE[1:]), ("ring", RING[1:])):
+            lines.append(f"        {field}: [")
+            for n in names:
+                lines += block((aob, n), 12)
+            lines.append("        ],")
+        lines.append("    },")
     lines.append("];")
     return "\n".join(lines) + "\n"
 
@@ -290,31 +444,37 @@ if "--check" in sys.argv and out_rs.read_text() != rust(tables):
 
 
 def compare_laws():
-    """Every rolling law of contact_eval against the exact reference per curve family, on the
-    quarter points (held out from `table`'s tables; no law was fitted on them) and on all
-    curve points (rolling_ref.csv + midpoints + quarter points), plus CONTACT's cases."""
-    sets = {"quarter": on_curves([(r, None) for r in quarter]),
-            "curves": on_curves([(r, None) for r in ref + mid + quarter]),
-            "contact": [(r, None) for r in ref if r[0].startswith("contact")]}
+    """Every rolling law of contact_eval against the exact reference per curve family: on the
+    held-out points of `table` (no law was fitted on them), on all curve points, on the random
+    directions and on CONTACT's cases."""
+    ps = parts(True)
+    groups = {"held-out": [r for p, r, _ in ps if p == "held-out"],
+              "curves": [r for p, r, _ in ps if p in ("fit", "held-out")],
+              "directions": [r for p, r, _ in ps if p == "directions"],
+              "contact": [r for p, r, _ in ps if p == "outside" and r[0].startswith("contact")]}
     laws = ["table", "blend", "fastsim", "fastsim-16", "full-slip"]
-    print("law        set      " + "  ".join(f"{f:>13s}" for f in ("xi", "eta", "phi", "etaphi", "xieta", "all")))
+    exe = None
+    if "--old" in sys.argv:  # the law of another contact_eval binary, as `table-old`
+        exe = sys.argv[sys.argv.index("--old") + 1]
+        laws.insert(1, "table-old")
+    cols = ("xi", "eta", "phi", "etaphi", "etaphi_opp", "xieta", "xi_etaphi", "xi_phi", "xi_etaphi_opp", "all")
+    print("law        set        " + " ".join(f"{f:>13s}" for f in cols))
     for law_name in laws:
-        for set_name, rows in sets.items():
-            rows = [r for r, _ in rows]
+        for set_name, rows in groups.items():
             inputs = []
             for fam, aob, nu, nl, xi, eta, phic, *_ in rows:
                 a, b = patch(aob)
                 inputs.append((a, b, 1, nu, 1, nl, 1, xi, eta, phic))
-            got = evaluate(law_name, inputs)
+            got = evaluate("table" if law_name == "table-old" else law_name, inputs,
+                           exe if law_name == "table-old" else None)
             err = {}
             for r, w in zip(rows, got):
                 w = [v / r[3] for v in w]
                 e = (math.hypot(w[0] - r[7], w[1] - r[8]), abs(w[2] - r[9]))
-                for k in (curve_name(r) if set_name != "contact" else "all", "all"):
+                for k in (curve_name(r), "all"):
                     o = err.setdefault(k, [0, 0])
                     o[0], o[1] = max(o[0], e[0]), max(o[1], e[1])
-            cols = ("xi", "eta", "phi", "etaphi", "xieta", "all")
-            print(f"{law_name:10s} {set_name:8s} " + "  ".join(
+            print(f"{law_name:10s} {set_name:10s} " + " ".join(
                 f"{err[c][0]:.3f}/{err[c][1]:.3f}" if c in err else f"{'':13s}" for c in cols))
 
 

@@ -18,10 +18,11 @@ def read(path):
     return rows
 
 
-def evaluate(law, inputs):
-    """Fx, Fy, Mz of `contact_eval rolling --law LAW` for rows (a, b, G, nu, f, N, V, xi, eta, phi)."""
+def evaluate(law, inputs, binary=None):
+    """Fx, Fy, Mz of `contact_eval rolling --law LAW` for rows (a, b, G, nu, f, N, V, xi, eta, phi)
+    (`binary`: another contact_eval, e.g. an older build, instead of target/release's)."""
     text = "a,b,G,nu,f,N,V,xi,eta,phi\n" + "\n".join(",".join(repr(x) for x in r) for r in inputs) + "\n"
-    out = subprocess.run([str(exe), "rolling", "--law", law], input=text, capture_output=True,
+    out = subprocess.run([str(binary or exe), "rolling", "--law", law], input=text, capture_output=True,
                          text=True, check=True).stdout
     return [tuple(float(x) for x in l.split(",")[10:]) for l in out.splitlines()[1:]]
 

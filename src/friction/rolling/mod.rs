@@ -38,10 +38,11 @@
 //! # Laws
 //!
 //! - [`Table`] (default): [`Blend`] plus per-shape tables of its residual against the exact
-//!   reference over the normalised creepage (29 magnitudes per creep curve), the limits kept:
-//!   exact at both limits, passive, fixed cost (759 M4F f32 instructions); on held-out
-//!   magnitudes 0.045 fN / 0.033 fNc from the exact theory at worst (the knee of pure spin at
-//!   a/b = 5), against `blend`'s 0.148 / 0.168 on the same rows.
+//!   reference over the normalised creepage and the direction of the creepages (12 creep curves
+//!   per shape, η and φ of both signs, the knee of the spin force refined), the limits kept:
+//!   exact at both limits, passive, fixed cost (787 M4F f32 instructions); on held-out points
+//!   of the creep curves 0.026 fN / 0.012 fNc from the exact theory at worst (`blend` 0.495 /
+//!   0.489 on the same points), 0.061 / 0.057 at random directions.
 //! - [`Blend`]: Kalker's linear theory and the exact full slip joined channel by
 //!   channel with saturation shapes fitted to the exact reference; exact at both limits by
 //!   construction, passive, fixed cost (414 M4F f32 instructions); 0.10 fN / 0.16 fNc from the
