@@ -18,6 +18,7 @@
 #include <string.h>
 
 #include "contensou.h"
+#include "csv_fields.h"
 
 #define COLUMNS 11
 #define OUTPUTS 7
@@ -28,39 +29,6 @@ static int usage(const char *why) {
     fprintf(stderr, "wrench_eval: %s\nusage: wrench_eval [--law NAME] [--form fixed|varying] "
                     "[--precision f32|f64] < in.csv > out.csv\n", why);
     return 2;
-}
-
-/* Strips leading and trailing blanks in place. */
-static char *trim(char *s) {
-    char *end;
-    while (*s == ' ' || *s == '\t' || *s == '\r') s++;
-    end = s + strlen(s);
-    while (end > s && (end[-1] == ' ' || end[-1] == '\t' || end[-1] == '\r' || end[-1] == '\n')) *--end = '\0';
-    return s;
-}
-
-/* Splits a row into exactly COLUMNS trimmed fields; returns the number of fields found. */
-static int split(char *line, char *fields[COLUMNS]) {
-    int n = 0;
-    char *p = line;
-    for (;;) {
-        char *comma = strchr(p, ',');
-        if (comma) *comma = '\0';
-        if (n < COLUMNS) fields[n] = trim(p);
-        n++;
-        if (!comma) return n;
-        p = comma + 1;
-    }
-}
-
-/* A field as a number: NULL if it parses (the whole field), else why not (as contact_eval:
- * NaN is refused). */
-static const char *parse(const char *field, double *out, int f32) {
-    char *end;
-    if (*field == '\0') return "not a number";
-    if (f32) *out = strtof(field, &end); else *out = strtod(field, &end);
-    if (*end != '\0') return "not a number";
-    return *out == *out ? NULL : "not a number (NaN)";
 }
 
 static int fail_row(long row, const char *column, const char *value, contensou_status s) {
@@ -113,7 +81,7 @@ int main(int argc, char **argv) {
         row++;
         if (*trim(line) == '\0') continue;
         memcpy(copy, line, sizeof line);
-        n = split(copy, fields);
+        n = split(copy, fields, COLUMNS);
         if (n != COLUMNS) {
             fprintf(stderr, "wrench_eval: row %ld: fields = %d: expected %d (%s)\n", row, n, COLUMNS, INPUT_NAMES);
             return 1;

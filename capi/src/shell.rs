@@ -13,7 +13,9 @@ use crate::status::contensou_status as S;
 use crate::types::*;
 
 mod many;
+mod rolling;
 pub(crate) use many::contact_wrench_many;
+pub(crate) use rolling::{rolling_column_name, rolling_law_of, rolling_new, rolling_wrench};
 
 /// A precision of the C API: its storage type and the tag a constructor writes.
 pub(crate) trait Precision: Real {

@@ -5,6 +5,9 @@
 
 use contensou::dynamic::DynContact;
 
+mod rolling;
+pub use rolling::*;
+
 /// The contact columns `P,Q,estar,cd,f,delta` of the contract ([`contensou::dynamic::Spec`]).
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -135,6 +138,19 @@ pub const CONTENSOU_LAW_PADE: contensou_law = 2;
 pub const CONTENSOU_LAW_ELLIPSOID: contensou_law = 3;
 /// `coulomb` (point contact: no drilling torque).
 pub const CONTENSOU_LAW_COULOMB: contensou_law = 4;
+/// `table`: the default rolling law (Kalker's theory, `contensou::friction::rolling::Table`).
+/// Rolling laws (`TABLE` … `LINEAR`) build `contensou_rolling_*` contacts.
+pub const CONTENSOU_LAW_TABLE: contensou_law = 5;
+/// `blend`: Kalker's linear theory and the exact full slip joined by a saturation shape.
+pub const CONTENSOU_LAW_BLEND: contensou_law = 6;
+/// `fastsim`: FASTSIM (Kalker 1982), elliptic traction bound, 32 × 32 grid.
+pub const CONTENSOU_LAW_FASTSIM: contensou_law = 7;
+/// `fastsim-16`: FASTSIM on a 16 × 16 grid.
+pub const CONTENSOU_LAW_FASTSIM_16: contensou_law = 8;
+/// `full-slip`: the full-slip law (`best`) whatever the creepage (rolling contacts only).
+pub const CONTENSOU_LAW_FULL_SLIP: contensou_law = 9;
+/// `linear`: Kalker's linear theory, unsaturated (a reference; rolling contacts only).
+pub const CONTENSOU_LAW_LINEAR: contensou_law = 10;
 
 /// A contact form: one of the `CONTENSOU_FORM_*` values ([`contensou::dynamic::Form`]).
 pub type contensou_form = u32;

@@ -17,11 +17,15 @@ fn text(p: *const core::ffi::c_char) -> &'static str {
 }
 
 fn storage32() -> Box<contensou_contact_f32> {
-    Box::new(contensou_contact_f32 { opaque: [0; CONTENSOU_CONTACT_F32_SIZE / 8] })
+    Box::new(contensou_contact_f32 {
+        opaque: [0; CONTENSOU_CONTACT_F32_SIZE / 8],
+    })
 }
 
 fn storage64() -> Box<contensou_contact_f64> {
-    Box::new(contensou_contact_f64 { opaque: [0; CONTENSOU_CONTACT_F64_SIZE / 8] })
+    Box::new(contensou_contact_f64 {
+        opaque: [0; CONTENSOU_CONTACT_F64_SIZE / 8],
+    })
 }
 
 const SPEC: contensou_spec<f64> = contensou_spec {
@@ -54,6 +58,10 @@ fn every_library_error_has_its_own_code_and_the_library_message() {
         Error::LengthNotPositive,
         Error::RegularizationSpeedNegative,
         Error::DampingNegative,
+        Error::ShearModulusNotPositive,
+        Error::RollingPoissonRatioOutOfRange,
+        Error::RollingAspectOutOfRange,
+        Error::ColumnLengthMismatch,
     ];
     let mut codes: Vec<u32> = all.iter().map(|&e| S::from(e) as u32).collect();
     for (e, &c) in all.iter().zip(&codes) {

@@ -7,7 +7,7 @@
 # the same rows before it. Usage: capi/tests/compare.sh (after capi/build.sh, or it builds).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-[[ -x target/release/wrench_eval && -x target/release/wrench_eval-san ]] || ./build.sh --no-check
+[[ -x target/release/wrench_eval && -x target/release/wrench_eval-san && -x target/release/rolling_eval ]] || ./build.sh --no-check
 cargo build --release --quiet --example bits
 bits=target/release/examples/bits
 c=target/release/wrench_eval
@@ -86,3 +86,52 @@ for kind in $(cut -f1 "$work/bad.tsv" | uniq); do
     kinds=$((kinds + 1))
 done
 echo "compare: $kinds kinds of bad row: both stop at row 4 with the same message, exit 1, same rows before it"
+
+# The rolling evaluator (examples/rolling_eval.c, issue 20) against `contact_eval rolling`:
+# every rolling law × precision, bit for bit; clean under ASan + UBSan; the same bad rows
+# stop both at the same row.
+"$bits" rolling-gen >"$work/rolling.csv"
+rows=$(($(wc -l <"$work/rolling.csv") - 1))
+runs=0
+for precision in f32 f64; do
+    for law in table blend fastsim fastsim-16 full-slip linear; do
+        opts=(--law "$law" --precision "$precision")
+        target/release/rolling_eval "${opts[@]}" <"$work/rolling.csv" >"$work/c.csv" || { echo "compare: the rolling twin failed for ${opts[*]}" >&2; exit 1; }
+        ../target/release/contact_eval rolling "${opts[@]}" <"$work/rolling.csv" >"$work/rust.csv" || { echo "compare: contact_eval rolling failed for ${opts[*]}" >&2; exit 1; }
+        n="$("$bits" check "$precision" "$work/c.csv" "$work/rust.csv")" || { echo "compare: rolling FAILED for ${opts[*]}" >&2; exit 1; }
+        ((n == rows)) || { echo "compare: $n of $rows rolling rows for ${opts[*]}" >&2; exit 1; }
+        runs=$((runs + 1))
+    done
+done
+for precision in f32 f64; do
+    target/release/rolling_eval-san --law table --precision "$precision" <"$work/rolling.csv" >"$work/san.csv" ||
+        { echo "compare: the sanitized rolling twin failed ($precision)" >&2; exit 1; }
+    target/release/rolling_eval --law table --precision "$precision" <"$work/rolling.csv" | cmp -s - "$work/san.csv" ||
+        { echo "compare: the sanitized rolling twin prints other values ($precision)" >&2; exit 1; }
+done
+echo "compare: rolling: $rows rows × $runs runs (6 laws × 2 precisions): C = contact_eval rolling bit for bit; clean under ASan + UBSan (table)"
+
+"$bits" rolling-bad >"$work/bad.tsv"
+kinds=0
+for kind in $(cut -f1 "$work/bad.tsv" | uniq); do
+    { echo "a,b,G,nu,f,N,V,xi,eta,phi"; grep "^$kind"$'\t' "$work/bad.tsv" | cut -f2-; } >"$work/in.csv"
+    for precision in f32 f64; do
+        set +e
+        target/release/rolling_eval --precision "$precision" <"$work/in.csv" >"$work/c.csv" 2>"$work/c.err"; rc_c=$?
+        ../target/release/contact_eval rolling --precision "$precision" <"$work/in.csv" >"$work/rust.csv" 2>"$work/rust.err"; rc_r=$?
+        set -e
+        # The same row and column (contact_eval names a non-finite input in its message, the
+        # creepages by their slip: "row 4: xi = 1e-3: omega must be finite" for φ = ∞).
+        col_c="$(sed -n 's/^rolling_eval: row 4: \([^ ]*\) = .*/\1/p' "$work/c.err")"
+        case "$col_c" in xi) slip=v_x ;; eta) slip=v_y ;; phi) slip=omega ;; *) slip="$col_c" ;; esac
+        if ((rc_c != 1 || rc_r != 1)) || [[ -z "$col_c" ]] ||
+            ! grep -qE "^contact_eval: row 4: ($col_c = |.*: ($col_c|$slip) must be finite$)" "$work/rust.err"; then
+            echo "compare: rolling bad row '$kind' ($precision): C exit $rc_c, Rust exit $rc_r; expected exit 1 at row 4 naming the same column" >&2
+            cat "$work/c.err" "$work/rust.err" >&2
+            exit 1
+        fi
+        "$bits" check "$precision" "$work/c.csv" "$work/rust.csv" >/dev/null
+    done
+    kinds=$((kinds + 1))
+done
+echo "compare: rolling: $kinds kinds of bad row: both stop at row 4 naming the same column, exit 1, same rows before it"
