@@ -14,10 +14,10 @@
 #include <stdint.h>
 
 // Bytes of [`contensou_contact_f32`].
-#define CONTENSOU_CONTACT_F32_SIZE 1528
+#define CONTENSOU_CONTACT_F32_SIZE 5248
 
 // Bytes of [`contensou_contact_f64`].
-#define CONTENSOU_CONTACT_F64_SIZE 3048
+#define CONTENSOU_CONTACT_F64_SIZE 10496
 
 // Alignment (bytes) of both contact storage types.
 #define CONTENSOU_CONTACT_ALIGN 8
@@ -98,8 +98,9 @@ enum contensou_status
 typedef uint32_t contensou_status;
 #endif // __cplusplus
 
-// An input column of the contract (the order of [`contensou::dynamic::INPUTS`]), or
-// [`CONTENSOU_COLUMN_NONE`]: which input an error came from.
+// An input column of the contract (the order of [`contensou::dynamic::INPUTS`], then the
+// optional rolling columns from [`CONTENSOU_COLUMN_G`]), or [`CONTENSOU_COLUMN_NONE`]: which
+// input an error came from.
 typedef uint32_t contensou_column;
 
 // A friction law: one of the `CONTENSOU_LAW_*` values ([`contensou::dynamic::Law`]).
@@ -144,7 +145,7 @@ typedef uint32_t contensou_race;
 // `contensou_contact_wrench_f32` only reads the contact, so threads may share one.
 typedef struct {
   // Opaque.
-  uint64_t opaque[191];
+  uint64_t opaque[656];
 } contensou_contact_f32;
 
 // The contact columns `P,Q,estar,cd,f,delta` of the contract ([`contensou::dynamic::Spec`]).
@@ -167,7 +168,7 @@ typedef struct {
 // bytes, 8-byte aligned. As [`contensou_contact_f32`].
 typedef struct {
   // Opaque.
-  uint64_t opaque[381];
+  uint64_t opaque[1312];
 } contensou_contact_f64;
 
 // The contact columns `P,Q,estar,cd,f,delta` of the contract ([`contensou::dynamic::Spec`]).
@@ -409,6 +410,44 @@ typedef struct {
   double mz;
 } contensou_rolling_output_f64;
 
+// The optional step columns `vrx, vry` of the rolling laws
+// ([`contensou::dynamic::RollingStep`]): the contact's rolling velocity in the contact frame
+// (x the major axis), m/s. The sliding laws ignore it.
+typedef struct {
+  // V_x (m/s), along the major axis.
+  float vrx;
+  // V_y (m/s).
+  float vry;
+} contensou_rolling_step_f32;
+
+// The optional step columns `vrx, vry` of the rolling laws
+// ([`contensou::dynamic::RollingStep`]): the contact's rolling velocity in the contact frame
+// (x the major axis), m/s. The sliding laws ignore it.
+typedef struct {
+  // V_x (m/s), along the major axis.
+  double vrx;
+  // V_y (m/s).
+  double vry;
+} contensou_rolling_step_f64;
+
+// The rolling step columns of `contensou_contact_wrench_many_rolling_*`: two caller arrays
+// of `rows` values each (`vrx, vry`).
+typedef struct {
+  // V_x (m/s) per row.
+  const float *vrx;
+  // V_y (m/s) per row.
+  const float *vry;
+} contensou_rolling_step_columns_f32;
+
+// The rolling step columns of `contensou_contact_wrench_many_rolling_*`: two caller arrays
+// of `rows` values each (`vrx, vry`).
+typedef struct {
+  // V_x (m/s) per row.
+  const double *vrx;
+  // V_y (m/s) per row.
+  const double *vry;
+} contensou_rolling_step_columns_f64;
+
 // `best`, the exact-grade default.
 #define CONTENSOU_LAW_BEST 0
 
@@ -491,6 +530,18 @@ typedef struct {
 
 // No column: success, or an error not tied to a contract column (a NULL pointer, …).
 #define CONTENSOU_COLUMN_NONE 11
+
+// `G` (optional rolling column; after `NONE`, which keeps its value).
+#define CONTENSOU_COLUMN_G 12
+
+// `nu` (optional rolling column).
+#define CONTENSOU_COLUMN_NU 13
+
+// `vrx` (optional rolling step column).
+#define CONTENSOU_COLUMN_VRX 14
+
+// `vry` (optional rolling step column).
+#define CONTENSOU_COLUMN_VRY 15
 
 // `a`.
 #define CONTENSOU_ROLLING_COLUMN_A 0
@@ -783,6 +834,87 @@ contensou_status contensou_rolling_wrench_f64(const contensou_rolling_f64 *stora
                                               const contensou_rolling_state_f64 *state,
                                               contensou_rolling_output_f64 *out,
                                               contensou_rolling_column *column);
+
+// [`contensou_contact_new_f32`] with the optional rolling columns: `shear_modulus` (G > 0,
+// Pa) and `poisson` (ν ∈ [0, 0.5]), each NULL for its default (G = E*·(1 − ν), ν = 0.3).
+// Read and validated by the rolling laws (`CONTENSOU_LAW_TABLE`, `_BLEND`, `_FASTSIM`,
+// `_FASTSIM_16`) only; errors name `CONTENSOU_COLUMN_G` / `_NU`. With both NULL this is
+// [`contensou_contact_new_f32`].
+//
+// # Safety
+// As [`contensou_contact_new_f32`]; `shear_modulus`, `poisson` NULL or readable.
+contensou_status contensou_contact_new_rolling_f32(contensou_contact_f32 *storage,
+                                                   const contensou_spec_f32 *spec,
+                                                   const float *shear_modulus,
+                                                   const float *poisson,
+                                                   contensou_law law,
+                                                   contensou_form form,
+                                                   contensou_column *column);
+
+// [`contensou_contact_new_rolling_f32`] in `double`.
+//
+// # Safety
+// As [`contensou_contact_new_rolling_f32`].
+contensou_status contensou_contact_new_rolling_f64(contensou_contact_f64 *storage,
+                                                   const contensou_spec_f64 *spec,
+                                                   const double *shear_modulus,
+                                                   const double *poisson,
+                                                   contensou_law law,
+                                                   contensou_form form,
+                                                   contensou_column *column);
+
+// [`contensou_contact_wrench_f32`] with the rolling velocity `rolling` (`vrx, vry`: m/s in
+// the contact frame; NULL: 0, i.e. full slip), validated after the step (finite; errors
+// name `CONTENSOU_COLUMN_VRX` / `_VRY`) by the rolling laws only: the sliding laws give
+// [`contensou_contact_wrench_f32`]'s bits whatever `rolling` holds. Bit for bit
+// `contact_eval wrench` with the columns `vrx, vry`.
+//
+// # Safety
+// As [`contensou_contact_wrench_f32`]; `rolling` NULL or readable.
+contensou_status contensou_contact_wrench_rolling_f32(const contensou_contact_f32 *storage,
+                                                      const contensou_step_f32 *step,
+                                                      const contensou_rolling_step_f32 *rolling,
+                                                      contensou_wrench_f32 *out,
+                                                      contensou_column *column);
+
+// [`contensou_contact_wrench_rolling_f32`] in `double`.
+//
+// # Safety
+// As [`contensou_contact_wrench_rolling_f32`].
+contensou_status contensou_contact_wrench_rolling_f64(const contensou_contact_f64 *storage,
+                                                      const contensou_step_f64 *step,
+                                                      const contensou_rolling_step_f64 *rolling,
+                                                      contensou_wrench_f64 *out,
+                                                      contensou_column *column);
+
+// [`contensou_contact_wrench_many_f32`] with the rolling velocity columns `rolling` (two
+// arrays of `rows` values; NULL: V = 0 on every row, exactly
+// [`contensou_contact_wrench_many_f32`]): row i is bit for bit
+// [`contensou_contact_wrench_rolling_f32`] on row i (a scalar loop when `rolling` is given).
+// Errors as [`contensou_contact_wrench_many_f32`], `CONTENSOU_COLUMN_VRX` / `_VRY` too.
+//
+// # Safety
+// As [`contensou_contact_wrench_many_f32`]; `rolling` NULL or readable, its arrays NULL or
+// holding `rows` values.
+contensou_status contensou_contact_wrench_many_rolling_f32(const contensou_contact_f32 *storage,
+                                                           size_t rows,
+                                                           const contensou_step_columns_f32 *steps,
+                                                           const contensou_rolling_step_columns_f32 *rolling,
+                                                           const contensou_wrench_columns_f32 *out,
+                                                           size_t *row,
+                                                           contensou_column *column);
+
+// [`contensou_contact_wrench_many_rolling_f32`] in `double`.
+//
+// # Safety
+// As [`contensou_contact_wrench_many_rolling_f32`].
+contensou_status contensou_contact_wrench_many_rolling_f64(const contensou_contact_f64 *storage,
+                                                           size_t rows,
+                                                           const contensou_step_columns_f64 *steps,
+                                                           const contensou_rolling_step_columns_f64 *rolling,
+                                                           const contensou_wrench_columns_f64 *out,
+                                                           size_t *row,
+                                                           contensou_column *column);
 
 #ifdef __cplusplus
 } // extern "C"

@@ -78,9 +78,9 @@ pub struct contensou_curvatures<T> {
 }
 
 /// Bytes of [`contensou_contact_f32`].
-pub const CONTENSOU_CONTACT_F32_SIZE: usize = 1528;
+pub const CONTENSOU_CONTACT_F32_SIZE: usize = 5248;
 /// Bytes of [`contensou_contact_f64`].
-pub const CONTENSOU_CONTACT_F64_SIZE: usize = 3048;
+pub const CONTENSOU_CONTACT_F64_SIZE: usize = 10496;
 /// Alignment (bytes) of both contact storage types.
 pub const CONTENSOU_CONTACT_ALIGN: usize = 8;
 
@@ -93,7 +93,7 @@ pub const CONTENSOU_CONTACT_ALIGN: usize = 8;
 #[derive(Debug)]
 pub struct contensou_contact_f32 {
     /// Opaque.
-    pub opaque: [u64; 191],
+    pub opaque: [u64; 656],
 }
 
 /// Caller-owned storage of one `double` contact: opaque, [`CONTENSOU_CONTACT_F64_SIZE`]
@@ -102,7 +102,7 @@ pub struct contensou_contact_f32 {
 #[derive(Debug)]
 pub struct contensou_contact_f64 {
     /// Opaque.
-    pub opaque: [u64; 381],
+    pub opaque: [u64; 1312],
 }
 
 /// What the storage holds: a tag that only a constructor writes, then the contact.
@@ -167,8 +167,9 @@ pub const CONTENSOU_RACE_INNER: contensou_race = 0;
 /// The outer ring's raceway.
 pub const CONTENSOU_RACE_OUTER: contensou_race = 1;
 
-/// An input column of the contract (the order of [`contensou::dynamic::INPUTS`]), or
-/// [`CONTENSOU_COLUMN_NONE`]: which input an error came from.
+/// An input column of the contract (the order of [`contensou::dynamic::INPUTS`], then the
+/// optional rolling columns from [`CONTENSOU_COLUMN_G`]), or [`CONTENSOU_COLUMN_NONE`]: which
+/// input an error came from.
 pub type contensou_column = u32;
 /// `P`.
 pub const CONTENSOU_COLUMN_P: contensou_column = 0;
@@ -194,6 +195,37 @@ pub const CONTENSOU_COLUMN_VY: contensou_column = 9;
 pub const CONTENSOU_COLUMN_OMEGA: contensou_column = 10;
 /// No column: success, or an error not tied to a contract column (a NULL pointer, …).
 pub const CONTENSOU_COLUMN_NONE: contensou_column = 11;
+/// `G` (optional rolling column; after `NONE`, which keeps its value).
+pub const CONTENSOU_COLUMN_G: contensou_column = 12;
+/// `nu` (optional rolling column).
+pub const CONTENSOU_COLUMN_NU: contensou_column = 13;
+/// `vrx` (optional rolling step column).
+pub const CONTENSOU_COLUMN_VRX: contensou_column = 14;
+/// `vry` (optional rolling step column).
+pub const CONTENSOU_COLUMN_VRY: contensou_column = 15;
+
+/// The optional step columns `vrx, vry` of the rolling laws
+/// ([`contensou::dynamic::RollingStep`]): the contact's rolling velocity in the contact frame
+/// (x the major axis), m/s. The sliding laws ignore it.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct contensou_rolling_step<T> {
+    /// V_x (m/s), along the major axis.
+    pub vrx: T,
+    /// V_y (m/s).
+    pub vry: T,
+}
+
+/// The rolling step columns of `contensou_contact_wrench_many_rolling_*`: two caller arrays
+/// of `rows` values each (`vrx, vry`).
+#[repr(C)]
+#[derive(Clone, Copy, Debug)]
+pub struct contensou_rolling_step_columns<T> {
+    /// V_x (m/s) per row.
+    pub vrx: *const T,
+    /// V_y (m/s) per row.
+    pub vry: *const T,
+}
 
 /// The step columns of `contensou_contact_wrench_many_*`: five caller arrays of `rows`
 /// values each (`h, hdot, vx, vy, omega`, as [`contensou_step`]).

@@ -151,8 +151,13 @@ fn bad_pointers_and_values_are_codes_and_write_nothing() {
             S::NullPointer
         );
         assert_eq!(
-            contensou_contact_new_f64(&mut *c, &SPEC, 5, 0, null_mut()),
+            contensou_contact_new_f64(&mut *c, &SPEC, 42, 0, null_mut()),
             S::InvalidLaw
+        );
+        assert_eq!(
+            contensou_contact_new_f64(&mut *c, &SPEC, CONTENSOU_LAW_LINEAR, 0, null_mut()),
+            S::InvalidLaw,
+            "full-slip and linear are rolling-evaluator laws only"
         );
         assert_eq!(
             contensou_contact_new_f64(&mut *c, &SPEC, 0, 2, null_mut()),
@@ -425,7 +430,7 @@ fn the_numbers_are_the_contracts_bit_for_bit() {
             }
         }
     }
-    assert_eq!(n, 5 * 2 * 3 * 4 * 4);
+    assert_eq!(n, Law::ALL.len() * 2 * 3 * 4 * 4);
 }
 
 #[test]

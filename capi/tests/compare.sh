@@ -24,7 +24,7 @@ rows=$(($(wc -l <"$work/rows.csv") - 1))
 runs=0
 for precision in f32 f64; do
     for form in fixed varying; do
-        for law in best simplified pade ellipsoid coulomb; do
+        for law in best simplified pade ellipsoid coulomb table blend fastsim fastsim-16; do
             opts=(--law "$law" --form "$form" --precision "$precision")
             "$c" "${opts[@]}" <"$work/rows.csv" >"$work/c.csv" || { echo "compare: the C twin failed for ${opts[*]}" >&2; exit 1; }
             "${ref[@]}" "${opts[@]}" <"$work/rows.csv" >"$work/rust.csv" || { echo "compare: the reference failed for ${opts[*]}" >&2; exit 1; }
@@ -35,7 +35,33 @@ for precision in f32 f64; do
         done
     done
 done
-echo "compare: $rows rows × $runs runs (5 laws × 2 forms × 2 precisions): C = Rust bit for bit"
+echo "compare: $rows rows × $runs runs (9 laws × 2 forms × 2 precisions): C = Rust bit for bit"
+
+# The optional rolling columns (G, nu, vrx, vry; issue 20): all four, vrx/vry only (G, nu
+# by default), and two in another order, through the rolling laws (and best, which ignores
+# them), every form and precision.
+"$bits" wrench-rolling-gen >"$work/roll4.csv"
+cut -d, -f1-11,14,15 "$work/roll4.csv" >"$work/roll2.csv"
+awk -F, -v OFS=, '{ s = $1; for (k = 2; k <= 11; k++) s = s OFS $k; print s, $15, $13 }' "$work/roll4.csv" >"$work/rollswap.csv"
+rrows=$(($(wc -l <"$work/roll4.csv") - 1))
+runs=0
+for file in roll4 roll2 rollswap; do
+    for precision in f32 f64; do
+        for form in fixed varying; do
+            laws=(table blend fastsim fastsim-16 best)
+            [[ "$file" == roll4 ]] || laws=(table)
+            for law in "${laws[@]}"; do
+                opts=(--law "$law" --form "$form" --precision "$precision")
+                "$c" "${opts[@]}" <"$work/$file.csv" >"$work/c.csv" || { echo "compare: the C twin failed for $file ${opts[*]}" >&2; exit 1; }
+                "${ref[@]}" "${opts[@]}" <"$work/$file.csv" >"$work/rust.csv" || { echo "compare: the reference failed for $file ${opts[*]}" >&2; exit 1; }
+                n="$("$bits" check "$precision" "$work/c.csv" "$work/rust.csv")" || { echo "compare: FAILED for $file ${opts[*]}" >&2; exit 1; }
+                ((n == rrows)) || { echo "compare: $n of $rrows rows for $file ${opts[*]}" >&2; exit 1; }
+                runs=$((runs + 1))
+            done
+        done
+    done
+done
+echo "compare: rolling columns: $rrows rows × $runs runs (G,nu,vrx,vry: 5 laws; vrx,vry and vry,nu: table; 2 forms × 2 precisions): C = Rust bit for bit"
 
 # The C side under AddressSanitizer + UndefinedBehaviorSanitizer (built by build.sh): clean
 # on every row, and the same output.

@@ -33,7 +33,8 @@ int main(void) {
     EXPECT(contensou_contact_new_f64(NULL, &spec, CONTENSOU_LAW_BEST, CONTENSOU_FORM_FIXED, &column) == CONTENSOU_STATUS_NULL_POINTER);
     EXPECT(column == CONTENSOU_COLUMN_NONE);
     EXPECT(contensou_contact_new_f64(misaligned, &spec, CONTENSOU_LAW_BEST, CONTENSOU_FORM_FIXED, NULL) == CONTENSOU_STATUS_MISALIGNED);
-    EXPECT(contensou_contact_new_f64(&contact, &spec, 7, CONTENSOU_FORM_FIXED, NULL) == CONTENSOU_STATUS_INVALID_LAW);
+    EXPECT(contensou_contact_new_f64(&contact, &spec, 42, CONTENSOU_FORM_FIXED, NULL) == CONTENSOU_STATUS_INVALID_LAW);
+    EXPECT(contensou_contact_new_f64(&contact, &spec, CONTENSOU_LAW_FULL_SLIP, CONTENSOU_FORM_FIXED, NULL) == CONTENSOU_STATUS_INVALID_LAW);
     EXPECT(contensou_contact_new_f64(&contact, &spec, CONTENSOU_LAW_BEST, 7, NULL) == CONTENSOU_STATUS_INVALID_FORM);
     spec.p = 60.0;
     EXPECT(contensou_contact_new_f64(&contact, &spec, CONTENSOU_LAW_PADE, CONTENSOU_FORM_VARYING, &column) == CONTENSOU_STATUS_CURVATURES_NOT_ORDERED);

@@ -349,7 +349,7 @@ fn bad_pointers_and_laws_are_codes() {
         core::ptr::copy_nonoverlapping(
             wrench_contact.opaque.as_ptr(),
             big.opaque.as_mut_ptr(),
-            381,
+            CONTENSOU_ROLLING_F64_SIZE / 8, // the tag and what fits
         );
         assert_eq!(
             contensou_rolling_wrench_f64(&*big, &STATE, &mut out, null_mut()),
