@@ -61,7 +61,14 @@ for file in roll4 roll2 rollswap; do
         done
     done
 done
-echo "compare: rolling columns: $rrows rows × $runs runs (G,nu,vrx,vry: 5 laws; vrx,vry and vry,nu: table; 2 forms × 2 precisions): C = Rust bit for bit"
+for precision in f32 f64; do
+    opts=(--law table --form varying --precision "$precision")
+    target/release/wrench_eval-san "${opts[@]}" <"$work/roll4.csv" >"$work/san.csv" ||
+        { echo "compare: the sanitized C twin failed on the rolling columns (${opts[*]})" >&2; exit 1; }
+    "$c" "${opts[@]}" <"$work/roll4.csv" | cmp -s - "$work/san.csv" ||
+        { echo "compare: the sanitized C twin prints other values on the rolling columns (${opts[*]})" >&2; exit 1; }
+done
+echo "compare: rolling columns: $rrows rows × $runs runs (G,nu,vrx,vry: 5 laws; vrx,vry and vry,nu: table; 2 forms × 2 precisions): C = Rust bit for bit; ASan + UBSan clean (table)"
 
 # The C side under AddressSanitizer + UndefinedBehaviorSanitizer (built by build.sh): clean
 # on every row, and the same output.
@@ -112,6 +119,31 @@ for kind in $(cut -f1 "$work/bad.tsv" | uniq); do
     kinds=$((kinds + 1))
 done
 echo "compare: $kinds kinds of bad row: both stop at row 4 with the same message, exit 1, same rows before it"
+
+# Bad rolling columns (law table): the same row, column and message from both.
+good="50,50,1.15e11,0,0.1,1e-4,1e-6,0,0.01,0,50,8e10,0.28,2,0"
+for bad in "50,50,1.15e11,0,0.1,1e-4,1e-6,0,0.01,0,50,-8e10,0.28,2,0" \
+    "50,50,1.15e11,0,0.1,1e-4,1e-6,0,0.01,0,50,8e10,0.6,2,0" \
+    "50,50,1.15e11,0,0.1,1e-4,1e-6,0,0.01,0,50,inf,0.28,2,0" \
+    "50,50,1.15e11,0,0.1,1e-4,1e-6,0,0.01,0,50,8e10,0.28,inf,0" \
+    "50,50,1.15e11,0,0.1,1e-4,1e-6,0,0.01,0,50,8e10,0.28,2,-inf"; do
+    printf '%s\n' "${header},G,nu,vrx,vry" "$good" "$good" "$bad" "$good" >"$work/in.csv"
+    for precision in f32 f64; do
+        opts=(--law table --form fixed --precision "$precision")
+        set +e
+        "$c" "${opts[@]}" <"$work/in.csv" >"$work/c.csv" 2>"$work/c.err"; rc_c=$?
+        "${ref[@]}" "${opts[@]}" <"$work/in.csv" >"$work/rust.csv" 2>"$work/rust.err"; rc_r=$?
+        set -e
+        msg_c="$(sed -e 's/^wrench_eval: //' -e 's/ (status [0-9]*)$//' -e 's/ = [^:]*:/ = _:/' "$work/c.err")"
+        msg_r="$(sed -e 's/^contact_eval: //' -e 's/ = [^:]*:/ = _:/' "$work/rust.err")"
+        if ((rc_c != 1 || rc_r != 1)) || [[ "$msg_c" != "$msg_r" || "$msg_c" != "row 3: "* ]]; then
+            printf 'compare: bad rolling column %s (%s): exit %s / %s\n  C:    %s\n  Rust: %s\n' "$bad" "$precision" "$rc_c" "$rc_r" "$msg_c" "$msg_r" >&2
+            exit 1
+        fi
+        "$bits" check "$precision" "$work/c.csv" "$work/rust.csv" >/dev/null
+    done
+done
+echo "compare: 5 bad rolling-column rows (G, nu, vrx, vry): both stop at row 3 with the same message"
 
 # The rolling evaluator (examples/rolling_eval.c, issue 20) against `contact_eval rolling`:
 # every rolling law × precision, bit for bit; clean under ASan + UBSan; the same bad rows

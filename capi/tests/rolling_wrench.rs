@@ -209,6 +209,20 @@ fn rolling_errors_name_their_column() {
     .is_ok());
 }
 
+/// Output columns over seven vectors.
+fn columns_of(out: &mut [Vec<f64>; 7]) -> contensou_wrench_columns<f64> {
+    let [n, fx, fy, tz, a, b, e2] = out.each_mut().map(|c| c.as_mut_ptr());
+    contensou_wrench_columns {
+        n,
+        fx,
+        fy,
+        tz,
+        a,
+        b,
+        e2,
+    }
+}
+
 #[test]
 fn many_rolling_is_the_scalar_call_per_row() {
     let rows = 64;
@@ -244,16 +258,7 @@ fn many_rolling_is_the_scalar_call_per_row() {
         };
         assert_eq!(s, S::Ok);
         let mut out: [Vec<f64>; 7] = core::array::from_fn(|_| vec![0.0; rows]);
-        let [n, fx, fy, tz, a, b, e2] = &mut out;
-        let cols = contensou_wrench_columns {
-            n: n.as_mut_ptr(),
-            fx: fx.as_mut_ptr(),
-            fy: fy.as_mut_ptr(),
-            tz: tz.as_mut_ptr(),
-            a: a.as_mut_ptr(),
-            b: b.as_mut_ptr(),
-            e2: e2.as_mut_ptr(),
-        };
+        let cols = columns_of(&mut out);
         let steps = contensou_step_columns {
             h: h.as_ptr(),
             hdot: hdot.as_ptr(),
@@ -297,7 +302,7 @@ fn many_rolling_is_the_scalar_call_per_row() {
                 },
                 S::Ok
             );
-            let got = [n[i], fx[i], fy[i], tz[i], a[i], b[i], e2[i]].map(f64::to_bits);
+            let got = out.each_ref().map(|c| c[i].to_bits());
             assert_eq!(
                 got,
                 [w.n, w.fx, w.fy, w.tz, w.a, w.b, w.e2].map(f64::to_bits),
@@ -306,16 +311,7 @@ fn many_rolling_is_the_scalar_call_per_row() {
         }
         // NULL rolling columns: exactly contensou_contact_wrench_many_f64 (V = 0).
         let mut plain: [Vec<f64>; 7] = core::array::from_fn(|_| vec![0.0; rows]);
-        let [pn, pfx, pfy, ptz, pa, pb, pe2] = &mut plain;
-        let pcols = contensou_wrench_columns {
-            n: pn.as_mut_ptr(),
-            fx: pfx.as_mut_ptr(),
-            fy: pfy.as_mut_ptr(),
-            tz: ptz.as_mut_ptr(),
-            a: pa.as_mut_ptr(),
-            b: pb.as_mut_ptr(),
-            e2: pe2.as_mut_ptr(),
-        };
+        let pcols = columns_of(&mut plain);
         let s = unsafe {
             contensou_contact_wrench_many_f64(&*st, rows, &steps, &pcols, null_mut(), null_mut())
         };
@@ -333,8 +329,11 @@ fn many_rolling_is_the_scalar_call_per_row() {
         };
         assert_eq!(s, S::Ok);
         assert_eq!(
-            out[1].iter().map(|x| x.to_bits()).collect::<Vec<_>>(),
-            plain[1].iter().map(|x| x.to_bits()).collect::<Vec<_>>()
+            out.each_ref()
+                .map(|c| c.iter().map(|x| x.to_bits()).collect::<Vec<_>>()),
+            plain
+                .each_ref()
+                .map(|c| c.iter().map(|x| x.to_bits()).collect::<Vec<_>>())
         );
         // A bad rolling value: stops at its row, naming the column.
         let mut bad = vry.clone();
