@@ -370,3 +370,78 @@ fn rolling_refuses_bad_rows_naming_the_column() {
         );
     }
 }
+
+/// The optional rolling columns: echoed, read by the rolling laws bit for bit as
+/// `dynamic::wrench_rolling`, ignored by the sliding laws (same bits as without them); a bad
+/// value names its column; an unknown or repeated extra column is a header error.
+#[test]
+fn wrench_takes_the_optional_rolling_columns() {
+    use contensou::dynamic::{RollingSpec, RollingStep, wrench_rolling};
+    let base = "25,100,1.15e11,0,0.3,1e-4,2e-6,0,0.003,-0.001,20";
+    let input = format!("{},vry,G,vrx\n{base},2,8e10,1.5\n", INPUTS.join(","));
+    let spec = Spec {
+        p: 25.0,
+        q: 100.0,
+        estar: 1.15e11,
+        cd: 0.0,
+        f: 0.3,
+        delta: 1e-4,
+    };
+    let step = Step {
+        h: 2e-6,
+        hdot: 0.0,
+        vx: 0.003,
+        vy: -0.001,
+        omega: 20.0,
+    };
+    for law in Law::ALL {
+        let out = run(
+            &["wrench", "--law", law.name(), "--precision", "f64"],
+            &input,
+        );
+        assert_eq!(out.status.code(), Some(0), "{law:?}");
+        let text = String::from_utf8(out.stdout).unwrap();
+        let mut lines = text.lines();
+        assert_eq!(
+            lines.next().unwrap(),
+            format!("{},vry,G,vrx,{}", INPUTS.join(","), OUTPUTS.join(","))
+        );
+        let fields: Vec<f64> = lines
+            .next()
+            .unwrap()
+            .split(',')
+            .map(|f| f.parse().unwrap())
+            .collect();
+        let want = wrench_rolling(
+            &spec,
+            &RollingSpec {
+                g: Some(8e10),
+                nu: None,
+            },
+            law,
+            Form::Fixed,
+            &step,
+            &RollingStep { vrx: 1.5, vry: 2.0 },
+        )
+        .unwrap()
+        .to_array();
+        assert_eq!(
+            bits(fields[14..].try_into().unwrap()),
+            bits(want),
+            "{law:?}"
+        );
+    }
+    let bad = format!("{},nu\n{base},0.7\n", INPUTS.join(","));
+    let out = run(&["wrench", "--law", "table"], &bad);
+    assert_eq!(out.status.code(), Some(1));
+    assert_eq!(
+        String::from_utf8_lossy(&out.stderr).lines().next(),
+        Some(
+            "contact_eval: row 1: nu = 0.7: Poisson's ratio of a rolling contact outside [0, 0.5] (Kalker's table)"
+        )
+    );
+    for header in ["vrx,vrx", "speed"] {
+        let out = run(&["wrench"], &format!("{},{header}\n", INPUTS.join(",")));
+        assert_eq!(out.status.code(), Some(1), "{header}");
+    }
+}

@@ -20,11 +20,20 @@
 //! | `h,hdot` | approach (m; ≤ 0 is contact loss) and its rate (m/s; > 0 compression) |
 //! | `vx,vy,omega` | slip of B relative to A at the patch centre in the contact frame (m/s), spin about z (rad/s) |
 //! | → `N,Fx,Fy,Tz,a,b,e2` | normal force, friction force, drilling torque on B from A; semi-axes; e² |
+//! | optional: `G,nu` | rolling laws: combined shear modulus (Pa; default E*·(1 − ν): quasi-identical bodies of the contact's E*), Poisson ratio (default 0.3) ([`RollingSpec`]) |
+//! | optional: `vrx,vry` | rolling laws: the contact's rolling velocity in the contact frame (m/s; default 0: full slip) ([`RollingStep`], [`RollingVelocity`]) |
 //!
 //! Forms ([`Form`]): `fixed` builds a [`Contact`] with the exact eccentricity
 //! ([`shape::Newton`]) once; `varying` is a [`VaryingContact`], the eccentricity and every
 //! shape constant by [`shape::Table`] at each step. Laws ([`Law`]): `best` (the default),
-//! `simplified`, `pade`, `ellipsoid`, `coulomb`.
+//! `simplified`, `pade`, `ellipsoid`, `coulomb` (sliding: the optional columns are neither read
+//! nor checked, so every existing input gives the same bits); rolling ([`Rolling`] over the
+//! form's contact with friction `best`, its δ unused): `table`, `blend`, `fastsim`,
+//! `fastsim-16`. Errors of the optional columns name them: `G` ≤ 0
+//! [`Error::ShearModulusNotPositive`], `nu` outside [0, 0.5]
+//! [`Error::RollingPoissonRatioOutOfRange`], NaN or ±∞ [`Error::NonFinite`].
+//! [`DynContact::wrench_many`] runs a rolling law as a scalar loop at V = 0;
+//! [`DynContact::wrench_many_rolling`] takes the `vrx, vry` columns (a scalar loop, every law).
 //!
 //! # Example
 //!

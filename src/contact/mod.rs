@@ -12,7 +12,11 @@
 //!   wanders over a non-spherical surface). Each step solves the eccentricity with
 //!   [`shape::Table`] (no elliptic integral, fixed cost) and rebuilds the constants.
 //!
-//! Both are total: validated inputs in, finite wrench out. h ≤ 0 (contact loss) and N ≤ 0
+//! - [`Rolling`] ([`rolling`]): either form with a rolling law (Kalker's creep,
+//!   [`crate::friction::rolling`]) for the tangential part, from the slip and the contact's
+//!   rolling velocity.
+//!
+//! All are total: validated inputs in, finite wrench out. h ≤ 0 (contact loss) and N ≤ 0
 //! (a damped rebound) give the zero wrench.
 //!
 //! # Example
@@ -36,8 +40,8 @@
 //! # Ok::<(), contensou::Error>(())
 //! ```
 
-mod rolling;
-pub use rolling::{Rolling, RollingBase};
+pub mod rolling;
+pub use rolling::{FixedShapes, Rolling, RollingBase};
 
 use crate::friction::law::{PerCall, PerContact};
 use crate::friction::{Best, Constants, Explicit, Friction, FrictionLaw, Slip, Tangential};

@@ -1,13 +1,22 @@
 //! The per-step wrench of a rolling contact: the contact's normal law and patch, the tangential
 //! part by a rolling law ([`crate::friction::rolling`]) from the slip and the rolling velocity.
 //!
+//! # Conventions
+//!
+//! As the crate's ([`crate::guide`]): the contact frame has x along the major axis, y along
+//! the minor axis, z the normal from A into B; the slip (v_x, v_y, ω) is body B's velocity
+//! relative to A at the patch centre and their relative spin about z; the wrench is on B from
+//! A. The rolling velocity V ([`RollingVelocity`]) is the velocity of the contact point over
+//! both surfaces, relative to their material, averaged (a wheel rolling forward along +x: V
+//! along +x, material flows through the patch towards −x). Creepages are (v_x, v_y, ω)/|V| in
+//! the rolling frame, Kalker's signs ([`crate::friction::rolling`]).
+//!
 //! # Formula
 //!
 //! Per step: the patch (a ≥ b along the contact frame's x, y; N) from the contact's normal law
-//! as in [`Contact::wrench`]; the rolling velocity V = (V_x, V_y) ([`RollingVelocity`]) sets
-//! the **rolling frame**: x_r along V, (c_θ, s_θ) = V/|V| (θ = 0 when V = 0), y_r = z × x_r.
-//! In that frame the slip (v_x, v_y, ω) of B relative to A is
-//! (c_θ v_x + s_θ v_y, −s_θ v_x + c_θ v_y, ω), the rolling speed is |V| > 0, and the rolling law
+//! as in [`Contact::wrench`]; V = (V_x, V_y) sets the **rolling frame**: x_r along V,
+//! (c_θ, s_θ) = V/|V| (θ = 0 when V = 0), y_r = z × x_r. In that frame the slip is
+//! (c_θ v_x + s_θ v_y, −s_θ v_x + c_θ v_y, ω), the rolling speed |V| ≥ 0, and the rolling law
 //! `L` evaluates Kalker's creepages on the **aligned ellipse**
 //! ([`crate::friction::rolling::aligned_ellipse`]): semi-axis a_r = ab/√(b²c_θ² + a²s_θ²)
 //! along V (the patch's extent in that direction), b_r = ab/a_r across (same area, same
@@ -21,19 +30,24 @@
 //!
 //! Every validated input; total (no panic, finite output).
 //!
-//! - **V along an axis** (V_y = 0 or V_x = 0; every direction for a circle): the aligned
-//!   ellipse is the patch, the rolling law's own domain — exact (the law's error only).
-//!   `Rolling` over a fixed [`Contact`] caches the two shapes; otherwise the shape is built per
-//!   call.
-//! - **V skewed**: the aligned ellipse is an approximation of the patch (Kalker's theory and
-//!   the laws' data are for rolling along an axis): exact along both axes, continuous in θ.
-//!   The full slip stays exact (the real patch's).
+//! - **V along an axis** (V_y = 0 or V_x = 0; every direction for a circle) of a fixed
+//!   contact: the aligned ellipse is the patch, the rolling law's own domain, with the creep
+//!   shapes of both axes cached at construction: the rolling law's error only
+//!   (`RollingContact` on the patch: within 8.7e-16 fN along +x, 1.5e-7 along the other
+//!   directions, `host-tests/rolling_wrench.rs`).
+//! - **V skewed** (and every step of a varying contact): the creep shape of a_r/b_r per call
+//!   from the contact's [`ShapePath`] (within 9.2e-4 fN / fNc of the `f64` build,
+//!   [`Rolling::wrench_aligned`]). The aligned ellipse itself is the approximation (Kalker's
+//!   theory and the laws' data are for rolling along an axis): exact along both axes,
+//!   continuous in θ (3.7e-8 fN across the axes), not measured in between (the exact
+//!   reference rolls along an axis only). The full slip stays exact (the real patch's).
 //! - **V = 0** (and creepage → ∞): the full slip of `best` on the real patch, in every
-//!   direction (`table`, `blend`: exactly, up to rounding; FASTSIM: its grid's full slip on the
-//!   patch, 7.4e-3 fN from the exact integrals on 32 × 32).
+//!   direction (`table`, `blend`: within 6.4e-16 fN of [`Contact::wrench`] with δ = 0; FASTSIM:
+//!   its grid's full slip on the patch, 4.8e-2 fN on 16 × 16 at a/b ≈ 4.3).
+//! - V < 0 along x is the half-turn of the rolling frame (not `RollingSlip`'s mirror; the
+//!   two agree within 1.5e-7 fN, `best`'s own mirror symmetry).
 //! - h ≤ 0 (apart), N ≤ 0, f = 0: zero tangential wrench. The contact's δ is not used.
-//! - a_r/b_r outside [0.01, 100] (patches more elongated than the laws' domain): the shape of
-//!   the nearer end (Kalker's asymptotes, the end tables).
+//! - a_r/b_r outside [0.01, 100]: the shape of the nearer end.
 //!
 //! # Example
 //!
@@ -62,16 +76,23 @@
 //!
 //! # Cost
 //!
-//! A fixed contact rolling along an axis (or a circle): the normal law, one `best` traction,
-//! the law's call, two rotations. Otherwise also the creep shape of a_r/b_r
-//! ([`RollingShape::new`], `f64`) per call. Measured: `bench-results/qemu.csv`, stage
-//! `rolling`, methods `wrench-*`; host: the README's rolling section.
+//! Cortex-M4F, `f32`, `table`, 64 creep states (`bench-results/qemu.csv`, stage `rolling`):
+//! fixed contact, V along an axis **899** instructions (`RollingContact::wrench` alone: 797);
+//! V skewed 10,082 (the creep shape per call: 435 table values, 14 `exp`); varying contact
+//! 10,345. Host (x86-64, criterion, per call): 377 ns, 1.26 µs, 1.55 µs (`RollingContact`
+//! 338 ns in the same run). Per contact: two [`RollingShape`]s (1,848 bytes each in `f32`)
+//! and a [`ShapePath`] (fixed), a [`ShapePath`] (varying).
+//!
+//! # References
+//!
+//! Kalker, *Three-dimensional elastic bodies in rolling contact* (1990): the theory the laws
+//! approximate, for rolling along a semi-axis.
 
 use core::marker::PhantomData;
 
 use super::{Contact, VaryingContact, Wrench};
 use crate::friction::rolling::{
-    Creep, Elasticity, Input, RollingLaw, RollingShape, RollingSlip, RollingVelocity,
+    Creep, Elasticity, Input, RollingLaw, RollingShape, RollingSlip, RollingVelocity, ShapePath,
     aligned_ellipse,
 };
 use crate::friction::{Best, Constants, FrictionLaw, Slip, SlipState};
@@ -89,9 +110,18 @@ pub trait RollingBase<T: Real> {
     fn cache(&self, elasticity: &Elasticity<T>) -> Self::Cache;
 }
 
+/// A fixed contact's creep shapes: rolling along x (a/b) and along y (b/a), and the path
+/// between them for a skewed rolling velocity.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct FixedShapes<T> {
+    axes: [RollingShape<T>; 2],
+    path: ShapePath<T>,
+}
+
 impl<T: Real, N, D> RollingBase<T> for Contact<T, N, D, Best> {
-    type Cache = [RollingShape<T>; 2];
-    /// The creep shapes for rolling along x (a/b) and along y (b/a); one for a circle.
+    type Cache = FixedShapes<T>;
+    /// The creep shapes for rolling along x (a/b) and along y (b/a) (one for a circle), and
+    /// the path between them ([`ShapePath`]).
     fn cache(&self, elasticity: &Elasticity<T>) -> Self::Cache {
         let m1 = self.constants.m1();
         // a/b = 1/√m₁
@@ -102,13 +132,23 @@ impl<T: Real, N, D> RollingBase<T> for Contact<T, N, D, Best> {
         } else {
             RollingShape::new(T::ONE / r, elasticity.nu())
         };
-        [along_x, along_y]
+        FixedShapes {
+            axes: [along_x, along_y],
+            path: ShapePath::new(-r.ln(), r.ln(), elasticity.nu()),
+        }
     }
 }
 
 impl<T: Real, D> RollingBase<T> for VaryingContact<T, D, Best> {
-    type Cache = ();
-    fn cache(&self, _: &Elasticity<T>) -> Self::Cache {}
+    type Cache = ShapePath<T>;
+    /// The path over every aligned ratio ([`ShapePath`]).
+    fn cache(&self, elasticity: &Elasticity<T>) -> Self::Cache {
+        ShapePath::new(
+            T::from_f64(-libm::log(100.0)),
+            T::from_f64(libm::log(100.0)),
+            elasticity.nu(),
+        )
+    }
 }
 
 /// A rolling contact at the wrench level: a contact `C` ([`Contact`] or [`VaryingContact`],
@@ -182,12 +222,23 @@ impl<T: Real, C: RollingBase<T>, L: RollingLaw> Rolling<T, C, L> {
 #[inline(always)]
 fn direction<T: Real>(v: RollingVelocity<T>) -> (T, T, T) {
     let m = v.vx.abs().max(v.vy.abs());
-    if !(m > T::ZERO) {
+    if m <= T::ZERO {
         return (T::ONE, T::ZERO, T::ZERO);
     }
     let (ux, uy) = (v.vx / m, v.vy / m);
     let n = (ux * ux + uy * uy).sqrt();
     (ux / n, uy / n, m * n)
+}
+
+/// Where the creep shape of a step comes from.
+#[derive(Clone, Copy)]
+enum Shapes<'a, T> {
+    /// Cached and exact (rolling along an axis, or a circle).
+    One(&'a RollingShape<T>),
+    /// The aligned ellipse's shape from the contact's path ([`ShapePath::shape`]), per call.
+    Path(&'a ShapePath<T>),
+    /// The aligned ellipse's own shape, built per call in `f64` ([`RollingShape::new`]).
+    Build,
 }
 
 /// What one step needs besides the creep shape: the patch, f, E*-free parts.
@@ -201,30 +252,55 @@ impl<T: Real, N: NormalLaw<T>, D: Damping<T>, L: RollingLaw> Rolling<T, Contact<
     /// One step: approach h (m), its rate ḣ (m/s, > 0 compression), the slip of B relative to
     /// A and the rolling velocity, both in the contact frame → the wrench on B from A (contact
     /// frame, x the major axis). Total.
+    ///
+    /// The creep shape: cached along the axes (and for a circle); for a skewed V from the
+    /// contact's [`ShapePath`] per call (see the module docs; [`Rolling::wrench_aligned`]
+    /// builds it in `f64` instead).
     #[inline]
     pub fn wrench(&self, h: T, hdot: T, slip: Slip<T>, v: RollingVelocity<T>) -> Wrench<T, ()> {
+        self.fixed(h, hdot, slip, v, Shapes::Path(&self.cache.path))
+    }
+
+    /// [`Rolling::wrench`] with the aligned ellipse's creep shape built per call in `f64`
+    /// ([`RollingShape::new`]) for a skewed V (≈ 5 µs on a host, ≈ 3e5 M4F instructions): the
+    /// reference [`ShapePath`] is measured against.
+    pub fn wrench_aligned(
+        &self,
+        h: T,
+        hdot: T,
+        slip: Slip<T>,
+        v: RollingVelocity<T>,
+    ) -> Wrench<T, ()> {
+        self.fixed(h, hdot, slip, v, Shapes::Build)
+    }
+
+    /// The fixed contact's step: the cached shape along an axis (or for a circle), else
+    /// `skewed`.
+    #[inline(always)]
+    fn fixed(
+        &self,
+        h: T,
+        hdot: T,
+        slip: Slip<T>,
+        v: RollingVelocity<T>,
+        skewed: Shapes<'_, T>,
+    ) -> Wrench<T, ()> {
+        let frame = direction(v);
+        let (cx, sx, _) = frame;
+        let [along_x, along_y] = &self.cache.axes;
+        let shapes = if sx == T::ZERO || along_x.rho == T::ONE {
+            Shapes::One(along_x)
+        } else if cx == T::ZERO {
+            Shapes::One(along_y)
+        } else {
+            skewed
+        };
         let c = &self.contact;
         let patch = c.normal.damped_patch(h, hdot, &c.damping);
         let step = Step::of(patch, c.friction.coefficient());
-        let (cx, sx, speed) = direction(v);
-        let circle = self.cache[0].rho == T::ONE;
-        let cached = if sx == T::ZERO || circle {
-            Some(&self.cache[0])
-        } else if cx == T::ZERO {
-            Some(&self.cache[1])
-        } else {
-            None
-        };
         let prepared = &c.prepared;
         let full_slip = |st: &SlipState<T>| Best::traction_prepared(prepared, st).0;
-        tangential::<T, L>(
-            &step,
-            cached,
-            self.elasticity,
-            (cx, sx, speed),
-            slip,
-            full_slip,
-        )
+        tangential::<T, L>(&step, shapes, self.elasticity, frame, slip, full_slip)
     }
 }
 
@@ -248,7 +324,9 @@ impl<T: Real, D: Damping<T>, L: RollingLaw> Rolling<T, VaryingContact<T, D, Best
         let patch = normal.damped_patch(h, hdot, damping);
         let step = Step::of(patch, friction.coefficient());
         let full_slip = |st: &SlipState<T>| Best::traction(&constants, st).0;
-        tangential::<T, L>(&step, None, self.elasticity, direction(v), slip, full_slip)
+        let frame = direction(v);
+        let shapes = Shapes::Path(&self.cache);
+        tangential::<T, L>(&step, shapes, self.elasticity, frame, slip, full_slip)
     }
 }
 
@@ -269,7 +347,7 @@ impl<T: Real> Step<T> {
 #[inline(always)]
 fn tangential<T: Real, L: RollingLaw>(
     step: &Step<T>,
-    cached: Option<&RollingShape<T>>,
+    shapes: Shapes<'_, T>,
     elasticity: Elasticity<T>,
     (cx, sx, speed): (T, T, T),
     slip: Slip<T>,
@@ -284,7 +362,7 @@ fn tangential<T: Real, L: RollingLaw>(
         patch,
         branch: (),
     };
-    if !(step.fn_ > T::ZERO) {
+    if step.fn_ <= T::ZERO {
         return zero;
     }
     let (a, b) = (patch.a, patch.b);
@@ -298,15 +376,6 @@ fn tangential<T: Real, L: RollingLaw>(
     };
     let s = rs.scaled(c);
     let w = c * s.omega;
-    let built;
-    let shape = match cached {
-        Some(shape) => shape,
-        None => {
-            let (ar, br) = aligned_ellipse(a, b, cx, sx);
-            built = RollingShape::new(ar / br, elasticity.nu());
-            &built
-        }
-    };
     let fs = if L::FULL_SLIP {
         // full slip on the real patch: the slip direction back in the contact frame
         let (lx, ly) = (cx * s.vx - sx * s.vy, sx * s.vx + cx * s.vy);
@@ -322,8 +391,8 @@ fn tangential<T: Real, L: RollingLaw>(
         Creep::default()
     };
     let kappa = elasticity.g() * c * c / step.fn_;
-    let input = Input {
-        contact: shape,
+    let input = |contact| Input {
+        contact,
         kappa: if kappa.is_finite() { kappa } else { T::MAX },
         vx: s.vx,
         vy: s.vy,
@@ -331,7 +400,17 @@ fn tangential<T: Real, L: RollingLaw>(
         v: s.v,
         full_slip: fs,
     };
-    let cr = L::creep(&input);
+    let cr = match shapes {
+        Shapes::One(shape) => L::creep(&input(shape)),
+        Shapes::Path(path) => {
+            let (ar, br) = aligned_ellipse(a, b, cx, sx);
+            L::creep(&input(&path.shape(ar / br)))
+        }
+        Shapes::Build => {
+            let (ar, br) = aligned_ellipse(a, b, cx, sx);
+            L::creep(&input(&RollingShape::new(ar / br, elasticity.nu())))
+        }
+    };
     let (fx, fy) = (cr.fx * step.fn_, cr.fy * step.fn_);
     Wrench {
         fx: cx * fx - sx * fy,
