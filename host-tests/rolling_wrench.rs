@@ -267,8 +267,10 @@ fn continuous_in_the_rolling_direction() {
 
 /// Passive (F·v + T_z ω ≤ 1e-12 fN|v|…) and |F| ≤ fN (1 + 1e-12) on 1e5 random states per law
 /// (fixed contacts of three shapes, a varying contact; rolling velocity of any direction,
-/// slip from 1e-6 of V to 1e3 V, V = 0 included).
+/// slip from 1e-6 of V to 1e3 V, V = 0 included). Release only (`.ci/run`: `cargo test
+/// --release --test rolling_wrench -- --include-ignored`, ≈ 6 s).
 #[test]
+#[cfg_attr(debug_assertions, ignore = "release only (cargo test --release)")]
 fn passive_and_bounded_on_random_states() {
     fn check<L: RollingLaw>(states: usize, seed: u64) {
         let mut rng = Rng(seed);
