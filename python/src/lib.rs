@@ -490,6 +490,7 @@ impl Contact {
 fn contensou_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(wrench, m)?)?;
     m.add_function(wrap_pyfunction!(rolling::rolling, m)?)?;
+    m.add_class::<rolling::RollingContact>()?;
     m.add("ROLLING_INPUTS", ROLLING_INPUTS.to_vec())?;
     m.add("ROLLING_EVAL_INPUTS", rolling::INPUTS.to_vec())?;
     m.add("ROLLING_EVAL_OUTPUTS", rolling::OUTPUTS.to_vec())?;

@@ -159,3 +159,45 @@ def test_bad_options():
         contensou.rolling(**GOOD, law="best")
     with pytest.raises(ValueError, match="shape mismatch"):
         contensou.rolling(**{**GOOD, "xi": np.zeros(3), "eta": np.zeros(4)})
+
+
+@pytest.mark.parametrize("precision", ["f64", "f32"])
+@pytest.mark.parametrize("law", contensou.ROLLING_LAWS)
+def test_rolling_contact_is_the_per_row_function(law, precision):
+    """RollingContact(a/b, G, nu) built once, wrench(a, b, f, N, V, xi, eta, phi) on arrays: the
+    bits of contensou.rolling on the same rows (whose a/b is the contact's)."""
+    dtype = DTYPES[precision]
+    rows = rolling_rows(200, seed=5, dtype=dtype)
+    ratio, g, nu = 1.7, 7e10, 0.27
+    rows["a"] = (rows["b"] * dtype(ratio)).astype(dtype)
+    keep = rows["a"] / rows["b"] == dtype(ratio)  # the rows whose a / b rounds to the contact's
+    rows = {k: v[keep] for k, v in rows.items()}
+    assert len(rows["a"]) > 100
+    rows["G"] = np.full(len(rows["a"]), g, dtype=dtype)
+    rows["nu"] = np.full(len(rows["a"]), nu, dtype=dtype)
+    want = contensou.rolling(**rows, law=law, precision=precision)
+    contact = contensou.RollingContact(ratio, g, nu, law=law, precision=precision)
+    assert contact.law == law and contact.precision == precision
+    got = contact.wrench(*(rows[k] for k in ("a", "b", "f", "N", "V", "xi", "eta", "phi")))
+    uint = UINTS[precision]
+    for k in OUTPUTS:
+        assert np.array_equal(np.asarray(got[k]).view(uint), want[k].view(uint)), k
+    one = contact.wrench(rows["a"][3], rows["b"][3], rows["f"][3], rows["N"][3], rows["V"][3],
+                         rows["xi"][3], rows["eta"][3], rows["phi"][3])
+    assert np.ndim(one["Mz"]) == 0 and one["Mz"] == want["Mz"][3]
+
+
+def test_rolling_contact_errors():
+    with pytest.raises(ValueError, match=r"^nu = 0.6: .*Poisson"):
+        contensou.RollingContact(1.0, 8e10, 0.6)
+    with pytest.raises(ValueError, match=r"^G = 0: shear modulus"):
+        contensou.RollingContact(1.0, 0.0, 0.3)
+    with pytest.raises(ValueError, match=r"^a_over_b = 200: .*ratio"):
+        contensou.RollingContact(200.0, 8e10, 0.3)
+    with pytest.raises(ValueError, match="law: unknown 'best'"):
+        contensou.RollingContact(1.0, 8e10, 0.3, law="best")
+    contact = contensou.RollingContact(1.5, 8e10, 0.28)
+    with pytest.raises(ValueError, match=r"^phi = inf at index 1: .*finite"):
+        contact.wrench(6e-3, 4e-3, 0.3, 8e4, 30.0, 1e-3, 0.0, np.array([0.0, np.inf]))
+    with pytest.raises(ValueError, match=r"^b = -0.004 at index \(\): length must be positive"):
+        contact.wrench(6e-3, -4e-3, 0.3, 8e4, 30.0, 1e-3, 0.0, 0.0)
