@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Builds the C API (run from anywhere):
 #   host:  capi/target/release/libcontensou_capi.a (staticlib) and .so (cdylib),
-#          capi/target/release/wrench_eval (the C twin of `contact_eval wrench`)
+#          capi/target/release/wrench_eval and rolling_eval (the C twins of `contact_eval
+#          wrench` and `contact_eval rolling`)
 #   MCU:   capi/target/thumbv7em-none-eabihf/release/libcontensou_capi.a
 # and checks that the committed header is what cbindgen generates and that it compiles as
 # C99 and C++17 with -Wall -Wextra -Werror -pedantic. `--no-check` skips the header checks.
@@ -33,11 +34,11 @@ cargo rustc --release --lib --crate-type staticlib,cdylib
 echo "capi: thumbv7em-none-eabihf staticlib"
 cargo rustc --release --lib --target thumbv7em-none-eabihf --crate-type staticlib
 
-if [[ -f examples/wrench_eval.c ]]; then
-    echo "capi: examples/wrench_eval.c against the host staticlib"
-    gcc -std=c99 -O2 -Wall -Wextra -Werror -pedantic -Iinclude examples/wrench_eval.c \
-        target/release/libcontensou_capi.a -lpthread -ldl -lm -o target/release/wrench_eval
-fi
+for twin in wrench_eval rolling_eval; do
+    echo "capi: examples/$twin.c against the host staticlib"
+    gcc -std=c99 -O2 -Wall -Wextra -Werror -pedantic -Iinclude "examples/$twin.c" \
+        target/release/libcontensou_capi.a -lpthread -ldl -lm -o "target/release/$twin"
+done
 
 echo "capi: tests/errors.c (the error paths from C), plain and under ASan + UBSan"
 san=(-fsanitize=address,undefined -fno-sanitize-recover=all)
@@ -55,8 +56,10 @@ if nm -D --defined-only target/release/libcontensou_capi.so | awk '{ print $3 }'
     echo "capi: the cdylib exports symbols outside contensou_* (above)" >&2
     exit 1
 fi
-gcc -std=c99 -g "${san[@]}" -Iinclude examples/wrench_eval.c target/release/libcontensou_capi.a \
-    -lpthread -ldl -lm -o target/release/wrench_eval-san
+for twin in wrench_eval rolling_eval; do
+    gcc -std=c99 -g "${san[@]}" -Iinclude "examples/$twin.c" target/release/libcontensou_capi.a \
+        -lpthread -ldl -lm -o "target/release/$twin-san"
+done
 
 echo "capi: the README's C example compiles (C99 and C++17) and runs"
 readme="$(mktemp -d)"

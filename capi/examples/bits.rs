@@ -4,8 +4,14 @@
 //!   friction and slip regime, contact loss, valid extremes; runs of rows that change only
 //!   P, Q so that the C twin takes its `set_curvatures` path in the varying form);
 //! - `bits bad` prints rows each ending in one bad row, `KIND<TAB>row`, for the error paths;
+//! - `bits rolling-gen` prints rows of `contact_eval rolling` (header + valid states: shapes
+//!   a/b from 0.012 to 86, every regime from pure rolling to full slip, V < 0, V = 0, N ≤ 0,
+//!   f = 0, ν at both ends); `bits rolling-bad` the bad rows of its error paths (as `bad`);
+//! - `bits wrench-rolling-gen` prints rows of the wrench contract with the optional rolling
+//!   columns `G,nu,vrx,vry` (contact blocks, rolling velocities from 0 to past the slip);
 //! - `bits check f32|f64 A.csv B.csv` parses every field of both outputs in that precision
-//!   and requires the same bits (and the same header and row count).
+//!   and requires the same bits (and the same header — the wrench contract's or
+//!   `contact_eval rolling`'s — and row count).
 use std::process::ExitCode;
 use std::str::FromStr;
 
@@ -51,7 +57,7 @@ macro_rules! pick {
     }};
 }
 
-fn row(v: &[f64; 11]) -> String {
+fn row(v: &[f64]) -> String {
     v.iter()
         .map(|x| format!("{x:e}"))
         .collect::<Vec<_>>()
@@ -135,6 +141,126 @@ fn generate() {
     }
 }
 
+/// The columns of `contact_eval rolling`.
+const ROLLING_INPUTS: [&str; 10] = ["a", "b", "G", "nu", "f", "N", "V", "xi", "eta", "phi"];
+const ROLLING_OUTPUTS: [&str; 3] = ["Fx", "Fy", "Mz"];
+
+fn rolling_generate() {
+    let mut rng = Rng(20);
+    println!("{}", ROLLING_INPUTS.join(","));
+    let fixed: [[f64; 10]; 10] = [
+        [6e-3, 4e-3, 8e10, 0.28, 0.3, 8e4, 30.0, 1e-3, 0.0, 0.0],
+        [6e-3, 4e-3, 8e10, 0.28, 0.3, 8e4, 0.0, 1e-3, 2e-3, 5.0],
+        [6e-3, 4e-3, 8e10, 0.28, 0.3, 8e4, -30.0, 1e-3, 2e-3, 5.0],
+        [4e-3, 6e-3, 8e10, 0.0, 0.3, 8e4, 30.0, 0.0, 0.0, 0.0],
+        [4e-3, 6e-3, 8e10, 0.5, 0.0, 8e4, 30.0, 0.1, 0.0, 0.0],
+        [8e-3, 4e-3, 8.2e10, 0.28, 0.3, -1.0, 1.0, 0.1, 0.1, 10.0],
+        [8e-3, 4e-3, 8.2e10, 0.28, 0.3, 0.0, 1.0, 0.1, 0.1, 10.0],
+        [8e-3, 4e-3, 8.2e10, 0.28, 0.3, 1e5, 1.0, 0.0, 0.0, 240.0],
+        [1e-2, 1e-4, 1e9, 0.3, 1.0, 1e3, 1e-3, -1e-6, 1e-6, -1e-3],
+        [1e-4, 1e-2, 1e9, 0.3, 1.0, 1e3, 1e3, 1e30, -1e30, 1e30],
+    ];
+    for v in &fixed {
+        println!("{}", row(v));
+    }
+    // Random blocks: one contact (a/b, G, ν), then 6 states (the size c and the slip vary).
+    for _ in 0..250 {
+        let ratio = rng.log(0.012, 60.0);
+        let g = rng.log(1e6, 1e11);
+        let nu = pick!(rng, 0.0, 0.5, rng.unit() * 0.5, rng.unit() * 0.5);
+        for k in 0..6 {
+            let c = rng.log(1e-4, 1e-2);
+            let (a, b) = if k == 5 {
+                (c * 1.2 * ratio.sqrt(), c / (1.2 * ratio.sqrt())) // a/b not the contact's
+            } else {
+                (c * ratio.sqrt(), c / ratio.sqrt())
+            };
+            let f = pick!(rng, 0.0, rng.log(1e-2, 1.0), rng.log(1e-2, 1.0));
+            let n = pick!(rng, -1.0, 0.0, rng.log(1e-2, 1e6), rng.log(1e-2, 1e6));
+            let v = pick!(
+                rng,
+                0.0,
+                rng.signed(1e-3, 1e2),
+                rng.signed(1e-3, 1e2),
+                rng.log(1e-3, 1e2)
+            );
+            // creepages from 1e-3 of saturation (≈ fN/(Gc²)) to far past it
+            let sat = (f.max(1e-2) * n.abs().max(1.0) / (g * c * c)).max(1e-9);
+            let xi = pick!(rng, 0.0, rng.signed(1e-3 * sat, 1e2 * sat));
+            let eta = pick!(rng, 0.0, rng.signed(1e-3 * sat, 1e2 * sat));
+            let phi = pick!(rng, 0.0, rng.signed(1e-3 * sat / c, 1e2 * sat / c));
+            println!("{}", row(&[a, b, g, nu, f, n, v, xi, eta, phi]));
+        }
+    }
+}
+
+/// Rows of the wrench contract with the optional rolling columns `G,nu,vrx,vry`: contact
+/// blocks (a spec, G, ν) then steps with a rolling velocity from 0 to well past the slip.
+fn wrench_rolling_generate() {
+    let mut rng = Rng(21);
+    println!("{},G,nu,vrx,vry", INPUTS.join(","));
+    for _ in 0..200 {
+        let estar = rng.log(1e8, 1e12);
+        let cd = pick!(rng, 0.0, rng.log(1e-3, 10.0));
+        let f = pick!(rng, 0.0, rng.log(1e-2, 1.0), rng.log(1e-2, 1.0));
+        let delta = pick!(rng, 0.0, rng.log(1e-6, 1e-2));
+        let g = estar * pick!(rng, 0.7, rng.log(0.1, 1.0));
+        let nu = pick!(rng, 0.0, 0.5, rng.unit() * 0.5);
+        for _ in 0..8 {
+            let q = rng.log(1e-1, 1e4);
+            let ratio = pick!(rng, 1.0, rng.log(2e-4, 1.0), rng.log(0.05, 1.0));
+            let h = pick!(rng, -1e-6, rng.log(1e-12, 1e-3), rng.log(1e-9, 1e-4));
+            let hdot = pick!(rng, 0.0, rng.signed(1e-6, 1.0));
+            let vx = pick!(rng, 0.0, rng.signed(1e-7, 1.0), rng.signed(1e-5, 1e-1));
+            let vy = pick!(rng, 0.0, rng.signed(1e-7, 1.0), rng.signed(1e-5, 1e-1));
+            let omega = pick!(rng, 0.0, rng.signed(1e-3, 1e4), rng.signed(1e-1, 1e3));
+            let vrx = pick!(rng, 0.0, rng.signed(1e-4, 30.0), rng.signed(1e-2, 10.0));
+            let vry = pick!(rng, 0.0, 0.0, rng.signed(1e-4, 30.0));
+            println!(
+                "{}",
+                row(&[
+                    ratio * q,
+                    q,
+                    estar,
+                    cd,
+                    f,
+                    delta,
+                    h,
+                    hdot,
+                    vx,
+                    vy,
+                    omega,
+                    g,
+                    nu,
+                    vrx,
+                    vry
+                ])
+            );
+        }
+    }
+}
+
+/// Valid rows, then one bad row (`kind<TAB>line`), for the rolling error paths.
+fn rolling_bad() {
+    let good = "6e-3,4e-3,8e10,0.28,0.3,8e4,30,1e-3,0,1";
+    let cases = [
+        ("g-neg", "6e-3,4e-3,-8e10,0.28,0.3,8e4,30,1e-3,0,1"),
+        ("g-inf", "6e-3,4e-3,inf,0.28,0.3,8e4,30,1e-3,0,1"),
+        ("nu-big", "6e-3,4e-3,8e10,0.6,0.3,8e4,30,1e-3,0,1"),
+        ("nu-neg", "6e-3,4e-3,8e10,-0.1,0.3,8e4,30,1e-3,0,1"),
+        ("ratio", "6e-3,4e-5,8e10,0.28,0.3,8e4,30,1e-3,0,1"),
+        ("f-neg", "6e-3,4e-3,8e10,0.28,-0.3,8e4,30,1e-3,0,1"),
+        ("n-inf", "6e-3,4e-3,8e10,0.28,0.3,inf,30,1e-3,0,1"),
+        ("xi-inf", "6e-3,4e-3,8e10,0.28,0.3,8e4,30,inf,0,1"),
+        ("phi-inf", "6e-3,4e-3,8e10,0.28,0.3,8e4,30,1e-3,0,-inf"),
+        ("text", "6e-3,4e-3,8e10,0.28,0.3,8e4,30,abc,0,1"),
+        ("fields", "6e-3,4e-3,8e10,0.28,0.3,8e4,30,1e-3,0"),
+    ];
+    for (kind, line) in cases {
+        println!("{kind}\t{good}\n{kind}\t\n{kind}\t{good}\n{kind}\t{line}\n{kind}\t{good}");
+    }
+}
+
 /// Files with valid rows, then one bad row (`kind<TAB>line`), for the error paths.
 fn bad() {
     let good = "50,50,1.15e11,0,0.1,1e-4,1e-6,0,0.01,0,50";
@@ -181,10 +307,16 @@ fn check<T: FromStr + Real>(a: &str, b: &str) -> ExitCode {
     };
     let (la, lb): (Vec<&str>, Vec<&str>) = (a.lines().collect(), b.lines().collect());
     let header = format!("{},{}", INPUTS.join(","), OUTPUTS.join(","));
-    if la.first() != Some(&header.as_str()) || lb.first() != Some(&header.as_str()) {
-        eprintln!("bits check: header differs from `{header}`");
+    let rolling = format!("{},{}", ROLLING_INPUTS.join(","), ROLLING_OUTPUTS.join(","));
+    let first = la.first().copied().unwrap_or_default();
+    // the wrench contract may add optional rolling columns between its inputs and outputs
+    let optional =
+        first.starts_with(INPUTS.join(",").as_str()) && first.ends_with(OUTPUTS.join(",").as_str());
+    if !(first == header || first == rolling || optional) || lb.first() != Some(&first) {
+        eprintln!("bits check: header differs from `{header}` or `{rolling}`");
         return ExitCode::from(1);
     }
+    let fields = first.split(',').count();
     if la.len() != lb.len() {
         eprintln!("bits check: {} rows against {}", la.len() - 1, lb.len() - 1);
         return ExitCode::from(1);
@@ -192,7 +324,7 @@ fn check<T: FromStr + Real>(a: &str, b: &str) -> ExitCode {
     let mut bad = 0;
     for (k, (x, y)) in la.iter().zip(&lb).enumerate().skip(1) {
         match (parse_all::<T>(x), parse_all::<T>(y)) {
-            (Ok(u), Ok(v)) if u == v && u.len() == INPUTS.len() + OUTPUTS.len() => {}
+            (Ok(u), Ok(v)) if u == v && u.len() == fields => {}
             _ => {
                 bad += 1;
                 if bad <= 5 {
@@ -214,6 +346,9 @@ fn main() -> ExitCode {
     match args.first().map(String::as_str) {
         Some("gen") => generate(),
         Some("bad") => bad(),
+        Some("rolling-gen") => rolling_generate(),
+        Some("rolling-bad") => rolling_bad(),
+        Some("wrench-rolling-gen") => wrench_rolling_generate(),
         Some("check") if args.len() == 4 => {
             return match args[1].as_str() {
                 "f32" => check::<f32>(&args[2], &args[3]),
@@ -221,7 +356,7 @@ fn main() -> ExitCode {
             };
         }
         _ => {
-            eprintln!("usage: bits gen | bad | check f32|f64 A B");
+            eprintln!("usage: bits gen | bad | rolling-gen | rolling-bad | wrench-rolling-gen | check f32|f64 A B");
             return ExitCode::from(2);
         }
     }

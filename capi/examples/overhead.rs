@@ -106,7 +106,9 @@ fn main() {
     );
     run!(
         f32,
-        contensou_contact_f32 { opaque: [0; CONTENSOU_CONTACT_F32_SIZE / 8] },
+        contensou_contact_f32 {
+            opaque: [0; CONTENSOU_CONTACT_F32_SIZE / 8]
+        },
         contensou_contact_new_f32,
         contensou_contact_wrench_f32,
         rust_step_f32,
@@ -115,7 +117,9 @@ fn main() {
     );
     run!(
         f64,
-        contensou_contact_f64 { opaque: [0; CONTENSOU_CONTACT_F64_SIZE / 8] },
+        contensou_contact_f64 {
+            opaque: [0; CONTENSOU_CONTACT_F64_SIZE / 8]
+        },
         contensou_contact_new_f64,
         contensou_contact_wrench_f64,
         rust_step_f64,

@@ -1,11 +1,14 @@
 /*
  * wrench_eval: the C twin of `contact_eval wrench` (the wrench contract of contensou::dynamic).
  *
- *   wrench_eval [--law best|simplified|pade|ellipsoid|coulomb] [--form fixed|varying]
- *               [--precision f32|f64] < in.csv > out.csv
+ *   wrench_eval [--law best|simplified|pade|ellipsoid|coulomb|table|blend|fastsim|fastsim-16]
+ *               [--form fixed|varying] [--precision f32|f64] < in.csv > out.csv
  *
- * stdin: the header row P,Q,estar,cd,f,delta,h,hdot,vx,vy,omega then one state per row; stdout:
- * the inputs echoed, then N,Fx,Fy,Tz,a,b,e2. Floats print with %.9g (f32) or %.17g (f64), so
+ * stdin: the header row P,Q,estar,cd,f,delta,h,hdot,vx,vy,omega, then any of the optional
+ * rolling columns G,nu,vrx,vry (each at most once, any order), then one state per row; stdout:
+ * the inputs echoed, then N,Fx,Fy,Tz,a,b,e2. Without optional columns the calls are
+ * contensou_contact_new_* / _wrench_*; with them, contensou_contact_new_rolling_* (G, nu; NULL
+ * when absent) and contensou_contact_wrench_rolling_* (vrx, vry; 0 when absent). Floats print with %.9g (f32) or %.17g (f64), so
  * they read back to the same bits. Blank lines are skipped (row K is line K + 1). The first bad
  * row stops the run: "wrench_eval: row K: column = value: message (status code NAME)" on
  * stderr, exit 1. Usage errors exit 2. Defaults: best, fixed, f64 (as contact_eval).
@@ -18,49 +21,21 @@
 #include <string.h>
 
 #include "contensou.h"
+#include "csv_fields.h"
 
 #define COLUMNS 11
+#define OPTIONAL 4
+#define MAX_FIELDS (COLUMNS + OPTIONAL)
 #define OUTPUTS 7
 static const char *const INPUT_NAMES = "P,Q,estar,cd,f,delta,h,hdot,vx,vy,omega";
 static const char *const OUTPUT_NAMES = "N,Fx,Fy,Tz,a,b,e2";
+/* The optional columns, in contensou_column order from CONTENSOU_COLUMN_G. */
+static const char *const OPTIONAL_NAMES[OPTIONAL] = {"G", "nu", "vrx", "vry"};
 
 static int usage(const char *why) {
     fprintf(stderr, "wrench_eval: %s\nusage: wrench_eval [--law NAME] [--form fixed|varying] "
                     "[--precision f32|f64] < in.csv > out.csv\n", why);
     return 2;
-}
-
-/* Strips leading and trailing blanks in place. */
-static char *trim(char *s) {
-    char *end;
-    while (*s == ' ' || *s == '\t' || *s == '\r') s++;
-    end = s + strlen(s);
-    while (end > s && (end[-1] == ' ' || end[-1] == '\t' || end[-1] == '\r' || end[-1] == '\n')) *--end = '\0';
-    return s;
-}
-
-/* Splits a row into exactly COLUMNS trimmed fields; returns the number of fields found. */
-static int split(char *line, char *fields[COLUMNS]) {
-    int n = 0;
-    char *p = line;
-    for (;;) {
-        char *comma = strchr(p, ',');
-        if (comma) *comma = '\0';
-        if (n < COLUMNS) fields[n] = trim(p);
-        n++;
-        if (!comma) return n;
-        p = comma + 1;
-    }
-}
-
-/* A field as a number: NULL if it parses (the whole field), else why not (as contact_eval:
- * NaN is refused). */
-static const char *parse(const char *field, double *out, int f32) {
-    char *end;
-    if (*field == '\0') return "not a number";
-    if (f32) *out = strtof(field, &end); else *out = strtod(field, &end);
-    if (*end != '\0') return "not a number";
-    return *out == *out ? NULL : "not a number (NaN)";
 }
 
 static int fail_row(long row, const char *column, const char *value, contensou_status s) {
@@ -73,18 +48,22 @@ int main(int argc, char **argv) {
     contensou_law law = CONTENSOU_LAW_BEST;
     contensou_form form = CONTENSOU_FORM_FIXED;
     int f32 = 0, i;
-    static char line[4096];
+    static char line[4096], header[4096];
     static contensou_contact_f32 c32; /* caller-owned storage: static, no allocation */
     static contensou_contact_f64 c64;
-    double prev[COLUMNS];
-    int have_prev = 0;
+    double prev[MAX_FIELDS];
+    int have_prev = 0, fields_per_row = COLUMNS, has_contact_option = 0, has_step_option = 0;
+    /* field_of[k]: the field holding optional column k, or -1 */
+    int field_of[OPTIONAL] = {-1, -1, -1, -1};
     long row = 0;
 
     for (i = 1; i < argc; i += 2) {
         const char *opt = argv[i], *val = i + 1 < argc ? argv[i + 1] : NULL;
         if (!val) return usage("option without a value");
         if (strcmp(opt, "--law") == 0) {
-            if (contensou_law_from_name(val, &law) != CONTENSOU_STATUS_OK) return usage("--law: unknown law");
+            if (contensou_law_from_name(val, &law) != CONTENSOU_STATUS_OK || law == CONTENSOU_LAW_FULL_SLIP ||
+                law == CONTENSOU_LAW_LINEAR)
+                return usage("--law: unknown law");
         } else if (strcmp(opt, "--form") == 0) {
             if (contensou_form_from_name(val, &form) != CONTENSOU_STATUS_OK) return usage("--form: must be fixed or varying");
         } else if (strcmp(opt, "--precision") == 0) {
@@ -97,67 +76,117 @@ int main(int argc, char **argv) {
     }
 
     if (!fgets(line, sizeof line, stdin)) return usage("missing header row");
-    if (strcmp(trim(line), INPUT_NAMES) != 0) {
-        fprintf(stderr, "wrench_eval: header = %s: must be `%s`\n", trim(line), INPUT_NAMES);
-        return 1;
+    memcpy(header, trim(line), strlen(trim(line)) + 1);
+    {
+        size_t n = strlen(INPUT_NAMES);
+        char *rest = header + n, *names[MAX_FIELDS + 1];
+        int extra, k, j;
+        char copy[sizeof header];
+        if (strncmp(header, INPUT_NAMES, n) != 0 || (*rest != '\0' && *rest != ',')) {
+            fprintf(stderr, "wrench_eval: header = %s: must be `%s` then any of G,nu,vrx,vry\n", header, INPUT_NAMES);
+            return 1;
+        }
+        memcpy(copy, rest, strlen(rest) + 1);
+        extra = *copy ? split(copy + 1, names, MAX_FIELDS + 1) : 0;
+        if (extra > OPTIONAL) {
+            fprintf(stderr, "wrench_eval: header = %s: too many columns\n", header);
+            return 1;
+        }
+        for (j = 0; j < extra; j++) {
+            for (k = 0; k < OPTIONAL && strcmp(names[j], OPTIONAL_NAMES[k]) != 0; k++) {}
+            if (k == OPTIONAL || field_of[k] >= 0) {
+                fprintf(stderr, "wrench_eval: header = %s: `%s` is no optional column or repeats (G,nu,vrx,vry)\n", header, names[j]);
+                return 1;
+            }
+            field_of[k] = COLUMNS + j;
+        }
+        fields_per_row = COLUMNS + extra;
+        has_contact_option = field_of[0] >= 0 || field_of[1] >= 0;
+        has_step_option = field_of[2] >= 0 || field_of[3] >= 0;
     }
-    printf("%s,%s\n", INPUT_NAMES, OUTPUT_NAMES);
+    printf("%s,%s\n", header, OUTPUT_NAMES);
 
     while (fgets(line, sizeof line, stdin)) {
         char copy[sizeof line];
-        char *fields[COLUMNS];
-        double v[COLUMNS], out[OUTPUTS];
+        char *fields[MAX_FIELDS];
+        double v[MAX_FIELDS], out[OUTPUTS], opt[OPTIONAL];
         contensou_column column = CONTENSOU_COLUMN_NONE;
         contensou_status s;
-        int n, k, same_but_curvatures;
+        int n, k, same_but_curvatures, bad_field;
         row++;
         if (*trim(line) == '\0') continue;
         memcpy(copy, line, sizeof line);
-        n = split(copy, fields);
-        if (n != COLUMNS) {
-            fprintf(stderr, "wrench_eval: row %ld: fields = %d: expected %d (%s)\n", row, n, COLUMNS, INPUT_NAMES);
+        n = split(copy, fields, MAX_FIELDS);
+        if (n != fields_per_row) {
+            fprintf(stderr, "wrench_eval: row %ld: fields = %d: expected %d (%s)\n", row, n, fields_per_row, header);
             return 1;
         }
-        for (k = 0; k < COLUMNS; k++) {
+        for (k = 0; k < fields_per_row; k++) {
             const char *why = parse(fields[k], &v[k], f32);
             if (why) {
-                fprintf(stderr, "wrench_eval: row %ld: %s = %s: %s\n", row,
-                        contensou_column_name((contensou_column)k), fields[k], why);
+                const char *name = k < COLUMNS ? contensou_column_name((contensou_column)k) : "";
+                int j;
+                for (j = 0; j < OPTIONAL; j++)
+                    if (field_of[j] == k) name = OPTIONAL_NAMES[j];
+                fprintf(stderr, "wrench_eval: row %ld: %s = %s: %s\n", row, name, fields[k], why);
                 return 1;
             }
         }
+        for (k = 0; k < OPTIONAL; k++) opt[k] = field_of[k] >= 0 ? v[field_of[k]] : 0.0;
         same_but_curvatures = have_prev && form == CONTENSOU_FORM_VARYING;
         for (k = CONTENSOU_COLUMN_ESTAR; k <= CONTENSOU_COLUMN_DELTA; k++)
             same_but_curvatures = same_but_curvatures && memcmp(&v[k], &prev[k], sizeof v[k]) == 0;
+        for (k = 0; k < 2; k++)
+            if (field_of[k] >= 0)
+                same_but_curvatures = same_but_curvatures && memcmp(&v[field_of[k]], &prev[field_of[k]], sizeof v[0]) == 0;
         have_prev = 0;
         if (f32) {
             contensou_spec_f32 spec;
             contensou_step_f32 step;
-            contensou_wrench_f32 w;
+            contensou_rolling_step_f32 roll;
+            contensou_wrench_f32 w = {0, 0, 0, 0, 0, 0, 0};
+            float g = (float)opt[0], nu = (float)opt[1];
             spec.p = (float)v[0]; spec.q = (float)v[1]; spec.estar = (float)v[2];
             spec.cd = (float)v[3]; spec.f = (float)v[4]; spec.delta = (float)v[5];
             step.h = (float)v[6]; step.hdot = (float)v[7]; step.vx = (float)v[8];
             step.vy = (float)v[9]; step.omega = (float)v[10];
-            s = same_but_curvatures ? contensou_contact_set_curvatures_f32(&c32, spec.p, spec.q, &column)
-                                    : contensou_contact_new_f32(&c32, &spec, law, form, &column);
-            if (s == CONTENSOU_STATUS_OK) s = contensou_contact_wrench_f32(&c32, &step, &w, &column);
-            if (s != CONTENSOU_STATUS_OK) return fail_row(row, contensou_column_name(column), fields[column < COLUMNS ? column : 0], s);
+            roll.vrx = (float)opt[2]; roll.vry = (float)opt[3];
+            if (same_but_curvatures) s = contensou_contact_set_curvatures_f32(&c32, spec.p, spec.q, &column);
+            else if (has_contact_option)
+                s = contensou_contact_new_rolling_f32(&c32, &spec, field_of[0] >= 0 ? &g : NULL, field_of[1] >= 0 ? &nu : NULL,
+                                                      law, form, &column);
+            else s = contensou_contact_new_f32(&c32, &spec, law, form, &column);
+            if (s == CONTENSOU_STATUS_OK)
+                s = has_step_option ? contensou_contact_wrench_rolling_f32(&c32, &step, &roll, &w, &column)
+                                    : contensou_contact_wrench_f32(&c32, &step, &w, &column);
             out[0] = w.n; out[1] = w.fx; out[2] = w.fy; out[3] = w.tz; out[4] = w.a; out[5] = w.b; out[6] = w.e2;
         } else {
             contensou_spec_f64 spec;
             contensou_step_f64 step;
-            contensou_wrench_f64 w;
+            contensou_rolling_step_f64 roll;
+            contensou_wrench_f64 w = {0, 0, 0, 0, 0, 0, 0};
             spec.p = v[0]; spec.q = v[1]; spec.estar = v[2]; spec.cd = v[3]; spec.f = v[4]; spec.delta = v[5];
             step.h = v[6]; step.hdot = v[7]; step.vx = v[8]; step.vy = v[9]; step.omega = v[10];
-            s = same_but_curvatures ? contensou_contact_set_curvatures_f64(&c64, spec.p, spec.q, &column)
-                                    : contensou_contact_new_f64(&c64, &spec, law, form, &column);
-            if (s == CONTENSOU_STATUS_OK) s = contensou_contact_wrench_f64(&c64, &step, &w, &column);
-            if (s != CONTENSOU_STATUS_OK) return fail_row(row, contensou_column_name(column), fields[column < COLUMNS ? column : 0], s);
+            roll.vrx = opt[2]; roll.vry = opt[3];
+            if (same_but_curvatures) s = contensou_contact_set_curvatures_f64(&c64, spec.p, spec.q, &column);
+            else if (has_contact_option)
+                s = contensou_contact_new_rolling_f64(&c64, &spec, field_of[0] >= 0 ? &opt[0] : NULL,
+                                                      field_of[1] >= 0 ? &opt[1] : NULL, law, form, &column);
+            else s = contensou_contact_new_f64(&c64, &spec, law, form, &column);
+            if (s == CONTENSOU_STATUS_OK)
+                s = has_step_option ? contensou_contact_wrench_rolling_f64(&c64, &step, &roll, &w, &column)
+                                    : contensou_contact_wrench_f64(&c64, &step, &w, &column);
             out[0] = w.n; out[1] = w.fx; out[2] = w.fy; out[3] = w.tz; out[4] = w.a; out[5] = w.b; out[6] = w.e2;
+        }
+        if (s != CONTENSOU_STATUS_OK) {
+            bad_field = column < COLUMNS ? (int)column
+                      : column >= CONTENSOU_COLUMN_G && column <= CONTENSOU_COLUMN_VRY ? field_of[column - CONTENSOU_COLUMN_G]
+                      : -1;
+            return fail_row(row, contensou_column_name(column), bad_field >= 0 ? fields[bad_field] : fields[0], s);
         }
         memcpy(prev, v, sizeof v);
         have_prev = 1;
-        for (k = 0; k < COLUMNS; k++) printf(f32 ? "%.9g," : "%.17g,", v[k]);
+        for (k = 0; k < fields_per_row; k++) printf(f32 ? "%.9g," : "%.17g,", v[k]);
         for (k = 0; k < OUTPUTS; k++) printf(f32 ? "%.9g%s" : "%.17g%s", out[k], k + 1 < OUTPUTS ? "," : "\n");
     }
     return fflush(stdout) == 0 ? 0 : 1;

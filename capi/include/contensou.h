@@ -14,13 +14,20 @@
 #include <stdint.h>
 
 // Bytes of [`contensou_contact_f32`].
-#define CONTENSOU_CONTACT_F32_SIZE 1528
+#define CONTENSOU_CONTACT_F32_SIZE 5912
 
 // Bytes of [`contensou_contact_f64`].
-#define CONTENSOU_CONTACT_F64_SIZE 3048
+#define CONTENSOU_CONTACT_F64_SIZE 11824
 
 // Alignment (bytes) of both contact storage types.
 #define CONTENSOU_CONTACT_ALIGN 8
+
+// Bytes of [`contensou_rolling_f32`]: the contact (3,272 bytes in this version) and room
+// for the laws' per-contact tables to grow without an ABI change.
+#define CONTENSOU_ROLLING_F32_SIZE 4096
+
+// Bytes of [`contensou_rolling_f64`] (6,536 bytes used in this version).
+#define CONTENSOU_ROLLING_F64_SIZE 8192
 
 // What a call did: [`contensou_status::Ok`] or why it refused (nothing was written then,
 // except the `column` out-parameter).
@@ -53,13 +60,25 @@ enum contensou_status
   CONTENSOU_STATUS_REGULARIZATION_SPEED_NEGATIVE = 10,
   // [`Error::DampingNegative`]: c_d < 0.
   CONTENSOU_STATUS_DAMPING_NEGATIVE = 11,
+  // [`Error::ShearModulusNotPositive`]: G ≤ 0 (rolling contacts).
+  CONTENSOU_STATUS_SHEAR_MODULUS_NOT_POSITIVE = 12,
+  // [`Error::RollingPoissonRatioOutOfRange`]: ν outside [0, 0.5] (rolling contacts).
+  CONTENSOU_STATUS_ROLLING_POISSON_RATIO_OUT_OF_RANGE = 13,
+  // [`Error::RollingAspectOutOfRange`]: a/b outside [0.01, 100] (rolling contacts).
+  CONTENSOU_STATUS_ROLLING_ASPECT_OUT_OF_RANGE = 14,
+  // [`Error::ColumnLengthMismatch`] (batch columns; not returned by this API's calls,
+  // whose columns share one `rows`).
+  CONTENSOU_STATUS_COLUMN_LENGTH_MISMATCH = 15,
   // A pointer parameter that must not be NULL was NULL.
   CONTENSOU_STATUS_NULL_POINTER = 100,
   // A pointer parameter is not aligned for its type (storage: 8 bytes).
   CONTENSOU_STATUS_MISALIGNED = 101,
-  // The contact storage was not initialised by `contensou_contact_new_*` (of this precision).
+  // The contact storage was not initialised by `contensou_contact_new_*` (or
+  // `contensou_rolling_new_*`) of this precision.
   CONTENSOU_STATUS_NOT_INITIALIZED = 102,
-  // A `contensou_law` value outside the `CONTENSOU_LAW_*` constants.
+  // A `contensou_law` value outside the `CONTENSOU_LAW_*` constants, or one the call does
+  // not take (a sliding law for a rolling contact, `full-slip`/`linear` for a wrench
+  // contact).
   CONTENSOU_STATUS_INVALID_LAW = 103,
   // A `contensou_form` value outside the `CONTENSOU_FORM_*` constants.
   CONTENSOU_STATUS_INVALID_FORM = 104,
@@ -79,8 +98,9 @@ enum contensou_status
 typedef uint32_t contensou_status;
 #endif // __cplusplus
 
-// An input column of the contract (the order of [`contensou::dynamic::INPUTS`]), or
-// [`CONTENSOU_COLUMN_NONE`]: which input an error came from.
+// An input column of the contract (the order of [`contensou::dynamic::INPUTS`], then the
+// optional rolling columns from [`CONTENSOU_COLUMN_G`]), or [`CONTENSOU_COLUMN_NONE`]: which
+// input an error came from.
 typedef uint32_t contensou_column;
 
 // A friction law: one of the `CONTENSOU_LAW_*` values ([`contensou::dynamic::Law`]).
@@ -125,7 +145,7 @@ typedef uint32_t contensou_race;
 // `contensou_contact_wrench_f32` only reads the contact, so threads may share one.
 typedef struct {
   // Opaque.
-  uint64_t opaque[191];
+  uint64_t opaque[739];
 } contensou_contact_f32;
 
 // The contact columns `P,Q,estar,cd,f,delta` of the contract ([`contensou::dynamic::Spec`]).
@@ -148,7 +168,7 @@ typedef struct {
 // bytes, 8-byte aligned. As [`contensou_contact_f32`].
 typedef struct {
   // Opaque.
-  uint64_t opaque[381];
+  uint64_t opaque[1478];
 } contensou_contact_f64;
 
 // The contact columns `P,Q,estar,cd,f,delta` of the contract ([`contensou::dynamic::Spec`]).
@@ -301,6 +321,133 @@ typedef struct {
   double *e2;
 } contensou_wrench_columns_f64;
 
+// A column of `contact_eval rolling` (`a,b,G,nu,f,N,V,xi,eta,phi`), the shape a/b, or
+// [`CONTENSOU_ROLLING_COLUMN_NONE`]: which input a rolling call's error came from.
+typedef uint32_t contensou_rolling_column;
+
+// Caller-owned storage of one `float` rolling contact: opaque,
+// [`CONTENSOU_ROLLING_F32_SIZE`] bytes, 8-byte aligned (`CONTENSOU_CONTACT_ALIGN`).
+// Initialised by `contensou_rolling_new_f32`; other calls on storage it did not initialise
+// return `CONTENSOU_STATUS_NOT_INITIALIZED`. Plain data (may be copied), no destructor;
+// `contensou_rolling_wrench_f32` only reads it, so threads may share one.
+typedef struct {
+  // Opaque.
+  uint64_t opaque[512];
+} contensou_rolling_f32;
+
+// Caller-owned storage of one `double` rolling contact: opaque,
+// [`CONTENSOU_ROLLING_F64_SIZE`] bytes, 8-byte aligned. As [`contensou_rolling_f32`].
+typedef struct {
+  // Opaque.
+  uint64_t opaque[1024];
+} contensou_rolling_f64;
+
+// The per-call inputs of a rolling contact: the columns `a,b,f,N,V,xi,eta,phi` of
+// `contact_eval rolling` (its `G, nu` and the shape a/b are the contact's).
+typedef struct {
+  // Semi-axis a (m) along the rolling direction +x, > 0.
+  float a;
+  // Semi-axis b (m) across, > 0. The patch size c = √(ab) comes from a and b; its shape
+  // is the contact's a/b (`contensou_rolling_new_*`).
+  float b;
+  // Friction coefficient f ≥ 0.
+  float f;
+  // Normal force N (N); ≤ 0 is no contact (zero wrench).
+  float n;
+  // Rolling velocity V (m/s) along x: only its sign matters at given creepages (V < 0 is
+  // the mirror image, V = 0 the limit V → 0⁺).
+  float v;
+  // Longitudinal creepage ξ of body B relative to A (dimensionless).
+  float xi;
+  // Lateral creepage η (dimensionless).
+  float eta;
+  // Spin creepage φ (1/m).
+  float phi;
+} contensou_rolling_state_f32;
+
+// The rolling wrench on body B from body A in the rolling frame (x along the rolling
+// direction): the outputs `Fx,Fy,Mz` of `contact_eval rolling`.
+typedef struct {
+  // F_x (N).
+  float fx;
+  // F_y (N).
+  float fy;
+  // M_z (N·m), about the patch centre.
+  float mz;
+} contensou_rolling_output_f32;
+
+// The per-call inputs of a rolling contact: the columns `a,b,f,N,V,xi,eta,phi` of
+// `contact_eval rolling` (its `G, nu` and the shape a/b are the contact's).
+typedef struct {
+  // Semi-axis a (m) along the rolling direction +x, > 0.
+  double a;
+  // Semi-axis b (m) across, > 0. The patch size c = √(ab) comes from a and b; its shape
+  // is the contact's a/b (`contensou_rolling_new_*`).
+  double b;
+  // Friction coefficient f ≥ 0.
+  double f;
+  // Normal force N (N); ≤ 0 is no contact (zero wrench).
+  double n;
+  // Rolling velocity V (m/s) along x: only its sign matters at given creepages (V < 0 is
+  // the mirror image, V = 0 the limit V → 0⁺).
+  double v;
+  // Longitudinal creepage ξ of body B relative to A (dimensionless).
+  double xi;
+  // Lateral creepage η (dimensionless).
+  double eta;
+  // Spin creepage φ (1/m).
+  double phi;
+} contensou_rolling_state_f64;
+
+// The rolling wrench on body B from body A in the rolling frame (x along the rolling
+// direction): the outputs `Fx,Fy,Mz` of `contact_eval rolling`.
+typedef struct {
+  // F_x (N).
+  double fx;
+  // F_y (N).
+  double fy;
+  // M_z (N·m), about the patch centre.
+  double mz;
+} contensou_rolling_output_f64;
+
+// The optional step columns `vrx, vry` of the rolling laws
+// ([`contensou::dynamic::RollingStep`]): the contact's rolling velocity in the contact frame
+// (x the major axis), m/s. The sliding laws ignore it.
+typedef struct {
+  // V_x (m/s), along the major axis.
+  float vrx;
+  // V_y (m/s).
+  float vry;
+} contensou_rolling_step_f32;
+
+// The optional step columns `vrx, vry` of the rolling laws
+// ([`contensou::dynamic::RollingStep`]): the contact's rolling velocity in the contact frame
+// (x the major axis), m/s. The sliding laws ignore it.
+typedef struct {
+  // V_x (m/s), along the major axis.
+  double vrx;
+  // V_y (m/s).
+  double vry;
+} contensou_rolling_step_f64;
+
+// The rolling step columns of `contensou_contact_wrench_many_rolling_*`: two caller arrays
+// of `rows` values each (`vrx, vry`).
+typedef struct {
+  // V_x (m/s) per row.
+  const float *vrx;
+  // V_y (m/s) per row.
+  const float *vry;
+} contensou_rolling_step_columns_f32;
+
+// The rolling step columns of `contensou_contact_wrench_many_rolling_*`: two caller arrays
+// of `rows` values each (`vrx, vry`).
+typedef struct {
+  // V_x (m/s) per row.
+  const double *vrx;
+  // V_y (m/s) per row.
+  const double *vry;
+} contensou_rolling_step_columns_f64;
+
 // `best`, the exact-grade default.
 #define CONTENSOU_LAW_BEST 0
 
@@ -315,6 +462,25 @@ typedef struct {
 
 // `coulomb` (point contact: no drilling torque).
 #define CONTENSOU_LAW_COULOMB 4
+
+// `table`: the default rolling law (Kalker's theory, `contensou::friction::rolling::Table`).
+// Rolling laws (`TABLE` … `LINEAR`) build `contensou_rolling_*` contacts.
+#define CONTENSOU_LAW_TABLE 5
+
+// `blend`: Kalker's linear theory and the exact full slip joined by a saturation shape.
+#define CONTENSOU_LAW_BLEND 6
+
+// `fastsim`: FASTSIM (Kalker 1982), elliptic traction bound, 32 × 32 grid.
+#define CONTENSOU_LAW_FASTSIM 7
+
+// `fastsim-16`: FASTSIM on a 16 × 16 grid.
+#define CONTENSOU_LAW_FASTSIM_16 8
+
+// `full-slip`: the full-slip law (`best`) whatever the creepage (rolling contacts only).
+#define CONTENSOU_LAW_FULL_SLIP 9
+
+// `linear`: Kalker's linear theory, unsaturated (a reference; rolling contacts only).
+#define CONTENSOU_LAW_LINEAR 10
 
 // Exact eccentricity solved once at construction.
 #define CONTENSOU_FORM_FIXED 0
@@ -365,6 +531,54 @@ typedef struct {
 // No column: success, or an error not tied to a contract column (a NULL pointer, …).
 #define CONTENSOU_COLUMN_NONE 11
 
+// `G` (optional rolling column; after `NONE`, which keeps its value).
+#define CONTENSOU_COLUMN_G 12
+
+// `nu` (optional rolling column).
+#define CONTENSOU_COLUMN_NU 13
+
+// `vrx` (optional rolling step column).
+#define CONTENSOU_COLUMN_VRX 14
+
+// `vry` (optional rolling step column).
+#define CONTENSOU_COLUMN_VRY 15
+
+// `a`.
+#define CONTENSOU_ROLLING_COLUMN_A 0
+
+// `b`.
+#define CONTENSOU_ROLLING_COLUMN_B 1
+
+// `G`.
+#define CONTENSOU_ROLLING_COLUMN_G 2
+
+// `nu`.
+#define CONTENSOU_ROLLING_COLUMN_NU 3
+
+// `f`.
+#define CONTENSOU_ROLLING_COLUMN_F 4
+
+// `N`.
+#define CONTENSOU_ROLLING_COLUMN_N 5
+
+// `V`.
+#define CONTENSOU_ROLLING_COLUMN_V 6
+
+// `xi`.
+#define CONTENSOU_ROLLING_COLUMN_XI 7
+
+// `eta`.
+#define CONTENSOU_ROLLING_COLUMN_ETA 8
+
+// `phi`.
+#define CONTENSOU_ROLLING_COLUMN_PHI 9
+
+// `a/b`: the shape given to `contensou_rolling_new_*`.
+#define CONTENSOU_ROLLING_COLUMN_A_OVER_B 10
+
+// No column: success, or an error not tied to an input (a NULL pointer, …).
+#define CONTENSOU_ROLLING_COLUMN_NONE 11
+
 #ifdef __cplusplus
 extern "C" {
 #endif // __cplusplus
@@ -376,7 +590,8 @@ const char *contensou_status_message(uint32_t status);
 // for `CONTENSOU_COLUMN_NONE` and unknown values.
 const char *contensou_column_name(contensou_column column);
 
-// The law of a name (`"best"`, `"simplified"`, `"pade"`, `"ellipsoid"`, `"coulomb"`).
+// The law of a name (`"best"`, `"simplified"`, `"pade"`, `"ellipsoid"`, `"coulomb"`; the
+// rolling laws `"table"`, `"blend"`, `"fastsim"`, `"fastsim-16"`, `"full-slip"`, `"linear"`).
 //
 // # Safety
 // `name` is NULL or a NUL-terminated string; `law` is NULL or writable.
@@ -567,6 +782,139 @@ contensou_status contensou_contact_wrench_many_f64(const contensou_contact_f64 *
                                                    const contensou_wrench_columns_f64 *out,
                                                    size_t *row,
                                                    contensou_column *column);
+
+// The name of a rolling column (`"a"`, …, `"phi"`, `"a/b"`): a static NUL-terminated
+// string, `""` for `CONTENSOU_ROLLING_COLUMN_NONE` and unknown values.
+const char *contensou_rolling_column_name(contensou_rolling_column column);
+
+// Validates the elasticity (G (Pa) > 0, ν ∈ [0, 0.5]) and the shape a/b ∈ [0.01, 100] (a
+// along the rolling direction) and builds a rolling contact of the rolling law `law`
+// (`CONTENSOU_LAW_TABLE` … `CONTENSOU_LAW_LINEAR`; others: `INVALID_LAW`) into `storage`
+// (left unchanged on error). The column of a rejected input goes to `*column` (`column` may
+// be NULL). Cost: Kalker's coefficients and `best`'s full-slip tables (≈ 16,000 M4F f32
+// instructions), once.
+//
+// # Safety
+// `storage` is NULL or writable; `column` NULL or writable.
+contensou_status contensou_rolling_new_f32(contensou_rolling_f32 *storage,
+                                           float a_over_b,
+                                           float shear_modulus,
+                                           float poisson,
+                                           contensou_law law,
+                                           contensou_rolling_column *column);
+
+// [`contensou_rolling_new_f32`] in `double`.
+//
+// # Safety
+// As [`contensou_rolling_new_f32`].
+contensou_status contensou_rolling_new_f64(contensou_rolling_f64 *storage,
+                                           double a_over_b,
+                                           double shear_modulus,
+                                           double poisson,
+                                           contensou_law law,
+                                           contensou_rolling_column *column);
+
+// One evaluation: validates `state` (a, b > 0, f ≥ 0, all finite; the column of a rejected
+// value goes to `*column`) and writes F_x, F_y, M_z on body B into `*out`: bit for bit
+// `contact_eval rolling` on the row `a,b,G,nu,f,N,V,xi,eta,phi` for a contact built with
+// a/b = `a / b` (computed in this precision). Fixed cost per law.
+//
+// # Safety
+// `storage` is NULL or readable; `state` NULL or readable; `out`, `column` NULL or writable.
+contensou_status contensou_rolling_wrench_f32(const contensou_rolling_f32 *storage,
+                                              const contensou_rolling_state_f32 *state,
+                                              contensou_rolling_output_f32 *out,
+                                              contensou_rolling_column *column);
+
+// [`contensou_rolling_wrench_f32`] in `double`.
+//
+// # Safety
+// As [`contensou_rolling_wrench_f32`].
+contensou_status contensou_rolling_wrench_f64(const contensou_rolling_f64 *storage,
+                                              const contensou_rolling_state_f64 *state,
+                                              contensou_rolling_output_f64 *out,
+                                              contensou_rolling_column *column);
+
+// [`contensou_contact_new_f32`] with the optional rolling columns: `shear_modulus` (G > 0,
+// Pa) and `poisson` (ν ∈ [0, 0.5]), each NULL for its default (G = E*·(1 − ν), ν = 0.3).
+// Read and validated by the rolling laws (`CONTENSOU_LAW_TABLE`, `_BLEND`, `_FASTSIM`,
+// `_FASTSIM_16`) only; errors name `CONTENSOU_COLUMN_G` / `_NU`. With both NULL this is
+// [`contensou_contact_new_f32`].
+//
+// # Safety
+// As [`contensou_contact_new_f32`]; `shear_modulus`, `poisson` NULL or readable.
+contensou_status contensou_contact_new_rolling_f32(contensou_contact_f32 *storage,
+                                                   const contensou_spec_f32 *spec,
+                                                   const float *shear_modulus,
+                                                   const float *poisson,
+                                                   contensou_law law,
+                                                   contensou_form form,
+                                                   contensou_column *column);
+
+// [`contensou_contact_new_rolling_f32`] in `double`.
+//
+// # Safety
+// As [`contensou_contact_new_rolling_f32`].
+contensou_status contensou_contact_new_rolling_f64(contensou_contact_f64 *storage,
+                                                   const contensou_spec_f64 *spec,
+                                                   const double *shear_modulus,
+                                                   const double *poisson,
+                                                   contensou_law law,
+                                                   contensou_form form,
+                                                   contensou_column *column);
+
+// [`contensou_contact_wrench_f32`] with the rolling velocity `rolling` (`vrx, vry`: m/s in
+// the contact frame; NULL: 0, i.e. full slip), validated after the step (finite; errors
+// name `CONTENSOU_COLUMN_VRX` / `_VRY`) by the rolling laws only: the sliding laws give
+// [`contensou_contact_wrench_f32`]'s bits whatever `rolling` holds. Bit for bit
+// `contact_eval wrench` with the columns `vrx, vry`.
+//
+// # Safety
+// As [`contensou_contact_wrench_f32`]; `rolling` NULL or readable.
+contensou_status contensou_contact_wrench_rolling_f32(const contensou_contact_f32 *storage,
+                                                      const contensou_step_f32 *step,
+                                                      const contensou_rolling_step_f32 *rolling,
+                                                      contensou_wrench_f32 *out,
+                                                      contensou_column *column);
+
+// [`contensou_contact_wrench_rolling_f32`] in `double`.
+//
+// # Safety
+// As [`contensou_contact_wrench_rolling_f32`].
+contensou_status contensou_contact_wrench_rolling_f64(const contensou_contact_f64 *storage,
+                                                      const contensou_step_f64 *step,
+                                                      const contensou_rolling_step_f64 *rolling,
+                                                      contensou_wrench_f64 *out,
+                                                      contensou_column *column);
+
+// [`contensou_contact_wrench_many_f32`] with the rolling velocity columns `rolling` (two
+// arrays of `rows` values; NULL: V = 0 on every row, exactly
+// [`contensou_contact_wrench_many_f32`]): row i is bit for bit
+// [`contensou_contact_wrench_rolling_f32`] on row i (a scalar loop when `rolling` is given).
+// Errors as [`contensou_contact_wrench_many_f32`], `CONTENSOU_COLUMN_VRX` / `_VRY` too.
+//
+// # Safety
+// As [`contensou_contact_wrench_many_f32`]; `rolling` NULL or readable, its arrays NULL or
+// holding `rows` values.
+contensou_status contensou_contact_wrench_many_rolling_f32(const contensou_contact_f32 *storage,
+                                                           size_t rows,
+                                                           const contensou_step_columns_f32 *steps,
+                                                           const contensou_rolling_step_columns_f32 *rolling,
+                                                           const contensou_wrench_columns_f32 *out,
+                                                           size_t *row,
+                                                           contensou_column *column);
+
+// [`contensou_contact_wrench_many_rolling_f32`] in `double`.
+//
+// # Safety
+// As [`contensou_contact_wrench_many_rolling_f32`].
+contensou_status contensou_contact_wrench_many_rolling_f64(const contensou_contact_f64 *storage,
+                                                           size_t rows,
+                                                           const contensou_step_columns_f64 *steps,
+                                                           const contensou_rolling_step_columns_f64 *rolling,
+                                                           const contensou_wrench_columns_f64 *out,
+                                                           size_t *row,
+                                                           contensou_column *column);
 
 #ifdef __cplusplus
 } // extern "C"

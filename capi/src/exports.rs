@@ -16,6 +16,9 @@ use crate::shell;
 use crate::status::contensou_status;
 use crate::types::*;
 
+mod rolling;
+pub use rolling::*;
+
 /// The message of a status code: a static NUL-terminated string (also for unknown codes).
 #[no_mangle]
 pub extern "C" fn contensou_status_message(status: u32) -> *const c_char {
@@ -29,7 +32,8 @@ pub extern "C" fn contensou_column_name(column: contensou_column) -> *const c_ch
     shell::column_name(column)
 }
 
-/// The law of a name (`"best"`, `"simplified"`, `"pade"`, `"ellipsoid"`, `"coulomb"`).
+/// The law of a name (`"best"`, `"simplified"`, `"pade"`, `"ellipsoid"`, `"coulomb"`; the
+/// rolling laws `"table"`, `"blend"`, `"fastsim"`, `"fastsim-16"`, `"full-slip"`, `"linear"`).
 ///
 /// # Safety
 /// `name` is NULL or a NUL-terminated string; `law` is NULL or writable.
@@ -38,7 +42,12 @@ pub unsafe extern "C" fn contensou_law_from_name(
     name: *const c_char,
     law: *mut contensou_law,
 ) -> contensou_status {
-    unsafe { shell::from_name(name, law, Law::from_name, shell::law_code) }
+    let parse = |n: &str| {
+        Law::from_name(n)
+            .map(shell::law_code)
+            .or_else(|| shell::rolling_law_of(n))
+    };
+    unsafe { shell::from_name(name, law, parse, |code| code) }
 }
 
 /// The form of a name (`"fixed"`, `"varying"`).

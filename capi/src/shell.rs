@@ -2,8 +2,11 @@
 //! mapping. No formula: every number comes from `contensou`.
 
 use core::ffi::{c_char, CStr};
+use core::ptr::null;
 
-use contensou::dynamic::{self, DynContact, Form, Invalid, Law, Spec, Step};
+use contensou::dynamic::{
+    self, DynContact, Form, Invalid, Law, RollingSpec, RollingStep, Spec, Step,
+};
 use contensou::geometry::{Curvatures, Race};
 use contensou::normal::{Material, Modulus};
 use contensou::Real;
@@ -13,7 +16,9 @@ use crate::status::contensou_status as S;
 use crate::types::*;
 
 mod many;
-pub(crate) use many::contact_wrench_many;
+mod rolling;
+pub(crate) use many::{contact_wrench_many, contact_wrench_many_rolling};
+pub(crate) use rolling::{rolling_column_name, rolling_law_of, rolling_new, rolling_wrench};
 
 /// A precision of the C API: its storage type and the tag a constructor writes.
 pub(crate) trait Precision: Real {
@@ -89,11 +94,31 @@ unsafe fn report(column: *mut contensou_column, r: Result<(), (S, contensou_colu
     s
 }
 
-/// The index of a contract column name in [`dynamic::INPUTS`].
+/// The code of a contract column name: its index in [`dynamic::INPUTS`], or
+/// `CONTENSOU_COLUMN_G + k` for [`dynamic::ROLLING_INPUTS`]`[k]`.
 fn column_of(name: &str) -> contensou_column {
+    let rolling = || {
+        dynamic::ROLLING_INPUTS
+            .iter()
+            .position(|c| *c == name)
+            .map(|k| CONTENSOU_COLUMN_G + k as contensou_column)
+    };
     match dynamic::INPUTS.iter().position(|c| *c == name) {
         Some(i) => i as contensou_column,
-        None => CONTENSOU_COLUMN_NONE,
+        None => rolling().unwrap_or(CONTENSOU_COLUMN_NONE),
+    }
+}
+
+/// An optional value: NULL is `None` (the column's default).
+///
+/// # Safety
+/// `p` NULL or readable.
+unsafe fn optional<T: Copy>(p: *const T) -> Result<Option<T>, S> {
+    if p.is_null() {
+        Ok(None)
+    } else {
+        // SAFETY: caller's contract.
+        unsafe { read(p) }.map(Some)
     }
 }
 
@@ -114,6 +139,10 @@ pub(crate) fn law(law: contensou_law) -> Result<Law, S> {
         CONTENSOU_LAW_PADE => Law::Pade,
         CONTENSOU_LAW_ELLIPSOID => Law::Ellipsoid,
         CONTENSOU_LAW_COULOMB => Law::Coulomb,
+        CONTENSOU_LAW_TABLE => Law::Table,
+        CONTENSOU_LAW_BLEND => Law::Blend,
+        CONTENSOU_LAW_FASTSIM => Law::Fastsim,
+        CONTENSOU_LAW_FASTSIM_16 => Law::Fastsim16,
         _ => return Err(S::InvalidLaw),
     })
 }
@@ -154,10 +183,34 @@ pub(crate) unsafe fn contact_new<T: Precision>(
     form_value: contensou_form,
     column: *mut contensou_column,
 ) -> S {
+    // SAFETY: caller's contract.
+    unsafe { contact_new_rolling(storage, spec, null(), null(), law_value, form_value, column) }
+}
+
+/// `contensou_contact_new_rolling_*` (`g`, `nu` NULL: the column's default).
+///
+/// # Safety
+/// Pointers NULL or valid for their types (`column` may be NULL).
+pub(crate) unsafe fn contact_new_rolling<T: Precision>(
+    storage: *mut T::Storage,
+    spec: *const contensou_spec<T>,
+    g: *const T,
+    nu: *const T,
+    law_value: contensou_law,
+    form_value: contensou_form,
+    column: *mut contensou_column,
+) -> S {
     let r = (|| {
         check(storage).map_err(bare)?;
         // SAFETY: caller's contract.
         let s = unsafe { read(spec) }.map_err(bare)?;
+        // SAFETY: caller's contract.
+        let rolling = unsafe {
+            RollingSpec {
+                g: optional(g).map_err(bare)?,
+                nu: optional(nu).map_err(bare)?,
+            }
+        };
         let law = law(law_value).map_err(bare)?;
         let form = form(form_value).map_err(bare)?;
         let spec = Spec {
@@ -168,7 +221,7 @@ pub(crate) unsafe fn contact_new<T: Precision>(
             f: s.f,
             delta: s.delta,
         };
-        let contact = DynContact::new(&spec, law, form).map_err(invalid)?;
+        let contact = DynContact::new_rolling(&spec, &rolling, law, form).map_err(invalid)?;
         // SAFETY: checked non-NULL and aligned; the slot fits (types.rs).
         unsafe {
             storage.cast::<Slot<T>>().write(Slot {
@@ -213,11 +266,30 @@ pub(crate) unsafe fn contact_wrench<T: Precision>(
     out: *mut contensou_wrench<T>,
     column: *mut contensou_column,
 ) -> S {
+    // SAFETY: caller's contract.
+    unsafe { contact_wrench_rolling(storage, step, null(), out, column) }
+}
+
+/// `contensou_contact_wrench_rolling_*` (`rolling` NULL: V = 0).
+///
+/// # Safety
+/// Pointers NULL or valid for their types.
+pub(crate) unsafe fn contact_wrench_rolling<T: Precision>(
+    storage: *const T::Storage,
+    step: *const contensou_step<T>,
+    rolling: *const contensou_rolling_step<T>,
+    out: *mut contensou_wrench<T>,
+    column: *mut contensou_column,
+) -> S {
     let r = (|| {
         // SAFETY: caller's contract.
         let slot = unsafe { slot::<T>(storage) }.map_err(bare)?;
         // SAFETY: caller's contract.
         let s = unsafe { read(step) }.map_err(bare)?;
+        // SAFETY: caller's contract.
+        let roll = unsafe { optional(rolling) }
+            .map_err(bare)?
+            .unwrap_or_default();
         check(out).map_err(bare)?;
         let step = Step {
             h: s.h,
@@ -226,7 +298,11 @@ pub(crate) unsafe fn contact_wrench<T: Precision>(
             vy: s.vy,
             omega: s.omega,
         };
-        let w = slot.contact.wrench(&step).map_err(invalid)?;
+        let roll = RollingStep {
+            vrx: roll.vrx,
+            vry: roll.vry,
+        };
+        let w = slot.contact.wrench_rolling(&step, &roll).map_err(invalid)?;
         let w = contensou_wrench {
             n: w.n,
             fx: w.fx,
@@ -324,6 +400,10 @@ pub(crate) fn law_code(law: Law) -> contensou_law {
         Law::Pade => CONTENSOU_LAW_PADE,
         Law::Ellipsoid => CONTENSOU_LAW_ELLIPSOID,
         Law::Coulomb => CONTENSOU_LAW_COULOMB,
+        Law::Table => CONTENSOU_LAW_TABLE,
+        Law::Blend => CONTENSOU_LAW_BLEND,
+        Law::Fastsim => CONTENSOU_LAW_FASTSIM,
+        Law::Fastsim16 => CONTENSOU_LAW_FASTSIM_16,
     }
 }
 
@@ -334,9 +414,10 @@ pub(crate) fn form_code(form: Form) -> contensou_form {
     }
 }
 
-/// NUL-terminated column names, in [`dynamic::INPUTS`] order.
-const COLUMN_NAMES: [&CStr; 11] = {
-    use dynamic::INPUTS as I;
+/// NUL-terminated column names by code: [`dynamic::INPUTS`], `""` (NONE), then
+/// [`dynamic::ROLLING_INPUTS`].
+const COLUMN_NAMES: [&CStr; 16] = {
+    use dynamic::{INPUTS as I, ROLLING_INPUTS as R};
     [
         c_str!(I[0]),
         c_str!(I[1]),
@@ -349,6 +430,11 @@ const COLUMN_NAMES: [&CStr; 11] = {
         c_str!(I[8]),
         c_str!(I[9]),
         c_str!(I[10]),
+        c_str!(""),
+        c_str!(R[0]),
+        c_str!(R[1]),
+        c_str!(R[2]),
+        c_str!(R[3]),
     ]
 };
 

@@ -1,6 +1,6 @@
 //! The one status code of every fallible function, and its message.
 //!
-//! Codes 1–11 map one to one to the variants of [`contensou::Error`] (their messages are
+//! Codes 1–15 map one to one to the variants of [`contensou::Error`] (their messages are
 //! [`contensou::Error::as_str`]); codes from 100 are the C boundary's own.
 
 use core::ffi::{c_char, CStr};
@@ -38,13 +38,25 @@ pub enum contensou_status {
     RegularizationSpeedNegative = 10,
     /// [`Error::DampingNegative`]: c_d < 0.
     DampingNegative = 11,
+    /// [`Error::ShearModulusNotPositive`]: G ≤ 0 (rolling contacts).
+    ShearModulusNotPositive = 12,
+    /// [`Error::RollingPoissonRatioOutOfRange`]: ν outside [0, 0.5] (rolling contacts).
+    RollingPoissonRatioOutOfRange = 13,
+    /// [`Error::RollingAspectOutOfRange`]: a/b outside [0.01, 100] (rolling contacts).
+    RollingAspectOutOfRange = 14,
+    /// [`Error::ColumnLengthMismatch`] (batch columns; not returned by this API's calls,
+    /// whose columns share one `rows`).
+    ColumnLengthMismatch = 15,
     /// A pointer parameter that must not be NULL was NULL.
     NullPointer = 100,
     /// A pointer parameter is not aligned for its type (storage: 8 bytes).
     Misaligned = 101,
-    /// The contact storage was not initialised by `contensou_contact_new_*` (of this precision).
+    /// The contact storage was not initialised by `contensou_contact_new_*` (or
+    /// `contensou_rolling_new_*`) of this precision.
     NotInitialized = 102,
-    /// A `contensou_law` value outside the `CONTENSOU_LAW_*` constants.
+    /// A `contensou_law` value outside the `CONTENSOU_LAW_*` constants, or one the call does
+    /// not take (a sliding law for a rolling contact, `full-slip`/`linear` for a wrench
+    /// contact).
     InvalidLaw = 103,
     /// A `contensou_form` value outside the `CONTENSOU_FORM_*` constants.
     InvalidForm = 104,
@@ -75,6 +87,10 @@ impl From<Error> for contensou_status {
             Error::LengthNotPositive => contensou_status::LengthNotPositive,
             Error::RegularizationSpeedNegative => contensou_status::RegularizationSpeedNegative,
             Error::DampingNegative => contensou_status::DampingNegative,
+            Error::ShearModulusNotPositive => contensou_status::ShearModulusNotPositive,
+            Error::RollingPoissonRatioOutOfRange => contensou_status::RollingPoissonRatioOutOfRange,
+            Error::RollingAspectOutOfRange => contensou_status::RollingAspectOutOfRange,
+            Error::ColumnLengthMismatch => contensou_status::ColumnLengthMismatch,
             _ => contensou_status::UnknownError,
         }
     }
@@ -91,7 +107,7 @@ impl contensou_status {
     /// The message of a raw code (any `u32`: unknown codes get a message too).
     pub fn message_of(code: u32) -> &'static CStr {
         use contensou_status as S;
-        const ALL: [contensou_status; 21] = [
+        const ALL: [contensou_status; 25] = [
             S::Ok,
             S::NonFinite,
             S::EllipticParameterOutOfDomain,
@@ -104,6 +120,10 @@ impl contensou_status {
             S::LengthNotPositive,
             S::RegularizationSpeedNegative,
             S::DampingNegative,
+            S::ShearModulusNotPositive,
+            S::RollingPoissonRatioOutOfRange,
+            S::RollingAspectOutOfRange,
+            S::ColumnLengthMismatch,
             S::NullPointer,
             S::Misaligned,
             S::NotInitialized,
@@ -136,6 +156,12 @@ impl contensou_status {
             S::LengthNotPositive => error_message!(Error::LengthNotPositive),
             S::RegularizationSpeedNegative => error_message!(Error::RegularizationSpeedNegative),
             S::DampingNegative => error_message!(Error::DampingNegative),
+            S::ShearModulusNotPositive => error_message!(Error::ShearModulusNotPositive),
+            S::RollingPoissonRatioOutOfRange => {
+                error_message!(Error::RollingPoissonRatioOutOfRange)
+            }
+            S::RollingAspectOutOfRange => error_message!(Error::RollingAspectOutOfRange),
+            S::ColumnLengthMismatch => error_message!(Error::ColumnLengthMismatch),
             S::NullPointer => c_str!("a pointer parameter is NULL"),
             S::Misaligned => c_str!("a pointer parameter is misaligned for its type"),
             S::NotInitialized => {

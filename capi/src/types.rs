@@ -5,6 +5,9 @@
 
 use contensou::dynamic::DynContact;
 
+mod rolling;
+pub use rolling::*;
+
 /// The contact columns `P,Q,estar,cd,f,delta` of the contract ([`contensou::dynamic::Spec`]).
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -75,9 +78,9 @@ pub struct contensou_curvatures<T> {
 }
 
 /// Bytes of [`contensou_contact_f32`].
-pub const CONTENSOU_CONTACT_F32_SIZE: usize = 1528;
+pub const CONTENSOU_CONTACT_F32_SIZE: usize = 5912;
 /// Bytes of [`contensou_contact_f64`].
-pub const CONTENSOU_CONTACT_F64_SIZE: usize = 3048;
+pub const CONTENSOU_CONTACT_F64_SIZE: usize = 11824;
 /// Alignment (bytes) of both contact storage types.
 pub const CONTENSOU_CONTACT_ALIGN: usize = 8;
 
@@ -90,7 +93,7 @@ pub const CONTENSOU_CONTACT_ALIGN: usize = 8;
 #[derive(Debug)]
 pub struct contensou_contact_f32 {
     /// Opaque.
-    pub opaque: [u64; 191],
+    pub opaque: [u64; 739],
 }
 
 /// Caller-owned storage of one `double` contact: opaque, [`CONTENSOU_CONTACT_F64_SIZE`]
@@ -99,7 +102,7 @@ pub struct contensou_contact_f32 {
 #[derive(Debug)]
 pub struct contensou_contact_f64 {
     /// Opaque.
-    pub opaque: [u64; 381],
+    pub opaque: [u64; 1478],
 }
 
 /// What the storage holds: a tag that only a constructor writes, then the contact.
@@ -135,6 +138,19 @@ pub const CONTENSOU_LAW_PADE: contensou_law = 2;
 pub const CONTENSOU_LAW_ELLIPSOID: contensou_law = 3;
 /// `coulomb` (point contact: no drilling torque).
 pub const CONTENSOU_LAW_COULOMB: contensou_law = 4;
+/// `table`: the default rolling law (Kalker's theory, `contensou::friction::rolling::Table`).
+/// Rolling laws (`TABLE` … `LINEAR`) build `contensou_rolling_*` contacts.
+pub const CONTENSOU_LAW_TABLE: contensou_law = 5;
+/// `blend`: Kalker's linear theory and the exact full slip joined by a saturation shape.
+pub const CONTENSOU_LAW_BLEND: contensou_law = 6;
+/// `fastsim`: FASTSIM (Kalker 1982), elliptic traction bound, 32 × 32 grid.
+pub const CONTENSOU_LAW_FASTSIM: contensou_law = 7;
+/// `fastsim-16`: FASTSIM on a 16 × 16 grid.
+pub const CONTENSOU_LAW_FASTSIM_16: contensou_law = 8;
+/// `full-slip`: the full-slip law (`best`) whatever the creepage (rolling contacts only).
+pub const CONTENSOU_LAW_FULL_SLIP: contensou_law = 9;
+/// `linear`: Kalker's linear theory, unsaturated (a reference; rolling contacts only).
+pub const CONTENSOU_LAW_LINEAR: contensou_law = 10;
 
 /// A contact form: one of the `CONTENSOU_FORM_*` values ([`contensou::dynamic::Form`]).
 pub type contensou_form = u32;
@@ -151,8 +167,9 @@ pub const CONTENSOU_RACE_INNER: contensou_race = 0;
 /// The outer ring's raceway.
 pub const CONTENSOU_RACE_OUTER: contensou_race = 1;
 
-/// An input column of the contract (the order of [`contensou::dynamic::INPUTS`]), or
-/// [`CONTENSOU_COLUMN_NONE`]: which input an error came from.
+/// An input column of the contract (the order of [`contensou::dynamic::INPUTS`], then the
+/// optional rolling columns from [`CONTENSOU_COLUMN_G`]), or [`CONTENSOU_COLUMN_NONE`]: which
+/// input an error came from.
 pub type contensou_column = u32;
 /// `P`.
 pub const CONTENSOU_COLUMN_P: contensou_column = 0;
@@ -178,6 +195,37 @@ pub const CONTENSOU_COLUMN_VY: contensou_column = 9;
 pub const CONTENSOU_COLUMN_OMEGA: contensou_column = 10;
 /// No column: success, or an error not tied to a contract column (a NULL pointer, …).
 pub const CONTENSOU_COLUMN_NONE: contensou_column = 11;
+/// `G` (optional rolling column; after `NONE`, which keeps its value).
+pub const CONTENSOU_COLUMN_G: contensou_column = 12;
+/// `nu` (optional rolling column).
+pub const CONTENSOU_COLUMN_NU: contensou_column = 13;
+/// `vrx` (optional rolling step column).
+pub const CONTENSOU_COLUMN_VRX: contensou_column = 14;
+/// `vry` (optional rolling step column).
+pub const CONTENSOU_COLUMN_VRY: contensou_column = 15;
+
+/// The optional step columns `vrx, vry` of the rolling laws
+/// ([`contensou::dynamic::RollingStep`]): the contact's rolling velocity in the contact frame
+/// (x the major axis), m/s. The sliding laws ignore it.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct contensou_rolling_step<T> {
+    /// V_x (m/s), along the major axis.
+    pub vrx: T,
+    /// V_y (m/s).
+    pub vry: T,
+}
+
+/// The rolling step columns of `contensou_contact_wrench_many_rolling_*`: two caller arrays
+/// of `rows` values each (`vrx, vry`).
+#[repr(C)]
+#[derive(Clone, Copy, Debug)]
+pub struct contensou_rolling_step_columns<T> {
+    /// V_x (m/s) per row.
+    pub vrx: *const T,
+    /// V_y (m/s) per row.
+    pub vry: *const T,
+}
 
 /// The step columns of `contensou_contact_wrench_many_*`: five caller arrays of `rows`
 /// values each (`h, hdot, vx, vy, omega`, as [`contensou_step`]).

@@ -17,11 +17,15 @@ fn text(p: *const core::ffi::c_char) -> &'static str {
 }
 
 fn storage32() -> Box<contensou_contact_f32> {
-    Box::new(contensou_contact_f32 { opaque: [0; CONTENSOU_CONTACT_F32_SIZE / 8] })
+    Box::new(contensou_contact_f32 {
+        opaque: [0; CONTENSOU_CONTACT_F32_SIZE / 8],
+    })
 }
 
 fn storage64() -> Box<contensou_contact_f64> {
-    Box::new(contensou_contact_f64 { opaque: [0; CONTENSOU_CONTACT_F64_SIZE / 8] })
+    Box::new(contensou_contact_f64 {
+        opaque: [0; CONTENSOU_CONTACT_F64_SIZE / 8],
+    })
 }
 
 const SPEC: contensou_spec<f64> = contensou_spec {
@@ -54,6 +58,10 @@ fn every_library_error_has_its_own_code_and_the_library_message() {
         Error::LengthNotPositive,
         Error::RegularizationSpeedNegative,
         Error::DampingNegative,
+        Error::ShearModulusNotPositive,
+        Error::RollingPoissonRatioOutOfRange,
+        Error::RollingAspectOutOfRange,
+        Error::ColumnLengthMismatch,
     ];
     let mut codes: Vec<u32> = all.iter().map(|&e| S::from(e) as u32).collect();
     for (e, &c) in all.iter().zip(&codes) {
@@ -143,8 +151,13 @@ fn bad_pointers_and_values_are_codes_and_write_nothing() {
             S::NullPointer
         );
         assert_eq!(
-            contensou_contact_new_f64(&mut *c, &SPEC, 5, 0, null_mut()),
+            contensou_contact_new_f64(&mut *c, &SPEC, 42, 0, null_mut()),
             S::InvalidLaw
+        );
+        assert_eq!(
+            contensou_contact_new_f64(&mut *c, &SPEC, CONTENSOU_LAW_LINEAR, 0, null_mut()),
+            S::InvalidLaw,
+            "full-slip and linear are rolling-evaluator laws only"
         );
         assert_eq!(
             contensou_contact_new_f64(&mut *c, &SPEC, 0, 2, null_mut()),
@@ -417,7 +430,7 @@ fn the_numbers_are_the_contracts_bit_for_bit() {
             }
         }
     }
-    assert_eq!(n, 5 * 2 * 3 * 4 * 4);
+    assert_eq!(n, Law::ALL.len() * 2 * 3 * 4 * 4);
 }
 
 #[test]

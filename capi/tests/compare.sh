@@ -7,7 +7,7 @@
 # the same rows before it. Usage: capi/tests/compare.sh (after capi/build.sh, or it builds).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-[[ -x target/release/wrench_eval && -x target/release/wrench_eval-san ]] || ./build.sh --no-check
+[[ -x target/release/wrench_eval && -x target/release/wrench_eval-san && -x target/release/rolling_eval ]] || ./build.sh --no-check
 cargo build --release --quiet --example bits
 bits=target/release/examples/bits
 c=target/release/wrench_eval
@@ -24,7 +24,7 @@ rows=$(($(wc -l <"$work/rows.csv") - 1))
 runs=0
 for precision in f32 f64; do
     for form in fixed varying; do
-        for law in best simplified pade ellipsoid coulomb; do
+        for law in best simplified pade ellipsoid coulomb table blend fastsim fastsim-16; do
             opts=(--law "$law" --form "$form" --precision "$precision")
             "$c" "${opts[@]}" <"$work/rows.csv" >"$work/c.csv" || { echo "compare: the C twin failed for ${opts[*]}" >&2; exit 1; }
             "${ref[@]}" "${opts[@]}" <"$work/rows.csv" >"$work/rust.csv" || { echo "compare: the reference failed for ${opts[*]}" >&2; exit 1; }
@@ -35,7 +35,40 @@ for precision in f32 f64; do
         done
     done
 done
-echo "compare: $rows rows × $runs runs (5 laws × 2 forms × 2 precisions): C = Rust bit for bit"
+echo "compare: $rows rows × $runs runs (9 laws × 2 forms × 2 precisions): C = Rust bit for bit"
+
+# The optional rolling columns (G, nu, vrx, vry; issue 20): all four, vrx/vry only (G, nu
+# by default), and two in another order, through the rolling laws (and best, which ignores
+# them), every form and precision.
+"$bits" wrench-rolling-gen >"$work/roll4.csv"
+cut -d, -f1-11,14,15 "$work/roll4.csv" >"$work/roll2.csv"
+awk -F, -v OFS=, '{ s = $1; for (k = 2; k <= 11; k++) s = s OFS $k; print s, $15, $13 }' "$work/roll4.csv" >"$work/rollswap.csv"
+rrows=$(($(wc -l <"$work/roll4.csv") - 1))
+runs=0
+for file in roll4 roll2 rollswap; do
+    for precision in f32 f64; do
+        for form in fixed varying; do
+            laws=(table blend fastsim fastsim-16 best)
+            [[ "$file" == roll4 ]] || laws=(table)
+            for law in "${laws[@]}"; do
+                opts=(--law "$law" --form "$form" --precision "$precision")
+                "$c" "${opts[@]}" <"$work/$file.csv" >"$work/c.csv" || { echo "compare: the C twin failed for $file ${opts[*]}" >&2; exit 1; }
+                "${ref[@]}" "${opts[@]}" <"$work/$file.csv" >"$work/rust.csv" || { echo "compare: the reference failed for $file ${opts[*]}" >&2; exit 1; }
+                n="$("$bits" check "$precision" "$work/c.csv" "$work/rust.csv")" || { echo "compare: FAILED for $file ${opts[*]}" >&2; exit 1; }
+                ((n == rrows)) || { echo "compare: $n of $rrows rows for $file ${opts[*]}" >&2; exit 1; }
+                runs=$((runs + 1))
+            done
+        done
+    done
+done
+for precision in f32 f64; do
+    opts=(--law table --form varying --precision "$precision")
+    target/release/wrench_eval-san "${opts[@]}" <"$work/roll4.csv" >"$work/san.csv" ||
+        { echo "compare: the sanitized C twin failed on the rolling columns (${opts[*]})" >&2; exit 1; }
+    "$c" "${opts[@]}" <"$work/roll4.csv" | cmp -s - "$work/san.csv" ||
+        { echo "compare: the sanitized C twin prints other values on the rolling columns (${opts[*]})" >&2; exit 1; }
+done
+echo "compare: rolling columns: $rrows rows × $runs runs (G,nu,vrx,vry: 5 laws; vrx,vry and vry,nu: table; 2 forms × 2 precisions): C = Rust bit for bit; ASan + UBSan clean (table)"
 
 # The C side under AddressSanitizer + UndefinedBehaviorSanitizer (built by build.sh): clean
 # on every row, and the same output.
@@ -86,3 +119,77 @@ for kind in $(cut -f1 "$work/bad.tsv" | uniq); do
     kinds=$((kinds + 1))
 done
 echo "compare: $kinds kinds of bad row: both stop at row 4 with the same message, exit 1, same rows before it"
+
+# Bad rolling columns (law table): the same row, column and message from both.
+good="50,50,1.15e11,0,0.1,1e-4,1e-6,0,0.01,0,50,8e10,0.28,2,0"
+for bad in "50,50,1.15e11,0,0.1,1e-4,1e-6,0,0.01,0,50,-8e10,0.28,2,0" \
+    "50,50,1.15e11,0,0.1,1e-4,1e-6,0,0.01,0,50,8e10,0.6,2,0" \
+    "50,50,1.15e11,0,0.1,1e-4,1e-6,0,0.01,0,50,inf,0.28,2,0" \
+    "50,50,1.15e11,0,0.1,1e-4,1e-6,0,0.01,0,50,8e10,0.28,inf,0" \
+    "50,50,1.15e11,0,0.1,1e-4,1e-6,0,0.01,0,50,8e10,0.28,2,-inf"; do
+    printf '%s\n' "${header},G,nu,vrx,vry" "$good" "$good" "$bad" "$good" >"$work/in.csv"
+    for precision in f32 f64; do
+        opts=(--law table --form fixed --precision "$precision")
+        set +e
+        "$c" "${opts[@]}" <"$work/in.csv" >"$work/c.csv" 2>"$work/c.err"; rc_c=$?
+        "${ref[@]}" "${opts[@]}" <"$work/in.csv" >"$work/rust.csv" 2>"$work/rust.err"; rc_r=$?
+        set -e
+        msg_c="$(sed -e 's/^wrench_eval: //' -e 's/ (status [0-9]*)$//' -e 's/ = [^:]*:/ = _:/' "$work/c.err")"
+        msg_r="$(sed -e 's/^contact_eval: //' -e 's/ = [^:]*:/ = _:/' "$work/rust.err")"
+        if ((rc_c != 1 || rc_r != 1)) || [[ "$msg_c" != "$msg_r" || "$msg_c" != "row 3: "* ]]; then
+            printf 'compare: bad rolling column %s (%s): exit %s / %s\n  C:    %s\n  Rust: %s\n' "$bad" "$precision" "$rc_c" "$rc_r" "$msg_c" "$msg_r" >&2
+            exit 1
+        fi
+        "$bits" check "$precision" "$work/c.csv" "$work/rust.csv" >/dev/null
+    done
+done
+echo "compare: 5 bad rolling-column rows (G, nu, vrx, vry): both stop at row 3 with the same message"
+
+# The rolling evaluator (examples/rolling_eval.c, issue 20) against `contact_eval rolling`:
+# every rolling law × precision, bit for bit; clean under ASan + UBSan; the same bad rows
+# stop both at the same row.
+"$bits" rolling-gen >"$work/rolling.csv"
+rows=$(($(wc -l <"$work/rolling.csv") - 1))
+runs=0
+for precision in f32 f64; do
+    for law in table blend fastsim fastsim-16 full-slip linear; do
+        opts=(--law "$law" --precision "$precision")
+        target/release/rolling_eval "${opts[@]}" <"$work/rolling.csv" >"$work/c.csv" || { echo "compare: the rolling twin failed for ${opts[*]}" >&2; exit 1; }
+        ../target/release/contact_eval rolling "${opts[@]}" <"$work/rolling.csv" >"$work/rust.csv" || { echo "compare: contact_eval rolling failed for ${opts[*]}" >&2; exit 1; }
+        n="$("$bits" check "$precision" "$work/c.csv" "$work/rust.csv")" || { echo "compare: rolling FAILED for ${opts[*]}" >&2; exit 1; }
+        ((n == rows)) || { echo "compare: $n of $rows rolling rows for ${opts[*]}" >&2; exit 1; }
+        runs=$((runs + 1))
+    done
+done
+for precision in f32 f64; do
+    target/release/rolling_eval-san --law table --precision "$precision" <"$work/rolling.csv" >"$work/san.csv" ||
+        { echo "compare: the sanitized rolling twin failed ($precision)" >&2; exit 1; }
+    target/release/rolling_eval --law table --precision "$precision" <"$work/rolling.csv" | cmp -s - "$work/san.csv" ||
+        { echo "compare: the sanitized rolling twin prints other values ($precision)" >&2; exit 1; }
+done
+echo "compare: rolling: $rows rows × $runs runs (6 laws × 2 precisions): C = contact_eval rolling bit for bit; clean under ASan + UBSan (table)"
+
+"$bits" rolling-bad >"$work/bad.tsv"
+kinds=0
+for kind in $(cut -f1 "$work/bad.tsv" | uniq); do
+    { echo "a,b,G,nu,f,N,V,xi,eta,phi"; grep "^$kind"$'\t' "$work/bad.tsv" | cut -f2-; } >"$work/in.csv"
+    for precision in f32 f64; do
+        set +e
+        target/release/rolling_eval --precision "$precision" <"$work/in.csv" >"$work/c.csv" 2>"$work/c.err"; rc_c=$?
+        ../target/release/contact_eval rolling --precision "$precision" <"$work/in.csv" >"$work/rust.csv" 2>"$work/rust.err"; rc_r=$?
+        set -e
+        # The same row and column (contact_eval names a non-finite input in its message, the
+        # creepages by their slip: "row 4: xi = 1e-3: omega must be finite" for φ = ∞).
+        col_c="$(sed -n 's/^rolling_eval: row 4: \([^ ]*\) = .*/\1/p' "$work/c.err")"
+        case "$col_c" in xi) slip=v_x ;; eta) slip=v_y ;; phi) slip=omega ;; *) slip="$col_c" ;; esac
+        if ((rc_c != 1 || rc_r != 1)) || [[ -z "$col_c" ]] ||
+            ! grep -qE "^contact_eval: row 4: ($col_c = |.*: ($col_c|$slip) must be finite$)" "$work/rust.err"; then
+            echo "compare: rolling bad row '$kind' ($precision): C exit $rc_c, Rust exit $rc_r; expected exit 1 at row 4 naming the same column" >&2
+            cat "$work/c.err" "$work/rust.err" >&2
+            exit 1
+        fi
+        "$bits" check "$precision" "$work/c.csv" "$work/rust.csv" >/dev/null
+    done
+    kinds=$((kinds + 1))
+done
+echo "compare: rolling: $kinds kinds of bad row: both stop at row 4 naming the same column, exit 1, same rows before it"

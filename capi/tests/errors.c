@@ -11,6 +11,8 @@
 
 static contensou_contact_f32 never_initialised; /* static: zeroed */
 static contensou_contact_f64 contact;
+static contensou_rolling_f32 rolling_never_initialised; /* static: zeroed */
+static contensou_rolling_f64 rolling;
 static int failures = 0;
 
 #define EXPECT(cond) do { if (!(cond)) { fprintf(stderr, "errors.c:%d: %s\n", __LINE__, #cond); failures++; } } while (0)
@@ -31,7 +33,8 @@ int main(void) {
     EXPECT(contensou_contact_new_f64(NULL, &spec, CONTENSOU_LAW_BEST, CONTENSOU_FORM_FIXED, &column) == CONTENSOU_STATUS_NULL_POINTER);
     EXPECT(column == CONTENSOU_COLUMN_NONE);
     EXPECT(contensou_contact_new_f64(misaligned, &spec, CONTENSOU_LAW_BEST, CONTENSOU_FORM_FIXED, NULL) == CONTENSOU_STATUS_MISALIGNED);
-    EXPECT(contensou_contact_new_f64(&contact, &spec, 7, CONTENSOU_FORM_FIXED, NULL) == CONTENSOU_STATUS_INVALID_LAW);
+    EXPECT(contensou_contact_new_f64(&contact, &spec, 42, CONTENSOU_FORM_FIXED, NULL) == CONTENSOU_STATUS_INVALID_LAW);
+    EXPECT(contensou_contact_new_f64(&contact, &spec, CONTENSOU_LAW_FULL_SLIP, CONTENSOU_FORM_FIXED, NULL) == CONTENSOU_STATUS_INVALID_LAW);
     EXPECT(contensou_contact_new_f64(&contact, &spec, CONTENSOU_LAW_BEST, 7, NULL) == CONTENSOU_STATUS_INVALID_FORM);
     spec.p = 60.0;
     EXPECT(contensou_contact_new_f64(&contact, &spec, CONTENSOU_LAW_PADE, CONTENSOU_FORM_VARYING, &column) == CONTENSOU_STATUS_CURVATURES_NOT_ORDERED);
@@ -46,6 +49,35 @@ int main(void) {
     EXPECT(contensou_contact_wrench_f64(&contact, NULL, &w, NULL) == CONTENSOU_STATUS_NULL_POINTER);
     EXPECT(strcmp(contensou_status_message(CONTENSOU_STATUS_DAMPING_NEGATIVE), "damping coefficient is negative") == 0);
     EXPECT(strcmp(contensou_status_message(4242), "unknown contensou_status code") == 0);
+
+    /* The rolling evaluator: typed errors naming the column, NULL, zeroed storage. */
+    {
+        contensou_rolling_state_f64 st = {6e-3, 4e-3, 0.3, 8e4, 30.0, 1e-3, 0.0, 0.5};
+        contensou_rolling_state_f32 st32 = {6e-3f, 4e-3f, 0.3f, 8e4f, 30.0f, 1e-3f, 0.0f, 0.5f};
+        contensou_rolling_output_f64 out;
+        contensou_rolling_output_f32 out32;
+        contensou_rolling_column rc = 99;
+        contensou_law law = 0;
+        EXPECT(sizeof(contensou_rolling_f32) == CONTENSOU_ROLLING_F32_SIZE);
+        EXPECT(sizeof(contensou_rolling_f64) == CONTENSOU_ROLLING_F64_SIZE);
+        EXPECT(contensou_rolling_wrench_f32(&rolling_never_initialised, &st32, &out32, NULL) == CONTENSOU_STATUS_NOT_INITIALIZED);
+        EXPECT(contensou_rolling_new_f64(NULL, 1.5, 8e10, 0.28, CONTENSOU_LAW_TABLE, &rc) == CONTENSOU_STATUS_NULL_POINTER);
+        EXPECT(rc == CONTENSOU_ROLLING_COLUMN_NONE);
+        EXPECT(contensou_rolling_new_f64(&rolling, 1.5, 8e10, 0.28, CONTENSOU_LAW_BEST, NULL) == CONTENSOU_STATUS_INVALID_LAW);
+        EXPECT(contensou_rolling_new_f64(&rolling, 1.5, -1.0, 0.28, CONTENSOU_LAW_TABLE, &rc) == CONTENSOU_STATUS_SHEAR_MODULUS_NOT_POSITIVE);
+        EXPECT(rc == CONTENSOU_ROLLING_COLUMN_G && strcmp(contensou_rolling_column_name(rc), "G") == 0);
+        EXPECT(contensou_rolling_new_f64(&rolling, 1.5, 8e10, 0.6, CONTENSOU_LAW_TABLE, &rc) == CONTENSOU_STATUS_ROLLING_POISSON_RATIO_OUT_OF_RANGE);
+        EXPECT(rc == CONTENSOU_ROLLING_COLUMN_NU);
+        EXPECT(contensou_rolling_new_f64(&rolling, 200.0, 8e10, 0.28, CONTENSOU_LAW_TABLE, &rc) == CONTENSOU_STATUS_ROLLING_ASPECT_OUT_OF_RANGE);
+        EXPECT(rc == CONTENSOU_ROLLING_COLUMN_A_OVER_B && strcmp(contensou_rolling_column_name(rc), "a/b") == 0);
+        EXPECT(contensou_law_from_name("fastsim-16", &law) == CONTENSOU_STATUS_OK && law == CONTENSOU_LAW_FASTSIM_16);
+        EXPECT(contensou_rolling_new_f64(&rolling, 1.5, 8e10, 0.28, law, &rc) == CONTENSOU_STATUS_OK);
+        EXPECT(contensou_rolling_wrench_f64(&rolling, &st, &out, &rc) == CONTENSOU_STATUS_OK && out.fx < 0.0 && out.mz != 0.0);
+        EXPECT(contensou_rolling_wrench_f64(&rolling, &st, NULL, &rc) == CONTENSOU_STATUS_NULL_POINTER);
+        st.phi = 1.0 / 0.0; /* inf */
+        EXPECT(contensou_rolling_wrench_f64(&rolling, &st, &out, &rc) == CONTENSOU_STATUS_NON_FINITE);
+        EXPECT(rc == CONTENSOU_ROLLING_COLUMN_PHI);
+    }
     if (failures) return 1;
     printf("errors.c: all checks hold\n");
     return 0;

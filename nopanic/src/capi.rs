@@ -160,11 +160,172 @@ precision_probes!(double: f64, contensou_contact_f64, CONTENSOU_CONTACT_F64_SIZE
     contensou_curvatures_new_f64, contensou_curvatures_sphere_plane_f64,
     contensou_curvatures_sphere_sphere_f64, contensou_curvatures_ball_race_f64, contensou_modulus_of_f64);
 
+/// The rolling functions (issue 20), one module per precision.
+macro_rules! rolling_probes {
+    ($m:ident: $T:ty, $storage:ident, $words:expr, $rolling:ident, $rwords:expr,
+     $new_rolling:ident, $wrench_rolling:ident, $many_rolling:ident, $rnew:ident, $rwrench:ident) => {
+        pub(crate) mod $m {
+            use super::*;
+
+            fn v(x: f64) -> $T {
+                black_box(x as $T)
+            }
+
+            #[inline(never)]
+            fn probe_capi_contact_new_rolling() {
+                let mut s = $storage {
+                    opaque: black_box([0; $words]),
+                };
+                let spec = contensou_spec::<$T> {
+                    p: v(1.0),
+                    q: v(2.0),
+                    estar: v(3.0),
+                    cd: v(0.0),
+                    f: v(0.1),
+                    delta: v(1e-4),
+                };
+                let (g, nu) = (v(1e9), v(0.3));
+                let mut col = black_box(0);
+                let r = unsafe {
+                    $new_rolling(
+                        ptr(&mut s),
+                        ptr(&spec),
+                        ptr(&g),
+                        ptr(&nu),
+                        black_box(5),
+                        black_box(1),
+                        ptr(&mut col),
+                    )
+                };
+                black_box((r, &s, col));
+            }
+
+            #[inline(never)]
+            fn probe_capi_contact_wrench_rolling() {
+                let s = $storage {
+                    opaque: black_box([0; $words]),
+                };
+                let step = contensou_step::<$T> {
+                    h: v(1e-6),
+                    hdot: v(0.0),
+                    vx: v(0.01),
+                    vy: v(0.0),
+                    omega: v(50.0),
+                };
+                let roll = contensou_rolling_step::<$T> {
+                    vrx: v(1.0),
+                    vry: v(0.1),
+                };
+                let mut w = contensou_wrench::<$T>::default();
+                let mut col = black_box(0);
+                let r = unsafe {
+                    $wrench_rolling(ptr(&s), ptr(&step), ptr(&roll), ptr(&mut w), ptr(&mut col))
+                };
+                black_box((r, w, col));
+            }
+
+            #[inline(never)]
+            fn probe_capi_contact_wrench_many_rolling() {
+                let s = $storage {
+                    opaque: black_box([0; $words]),
+                };
+                let x = [v(1e-6); 9];
+                let mut o: [[$T; 9]; 7] = [[v(0.0); 9]; 7];
+                let steps = contensou_step_columns::<$T> {
+                    h: ptr(x.as_ptr()),
+                    hdot: ptr(x.as_ptr()),
+                    vx: ptr(x.as_ptr()),
+                    vy: ptr(x.as_ptr()),
+                    omega: ptr(x.as_ptr()),
+                };
+                let roll = contensou_rolling_step_columns::<$T> {
+                    vrx: ptr(x.as_ptr()),
+                    vry: ptr(x.as_ptr()),
+                };
+                let [n, fx, fy, tz, a, b, e2] = o.each_mut().map(|c| ptr(c.as_mut_ptr()));
+                let out = contensou_wrench_columns::<$T> {
+                    n,
+                    fx,
+                    fy,
+                    tz,
+                    a,
+                    b,
+                    e2,
+                };
+                let (mut row, mut col) = (black_box(0), black_box(0));
+                let r = unsafe {
+                    $many_rolling(
+                        ptr(&s),
+                        black_box(9),
+                        ptr(&steps),
+                        ptr(&roll),
+                        ptr(&out),
+                        ptr(&mut row),
+                        ptr(&mut col),
+                    )
+                };
+                black_box((r, o, row, col));
+            }
+
+            #[inline(never)]
+            fn probe_capi_rolling_new() {
+                let mut s = $rolling {
+                    opaque: black_box([0; $rwords]),
+                };
+                let mut col = black_box(0);
+                let r = unsafe {
+                    $rnew(ptr(&mut s), v(1.5), v(8e10), v(0.28), black_box(5), ptr(&mut col))
+                };
+                black_box((r, &s, col));
+            }
+
+            #[inline(never)]
+            fn probe_capi_rolling_wrench() {
+                let s = $rolling {
+                    opaque: black_box([0; $rwords]),
+                };
+                let state = contensou_rolling_state::<$T> {
+                    a: v(6e-3),
+                    b: v(4e-3),
+                    f: v(0.3),
+                    n: v(8e4),
+                    v: v(30.0),
+                    xi: v(1e-3),
+                    eta: v(0.0),
+                    phi: v(1.0),
+                };
+                let mut out = contensou_rolling_output::<$T>::default();
+                let mut col = black_box(0);
+                let r = unsafe { $rwrench(ptr(&s), ptr(&state), ptr(&mut out), ptr(&mut col)) };
+                black_box((r, out, col));
+            }
+
+            pub(crate) fn run() {
+                probe_capi_contact_new_rolling();
+                probe_capi_contact_wrench_rolling();
+                probe_capi_contact_wrench_many_rolling();
+                probe_capi_rolling_new();
+                probe_capi_rolling_wrench();
+            }
+        }
+    };
+}
+
+rolling_probes!(rolling_single: f32, contensou_contact_f32, CONTENSOU_CONTACT_F32_SIZE / 8,
+    contensou_rolling_f32, CONTENSOU_ROLLING_F32_SIZE / 8,
+    contensou_contact_new_rolling_f32, contensou_contact_wrench_rolling_f32,
+    contensou_contact_wrench_many_rolling_f32, contensou_rolling_new_f32, contensou_rolling_wrench_f32);
+rolling_probes!(rolling_double: f64, contensou_contact_f64, CONTENSOU_CONTACT_F64_SIZE / 8,
+    contensou_rolling_f64, CONTENSOU_ROLLING_F64_SIZE / 8,
+    contensou_contact_new_rolling_f64, contensou_contact_wrench_rolling_f64,
+    contensou_contact_wrench_many_rolling_f64, contensou_rolling_new_f64, contensou_rolling_wrench_f64);
+
 #[inline(never)]
 fn probe_capi_any_messages() {
     black_box((
         contensou_status_message(black_box(3)),
         contensou_column_name(black_box(4)),
+        contensou_rolling_column_name(black_box(4)),
     ));
 }
 
@@ -184,6 +345,8 @@ fn probe_capi_any_names() {
 pub(crate) fn run() {
     single::run();
     double::run();
+    rolling_single::run();
+    rolling_double::run();
     probe_capi_any_messages();
     probe_capi_any_names();
 }

@@ -16,9 +16,12 @@
 //! a `ValueError` naming the argument, the index into the broadcast shape and the reason.
 
 mod columns;
+mod rolling;
 mod rows;
 
-use ::contensou::dynamic::{DynContact, Form, INPUTS, Law, OUTPUTS, Spec, Step};
+use ::contensou::dynamic::{
+    DynContact, Form, INPUTS, Law, OUTPUTS, ROLLING_INPUTS, RollingSpec, RollingStep, Spec, Step,
+};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
@@ -86,38 +89,75 @@ fn columns_of<'a, T: Precision, const N: usize>(
         .map_err(|_| PyValueError::new_err("argument count"))
 }
 
+/// The optional arguments `G, nu, vrx, vry` converted to arrays of `T` (`None`: not given).
+fn convert_optional<'py, T: Precision>(
+    values: [Option<&Bound<'py, PyAny>>; 4],
+) -> PyResult<[Option<Arg<'py, T>>; 4]> {
+    let mut out = [None, None, None, None];
+    for (k, value) in values.into_iter().enumerate() {
+        if let Some(v) = value {
+            out[k] = Some(T::convert(ROLLING_INPUTS[k], v)?);
+        }
+    }
+    Ok(out)
+}
+
+/// The columns of the given optional arguments over `shape`.
+fn optional_columns<'a, T: Precision>(
+    args: &'a [Option<Arg<'_, T>>; 4],
+    shape: &[usize],
+) -> PyResult<[Option<Column<'a, T>>; 4]> {
+    let mut out = [None, None, None, None];
+    for (k, arg) in args.iter().enumerate() {
+        if let Some(a) = arg {
+            out[k] = Some(Column::new(a, shape)?);
+        }
+    }
+    Ok(out)
+}
+
 /// The per-row function in precision `T`.
 fn wrench_in<'py, T: Precision>(
     py: Python<'py>,
     values: [&Bound<'py, PyAny>; 11],
+    optional: [Option<&Bound<'py, PyAny>>; 4],
     law: Law,
     form: Form,
 ) -> PyResult<Bound<'py, PyDict>> {
     let args = convert_all::<T, 11>(INPUTS, values)?;
-    let named: Vec<_> = INPUTS.iter().copied().zip(args.iter()).collect();
+    let extra = convert_optional::<T>(optional)?;
+    let mut named: Vec<_> = INPUTS.iter().copied().zip(args.iter()).collect();
+    for (name, arg) in ROLLING_INPUTS.iter().zip(&extra) {
+        if let Some(a) = arg {
+            named.push((name, a));
+        }
+    }
     let shape = broadcast_shape(&named)?;
     let [p, q, estar, cd, f, delta, h, hdot, vx, vy, omega] = columns_of(&args, &shape)?;
+    let [g, nu, vrx, vry] = optional_columns(&extra, &shape)?;
     let spec = [p, q, estar, cd, f, delta];
     let steps = [h, hdot, vx, vy, omega];
-    let inputs = core::array::from_fn(|k| {
-        if k < 6 {
-            Some(&spec[k])
-        } else {
-            Some(&steps[k - 6])
-        }
+    let rolling = [g.as_ref(), nu.as_ref(), vrx.as_ref(), vry.as_ref()];
+    let inputs = core::array::from_fn(|k| match k {
+        0..6 => Some(&spec[k]),
+        6..11 => Some(&steps[k - 6]),
+        _ => rolling[k - 11],
     });
-    evaluate_py(py, &shape, &steps, PerRow::new(&spec, law, form), inputs)
+    let contacts = PerRow::new(&spec, [rolling[0], rolling[1]], law, form);
+    evaluate_py(py, &shape, &steps, contacts, inputs)
 }
 
 /// The wrench of the contract, row by row over the broadcast arguments.
 ///
-/// Arguments are the contract's input columns (`contensou.INPUTS`): scalars or arrays that
-/// broadcast together. Returns a dict of arrays `N, Fx, Fy, Tz, a, b, e2` of the broadcast
+/// Arguments are the contract's input columns (`contensou.INPUTS`) and, optionally, the
+/// rolling columns `G`, `nu` (contact) and `vrx`, `vry` (step; `contensou.ROLLING_INPUTS`,
+/// read by the rolling laws only; defaults G = E*·(1 − ν), ν = 0.3, V = 0): scalars or
+/// arrays that broadcast together. Returns a dict of arrays `N, Fx, Fy, Tz, a, b, e2` of the broadcast
 /// shape (numpy scalars if every argument is a scalar), dtype float32 for `precision="f32"`.
 /// Raises `ValueError` naming the argument, the index and the reason for any invalid value,
 /// an unknown `law`, `precision` or `form`, or shapes that do not broadcast.
 #[pyfunction]
-#[pyo3(signature = (P, Q, estar, cd, f, delta, h, hdot, vx, vy, omega, *, law = "best", precision = "f64", form = "fixed"))]
+#[pyo3(signature = (P, Q, estar, cd, f, delta, h, hdot, vx, vy, omega, *, law = "best", precision = "f64", form = "fixed", G = None, nu = None, vrx = None, vry = None))]
 #[allow(non_snake_case, clippy::too_many_arguments)]
 fn wrench<'py>(
     py: Python<'py>,
@@ -135,13 +175,18 @@ fn wrench<'py>(
     law: &str,
     precision: &str,
     form: &str,
+    G: Option<&Bound<'py, PyAny>>,
+    nu: Option<&Bound<'py, PyAny>>,
+    vrx: Option<&Bound<'py, PyAny>>,
+    vry: Option<&Bound<'py, PyAny>>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let (law, form) = (law_of(law)?, form_of(form)?);
     let values = [P, Q, estar, cd, f, delta, h, hdot, vx, vy, omega];
+    let optional = [G, nu, vrx, vry];
     if is_f32(precision)? {
-        wrench_in::<f32>(py, values, law, form)
+        wrench_in::<f32>(py, values, optional, law, form)
     } else {
-        wrench_in::<f64>(py, values, law, form)
+        wrench_in::<f64>(py, values, optional, law, form)
     }
 }
 
@@ -170,28 +215,37 @@ fn scalar<T: Precision>(name: &'static str, value: &Bound<'_, PyAny>) -> PyResul
 /// The contact of `values` (P, Q, estar, cd, f, delta) in precision `T`.
 fn build<T: Precision>(
     values: [&Bound<'_, PyAny>; 6],
+    optional: [Option<&Bound<'_, PyAny>>; 2],
     law: Law,
     form: Form,
 ) -> PyResult<DynContact<T>> {
-    let mut x = [T::from_f64(0.0); 6];
+    let mut x = [T::from_f64(0.0); 8];
     for (k, value) in values.into_iter().enumerate() {
         x[k] = scalar::<T>(INPUTS[k], value)?;
     }
-    let [p, q, estar, cd, f, delta] = x;
-    DynContact::new(
-        &Spec {
-            p,
-            q,
-            estar,
-            cd,
-            f,
-            delta,
-        },
-        law,
-        form,
-    )
-    .map_err(|e| {
-        let k = INPUTS.iter().position(|&c| c == e.column).unwrap_or(0);
+    let mut rolling = RollingSpec::default();
+    for (k, value) in optional.into_iter().enumerate() {
+        if let Some(v) = value {
+            x[6 + k] = scalar::<T>(ROLLING_INPUTS[k], v)?;
+            *(if k == 0 {
+                &mut rolling.g
+            } else {
+                &mut rolling.nu
+            }) = Some(x[6 + k]);
+        }
+    }
+    let [p, q, estar, cd, f, delta, ..] = x;
+    let spec = Spec {
+        p,
+        q,
+        estar,
+        cd,
+        f,
+        delta,
+    };
+    DynContact::new_rolling(&spec, &rolling, law, form).map_err(|e| {
+        let names = INPUTS[..6].iter().chain(&ROLLING_INPUTS[..2]);
+        let k = names.into_iter().position(|&c| c == e.column).unwrap_or(0);
         PyValueError::new_err(format!("{} = {}: {}", e.column, x[k], e.error.as_str()))
     })
 }
@@ -201,13 +255,26 @@ fn steps_in<'py, T: Precision>(
     py: Python<'py>,
     contact: &DynContact<T>,
     values: [&Bound<'py, PyAny>; 5],
+    rolling: [Option<&Bound<'py, PyAny>>; 2],
 ) -> PyResult<Bound<'py, PyDict>> {
     let names = [INPUTS[6], INPUTS[7], INPUTS[8], INPUTS[9], INPUTS[10]];
     let args = convert_all::<T, 5>(names, values)?;
-    let named: Vec<_> = names.iter().copied().zip(args.iter()).collect();
+    let extra = convert_optional::<T>([None, None, rolling[0], rolling[1]])?;
+    let mut named: Vec<_> = names.iter().copied().zip(args.iter()).collect();
+    for (name, arg) in ROLLING_INPUTS.iter().zip(&extra) {
+        if let Some(a) = arg {
+            named.push((name, a));
+        }
+    }
     let shape = broadcast_shape(&named)?;
     let steps = columns_of(&args, &shape)?;
-    let inputs = core::array::from_fn(|k| if k < 6 { None } else { Some(&steps[k - 6]) });
+    let [_, _, vrx, vry] = optional_columns(&extra, &shape)?;
+    let inputs = core::array::from_fn(|k| match k {
+        6..11 => Some(&steps[k - 6]),
+        13 => vrx.as_ref(),
+        14 => vry.as_ref(),
+        _ => None,
+    });
     evaluate_py(py, &shape, &steps, contact, inputs)
 }
 
@@ -223,7 +290,7 @@ impl Contact {
     /// Validates the contact columns (scalars) and builds the contact; `ValueError` naming
     /// the argument otherwise.
     #[new]
-    #[pyo3(signature = (P, Q, estar, cd, f, delta, *, law = "best", precision = "f64", form = "fixed"))]
+    #[pyo3(signature = (P, Q, estar, cd, f, delta, *, law = "best", precision = "f64", form = "fixed", G = None, nu = None))]
     #[allow(non_snake_case, clippy::too_many_arguments)]
     fn new(
         P: &Bound<'_, PyAny>,
@@ -235,19 +302,24 @@ impl Contact {
         law: &str,
         precision: &str,
         form: &str,
+        G: Option<&Bound<'_, PyAny>>,
+        nu: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<Self> {
         let (law, form) = (law_of(law)?, form_of(form)?);
         let values = [P, Q, estar, cd, f, delta];
         let built = if is_f32(precision)? {
-            Built::F32(build(values, law, form)?)
+            Built::F32(build(values, [G, nu], law, form)?)
         } else {
-            Built::F64(build(values, law, form)?)
+            Built::F64(build(values, [G, nu], law, form)?)
         };
         Ok(Contact { built })
     }
 
-    /// The wrench at the step columns (scalars or arrays that broadcast): the dict of
+    /// The wrench at the step columns (scalars or arrays that broadcast), optionally with the
+    /// rolling velocity `vrx`, `vry` (m/s, contact frame; default 0): the dict of
     /// `contensou.wrench`.
+    #[pyo3(signature = (h, hdot, vx, vy, omega, vrx = None, vry = None))]
+    #[allow(clippy::too_many_arguments)]
     fn wrench<'py>(
         &self,
         py: Python<'py>,
@@ -256,11 +328,13 @@ impl Contact {
         vx: &Bound<'py, PyAny>,
         vy: &Bound<'py, PyAny>,
         omega: &Bound<'py, PyAny>,
+        vrx: Option<&Bound<'py, PyAny>>,
+        vry: Option<&Bound<'py, PyAny>>,
     ) -> PyResult<Bound<'py, PyDict>> {
         let values = [h, hdot, vx, vy, omega];
         match &self.built {
-            Built::F32(c) => steps_in(py, c, values),
-            Built::F64(c) => steps_in(py, c, values),
+            Built::F32(c) => steps_in(py, c, values, [vrx, vry]),
+            Built::F64(c) => steps_in(py, c, values, [vrx, vry]),
         }
     }
 
@@ -268,6 +342,8 @@ impl Contact {
     /// the tuple `(N, Fx, Fy, Tz, a, b, e2)` of Python floats out (for `precision="f32"` the
     /// inputs are rounded to f32 and the f32 results widened exactly) — the values of
     /// `wrench` on the same step, without building numpy objects. `ValueError` as `wrench`.
+    #[pyo3(signature = (h, hdot, vx, vy, omega, vrx = 0.0, vry = 0.0))]
+    #[allow(clippy::too_many_arguments)]
     fn step(
         &self,
         h: f64,
@@ -275,9 +351,11 @@ impl Contact {
         vx: f64,
         vy: f64,
         omega: f64,
+        vrx: f64,
+        vry: f64,
     ) -> PyResult<(f64, f64, f64, f64, f64, f64, f64)> {
-        fn one<T: Precision>(c: &DynContact<T>, x: [f64; 5]) -> PyResult<[f64; 7]> {
-            let [h, hdot, vx, vy, omega] = x.map(T::from_f64);
+        fn one<T: Precision>(c: &DynContact<T>, x: [f64; 7]) -> PyResult<[f64; 7]> {
+            let [h, hdot, vx, vy, omega, vrx, vry] = x.map(T::from_f64);
             let step = Step {
                 h,
                 hdot,
@@ -285,10 +363,15 @@ impl Contact {
                 vy,
                 omega,
             };
-            match c.wrench(&step) {
+            match c.wrench_rolling(&step, &RollingStep { vrx, vry }) {
                 Ok(out) => Ok(out.to_array().map(T::to_f64)),
                 Err(e) => {
-                    let k = INPUTS.iter().position(|&n| n == e.column).unwrap_or(6);
+                    let names = INPUTS.iter().chain(&ROLLING_INPUTS);
+                    let k = match names.into_iter().position(|&n| n == e.column) {
+                        Some(k) if k >= 13 => k - 2, // vrx, vry: x[5], x[6]
+                        Some(k) => k,
+                        None => 6,
+                    };
                     let value = x.get(k.saturating_sub(6)).copied().unwrap_or(f64::NAN);
                     Err(PyValueError::new_err(format!(
                         "{} = {}: {}",
@@ -299,7 +382,7 @@ impl Contact {
                 }
             }
         }
-        let x = [h, hdot, vx, vy, omega];
+        let x = [h, hdot, vx, vy, omega, vrx, vry];
         let [n, fx, fy, tz, a, b, e2] = match &self.built {
             Built::F32(c) => one(c, x)?,
             Built::F64(c) => one(c, x)?,
@@ -406,6 +489,15 @@ impl Contact {
 #[pymodule(name = "contensou")]
 fn contensou_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(wrench, m)?)?;
+    m.add_function(wrap_pyfunction!(rolling::rolling, m)?)?;
+    m.add_class::<rolling::RollingContact>()?;
+    m.add("ROLLING_INPUTS", ROLLING_INPUTS.to_vec())?;
+    m.add("ROLLING_EVAL_INPUTS", rolling::INPUTS.to_vec())?;
+    m.add("ROLLING_EVAL_OUTPUTS", rolling::OUTPUTS.to_vec())?;
+    m.add(
+        "ROLLING_LAWS",
+        rolling::LAWS.iter().map(|l| l.name()).collect::<Vec<_>>(),
+    )?;
     m.add_class::<Contact>()?;
     m.add("INPUTS", INPUTS.to_vec())?;
     m.add("OUTPUTS", OUTPUTS.to_vec())?;

@@ -7,7 +7,10 @@ use std::borrow::Cow;
 
 use ::contensou::Real;
 use ::contensou::batch::{BatchReal, Steps, Wrenches};
-use ::contensou::dynamic::{DynContact, Form, INPUTS, Invalid, Law, OUTPUTS, Spec};
+use ::contensou::dynamic::{
+    DynContact, Form, INPUTS, Invalid, Law, OUTPUTS, ROLLING_INPUTS, RollingSpec, RollingSteps,
+    Spec,
+};
 use numpy::{Element, PyArray1, PyArrayMethods};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
@@ -48,6 +51,8 @@ impl Precision for f64 {
 pub type StepColumns<'a, T> = [Column<'a, T>; 5];
 /// The contact columns `P, Q, estar, cd, f, delta`, in [`INPUTS`] order.
 pub type SpecColumns<'a, T> = [Column<'a, T>; 6];
+/// Every input column by name for the error message: [`INPUTS`] then [`ROLLING_INPUTS`].
+pub type Named<'a, 'b, T> = [Option<&'b Column<'a, T>>; 15];
 
 /// Where each row's contact comes from.
 pub trait Contacts<T: Real> {
@@ -75,16 +80,24 @@ impl<T: Real> Contacts<T> for &DynContact<T> {
 /// deterministic, so the result is the one a fresh build gives.
 pub struct PerRow<'a, T: Real> {
     columns: &'a SpecColumns<'a, T>,
+    /// The optional contact columns `G, nu`.
+    rolling: [Option<&'a Column<'a, T>>; 2],
     law: Law,
     form: Form,
-    last: Option<([u64; 6], DynContact<T>)>,
+    last: Option<([u64; 8], DynContact<T>)>,
 }
 
 impl<'a, T: Precision> PerRow<'a, T> {
-    /// Contacts of `law` and `form` from `columns`.
-    pub fn new(columns: &'a SpecColumns<'a, T>, law: Law, form: Form) -> Self {
+    /// Contacts of `law` and `form` from `columns` and the optional `G, nu` columns.
+    pub fn new(
+        columns: &'a SpecColumns<'a, T>,
+        rolling: [Option<&'a Column<'a, T>>; 2],
+        law: Law,
+        form: Form,
+    ) -> Self {
         PerRow {
             columns,
+            rolling,
             law,
             form,
             last: None,
@@ -93,16 +106,26 @@ impl<'a, T: Precision> PerRow<'a, T> {
 }
 
 impl<T: Precision> PerRow<'_, T> {
-    /// The bits of row `i`'s contact columns.
-    fn key(&self, i: usize) -> [u64; 6] {
-        self.columns.each_ref().map(|c| c.at(i).bits())
+    /// The bits of row `i`'s contact columns (an absent optional column: a NaN pattern no
+    /// valid value has).
+    fn key(&self, i: usize) -> [u64; 8] {
+        let [p, q, estar, cd, f, delta] = self.columns.each_ref().map(|c| c.at(i).bits());
+        let [g, nu] = self.rolling.map(|c| c.map_or(u64::MAX, |c| c.at(i).bits()));
+        [p, q, estar, cd, f, delta, g, nu]
+    }
+
+    /// Row `i`'s optional `G, nu`.
+    fn rolling_spec(&self, i: usize) -> RollingSpec<T> {
+        let [g, nu] = self.rolling.map(|c| c.map(|c| c.at(i)));
+        RollingSpec { g, nu }
     }
 }
 
 impl<T: Precision> Contacts<T> for PerRow<'_, T> {
     fn run_end(&self, i: usize, rows: usize) -> usize {
         // Every contact column one shared value: one contact for all rows.
-        if self.columns.iter().all(|c| c.rows(rows).is_none()) {
+        let shared = |c: &Column<'_, T>| c.rows(rows).is_none();
+        if self.columns.iter().all(shared) && self.rolling.iter().flatten().all(|c| shared(c)) {
             return rows;
         }
         let key = self.key(i);
@@ -112,7 +135,7 @@ impl<T: Precision> Contacts<T> for PerRow<'_, T> {
     #[inline]
     fn at(&mut self, i: usize) -> Result<&DynContact<T>, Invalid> {
         let [p, q, estar, cd, f, delta] = self.columns.each_ref().map(|c| c.at(i));
-        let key = [p, q, estar, cd, f, delta].map(Precision::bits);
+        let key = self.key(i);
         if self.last.as_ref().is_none_or(|(k, _)| *k != key) {
             let spec = Spec {
                 p,
@@ -122,7 +145,9 @@ impl<T: Precision> Contacts<T> for PerRow<'_, T> {
                 f,
                 delta,
             };
-            self.last = Some((key, DynContact::new(&spec, self.law, self.form)?));
+            let rolling = self.rolling_spec(i);
+            let contact = DynContact::new_rolling(&spec, &rolling, self.law, self.form)?;
+            self.last = Some((key, contact));
         }
         // Set just above when it was absent; the error arm is never taken.
         self.last.as_ref().map(|(_, c)| c).ok_or(Invalid {
@@ -141,13 +166,21 @@ pub struct Outputs<T> {
 pub fn evaluate<T: Precision>(
     rows: usize,
     steps: &StepColumns<'_, T>,
+    rolling: [Option<&Column<'_, T>>; 2],
     mut contacts: impl Contacts<T>,
 ) -> Result<Outputs<T>, (usize, Invalid)> {
     // Every step column as `rows` values (a shared value expanded once).
-    let [h, hdot, vx, vy, omega] = steps.each_ref().map(|c| match c.rows(rows) {
-        Some(s) => Cow::Borrowed(s),
-        None => Cow::Owned((0..rows).map(|i| c.at(i)).collect::<Vec<T>>()),
-    });
+    fn expand<'c, T: Precision>(c: &'c Column<'_, T>, rows: usize) -> Cow<'c, [T]> {
+        match c.rows(rows) {
+            Some(s) => Cow::Borrowed(s),
+            None => Cow::Owned((0..rows).map(|i| c.at(i)).collect::<Vec<T>>()),
+        }
+    }
+    let [h, hdot, vx, vy, omega] = steps.each_ref().map(|c| expand(c, rows));
+    // The rolling velocity columns when either is given (the other one 0).
+    let [vrx, vry] =
+        rolling.map(|c| c.map_or(Cow::Owned(vec![T::ZERO; rows]), |c| expand(c, rows)));
+    let rolling = rolling.iter().any(Option::is_some);
     let mut columns: [Vec<T>; 7] = core::array::from_fn(|_| vec![T::ZERO; rows]);
     let mut i = 0;
     while i < rows {
@@ -161,47 +194,55 @@ pub fn evaluate<T: Precision>(
             vy: &vy[i..end],
             omega: &omega[i..end],
         };
-        contact
-            .wrench_many(
-                &steps,
-                &mut Wrenches {
-                    n,
-                    fx,
-                    fy,
-                    tz,
-                    a,
-                    b,
-                    e2,
-                },
-            )
-            .map_err(|e| {
-                let why = Invalid {
-                    column: e.column,
-                    error: e.error,
-                };
-                (i + e.row, why)
-            })?;
+        let mut out = Wrenches {
+            n,
+            fx,
+            fy,
+            tz,
+            a,
+            b,
+            e2,
+        };
+        let done = if rolling {
+            let r = RollingSteps {
+                vrx: &vrx[i..end],
+                vry: &vry[i..end],
+            };
+            contact.wrench_many_rolling(&steps, &r, &mut out)
+        } else {
+            contact.wrench_many(&steps, &mut out)
+        };
+        done.map_err(|e| {
+            let why = Invalid {
+                column: e.column,
+                error: e.error,
+            };
+            (i + e.row, why)
+        })?;
         i = end;
     }
     Ok(Outputs { columns })
 }
 
 /// [`evaluate`] with the GIL released, its result as the Python dict or the `ValueError`.
-/// `inputs` are the 11 columns in [`INPUTS`] order (`None` for those fixed by a built contact),
-/// only read to name the rejected value.
+/// `inputs` are the 11 columns in [`INPUTS`] order then the 4 of [`ROLLING_INPUTS`] (`None`
+/// for those fixed by a built contact or not given), only read to name the rejected value;
+/// `vrx, vry` are also the rolling step columns.
 pub fn evaluate_py<'py, T: Precision>(
     py: Python<'py>,
     shape: &[usize],
     steps: &StepColumns<'_, T>,
     contacts: impl Contacts<T> + Send,
-    inputs: [Option<&Column<'_, T>>; 11],
+    inputs: Named<'_, '_, T>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let rows = shape.iter().product();
-    match py.detach(|| evaluate(rows, steps, contacts)) {
+    let rolling = [inputs[13], inputs[14]];
+    match py.detach(|| evaluate(rows, steps, rolling, contacts)) {
         Ok(outputs) => to_dict(py, shape, outputs),
         Err((row, invalid)) => {
             let value = INPUTS
                 .iter()
+                .chain(ROLLING_INPUTS.iter())
                 .position(|&c| c == invalid.column)
                 .and_then(|k| inputs[k])
                 .map_or(String::new(), |c| format!(" = {}", c.at(row)));

@@ -37,23 +37,25 @@ def text(x, precision):
     return str(np.float32(x)) if precision == "f32" else repr(float(x))
 
 
-def reference(rows, law, form, precision):
+def reference(rows, law, form, precision, optional=()):
+    """The CLI's outputs on `rows` (the 11 columns, then the optional rolling columns named)."""
     n = len(rows["P"])
-    lines = [",".join(contensou.INPUTS)]
-    lines += [",".join(text(rows[c][i], precision) for c in contensou.INPUTS) for i in range(n)]
+    columns = list(contensou.INPUTS) + list(optional)
+    lines = [",".join(columns)]
+    lines += [",".join(text(rows[c][i], precision) for c in columns) for i in range(n)]
     cmd = reference_command() + ["--law", law, "--form", form, "--precision", precision]
     run = subprocess.run(cmd, input="\n".join(lines) + "\n", capture_output=True, text=True, cwd=REPO)
     assert run.returncode == 0, run.stderr
     out = run.stdout.strip().split("\n")
     header = out[0].split(",")
-    assert header == list(contensou.INPUTS) + list(contensou.OUTPUTS)
+    assert header == columns + list(contensou.OUTPUTS)
     table = np.array([[float(x) for x in line.split(",")] for line in out[1:]])
     assert table.shape == (n, len(header))
     dtype = DTYPES[precision]
     # The echoed inputs are the bits we sent (the decimal form round-trips).
-    for k, c in enumerate(contensou.INPUTS):
+    for k, c in enumerate(columns):
         assert np.array_equal(table[:, k].astype(dtype).view(UINTS[precision]), rows[c].view(UINTS[precision])), c
-    return {c: table[:, len(contensou.INPUTS) + k].astype(dtype) for k, c in enumerate(contensou.OUTPUTS)}
+    return {c: table[:, len(columns) + k].astype(dtype) for k, c in enumerate(contensou.OUTPUTS)}
 
 
 def assert_same_bits(got, want, precision):
@@ -91,3 +93,61 @@ def test_contact_matches_the_cli(form, precision):
     assert_same_bits(contact.wrench(*step_cols), want, precision)
     one = [contact.wrench(*(c[i] for c in step_cols)) for i in range(300)]
     assert_same_bits({c: np.array([o[c] for o in one], dtype=dtype) for c in contensou.OUTPUTS}, want, precision)
+
+
+def rolling_columns(rows, seed):
+    """The optional rolling columns for `rows`: G from 0.1 to 1 E*, nu in [0, 0.5] (both ends
+    too), a rolling velocity from 0 to well past the slip, some rows with V = 0."""
+    rng = np.random.default_rng(seed)
+    n = len(rows["P"])
+    dtype = rows["P"].dtype
+    extra = {
+        "G": rows["estar"].astype(np.float64) * 10.0 ** rng.uniform(-1, 0, n),
+        "nu": np.where(rng.random(n) < 0.2, rng.choice([0.0, 0.5], n), rng.uniform(0, 0.5, n)),
+        "vrx": np.where(rng.random(n) < 0.1, 0.0, rng.normal(0, 1, n) * 10.0 ** rng.uniform(-3, 1, n)),
+        "vry": np.where(rng.random(n) < 0.3, 0.0, rng.normal(0, 1, n) * 10.0 ** rng.uniform(-3, 1, n)),
+    }
+    return {k: v.astype(dtype) for k, v in extra.items()}
+
+
+@pytest.mark.parametrize("precision", ["f64", "f32"])
+@pytest.mark.parametrize("form", contensou.FORMS)
+@pytest.mark.parametrize("law", contensou.LAWS)
+def test_rolling_columns_match_the_cli(law, form, precision):
+    """The optional columns G, nu, vrx, vry through contensou.wrench and the CLI: every law (the
+    sliding laws ignore them: the bits of the plain call), and subsets (defaults)."""
+    dtype = DTYPES[precision]
+    rows = contract_rows(200, seed=zlib.crc32(f"roll/{law}/{form}".encode()), dtype=dtype)
+    rows.update(rolling_columns(rows, seed=zlib.crc32(law.encode())))
+    subsets = [("G", "nu", "vrx", "vry")]
+    if law == "table":
+        subsets += [("vrx", "vry"), ("vry", "nu"), ("G",)]
+    for names in subsets:
+        want = reference(rows, law, form, precision, names)
+        got = contensou.wrench(**{c: rows[c] for c in contensou.INPUTS}, **{c: rows[c] for c in names},
+                               law=law, form=form, precision=precision)
+        assert_same_bits(got, want, precision)
+    if law in ("best", "simplified", "pade", "ellipsoid", "coulomb"):
+        plain = contensou.wrench(**{c: rows[c] for c in contensou.INPUTS}, law=law, form=form, precision=precision)
+        assert_same_bits(got, plain, precision)
+
+
+@pytest.mark.parametrize("precision", ["f64", "f32"])
+@pytest.mark.parametrize("law", ["table", "fastsim-16"])
+def test_rolling_contact_matches_the_cli(law, precision):
+    """Contact(..., G=, nu=) built once, .wrench(..., vrx=, vry=) on arrays and .step per row."""
+    dtype = DTYPES[precision]
+    steps = contract_rows(150, seed=11, dtype=dtype)
+    spec = {"P": 20.0, "Q": 50.0, "estar": 1.15e11, "cd": 0.3, "f": 0.3, "delta": 1e-4}
+    roll = rolling_columns(steps, seed=12)
+    rows = {**steps, **{k: np.full(150, v, dtype=dtype) for k, v in spec.items()},
+            "G": np.full(150, 7e10, dtype=dtype), "nu": np.full(150, 0.27, dtype=dtype),
+            "vrx": roll["vrx"], "vry": roll["vry"]}
+    want = reference(rows, law, "fixed", precision, ("G", "nu", "vrx", "vry"))
+    contact = contensou.Contact(**spec, law=law, precision=precision, G=7e10, nu=0.27)
+    step_cols = [steps[c] for c in contensou.INPUTS[6:]]
+    assert_same_bits(contact.wrench(*step_cols, vrx=roll["vrx"], vry=roll["vry"]), want, precision)
+    one = [contact.step(*(float(c[i]) for c in step_cols), vrx=float(roll["vrx"][i]), vry=float(roll["vry"][i]))
+           for i in range(150)]
+    got = {c: np.array([o[k] for o in one], dtype=dtype) for k, c in enumerate(contensou.OUTPUTS)}
+    assert_same_bits(got, want, precision)

@@ -126,3 +126,42 @@ def test_step_errors():
         contact.step(float("inf"), 0.0, 0.0, 0.0, 0.0)
     with pytest.raises(TypeError):
         contact.step("x", 0.0, 0.0, 0.0, 0.0)
+
+
+ROLLING_CASES = [
+    # (argument, bad value, index, shape, message start, reason fragment) through law="table"
+    ("G", -1.0, 2, (5,), "G = -1 at index 2", "shear modulus"),
+    ("G", np.inf, 0, (5,), "G = inf at index 0", "finite"),
+    ("nu", 0.6, (1, 1), (2, 3), "nu = 0.6 at index (1, 1)", "Poisson"),
+    ("nu", np.nan, 4, (5,), "nu = NaN at index 4", "finite"),
+    ("vrx", np.inf, 3, (5,), "vrx = inf at index 3", "finite"),
+    ("vry", np.nan, (0, 2), (2, 3), "vry = NaN at index (0, 2)", "finite"),
+]
+ROLLING = {"G": 8e10, "nu": 0.28, "vrx": 2.0, "vry": 0.0}
+
+
+@pytest.mark.parametrize("precision", ["f64", "f32"])
+@pytest.mark.parametrize("name,value,index,shape,start,reason", ROLLING_CASES)
+def test_rolling_columns_name_argument_index_and_reason(name, value, index, shape, start, reason, precision):
+    args = {**SPEC, **STEP, **ROLLING}
+    column = np.full(shape, args[name])
+    column[index] = value
+    args[name] = column
+    with pytest.raises(ValueError) as e:
+        contensou.wrench(**args, law="table", precision=precision)
+    assert str(e.value).startswith(start), str(e.value)
+    assert reason in str(e.value), str(e.value)
+    # the sliding laws neither read nor validate them
+    contensou.wrench(**args, law="best", precision=precision)
+
+
+def test_rolling_contact_errors():
+    with pytest.raises(ValueError, match=r"^nu = 0.7: .*Poisson"):
+        contensou.Contact(**SPEC, law="table", nu=0.7)
+    with pytest.raises(ValueError, match=r"^G = 0: shear modulus"):
+        contensou.Contact(**SPEC, law="blend", G=0.0)
+    contact = contensou.Contact(**SPEC, law="table", G=8e10)
+    with pytest.raises(ValueError, match=r"^vry = NaN: .*finite"):
+        contact.step(**STEP, vrx=1.0, vry=float("nan"))
+    with pytest.raises(ValueError, match=r"^vrx = inf at index 1: .*finite"):
+        contact.wrench(**STEP, vrx=np.array([0.0, np.inf]))

@@ -17,7 +17,7 @@ static const contensou_form forms[] = {CONTENSOU_FORM_FIXED, CONTENSOU_FORM_VARY
 
 static void config(contensou_law law, const char *law_name, contensou_form form,
                    const char *form_name) {
-    static contensou_contact_f32 contact; /* caller-owned storage, 1528 bytes */
+    static contensou_contact_f32 contact; /* caller-owned storage, CONTENSOU_CONTACT_F32_SIZE bytes */
     bits_rng rng = {BITS_SEED};
     sh_puts("CONFIG ");
     sh_puts(law_name);

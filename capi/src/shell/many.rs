@@ -3,6 +3,7 @@
 //! the dispatch once per call; every row is bit for bit `contensou_contact_wrench_*`'s.
 
 use contensou::batch::{BatchReal, Steps, Wrenches};
+use contensou::dynamic::RollingSteps;
 
 use super::{bare, check, column_of, read, report, slot, Precision};
 use crate::status::contensou_status as S;
@@ -48,6 +49,27 @@ pub(crate) unsafe fn contact_wrench_many<T: Precision + BatchReal>(
     row: *mut usize,
     column: *mut contensou_column,
 ) -> S {
+    // SAFETY: caller's contract.
+    unsafe {
+        contact_wrench_many_rolling(storage, rows, steps, core::ptr::null(), out, row, column)
+    }
+}
+
+/// `contensou_contact_wrench_many_rolling_*` (`rolling` NULL: V = 0 on every row, the batch
+/// path of `contensou_contact_wrench_many_*`; otherwise a scalar loop).
+///
+/// # Safety
+/// As [`contact_wrench_many`]; `rolling` NULL or readable, its arrays holding `rows` values.
+#[allow(clippy::too_many_arguments)]
+pub(crate) unsafe fn contact_wrench_many_rolling<T: Precision + BatchReal>(
+    storage: *const T::Storage,
+    rows: usize,
+    steps: *const contensou_step_columns<T>,
+    rolling: *const contensou_rolling_step_columns<T>,
+    out: *const contensou_wrench_columns<T>,
+    row: *mut usize,
+    column: *mut contensou_column,
+) -> S {
     let mut first_bad = rows;
     let r = (|| {
         // SAFETY (this block's calls): caller's contract.
@@ -77,12 +99,27 @@ pub(crate) unsafe fn contact_wrench_many<T: Precision + BatchReal>(
             b: o_(o.b).map_err(bare)?,
             e2: o_(o.e2).map_err(bare)?,
         };
-        slot.contact
-            .wrench_many(&steps, &mut wrenches)
-            .map_err(|e| {
-                first_bad = e.row;
-                (S::from(e.error), column_of(e.column))
-            })
+        let r = if rolling.is_null() {
+            None
+        } else {
+            // SAFETY: caller's contract.
+            Some(unsafe { read(rolling) }.map_err(bare)?)
+        };
+        let done = match r {
+            None => slot.contact.wrench_many(&steps, &mut wrenches),
+            Some(r) => {
+                let rolling = RollingSteps {
+                    vrx: i(r.vrx).map_err(bare)?,
+                    vry: i(r.vry).map_err(bare)?,
+                };
+                slot.contact
+                    .wrench_many_rolling(&steps, &rolling, &mut wrenches)
+            }
+        };
+        done.map_err(|e| {
+            first_bad = e.row;
+            (S::from(e.error), column_of(e.column))
+        })
     })();
     if check(row).is_ok() {
         // SAFETY: non-NULL and aligned; writable by the caller's contract.
