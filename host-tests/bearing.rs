@@ -6,7 +6,7 @@ use contensou::contact::Contact;
 use contensou::friction::{Friction, Simplified, Slip};
 use contensou::geometry::Race;
 use contensou::normal::{HuntCrossley, Modulus};
-use contensou::scenes::bearing::{BALLS, Bearing, Geometry};
+use contensou::scenes::bearing::{BALLS, Bearing, Geometry, State};
 use contensou::scenes::integrate::rk4;
 use contensou::shape::{Linear, Newton};
 
@@ -60,4 +60,198 @@ fn rolls_at_the_cage_speed_under_load() {
     // The inner ring has moved down towards the load, and the balls carry at least the load.
     assert!(y[1] < -5e-6, "{}", y[1]);
     assert!(n_sum > 2000.0 && n_sum < 4000.0, "{n_sum}");
+}
+
+// --- Rolling velocity V = v_P − ½(u_A + u_B) at the races (issue 20 item 5) ---
+
+type BestRace = Contact<f64, contensou::normal::Hertz<f64>, HuntCrossley<f64>>;
+
+fn best_bearing(g: &Geometry<f64>) -> Bearing<f64, BestRace> {
+    let c = |race| {
+        Contact::hertz::<Newton>(
+            &g.curvatures(race).unwrap(),
+            Modulus::new(1.142857e11).unwrap(),
+            HuntCrossley::new(0.3).unwrap(),
+            Friction::new(0.07, 0.05).unwrap(),
+        )
+        .unwrap()
+    };
+    Bearing::new(g, c(Race::Inner), c(Race::Outer)).unwrap()
+}
+
+/// Balls orbiting at ω_c on a circle of radius ρ_b, spinning about the bearing axis at w_b.
+fn orbiting(b: &Bearing<f64, BestRace>, rho_b: f64, wc: f64, wb: f64) -> State<f64> {
+    let mut y = b.initial_state();
+    for i in 0..BALLS {
+        let (s, c) = (std::f64::consts::TAU * i as f64 / BALLS as f64).sin_cos();
+        let ball = [
+            rho_b * c,
+            rho_b * s,
+            0.0,
+            -wc * rho_b * s,
+            wc * rho_b * c,
+            0.0,
+            0.0,
+            0.0,
+            wb,
+        ];
+        y[6 + 9 * i..15 + 9 * i].copy_from_slice(&ball);
+    }
+    y
+}
+
+/// Pure rolling, contact angle 0: the balls pressed 1 µm into one race, orbiting at the cage
+/// speed ω_c and spinning so that the ball's material at P moves with the race's. The contact
+/// point runs along the circumference at ω_c(ρ_b + r_b) over the fixed outer race, and at
+/// (ω_i − ω_c)(ρ_b − r_b) backwards relative to the faster inner ring. The 209's major axis is
+/// across the groove, so the contact frame's y is −e_θ and V has no x component.
+#[test]
+fn rolling_velocity_of_pure_rolling_is_the_rolling_speed() {
+    let g = Geometry::bearing_209();
+    let b = best_bearing(&g);
+    let (rp, rb, wc, wi) = (
+        g.pitch_diameter / 2.0,
+        g.ball_diameter / 2.0,
+        g.cage_speed(),
+        g.omega_inner,
+    );
+    // Outer race: ball material at P at rest, ω_c ρ_b + w_b r_b = 0.
+    let rho = rp + 1e-6;
+    let y = orbiting(&b, rho, wc, -wc * rho / rb);
+    let outer = wc * (rho + rb);
+    // Inner race: ω_c ρ_b − w_b r_b = ω_i (ρ_b − r_b).
+    let rho_i = rp - 1e-6;
+    let yi = orbiting(&b, rho_i, wc, (wc * rho_i - wi * (rho_i - rb)) / rb);
+    let inner = (wi - wc) * (rho_i - rb);
+    assert!(outer > 2.0 && inner > 2.0, "{outer} {inner}");
+    for i in 0..BALLS {
+        let (ci, co) = (b.contacts(&yi, i).0, b.contacts(&y, i).1);
+        assert!(ci.h > 0.0 && co.h > 0.0);
+        // The slip vanishes (pure rolling) and V_y = −V·e_θ.
+        assert!(ci.fx.abs() + ci.fy.abs() < 1e-9 && co.fx.abs() + co.fy.abs() < 1e-9);
+        assert!(ci.rolling[0].abs() < 1e-12, "{:?}", ci.rolling);
+        assert!(
+            (ci.rolling[1] - inner).abs() < 1e-12 * inner,
+            "{:?} {inner}",
+            ci.rolling
+        );
+        assert!(co.rolling[0].abs() < 1e-12, "{:?}", co.rolling);
+        assert!(
+            (co.rolling[1] + outer).abs() < 1e-12 * outer,
+            "{:?} {outer}",
+            co.rolling
+        );
+    }
+}
+
+/// A ball pivoting in place about its contact normal (centre at rest pressed 1 µm into the
+/// race, ring at rest, spin about the radial direction): V = 0 while the spin is not.
+#[test]
+fn rolling_velocity_of_a_pivoting_ball_is_zero() {
+    let g = Geometry {
+        omega_inner: 0.0,
+        ..Geometry::bearing_209()
+    };
+    let b = best_bearing(&g);
+    for (dr, inner) in [(-1e-6, true), (1e-6, false)] {
+        let mut y = orbiting(&b, g.pitch_diameter / 2.0 + dr, 0.0, 0.0);
+        for i in 0..BALLS {
+            let (s, c) = (std::f64::consts::TAU * i as f64 / BALLS as f64).sin_cos();
+            y[12 + 9 * i..15 + 9 * i].copy_from_slice(&[300.0 * c, 300.0 * s, 0.0]);
+        }
+        for i in 0..BALLS {
+            let (ci, co) = b.contacts(&y, i);
+            let k = if inner { ci } else { co };
+            assert!(k.h > 0.0 && (k.spin.abs() - 300.0).abs() < 1e-9, "{k:?}");
+            assert!(k.rolling.iter().all(|v| v.abs() < 1e-12), "{:?}", k.rolling);
+        }
+    }
+}
+
+type V3 = [f64; 3];
+fn add(a: V3, b: V3) -> V3 {
+    [a[0] + b[0], a[1] + b[1], a[2] + b[2]]
+}
+fn sub(a: V3, b: V3) -> V3 {
+    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
+}
+fn mul(a: V3, k: f64) -> V3 {
+    [a[0] * k, a[1] * k, a[2] * k]
+}
+fn dot(a: V3, b: V3) -> f64 {
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+}
+fn cross(a: V3, b: V3) -> V3 {
+    [
+        a[1] * b[2] - a[2] * b[1],
+        a[2] * b[0] - a[0] * b[2],
+        a[0] * b[1] - a[1] * b[0],
+    ]
+}
+
+/// The contact point on a torus race (groove centre circle radius `rho_c` about `c`) of a ball
+/// centred at `p`: p + r_b u, u the unit vector from the nearest groove centre to p.
+fn contact_point(c: V3, p: V3, rho_c: f64, rb: f64) -> (V3, V3) {
+    let r = sub(p, c);
+    let rho = r[0].hypot(r[1]);
+    let centre = add(c, [rho_c * r[0] / rho, rho_c * r[1] / rho, 0.0]);
+    let g = sub(p, centre);
+    let u = mul(g, 1.0 / dot(g, g).sqrt());
+    (add(p, mul(u, rb)), u)
+}
+
+/// A general state (ring moving, ball off the groove bottom with a contact angle, every
+/// velocity component non-zero): V against v_P from a central difference of the contact
+/// point along the motion (independent of the scene's closed-form u̇) and the material
+/// velocities of both bodies at P, projected on the contact frame built here.
+#[test]
+fn rolling_velocity_matches_a_finite_difference_of_the_contact_point() {
+    let g = Geometry::bearing_209();
+    let b = best_bearing(&g);
+    let (rb, dm) = (g.ball_diameter / 2.0, g.pitch_diameter);
+    let rho_in = (dm - g.ball_diameter) / 2.0 + g.inner_groove;
+    let rho_out = (dm + g.ball_diameter) / 2.0 - g.outer_groove;
+    let mut y = b.initial_state();
+    let ring_c = [1e-6, -4e-6, 2e-5];
+    let ring_v = [0.03, -0.02, 0.05];
+    y[..6].copy_from_slice(&[
+        ring_c[0], ring_c[1], ring_c[2], ring_v[0], ring_v[1], ring_v[2],
+    ]);
+    let ball: [f64; 9] = [0.0311, 0.0094, 4e-4, -0.7, 2.1, 0.3, 40.0, -25.0, -480.0];
+    y[6..15].copy_from_slice(&ball);
+    let (p, v, w) = (
+        [ball[0], ball[1], ball[2]],
+        [ball[3], ball[4], ball[5]],
+        [ball[6], ball[7], ball[8]],
+    );
+    let (ci, co) = b.contacts(&y, 0);
+    assert!(ci.h > 0.0 && co.h > 0.0, "{} {}", ci.h, co.h);
+    let dt = 1e-7;
+    for (contact, c, vr, wr, rho_c) in [
+        (ci, ring_c, ring_v, g.omega_inner, rho_in),
+        (co, [0.0; 3], [0.0; 3], 0.0, rho_out),
+    ] {
+        let at = |s: f64| contact_point(add(c, mul(vr, s)), add(p, mul(v, s)), rho_c, rb);
+        let (pt, u) = at(0.0);
+        let v_p = mul(sub(at(dt).0, at(-dt).0), 0.5 / dt);
+        let u_a = add(vr, cross([0.0, 0.0, wr], sub(pt, c)));
+        let u_b = add(v, cross(w, mul(u, rb)));
+        let vv = sub(v_p, mul(add(u_a, u_b), 0.5));
+        // Contact frame: z = −u, t₁ = e_θ, major axis across the groove: x = z × t₁, y = −t₁.
+        let r = sub(p, c);
+        let rho = r[0].hypot(r[1]);
+        let t1 = [-r[1] / rho, r[0] / rho, 0.0];
+        let z = mul(u, -1.0);
+        let (x, yy) = (cross(z, t1), mul(t1, -1.0));
+        let expect = [dot(vv, x), dot(vv, yy)];
+        let scale = dot(vv, vv).sqrt();
+        assert!(scale > 1.0, "{scale}");
+        for k in 0..2 {
+            assert!(
+                (contact.rolling[k] - expect[k]).abs() < 1e-7 * scale,
+                "{:?} vs {expect:?}",
+                contact.rolling
+            );
+        }
+    }
 }

@@ -20,6 +20,21 @@
 //!   of the nominal contact angle 0, fixed per race (the contact angle that a load develops in
 //!   a zero-clearance bearing is a few degrees).
 //! - Slip: ball minus ring material velocity at P; spin: (ω_ball − ω_ring)·z.
+//! - Rolling velocity ([`RaceContact::rolling`], the input of a rolling law): the velocity at
+//!   which the contact point moves over both surfaces relative to their material, averaged,
+//!   V = v_P − ½(u_A + u_B), tangential components in the contact frame. u_A = v_r + ω_r ẑ ×
+//!   (P − c) is the ring's material velocity at P, u_B = v + ω × (r_b u) the ball's. v_P is the
+//!   velocity of the geometric contact point P = p + r_b u: the torus is symmetric about the
+//!   ring's axis, so P does not move with the ring's rotation, only with the ball's centre
+//!   relative to the ring centre, r = p − c, ṙ = v − v_r. With ρ, e_ρ, e_θ the cylindrical
+//!   radius and unit vectors of r, g = (ρ − ρ_c)e_ρ + r_z ẑ and u = g/d, d = |g|:
+//!   ġ = ṙ − (ρ_c/ρ)(e_θ·ṙ)e_θ (the meridian components of ṙ move g one to one, the
+//!   circumferential one turns e_ρ and moves g by (ρ − ρ_c)/ρ of it), u̇ = (ġ − u(u·ġ))/d
+//!   (e_θ ⟂ u, so u·ġ = u·ṙ) and v_P = v + r_b u̇. Examples (tested): pure rolling at the
+//!   cage speed ω_c, contact angle 0 — outer race V = ω_c(d_m/2 + r_b) along +e_θ, inner race
+//!   V = −(ω_i − ω_c)(d_m/2 − r_b) along e_θ (the contact point runs backwards over the faster
+//!   inner ring); a ball pivoting in place about the normal: V = 0. P is the ball's surface
+//!   point (the slip's point too); the mid-point of the overlap would change V by O(h/r_b).
 //! - State ([`N`] scalars): inner ring centre and velocity (6), then per ball centre, velocity
 //!   and angular velocity (9; a sphere's attitude does not enter).
 
@@ -147,6 +162,12 @@ pub struct RaceContact<T> {
     pub spin: T,
     /// Relative rolling speed |ω_ball − ω_ring| in the contact plane (rad/s).
     pub roll: T,
+    /// Rolling velocity V = v_P − ½(u_A + u_B) in the contact frame (x = major axis) (m/s):
+    /// see the [module docs](self).
+    pub rolling: [T; 2],
+    /// Torque about the bearing axis through the ring's centre on the ring from this contact
+    /// (N·m): the friction forces' moment plus the drilling torque's axial part.
+    pub ring_torque: T,
     /// Force on the ball, world frame (N).
     pub force: Vec3<T>,
     /// Torque on the ball about its centre, world frame (N·m).
@@ -154,15 +175,17 @@ pub struct RaceContact<T> {
 }
 
 /// A per-step contact law for the races: [`Contact`] with any normal law (exact Hertz, the G*
-/// shape, the volumetric law), Hunt–Crossley damping and friction law `L`.
+/// shape, the volumetric law), Hunt–Crossley damping and friction law `L` (full slip: the
+/// rolling velocity is ignored), or a rolling law reading it.
 pub trait RaceLaw<T: Real> {
-    /// The wrench at (h, ḣ, slip), without the friction law's branch.
-    fn wrench_at(&self, h: T, hdot: T, slip: Slip<T>) -> Wrench<T, ()>;
+    /// The wrench at (h, ḣ, slip) with the rolling velocity `rolling` = (V_x, V_y) in the
+    /// contact frame (m/s), without the friction law's branch.
+    fn wrench_at(&self, h: T, hdot: T, slip: Slip<T>, rolling: [T; 2]) -> Wrench<T, ()>;
 }
 
 impl<T: Real, Nl: NormalLaw<T>, L: FrictionLaw> RaceLaw<T> for Contact<T, Nl, HuntCrossley<T>, L> {
     #[inline(always)]
-    fn wrench_at(&self, h: T, hdot: T, slip: Slip<T>) -> Wrench<T, ()> {
+    fn wrench_at(&self, h: T, hdot: T, slip: Slip<T>, _: [T; 2]) -> Wrench<T, ()> {
         let w = self.wrench(h, hdot, slip);
         Wrench {
             n: w.n,
@@ -216,8 +239,19 @@ impl<T: Real, C: RaceLaw<T>> Raceway<T, C> {
         let vp = (ball_p - ring_p).into();
         let w_rel = w - ring_w;
         let slip = frame.slip(vp, w_rel.into()).unwrap_or_default();
-        let wrench = self.contact.wrench_at(h, frame.approach_rate(vp), slip);
+        // Rolling velocity (module docs): v_P = v + r_b u̇ with the torus' u̇.
+        let rdot = v - vr;
+        let g_dot = rdot - e_theta * (self.centre_radius / rho * e_theta.dot(rdot));
+        let u_dot = (g_dot - u * u.dot(rdot)) * (T::ONE / d);
+        let v_contact = v + u_dot * rb;
+        let rolling_world = v_contact - (ball_p + ring_p) * T::HALF;
+        let [vrx, vry, _] = frame.to_contact(rolling_world.into());
+        let wrench = self
+            .contact
+            .wrench_at(h, frame.approach_rate(vp), slip, [vrx, vry]);
         let load = frame.on_b(&wrench, arm.into());
+        let force: Vec3<T> = load.force.into();
+        let ring_torque = -((rel + arm).cross(force).z + z.z * wrench.tz);
         RaceContact {
             h,
             n: wrench.n,
@@ -227,7 +261,9 @@ impl<T: Real, C: RaceLaw<T>> Raceway<T, C> {
             tz: wrench.tz,
             spin: slip.omega(),
             roll: (w_rel - z * slip.omega()).norm(),
-            force: load.force.into(),
+            rolling: [vrx, vry],
+            ring_torque,
+            force,
             torque: load.torque.into(),
         }
     }
@@ -307,6 +343,16 @@ impl<T: Real, C: RaceLaw<T>> Bearing<T, C> {
             Some(b) => self.ball_contacts(ring(y), b),
             None => Default::default(),
         }
+    }
+
+    /// The friction torque on the inner ring about the bearing axis at state `y` (N·m): the
+    /// sum of every ball's [`RaceContact::ring_torque`] at the inner race (negative: it brakes
+    /// the ring, which the drive holds at ω_i).
+    pub fn inner_ring_torque(&self, y: &State<T>) -> T {
+        let r = ring(y);
+        y[6..].chunks_exact(9).fold(T::ZERO, |acc, b| {
+            acc + self.ball_contacts(r, b).0.ring_torque
+        })
     }
 
     #[inline(always)]
