@@ -164,8 +164,111 @@ fn column(csv: &str, k: usize) -> Vec<(f64, f64)> {
         .collect()
 }
 
+/// Means over the last [`WINDOW`] of a run (sampled every [`SAMPLE`]).
+#[derive(Default)]
+struct Summary {
+    /// Friction torque on the inner ring about the axis (N·m).
+    ring_torque: f64,
+    /// Σ over balls of |T_z| at the inner and at the outer race (N·m).
+    spin_moment: [f64; 2],
+    /// Mean orbital speed relative to ω_c, minus 1.
+    cage: f64,
+    /// Max over balls loaded > 100 N of the sliding speed |v_P| at the inner race (m/s) and of
+    /// the creepage |v_P|/|V| there.
+    slip: f64,
+    creep: f64,
+    finite: bool,
+    wall: f64,
+}
+
+const WINDOW: f64 = 0.01;
+
+/// Runs the 209 bearing with race law `C` at step `h` to [`T_END`]: the [`Summary`].
+fn summarize<C: RaceLaw<f64>>(b: &Bearing<f64, C>, h: f64) -> Summary {
+    let steps = (T_END / h).round() as usize;
+    let every = (SAMPLE / h).round() as usize;
+    let mut s = Summary::default();
+    let mut count = 0.0;
+    let wc = b.geometry().cage_speed();
+    let start = Instant::now();
+    let y = rk4(b, 0.0, b.initial_state(), h, steps, |i, t, y| {
+        if i % every != 0 || t < T_END - WINDOW - 1e-12 {
+            return;
+        }
+        count += 1.0;
+        s.ring_torque += b.inner_ring_torque(y);
+        let mut orbit_sum = 0.0;
+        let (mut slip, mut creep) = (0.0_f64, 0.0_f64);
+        for i in 0..BALLS {
+            let (ci, co) = b.contacts(y, i);
+            s.spin_moment[0] += ci.tz.abs();
+            s.spin_moment[1] += co.tz.abs();
+            orbit_sum += orbit(y, i);
+            if ci.n > 100.0 {
+                let v = ci.slip[0].hypot(ci.slip[1]);
+                slip = slip.max(v);
+                creep = creep.max(v / ci.rolling[0].hypot(ci.rolling[1]));
+            }
+        }
+        s.cage += orbit_sum / BALLS as f64 / wc - 1.0;
+        s.slip += slip;
+        s.creep += creep;
+    });
+    s.wall = start.elapsed().as_secs_f64();
+    s.ring_torque /= count;
+    s.spin_moment = s.spin_moment.map(|m| m / count);
+    s.cage /= count;
+    s.slip /= count;
+    s.creep /= count;
+    s.finite = y.iter().all(|v| v.is_finite());
+    s
+}
+
+fn print_row(label: &str, delta: f64, h: f64, s: &Summary) {
+    println!(
+        "| {label} | {delta} | {} | {:.1} | {:.2} / {:.2} | {:+.3} | {:.2} | {:.2e} | {} {:.1} s |",
+        h * 1e6,
+        s.ring_torque * 1e3,
+        s.spin_moment[0] * 1e3,
+        s.spin_moment[1] * 1e3,
+        100.0 * s.cage,
+        s.slip * 1e3,
+        s.creep,
+        if s.finite { "" } else { "NON-FINITE" },
+        s.wall
+    );
+}
+
+/// Creep (rolling laws) against full slip (`best`) on the 209 bearing at two δ and two steps:
+/// the README's bearing table.
+fn rolling_table() {
+    let (estar, damping, _) = parts();
+    let g = Geometry::<f64>::bearing_209();
+    println!(
+        "| race law | δ (m/s) | h (µs) | inner-ring friction torque (N·mm) | Σ|T_z| balls inner / outer (N·mm) | cage speed vs ω_c (%) | max inner slip (mm/s) | max inner creepage | wall |"
+    );
+    println!("|---|---|---|---|---|---|---|---|---|");
+    let best = |delta: f64, race| {
+        Contact::hertz::<Newton>(
+            &g.curvatures(race).unwrap(),
+            estar,
+            damping,
+            Friction::new(0.07, delta).unwrap(),
+        )
+        .unwrap()
+    };
+    for (delta, h) in [(0.05, H), (0.05, H / 2.0), (0.02, H / 2.0)] {
+        let b = Bearing::new(&g, best(delta, Race::Inner), best(delta, Race::Outer)).unwrap();
+        print_row("best (full slip)", delta, h, &summarize(&b, h));
+    }
+}
+
 fn main() {
     let dir = std::env::args().nth(1).unwrap_or_else(|| "out".into());
+    if std::env::args().nth(2).as_deref() == Some("rolling") {
+        rolling_table();
+        return;
+    }
     std::fs::create_dir_all(&dir).unwrap();
     let (estar, damping, friction) = parts();
 

@@ -158,6 +158,8 @@ pub struct RaceContact<T> {
     pub fy: T,
     /// Drilling torque (N·m).
     pub tz: T,
+    /// Slip (v_x, v_y) of the ball relative to the ring at P in the contact frame (m/s).
+    pub slip: [T; 2],
     /// Relative spin (ω_ball − ω_ring)·z (rad/s).
     pub spin: T,
     /// Relative rolling speed |ω_ball − ω_ring| in the contact plane (rad/s).
@@ -259,6 +261,7 @@ impl<T: Real, C: RaceLaw<T>> Raceway<T, C> {
             fx: wrench.fx,
             fy: wrench.fy,
             tz: wrench.tz,
+            slip: [slip.vx(), slip.vy()],
             spin: slip.omega(),
             roll: (w_rel - z * slip.omega()).norm(),
             rolling: [vrx, vry],
