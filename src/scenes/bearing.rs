@@ -40,11 +40,12 @@
 
 use super::integrate::Ode;
 use super::rigid::Vec3;
-use crate::contact::{Contact, Wrench};
+#[cfg(doc)]
+use crate::contact::Contact;
 use crate::frame::{ContactFrame, Frame, MajorAxis, point_velocity};
-use crate::friction::{FrictionLaw, Slip};
+use crate::friction::rolling::RollingVelocity;
 use crate::geometry::{Curvatures, Race};
-use crate::normal::{HuntCrossley, NormalLaw};
+use crate::select::StepRolling;
 use crate::{Error, Real};
 
 /// Number of balls (the 209 bearing has 9).
@@ -140,6 +141,8 @@ struct Raceway<T, C> {
     groove: T,
     /// The major axis, from the rolling direction.
     axis: MajorAxis<T>,
+    /// The curvatures at contact angle 0.
+    curvatures: Curvatures<T>,
     contact: C,
 }
 
@@ -176,29 +179,15 @@ pub struct RaceContact<T> {
     pub torque: Vec3<T>,
 }
 
-/// A per-step contact law for the races: [`Contact`] with any normal law (exact Hertz, the G*
-/// shape, the volumetric law), Hunt–Crossley damping and friction law `L` (full slip: the
-/// rolling velocity is ignored), or a rolling law reading it.
-pub trait RaceLaw<T: Real> {
-    /// The wrench at (h, ḣ, slip) with the rolling velocity `rolling` = (V_x, V_y) in the
-    /// contact frame (m/s), without the friction law's branch.
-    fn wrench_at(&self, h: T, hdot: T, slip: Slip<T>, rolling: [T; 2]) -> Wrench<T, ()>;
-}
+/// A per-step contact law for the races: any contact [`crate::select`] builds, through
+/// [`StepRolling`] — [`Contact`] with any normal law (exact Hertz, the G* shape, the volumetric
+/// law), damping and friction law (full slip: the rolling velocity is ignored), or
+/// [`crate::contact::Rolling`] (what [`crate::select::Rolls`] resolves to: the rolling
+/// velocity drives the creep law). The race's curvatures at contact angle 0 are passed every
+/// step (read by a varying contact only).
+pub trait RaceLaw<T: Real>: StepRolling<T> {}
 
-impl<T: Real, Nl: NormalLaw<T>, L: FrictionLaw> RaceLaw<T> for Contact<T, Nl, HuntCrossley<T>, L> {
-    #[inline(always)]
-    fn wrench_at(&self, h: T, hdot: T, slip: Slip<T>, _: [T; 2]) -> Wrench<T, ()> {
-        let w = self.wrench(h, hdot, slip);
-        Wrench {
-            n: w.n,
-            fx: w.fx,
-            fy: w.fy,
-            tz: w.tz,
-            patch: w.patch,
-            branch: (),
-        }
-    }
-}
+impl<T: Real, C: StepRolling<T>> RaceLaw<T> for C {}
 
 impl<T: Real, C: RaceLaw<T>> Raceway<T, C> {
     /// The contact of a ball (centre `p`, velocity `v`, angular velocity `w`, radius `rb`)
@@ -248,9 +237,11 @@ impl<T: Real, C: RaceLaw<T>> Raceway<T, C> {
         let v_contact = v + u_dot * rb;
         let rolling_world = v_contact - (ball_p + ring_p) * T::HALF;
         let [vrx, vry, _] = frame.to_contact(rolling_world.into());
-        let wrench = self
-            .contact
-            .wrench_at(h, frame.approach_rate(vp), slip, [vrx, vry]);
+        // A non-finite V (never from a finite state) falls back to full slip.
+        let rolling = RollingVelocity::new(vrx, vry).unwrap_or(RollingVelocity::ZERO);
+        let wrench =
+            self.contact
+                .step_rolling(&self.curvatures, h, frame.approach_rate(vp), slip, rolling);
         let load = frame.on_b(&wrench, arm.into());
         let force: Vec3<T> = load.force.into();
         let ring_torque = -((rel + arm).cross(force).z + z.z * wrench.tz);
@@ -288,19 +279,20 @@ impl<T: Real, C: RaceLaw<T>> Bearing<T, C> {
     /// Errors: those of [`Geometry::curvatures`].
     pub fn new(g: &Geometry<T>, inner: C, outer: C) -> Result<Self, Error> {
         let half = T::HALF;
-        let axis =
-            |race| -> Result<MajorAxis<T>, Error> { Ok(MajorAxis::of(&g.curvatures(race)?)) };
+        let (ci, co) = (g.curvatures(Race::Inner)?, g.curvatures(Race::Outer)?);
         Ok(Bearing {
             inner: Raceway {
                 centre_radius: (g.pitch_diameter - g.ball_diameter) * half + g.inner_groove,
                 groove: g.inner_groove,
-                axis: axis(Race::Inner)?,
+                axis: MajorAxis::of(&ci),
+                curvatures: ci,
                 contact: inner,
             },
             outer: Raceway {
                 centre_radius: (g.pitch_diameter + g.ball_diameter) * half - g.outer_groove,
                 groove: g.outer_groove,
-                axis: axis(Race::Outer)?,
+                axis: MajorAxis::of(&co),
+                curvatures: co,
                 contact: outer,
             },
             ball_inertia: T::from_f64(0.1) * g.ball_mass * g.ball_diameter * g.ball_diameter,
