@@ -231,7 +231,7 @@ fn summarize<C: RaceLaw<f64>>(b: &Bearing<f64, C>, h: f64) -> Summary {
 
 fn print_row(label: &str, delta: f64, h: f64, s: &Summary) {
     println!(
-        "| {label} | {delta} | {} | {:.1} | {:.2} / {:.2} | {:+.3} | {:.2} | {:.2e} | {} {:.1} s |",
+        "| {label} | {delta} | {:.3} | {:.1} | {:.2} / {:.2} | {:+.3} | {:.2} | {:.2e} | {} {:.1} s |",
         h * 1e6,
         s.ring_torque * 1e3,
         s.spin_moment[0] * 1e3,

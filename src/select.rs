@@ -545,67 +545,36 @@ fn unbranched<T: Real, B>(w: Wrench<T, B>) -> Wrench<T, ()> {
     }
 }
 
-impl<T: Real, N: NormalLaw<T>, D: Damping<T>, L: FrictionLaw> StepRolling<T>
-    for Contact<T, N, D, L>
-{
-    #[inline(always)]
-    fn step_rolling(
-        &self,
-        _: &Curvatures<T>,
-        h: T,
-        hdot: T,
-        slip: Slip<T>,
-        _: RollingVelocity<T>,
-    ) -> Wrench<T, ()> {
-        unbranched(self.wrench(h, hdot, slip))
-    }
+/// One [`StepRolling`] impl: generics, type, the call from (self, curvatures, h, ḣ, slip, V).
+macro_rules! step_rolling {
+    ([$($g:tt)*] $ty:ty, |$s:ident, $curv:pat_param, $h:ident, $hd:ident, $sl:ident, $v:pat_param| $body:expr) => {
+        impl<$($g)*> StepRolling<T> for $ty {
+            #[inline(always)]
+            fn step_rolling(
+                &self,
+                $curv: &Curvatures<T>,
+                $h: T,
+                $hd: T,
+                $sl: Slip<T>,
+                $v: RollingVelocity<T>,
+            ) -> Wrench<T, ()> {
+                let $s = self;
+                $body
+            }
+        }
+    };
 }
 
-impl<T: Real, D: Damping<T>, L: FrictionLaw> StepRolling<T> for VaryingContact<T, D, L> {
-    #[inline(always)]
-    fn step_rolling(
-        &self,
-        curv: &Curvatures<T>,
-        h: T,
-        hdot: T,
-        slip: Slip<T>,
-        _: RollingVelocity<T>,
-    ) -> Wrench<T, ()> {
-        unbranched(self.wrench(curv, h, hdot, slip))
-    }
-}
-
-impl<T: Real, N: NormalLaw<T>, D: Damping<T>, L: rolling::RollingLaw> StepRolling<T>
-    for Rolling<T, Contact<T, N, D, Best>, L>
-{
-    #[inline(always)]
-    fn step_rolling(
-        &self,
-        _: &Curvatures<T>,
-        h: T,
-        hdot: T,
-        slip: Slip<T>,
-        v: RollingVelocity<T>,
-    ) -> Wrench<T, ()> {
-        self.wrench(h, hdot, slip, v)
-    }
-}
-
-impl<T: Real, D: Damping<T>, L: rolling::RollingLaw> StepRolling<T>
-    for Rolling<T, VaryingContact<T, D, Best>, L>
-{
-    #[inline(always)]
-    fn step_rolling(
-        &self,
-        curv: &Curvatures<T>,
-        h: T,
-        hdot: T,
-        slip: Slip<T>,
-        v: RollingVelocity<T>,
-    ) -> Wrench<T, ()> {
-        self.wrench(curv, h, hdot, slip, v)
-    }
-}
+step_rolling!([T: Real, N: NormalLaw<T>, D: Damping<T>, L: FrictionLaw] Contact<T, N, D, L>,
+    |c, _, h, hdot, slip, _| unbranched(c.wrench(h, hdot, slip)));
+step_rolling!([T: Real, D: Damping<T>, L: FrictionLaw] VaryingContact<T, D, L>,
+    |c, curv, h, hdot, slip, _| unbranched(c.wrench(curv, h, hdot, slip)));
+step_rolling!([T: Real, N: NormalLaw<T>, D: Damping<T>, L: rolling::RollingLaw]
+    Rolling<T, Contact<T, N, D, Best>, L>,
+    |c, _, h, hdot, slip, v| c.wrench(h, hdot, slip, v));
+step_rolling!([T: Real, D: Damping<T>, L: rolling::RollingLaw]
+    Rolling<T, VaryingContact<T, D, Best>, L>,
+    |c, curv, h, hdot, slip, v| c.wrench(curv, h, hdot, slip, v));
 
 /// [`Step`] of a rolling contact without a rolling velocity: its full-slip limit (V = 0,
 /// exact `best` with δ = 0). Use [`StepRolling::step_rolling`] to roll.
