@@ -5,7 +5,16 @@
 //!
 //! ```sh
 //! cargo run --release --features scenes --example bearing          # writes out/bearing_*.csv, out/bearing_fy.png
+//! cargo run --release --features scenes --example bearing -- out rolling   # README's creep vs full slip table (≈ 12 min)
+//! cargo run --release --features scenes --example bearing -- out rolling table 0.05   # one rolling run to 50 ms
 //! ```
+//!
+//! `rolling [best|table|blend|all] [end]`: the 209 with full-slip `best` (δ = 0.05, 0.02 m/s;
+//! h = 0.5, 0.25 µs) against the rolling laws `select` picks where the patch rolls
+//! (`Scene<Elliptic, Fixed, Rolls, ExactGrade, f64>` → `Rolling<…, Table>`, G = E*(1 − ν) =
+//! 80 GPa, ν = 0.3; h = 0.1, 0.05 µs) and `blend`: the inner ring's friction torque, the balls'
+//! spin moments, the cage speed and the inner-race slip, means over the last 5 ms to `end`
+//! (default 20 ms).
 //!
 //! f64, RK4 h = 0.5 µs (the ball–race contacts ring at ≈20 kHz), 50 ms simulated, simplified
 //! Contensou friction f = 0.07, δ = 0.05 m/s (steeper needs a smaller step: no spin regularizes
@@ -183,21 +192,22 @@ struct Summary {
     wall: f64,
 }
 
-/// The table's runs end at 20 ms (the load ramps up over 5 ms) and average over the last
-/// 5 ms: a rolling run needs h ≤ 0.1 µs (the creep law's stiffness, below).
+/// The table's runs end at 20 ms (the load ramps up over 5 ms; `rolling <law> <end>` sets
+/// another end) and average over the last 5 ms: a rolling run needs h ≤ 0.1 µs (the creep
+/// law's stiffness, below).
 const TABLE_END: f64 = 0.02;
 const WINDOW: f64 = 0.005;
 
 /// Runs the 209 bearing with race law `C` at step `h` to [`T_END`]: the [`Summary`].
-fn summarize<C: RaceLaw<f64>>(b: &Bearing<f64, C>, h: f64) -> Summary {
-    let steps = (TABLE_END / h).round() as usize;
+fn summarize<C: RaceLaw<f64>>(b: &Bearing<f64, C>, h: f64, end: f64) -> Summary {
+    let steps = (end / h).round() as usize;
     let every = (SAMPLE / h).round() as usize;
     let mut s = Summary::default();
     let mut count = 0.0;
     let wc = b.geometry().cage_speed();
     let start = Instant::now();
     let y = rk4(b, 0.0, b.initial_state(), h, steps, |i, t, y| {
-        if i % every != 0 || t < TABLE_END - WINDOW - 1e-12 {
+        if i % every != 0 || t < end - WINDOW - 1e-12 {
             return;
         }
         count += 1.0;
@@ -245,15 +255,23 @@ fn print_row(label: &str, delta: f64, h: f64, s: &Summary) {
 }
 
 /// Creep (rolling laws) against full slip (`best`) on the 209 bearing at two δ and two steps:
-/// the README's bearing table. `which`: `best`, `table`, `blend` or all.
-fn rolling_table(which: Option<&str>) {
+/// the README's bearing table. `which`: `best`, `table`, `blend` or all; `end`: the runs' end
+/// (s). A run at another end than [`TABLE_END`] takes only the first (δ, h).
+fn rolling_table(which: Option<&str>, end: f64) {
+    let first = |runs: &[(f64, f64)]| -> Vec<(f64, f64)> {
+        if end == TABLE_END {
+            runs.to_vec()
+        } else {
+            runs[..1].to_vec()
+        }
+    };
     let (estar, damping, _) = parts();
     let g = Geometry::<f64>::bearing_209();
     println!(
         "| race law | δ (m/s) | h (µs) | inner-ring friction torque (N·mm) | Σ|T_z| balls inner / outer (N·mm) | cage speed vs ω_c (%) | max inner slip (mm/s) | max inner creepage | wall |"
     );
     println!("|---|---|---|---|---|---|---|---|---|");
-    let runs = |name: &str| which.is_none_or(|w| w == name);
+    let runs = |name: &str| which.is_none_or(|w| w == name || w == "all");
     let best = |delta: f64, race| {
         Contact::hertz::<Newton>(
             &g.curvatures(race).unwrap(),
@@ -264,9 +282,9 @@ fn rolling_table(which: Option<&str>) {
         .unwrap()
     };
     if runs("best") {
-        for (delta, h) in [(0.05, H), (0.05, H / 2.0), (0.02, H / 2.0)] {
+        for (delta, h) in first(&[(0.05, H), (0.05, H / 2.0), (0.02, H / 2.0)]) {
             let b = Bearing::new(&g, best(delta, Race::Inner), best(delta, Race::Outer)).unwrap();
-            print_row("best (full slip)", delta, h, &summarize(&b, h));
+            print_row("best (full slip)", delta, h, &summarize(&b, h, end));
         }
     }
     // The rolling law `select` picks where the patch rolls: `table` over `best`, elasticity
@@ -278,16 +296,16 @@ fn rolling_table(which: Option<&str>) {
         RollingRace::build(&g.curvatures(race).unwrap(), estar, damping, friction).unwrap()
     };
     if runs("table") {
-        for (delta, h) in [(0.05, H_ROLL), (0.05, H_ROLL / 2.0), (0.02, H_ROLL)] {
+        for (delta, h) in first(&[(0.05, H_ROLL), (0.05, H_ROLL / 2.0), (0.02, H_ROLL)]) {
             let b = Bearing::new(&g, table(delta, Race::Inner), table(delta, Race::Outer)).unwrap();
-            print_row("table (creep)", delta, h, &summarize(&b, h));
+            print_row("table (creep)", delta, h, &summarize(&b, h, end));
         }
     }
     if runs("blend") {
         let el = rolling_elasticity(estar).unwrap();
         let blend = |race| Rolling::<_, _, Blend>::new(best(0.05, race), el).unwrap();
         let b = Bearing::new(&g, blend(Race::Inner), blend(Race::Outer)).unwrap();
-        print_row("blend (creep)", 0.05, H_ROLL, &summarize(&b, H_ROLL));
+        print_row("blend (creep)", 0.05, H_ROLL, &summarize(&b, H_ROLL, end));
     }
 }
 
@@ -297,7 +315,10 @@ const H_ROLL: f64 = 1e-7;
 fn main() {
     let dir = std::env::args().nth(1).unwrap_or_else(|| "out".into());
     if std::env::args().nth(2).as_deref() == Some("rolling") {
-        rolling_table(std::env::args().nth(3).as_deref());
+        let end = std::env::args()
+            .nth(4)
+            .map_or(TABLE_END, |e| e.parse().unwrap());
+        rolling_table(std::env::args().nth(3).as_deref(), end);
         return;
     }
     std::fs::create_dir_all(&dir).unwrap();

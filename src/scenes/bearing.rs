@@ -19,6 +19,11 @@
 //!   groove conforms closely). The curvatures — hence e² and the friction constants — are those
 //!   of the nominal contact angle 0, fixed per race (the contact angle that a load develops in
 //!   a zero-clearance bearing is a few degrees).
+//! - Race laws ([`RaceLaw`]): any contact [`crate::select`] builds — a full-slip
+//!   [`Contact`] (the rolling velocity ignored) or, with the motion [`crate::select::Rolls`],
+//!   [`crate::contact::Rolling`] over `best` with the default rolling law `table` (the creep
+//!   forces and spin moment from the elasticity; needs RK4 steps ≤ 0.1 µs at the 209's loads:
+//!   the creep law is a stiff damper, G c² C/V ≈ 3e4 N·s/m at the inner race).
 //! - Slip: ball minus ring material velocity at P; spin: (ω_ball − ω_ring)·z.
 //! - Rolling velocity ([`RaceContact::rolling`], the input of a rolling law): the velocity at
 //!   which the contact point moves over both surfaces relative to their material, averaged,
