@@ -289,7 +289,8 @@ fn rolling_table(which: Option<&str>, end: f64) {
     }
     // The rolling law `select` picks where the patch rolls: `table` over `best`, elasticity
     // G = E*(1 − ν) = 80 GPa, ν = 0.3 (steel); δ is not used by it. Its creep stiffness
-    // G c² C/V (≈ 3e4 N·s/m at the inner race) needs h ≤ 0.1 µs with RK4 (at 0.25 µs a numerical limit cycle drives the ring).
+    // G c² C₁₁/V (≈ 2.2e4 N·s/m at the inner race at 900 N) needs h ≤ 0.1 µs with RK4 (at
+    // 0.25 µs a numerical limit cycle drives the ring).
     type RollingRace = Scene<Elliptic, Fixed, Rolls, ExactGrade, f64>;
     let table = |delta: f64, race| {
         let friction = Friction::new(0.07, delta).unwrap();

@@ -23,7 +23,7 @@
 //!   [`Contact`] (the rolling velocity ignored) or, with the motion [`crate::select::Rolls`],
 //!   [`crate::contact::Rolling`] over `best` with the default rolling law `table` (the creep
 //!   forces and spin moment from the elasticity; needs RK4 steps ≤ 0.1 µs at the 209's loads:
-//!   the creep law is a stiff damper, G c² C/V ≈ 3e4 N·s/m at the inner race).
+//!   the creep law is a stiff damper, G c² C₁₁/V ≈ 2.2e4 N·s/m at the inner race at 900 N).
 //! - Slip: ball minus ring material velocity at P; spin: (ω_ball − ω_ring)·z.
 //! - Rolling velocity ([`RaceContact::rolling`], the input of a rolling law): the velocity at
 //!   which the contact point moves over both surfaces relative to their material, averaged,
