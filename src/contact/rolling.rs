@@ -182,7 +182,7 @@ impl<T: Real, C: RollingBase<T>, L: RollingLaw> Rolling<T, C, L> {
 #[inline(always)]
 fn direction<T: Real>(v: RollingVelocity<T>) -> (T, T, T) {
     let m = v.vx.abs().max(v.vy.abs());
-    if !(m > T::ZERO) {
+    if m <= T::ZERO {
         return (T::ONE, T::ZERO, T::ZERO);
     }
     let (ux, uy) = (v.vx / m, v.vy / m);
@@ -284,7 +284,7 @@ fn tangential<T: Real, L: RollingLaw>(
         patch,
         branch: (),
     };
-    if !(step.fn_ > T::ZERO) {
+    if step.fn_ <= T::ZERO {
         return zero;
     }
     let (a, b) = (patch.a, patch.b);
