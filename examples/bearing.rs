@@ -9,7 +9,8 @@
 //! cargo run --release --features scenes --example bearing -- out rolling table 0.05   # one rolling run to 50 ms
 //! ```
 //!
-//! `rolling [best|table|blend|all] [end]`: the 209 with full-slip `best` (δ = 0.05, 0.02 m/s;
+//! `rolling [best|table|blend|all] [end] [209|paper]`: the 209 (or the paper's e² = 0.687
+//! inner groove) with full-slip `best` (δ = 0.05, 0.02 m/s;
 //! h = 0.5, 0.25 µs) against the rolling laws `select` picks where the patch rolls
 //! (`Scene<Elliptic, Fixed, Rolls, ExactGrade, f64>` → `Rolling<…, Table>`, G = E*(1 − ν) =
 //! 80 GPa, ν = 0.3; h = 0.1, 0.05 µs) and `blend`: the inner ring's friction torque, the balls'
@@ -254,10 +255,10 @@ fn print_row(label: &str, delta: f64, h: f64, s: &Summary) {
     );
 }
 
-/// Creep (rolling laws) against full slip (`best`) on the 209 bearing at two δ and two steps:
+/// Creep (rolling laws) against full slip (`best`) on bearing `g` at two δ and two steps:
 /// the README's bearing table. `which`: `best`, `table`, `blend` or all; `end`: the runs' end
 /// (s). A run at another end than [`TABLE_END`] takes only the first (δ, h).
-fn rolling_table(which: Option<&str>, end: f64) {
+fn rolling_table(which: Option<&str>, end: f64, g: Geometry<f64>) {
     let first = |runs: &[(f64, f64)]| -> Vec<(f64, f64)> {
         if end == TABLE_END {
             runs.to_vec()
@@ -266,7 +267,6 @@ fn rolling_table(which: Option<&str>, end: f64) {
         }
     };
     let (estar, damping, _) = parts();
-    let g = Geometry::<f64>::bearing_209();
     println!(
         "| race law | δ (m/s) | h (µs) | inner-ring friction torque (N·mm) | Σ|T_z| balls inner / outer (N·mm) | cage speed vs ω_c (%) | max inner slip (mm/s) | max inner creepage | wall |"
     );
@@ -319,7 +319,11 @@ fn main() {
         let end = std::env::args()
             .nth(4)
             .map_or(TABLE_END, |e| e.parse().unwrap());
-        rolling_table(std::env::args().nth(3).as_deref(), end);
+        let g = match std::env::args().nth(5).as_deref() {
+            Some("paper") => Geometry::paper_e2(),
+            _ => Geometry::bearing_209(),
+        };
+        rolling_table(std::env::args().nth(3).as_deref(), end, g);
         return;
     }
     std::fs::create_dir_all(&dir).unwrap();
