@@ -314,3 +314,48 @@ fn rolling_law_in_the_bearing_is_passive_and_ignores_delta() {
     let n: f64 = (0..BALLS).map(|i| roll.contacts(&y2, i).0.n).sum();
     assert!(n > 1000.0 && n < 4000.0, "{n}");
 }
+
+/// The rolling race law in `f32` (the MCU's precision) at the same loaded state: the normal
+/// and creep forces of every loaded contact agree with `f64` within 5e-3 of N and of fN — the
+/// f32 scene's own resolution: a ball centre at 32 mm is rounded to 2e-9 m, 1e-3 of a 3 µm
+/// approach, and the groove's conformity (d = r_g − r_b + h ≈ 0.1 mm out of ρ ≈ 30 mm) keeps
+/// that (measured 1.3e-3 of N, 3.3e-4 of fN).
+#[test]
+fn rolling_law_in_f32_matches_f64() {
+    let g = Geometry::bearing_209();
+    let full = best_bearing(&g);
+    let y = rk4(&full, 0.0, full.initial_state(), 5e-7, 10_000, |_, _, _| {});
+    let roll = rolling_bearing(&g, 0.05);
+    let g32 = Geometry::<f32>::bearing_209();
+    let c32 = |race| {
+        Scene::<Elliptic, Fixed, Rolls, ExactGrade, f32>::build(
+            &g32.curvatures(race).unwrap(),
+            Modulus::new(1.142857e11_f32).unwrap(),
+            HuntCrossley::new(0.3).unwrap(),
+            Friction::new(0.07, 0.05).unwrap(),
+        )
+        .unwrap()
+    };
+    let roll32 = Bearing::new(&g32, c32(Race::Inner), c32(Race::Outer)).unwrap();
+    let y32: State<f32> = y.map(|v| v as f32);
+    let mut checked = 0;
+    let mut worst = [0.0_f64; 2];
+    for i in 0..BALLS {
+        let (a, b) = roll.contacts(&y, i);
+        let (a32, b32) = roll32.contacts(&y32, i);
+        for (c, c32) in [(a, a32), (b, b32)] {
+            if c.n < 100.0 {
+                continue;
+            }
+            checked += 1;
+            let fnn = 0.07 * c.n;
+            worst[0] = worst[0].max((c.n - c32.n as f64).abs() / c.n);
+            worst[1] = worst[1].max((c.fx - c32.fx as f64).hypot(c.fy - c32.fy as f64) / fnn);
+            assert!((c.n - c32.n as f64).abs() < 5e-3 * c.n, "{c:?} {c32:?}");
+            assert!((c.fx - c32.fx as f64).abs() < 5e-3 * fnn, "{c:?} {c32:?}");
+            assert!((c.fy - c32.fy as f64).abs() < 5e-3 * fnn, "{c:?} {c32:?}");
+        }
+    }
+    assert!(checked >= 6, "{checked}");
+    println!("f32 vs f64: {worst:?}");
+}
