@@ -5,7 +5,7 @@
 //!
 //! ```sh
 //! cargo run --release --features scenes --example bearing          # writes out/bearing_*.csv, out/bearing_fy.png
-//! cargo run --release --features scenes --example bearing -- out rolling   # README's creep vs full slip table (≈ 12 min)
+//! cargo run --release --features scenes --example bearing -- out rolling   # README's creep vs full slip table (≈ 2 min)
 //! cargo run --release --features scenes --example bearing -- out rolling table 0.05   # one rolling run to 50 ms
 //! ```
 //!
