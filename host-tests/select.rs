@@ -342,7 +342,7 @@ mod rolls {
     /// a_r = b along V (F = −Gc²C₁₁ξ, M_z = −Gc⁴C₃₃φ; `Kalker` holds Table E3, checked in
     /// host-tests/rolling.rs) within 1 %; at V = 0 the wrench is the full-slip `best`
     /// contact's with δ = 0, bit for bit; `build` is `build_rolling` with G = E*(1 − ν),
-    /// ν = 0.3. Fixed and varying forms agree.
+    /// ν = 0.3. Fixed and varying forms agree within 1e-3.
     #[test]
     fn rolls_is_kalker_at_small_creepage_and_best_at_full_slip() {
         type Fixed64 = Scene<Elliptic, Fixed, Rolls, ExactGrade, f64>;
@@ -376,7 +376,9 @@ mod rolls {
         let m_lin = -g * c2ab * c2ab * k.c33 * phi;
         assert!((ws.tz / m_lin - 1.0).abs() < 0.01, "{} vs {m_lin}", ws.tz);
         let wv = cv.step_rolling(&curv, h, 0.0, Slip::new(0.0, 0.0, phi * v).unwrap(), rv);
-        assert!((wv.tz / ws.tz - 1.0).abs() < 1e-6, "{} vs {}", wv.tz, ws.tz);
+        // The varying form interpolates the creep shape per step (within 9.2e-4 fNc of the
+        // fixed form's f64 shape, host-tests/rolling_wrench.rs): here 8e-5 of M_z.
+        assert!((wv.tz / ws.tz - 1.0).abs() < 1e-3, "{} vs {}", wv.tz, ws.tz);
         // V = 0: full slip, the `best` contact with δ = 0.
         let best =
             Contact::<f64, Hertz<f64>, Undamped, Best>::hertz_with::<contensou::shape::Table>(
