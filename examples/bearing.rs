@@ -5,7 +5,17 @@
 //!
 //! ```sh
 //! cargo run --release --features scenes --example bearing          # writes out/bearing_*.csv, out/bearing_fy.png
+//! cargo run --release --features scenes --example bearing -- out rolling   # README's creep vs full slip table (≈ 2 min)
+//! cargo run --release --features scenes --example bearing -- out rolling table 0.05   # one rolling run to 50 ms
 //! ```
+//!
+//! `rolling [best|table|blend|all] [end] [209|paper]`: the 209 (or the paper's e² = 0.687
+//! inner groove) with full-slip `best` (δ = 0.05, 0.02 m/s;
+//! h = 0.5, 0.25 µs) against the rolling laws `select` picks where the patch rolls
+//! (`Scene<Elliptic, Fixed, Rolls, ExactGrade, f64>` → `Rolling<…, Table>`, G = E*(1 − ν) =
+//! 80 GPa, ν = 0.3; h = 0.1, 0.05 µs) and `blend`: the inner ring's friction torque, the balls'
+//! spin moments, the cage speed and the inner-race slip, means over the last 5 ms to `end`
+//! (default 20 ms).
 //!
 //! f64, RK4 h = 0.5 µs (the ball–race contacts ring at ≈20 kHz), 50 ms simulated, simplified
 //! Contensou friction f = 0.07, δ = 0.05 m/s (steeper needs a smaller step: no spin regularizes
@@ -15,12 +25,14 @@
 use std::fmt::Write as _;
 use std::time::Instant;
 
-use contensou::contact::Contact;
+use contensou::contact::{Contact, Rolling};
+use contensou::friction::rolling::Blend;
 use contensou::friction::{Constants, Friction, Simplified};
 use contensou::geometry::Race;
 use contensou::normal::{HuntCrossley, Modulus, Volumetric};
 use contensou::scenes::bearing::{BALLS, Bearing, Geometry, RaceLaw, State};
 use contensou::scenes::integrate::rk4;
+use contensou::select::{Elliptic, ExactGrade, Fixed, Rolls, Scene, Select, rolling_elasticity};
 use contensou::shape::{Linear, Newton};
 
 const H: f64 = 5e-7;
@@ -164,8 +176,156 @@ fn column(csv: &str, k: usize) -> Vec<(f64, f64)> {
         .collect()
 }
 
+/// Means over the last [`WINDOW`] of a run (sampled every [`SAMPLE`]).
+#[derive(Default)]
+struct Summary {
+    /// Friction torque on the inner ring about the axis (N·m).
+    ring_torque: f64,
+    /// Σ over balls of |T_z| at the inner and at the outer race (N·m).
+    spin_moment: [f64; 2],
+    /// Mean orbital speed relative to ω_c, minus 1.
+    cage: f64,
+    /// Max over balls loaded > 100 N of the sliding speed |v_P| at the inner race (m/s) and of
+    /// the creepage |v_P|/|V| there.
+    slip: f64,
+    creep: f64,
+    finite: bool,
+    wall: f64,
+}
+
+/// The table's runs end at 20 ms (the load ramps up over 5 ms; `rolling <law> <end>` sets
+/// another end) and average over the last 5 ms: a rolling run needs h ≤ 0.1 µs (the creep
+/// law's stiffness, below).
+const TABLE_END: f64 = 0.02;
+const WINDOW: f64 = 0.005;
+
+/// Runs the 209 bearing with race law `C` at step `h` to [`T_END`]: the [`Summary`].
+fn summarize<C: RaceLaw<f64>>(b: &Bearing<f64, C>, h: f64, end: f64) -> Summary {
+    let steps = (end / h).round() as usize;
+    let every = (SAMPLE / h).round() as usize;
+    let mut s = Summary::default();
+    let mut count = 0.0;
+    let wc = b.geometry().cage_speed();
+    let start = Instant::now();
+    let y = rk4(b, 0.0, b.initial_state(), h, steps, |i, t, y| {
+        if i % every != 0 || t < end - WINDOW - 1e-12 {
+            return;
+        }
+        count += 1.0;
+        s.ring_torque += b.inner_ring_torque(y);
+        let mut orbit_sum = 0.0;
+        let (mut slip, mut creep) = (0.0_f64, 0.0_f64);
+        for i in 0..BALLS {
+            let (ci, co) = b.contacts(y, i);
+            s.spin_moment[0] += ci.tz.abs();
+            s.spin_moment[1] += co.tz.abs();
+            orbit_sum += orbit(y, i);
+            if ci.n > 100.0 {
+                let v = ci.slip[0].hypot(ci.slip[1]);
+                slip = slip.max(v);
+                creep = creep.max(v / ci.rolling[0].hypot(ci.rolling[1]));
+            }
+        }
+        s.cage += orbit_sum / BALLS as f64 / wc - 1.0;
+        s.slip += slip;
+        s.creep += creep;
+    });
+    s.wall = start.elapsed().as_secs_f64();
+    s.ring_torque /= count;
+    s.spin_moment = s.spin_moment.map(|m| m / count);
+    s.cage /= count;
+    s.slip /= count;
+    s.creep /= count;
+    s.finite = y.iter().all(|v| v.is_finite());
+    s
+}
+
+fn print_row(label: &str, delta: f64, h: f64, s: &Summary) {
+    println!(
+        "| {label} | {delta} | {:.3} | {:.1} | {:.2} / {:.2} | {:+.3} | {:.2} | {:.2e} | {} {:.1} s |",
+        h * 1e6,
+        s.ring_torque * 1e3,
+        s.spin_moment[0] * 1e3,
+        s.spin_moment[1] * 1e3,
+        100.0 * s.cage,
+        s.slip * 1e3,
+        s.creep,
+        if s.finite { "" } else { "NON-FINITE" },
+        s.wall
+    );
+}
+
+/// Creep (rolling laws) against full slip (`best`) on bearing `g` at two δ and two steps:
+/// the README's bearing table. `which`: `best`, `table`, `blend` or all; `end`: the runs' end
+/// (s). A run at another end than [`TABLE_END`] takes only the first (δ, h).
+fn rolling_table(which: Option<&str>, end: f64, g: Geometry<f64>) {
+    let first = |runs: &[(f64, f64)]| -> Vec<(f64, f64)> {
+        if end == TABLE_END {
+            runs.to_vec()
+        } else {
+            runs[..1].to_vec()
+        }
+    };
+    let (estar, damping, _) = parts();
+    println!(
+        "| race law | δ (m/s) | h (µs) | inner-ring friction torque (N·mm) | Σ|T_z| balls inner / outer (N·mm) | cage speed vs ω_c (%) | max inner slip (mm/s) | max inner creepage | wall |"
+    );
+    println!("|---|---|---|---|---|---|---|---|---|");
+    let runs = |name: &str| which.is_none_or(|w| w == name || w == "all");
+    let best = |delta: f64, race| {
+        Contact::hertz::<Newton>(
+            &g.curvatures(race).unwrap(),
+            estar,
+            damping,
+            Friction::new(0.07, delta).unwrap(),
+        )
+        .unwrap()
+    };
+    if runs("best") {
+        for (delta, h) in first(&[(0.05, H), (0.05, H / 2.0), (0.02, H / 2.0)]) {
+            let b = Bearing::new(&g, best(delta, Race::Inner), best(delta, Race::Outer)).unwrap();
+            print_row("best (full slip)", delta, h, &summarize(&b, h, end));
+        }
+    }
+    // The rolling law `select` picks where the patch rolls: `table` over `best`, elasticity
+    // G = E*(1 − ν) = 80 GPa, ν = 0.3 (steel); δ is not used by it. Its creep stiffness
+    // G c² C₁₁/V (≈ 2.2e4 N·s/m at the inner race at 900 N) needs h ≤ 0.1 µs with RK4 (at
+    // 0.25 µs a numerical limit cycle drives the ring).
+    type RollingRace = Scene<Elliptic, Fixed, Rolls, ExactGrade, f64>;
+    let table = |delta: f64, race| {
+        let friction = Friction::new(0.07, delta).unwrap();
+        RollingRace::build(&g.curvatures(race).unwrap(), estar, damping, friction).unwrap()
+    };
+    if runs("table") {
+        for (delta, h) in first(&[(0.05, H_ROLL), (0.05, H_ROLL / 2.0), (0.02, H_ROLL)]) {
+            let b = Bearing::new(&g, table(delta, Race::Inner), table(delta, Race::Outer)).unwrap();
+            print_row("table (creep)", delta, h, &summarize(&b, h, end));
+        }
+    }
+    if runs("blend") {
+        let el = rolling_elasticity(estar).unwrap();
+        let blend = |race| Rolling::<_, _, Blend>::new(best(0.05, race), el).unwrap();
+        let b = Bearing::new(&g, blend(Race::Inner), blend(Race::Outer)).unwrap();
+        print_row("blend (creep)", 0.05, H_ROLL, &summarize(&b, H_ROLL, end));
+    }
+}
+
+/// RK4 step of the rolling runs (s).
+const H_ROLL: f64 = 1e-7;
+
 fn main() {
     let dir = std::env::args().nth(1).unwrap_or_else(|| "out".into());
+    if std::env::args().nth(2).as_deref() == Some("rolling") {
+        let end = std::env::args()
+            .nth(4)
+            .map_or(TABLE_END, |e| e.parse().unwrap());
+        let g = match std::env::args().nth(5).as_deref() {
+            Some("paper") => Geometry::paper_e2(),
+            _ => Geometry::bearing_209(),
+        };
+        rolling_table(std::env::args().nth(3).as_deref(), end, g);
+        return;
+    }
     std::fs::create_dir_all(&dir).unwrap();
     let (estar, damping, friction) = parts();
 

@@ -293,3 +293,112 @@ within_bounds! {
     ball_race_nospin_rough: Elliptic, Fixed, NoSpin, Rough, "ball-race";
     varying_spin_rough: Elliptic, Varying, Spin, Rough, "varying";
 }
+
+// --- `Rolls`: the patch rolls → `contact::Rolling<…, rolling::Table>` (issue 20 item 5) ---
+
+mod rolls {
+    use super::resolves;
+    use contensou::contact::{Contact, Rolling, VaryingContact};
+    use contensou::friction::rolling::{Elasticity, Kalker, RollingVelocity, Table};
+    use contensou::friction::{Best, Friction, Slip};
+    use contensou::geometry::Curvatures;
+    use contensou::normal::{Hertz, Modulus, Undamped};
+    use contensou::select::*;
+
+    #[test]
+    fn rolls_resolves_to_the_default_rolling_law() {
+        type U = Undamped;
+        resolves::<
+            Scene<Elliptic, Fixed, Rolls, ExactGrade, f64>,
+            U,
+            Rolling<f64, Contact<f64, Hertz<f64>, U, Best>, Table>,
+            Best,
+        >();
+        resolves::<
+            Scene<Circular, Fixed, Rolls, Coarse, f32>,
+            U,
+            Rolling<f32, Contact<f32, Hertz<f32>, U, Best>, Table>,
+            Best,
+        >();
+        resolves::<
+            Scene<Elliptic, Varying, Rolls, Rough, f32>,
+            U,
+            Rolling<f32, VaryingContact<f32, U, Best>, Table>,
+            Best,
+        >();
+        type S = Scene<Elliptic, Fixed, Rolls, Coarse, f64>;
+        assert_eq!(<S as Select>::GEOMETRY, "ball-race");
+        const { assert!(<S as Select>::SPINS) };
+        assert_eq!(
+            (<S as Select>::FORCE, <S as Select>::TORQUE),
+            (ROLLING_FORCE, ROLLING_TORQUE)
+        );
+    }
+
+    const ESTAR: f64 = 1.142857e11;
+
+    /// An elliptic patch rolling along its minor axis (contact y) at 3 m/s: at small creepage
+    /// the force along V and the spin moment are Kalker's linear theory on the ellipse with
+    /// a_r = b along V (F = −Gc²C₁₁ξ, M_z = −Gc⁴C₃₃φ; `Kalker` holds Table E3, checked in
+    /// host-tests/rolling.rs) within 1 %; at V = 0 the wrench is the full-slip `best`
+    /// contact's with δ = 0, bit for bit; `build` is `build_rolling` with G = E*(1 − ν),
+    /// ν = 0.3. Fixed and varying forms agree within 1e-3.
+    #[test]
+    fn rolls_is_kalker_at_small_creepage_and_best_at_full_slip() {
+        type Fixed64 = Scene<Elliptic, Fixed, Rolls, ExactGrade, f64>;
+        type Varying64 = Scene<Elliptic, Varying, Rolls, ExactGrade, f64>;
+        let curv = Curvatures::new(25.0, 100.0).unwrap();
+        let estar = Modulus::new(ESTAR).unwrap();
+        let friction = Friction::new(0.1, 0.0).unwrap();
+        let c = Fixed64::build(&curv, estar, Undamped, friction).unwrap();
+        let el = Elasticity::new(ESTAR * 0.7, 0.3).unwrap();
+        let c2 = Fixed64::build_rolling(&curv, estar, Undamped, friction, el).unwrap();
+        let cv = Varying64::build(&(), estar, Undamped, friction).unwrap();
+        let (h, v) = (2e-6, 3.0);
+        let rv = RollingVelocity::new(0.0, v).unwrap();
+        let xi = 2e-6;
+        let w = c.step_rolling(&curv, h, 0.0, Slip::new(0.0, xi * v, 0.0).unwrap(), rv);
+        assert_eq!(
+            w,
+            c2.step_rolling(&curv, h, 0.0, Slip::new(0.0, xi * v, 0.0).unwrap(), rv)
+        );
+        let (a, b) = (w.patch.a, w.patch.b);
+        assert!(a > 1.5 * b, "{a} {b}");
+        let k = Kalker::<f64>::new(b / a, 0.3);
+        let g = ESTAR * 0.7;
+        let c2ab = a * b;
+        let f_lin = -g * c2ab * k.c11 * xi;
+        assert!(f_lin.abs() < 0.05 * 0.1 * w.n, "{f_lin} {}", w.n);
+        assert!((w.fy / f_lin - 1.0).abs() < 0.01, "{} vs {f_lin}", w.fy);
+        assert!(w.fx.abs() < 1e-9 * f_lin.abs(), "{}", w.fx);
+        let phi = 1e-3; // 1/m
+        let ws = c.step_rolling(&curv, h, 0.0, Slip::new(0.0, 0.0, phi * v).unwrap(), rv);
+        let m_lin = -g * c2ab * c2ab * k.c33 * phi;
+        assert!((ws.tz / m_lin - 1.0).abs() < 0.01, "{} vs {m_lin}", ws.tz);
+        let wv = cv.step_rolling(&curv, h, 0.0, Slip::new(0.0, 0.0, phi * v).unwrap(), rv);
+        // The varying form interpolates the creep shape per step (within 9.2e-4 fNc of the
+        // fixed form's f64 shape, host-tests/rolling_wrench.rs): here 8e-5 of M_z.
+        assert!((wv.tz / ws.tz - 1.0).abs() < 1e-3, "{} vs {}", wv.tz, ws.tz);
+        // V = 0: full slip, the `best` contact with δ = 0.
+        let best =
+            Contact::<f64, Hertz<f64>, Undamped, Best>::hertz_with::<contensou::shape::Table>(
+                &curv, estar, Undamped, friction,
+            )
+            .unwrap();
+        for slip in [
+            Slip::new(0.01, -0.02, 5.0).unwrap(),
+            Slip::new(0.0, 1e-3, 0.0).unwrap(),
+        ] {
+            let full = c.step_rolling(&curv, h, 0.0, slip, RollingVelocity::ZERO);
+            let b = best.wrench(h, 0.0, slip);
+            let scale = 0.1 * b.n;
+            assert!(
+                (full.fx - b.fx).abs() + (full.fy - b.fy).abs() < 1e-12 * scale,
+                "{full:?} {b:?}"
+            );
+            assert!((full.tz - b.tz).abs() < 1e-12 * scale * a, "{full:?} {b:?}");
+            // `Step::step` of a rolling contact is that limit.
+            assert_eq!(c.step(&curv, h, 0.0, slip), full);
+        }
+    }
+}

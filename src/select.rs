@@ -132,6 +132,45 @@
 //! its worst (h = 2⁻¹⁹ m); it costs 1 instruction less per step than libm's `vsqrt.f32` —
 //! measured, but the whole gain of a 6 % normal-force error (a toy, not a bearing).
 //!
+//! # Rolling contacts: [`Rolls`]
+//!
+//! A rolling patch is mostly stuck (Kalker): a full-slip law's force and drilling torque there
+//! come from the regularisation speed δ, not from physics. Declaring the motion [`Rolls`] picks
+//! the rolling law instead: [`Rolling`]`<T, C, `[`rolling::Table`]`>` over the geometry kind's
+//! contact with friction [`Best`] — `Circular, Fixed`: `Rolling<T, Contact<T, Hertz<T>, D,
+//! Best>, Table>` (circular Hertz, no elliptic code); `Elliptic, Fixed`: the same with the
+//! shape from [`Table`] once; `Elliptic, Varying`: `Rolling<T, VaryingContact<T, D, Best>,
+//! Table>`. Per step it takes the rolling velocity besides the slip: [`StepRolling`]
+//! (implemented by every scene's contact; the sliding ones ignore V). [`Select::build`] takes
+//! the elasticity of quasi-identical bodies of the contact's E*: ν = [`ROLLING_NU`] = 0.3 and
+//! G = E*(1 − ν) (E* = E/(2(1 − ν²)), G = E/(2(1 + ν)); steel E* = 1.1429e11 Pa gives G =
+//! 80 GPa); [`SelectRolling::build_rolling`] takes any [`Elasticity`] (e.g.
+//! [`Elasticity::dissimilar`]).
+//!
+//! Error: the `table` law's against the exact steady-rolling theory (`tools/rolling_exact`)
+//! over Kalker's creep curves, a/b ∈ [0.2, 5]: [`ROLLING_FORCE`] fN, [`ROLLING_TORQUE`] fNc
+//! (c = √(ab)); exact `best` at full slip. N, a, b: exact Hertz ([`NORMAL_BOUND`]). Cost:
+//! `table`'s (759 M4F f32 instructions per call, `bench-results/qemu.csv`, stage `rolling`)
+//! plus the normal law and the frame rotation (`bench-results/qemu.csv`, rows `wrench-*`).
+//!
+//! ```
+//! use contensou::friction::rolling::RollingVelocity;
+//! use contensou::friction::{Friction, Slip};
+//! use contensou::geometry::{Curvatures, Race};
+//! use contensou::normal::{Modulus, Undamped};
+//! use contensou::select::{Elliptic, ExactGrade, Fixed, Rolls, StepRolling, Scene, Select};
+//!
+//! // A ball in the inner race of a 209 bearing, rolling along the groove at 3 m/s.
+//! type Race209 = Scene<Elliptic, Fixed, Rolls, ExactGrade, f64>;
+//! let curvatures = Curvatures::ball_race(12.7e-3, 6.6e-3, 65e-3, 0.0, Race::Inner)?;
+//! let ball = Race209::build(&curvatures, Modulus::new(1.142857e11)?, Undamped, Friction::new(0.07, 0.0)?)?;
+//! // the major axis is across the groove: rolling along y, creepage 1e-4 along it
+//! let v = RollingVelocity::new(0.0, 3.0)?;
+//! let w = ball.step_rolling(&curvatures, 5e-6, 0.0, Slip::new(0.0, 3e-4, 0.0)?, v);
+//! assert!(w.fy < 0.0 && w.fy.abs() < 0.07 * w.n);
+//! # Ok::<(), contensou::Error>(())
+//! ```
+//!
 //! # Extending
 //!
 //! A budget is a type implementing [`Budget`]: its bounds (N, a, b; friction with and without
@@ -142,7 +181,8 @@
 
 use core::marker::PhantomData;
 
-use crate::contact::{Contact, VaryingContact, Wrench};
+use crate::contact::{Contact, Rolling, VaryingContact, Wrench};
+use crate::friction::rolling::{self, Elasticity, RollingVelocity};
 use crate::friction::{Best, Coulomb, Ellipsoid, Friction, FrictionLaw, Slip};
 use crate::geometry::Curvatures;
 use crate::normal::{Damping, Hertz, Modulus, NormalLaw};
@@ -172,6 +212,7 @@ mod sealed {
     impl Sealed for f64 {}
     impl Sealed for super::Spin {}
     impl Sealed for super::NoSpin {}
+    impl Sealed for super::Rolls {}
 }
 
 /// Patch kind: P = Q (sphere on plane, sphere on sphere). No elliptic code is linked.
@@ -192,6 +233,14 @@ pub struct Spin;
 /// Motion: ω = 0 always (pure sliding or rolling without spin): the plain Coulomb law is exact.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct NoSpin;
+/// Motion: the patch rolls — the contact point travels over both surfaces (a ball in a race,
+/// a wheel, a rocking body) with small creepage, and spin. Resolves to
+/// [`Rolling`]`<T, C, `[`rolling::Table`]`>` (the default rolling law) over the geometry
+/// kind's contact with [`Best`] (the full-slip part): the tangential wrench from Kalker's creep
+/// theory and the bodies' elasticity, exact `best` at full slip or V → 0, δ not used (see
+/// [`Rolls`'s section](self#rolling-contacts-rolls)). Every budget resolves to the same types.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Rolls;
 /// Budget: N, a, b within 6.5 % ([`ROUGH_NORMAL_BOUND`]); friction within 0.25 fN and
 /// 0.17 fNa with spin, 0.065 fN without → [`Ellipsoid`] (with spin) and, for a fixed contact in
 /// `f32` with the feature `micromath`, micromath's √h in Hertz (`HertzMicromath`): measured
@@ -452,4 +501,192 @@ select!(Elliptic, Fixed, "ball-race", B::Normal<T>, B::SpinLaw, Curvatures<T>,
 select!(Elliptic, Varying, "varying", Hertz<T>, B::VaryingSpinLaw<T>, (),
     |D| VaryingContact<T, D, S::Law<B::VaryingSpinLaw<T>>>,
     |_, estar, damping, friction| Ok(VaryingContact::new(estar, damping, friction)),
+    |_| ());
+
+/// Poisson ratio of the elasticity [`Select::build`] gives a [`Rolls`] scene (steel): with
+/// G = E*(1 − ν), quasi-identical bodies of the contact's E*.
+pub const ROLLING_NU: f64 = 0.3;
+
+/// Bound on |F − F_exact| (fN) of a [`Rolls`] scene: the default rolling law `table` against
+/// the exact steady-rolling theory over Kalker's creep curves, a/b ∈ [0.2, 5] (measured 0.045
+/// on held-out magnitudes; README "Rolling contact: Kalker's creep laws").
+pub const ROLLING_FORCE: f64 = 0.05;
+
+/// Bound on |M_z − M_exact| (fNc, c = √(ab)) of a [`Rolls`] scene, as [`ROLLING_FORCE`]
+/// (measured 0.033).
+pub const ROLLING_TORQUE: f64 = 0.05;
+
+/// One per-step call of any scene's contact with the rolling velocity V of the contact
+/// ([`RollingVelocity`], contact frame): a [`Rolls`] contact reads it, the sliding ones ignore
+/// it (their [`Step::step`]). Total.
+pub trait StepRolling<T: Real> {
+    /// One step: this step's curvatures (read by a varying contact), h (m), ḣ (m/s), the slip
+    /// and the rolling velocity → the wrench on B from A (without the law's branch).
+    fn step_rolling(
+        &self,
+        curv: &Curvatures<T>,
+        h: T,
+        hdot: T,
+        slip: Slip<T>,
+        v: RollingVelocity<T>,
+    ) -> Wrench<T, ()>;
+}
+
+/// A wrench without its branch.
+#[inline(always)]
+fn unbranched<T: Real, B>(w: Wrench<T, B>) -> Wrench<T, ()> {
+    Wrench {
+        n: w.n,
+        fx: w.fx,
+        fy: w.fy,
+        tz: w.tz,
+        patch: w.patch,
+        branch: (),
+    }
+}
+
+/// One [`StepRolling`] impl: generics, type, the call from (self, curvatures, h, ḣ, slip, V).
+macro_rules! step_rolling {
+    ([$($g:tt)*] $ty:ty, |$s:ident, $curv:pat_param, $h:ident, $hd:ident, $sl:ident, $v:pat_param| $body:expr) => {
+        impl<$($g)*> StepRolling<T> for $ty {
+            #[inline(always)]
+            fn step_rolling(
+                &self,
+                $curv: &Curvatures<T>,
+                $h: T,
+                $hd: T,
+                $sl: Slip<T>,
+                $v: RollingVelocity<T>,
+            ) -> Wrench<T, ()> {
+                let $s = self;
+                $body
+            }
+        }
+    };
+}
+
+step_rolling!([T: Real, N: NormalLaw<T>, D: Damping<T>, L: FrictionLaw] Contact<T, N, D, L>,
+    |c, _, h, hdot, slip, _| unbranched(c.wrench(h, hdot, slip)));
+step_rolling!([T: Real, D: Damping<T>, L: FrictionLaw] VaryingContact<T, D, L>,
+    |c, curv, h, hdot, slip, _| unbranched(c.wrench(curv, h, hdot, slip)));
+step_rolling!([T: Real, N: NormalLaw<T>, D: Damping<T>, L: rolling::RollingLaw]
+    Rolling<T, Contact<T, N, D, Best>, L>,
+    |c, _, h, hdot, slip, v| c.wrench(h, hdot, slip, v));
+step_rolling!([T: Real, D: Damping<T>, L: rolling::RollingLaw]
+    Rolling<T, VaryingContact<T, D, Best>, L>,
+    |c, curv, h, hdot, slip, v| c.wrench(curv, h, hdot, slip, v));
+
+/// [`Step`] of a rolling contact without a rolling velocity: its full-slip limit (V = 0,
+/// exact `best` with δ = 0). Use [`StepRolling::step_rolling`] to roll.
+impl<T: Real, N: NormalLaw<T>, D: Damping<T>, L: rolling::RollingLaw> Step<T>
+    for Rolling<T, Contact<T, N, D, Best>, L>
+{
+    type Branch = ();
+    #[inline(always)]
+    fn step(&self, _: &Curvatures<T>, h: T, hdot: T, slip: Slip<T>) -> Wrench<T, ()> {
+        self.wrench(h, hdot, slip, RollingVelocity::ZERO)
+    }
+}
+
+/// As for the fixed contact: the full-slip limit (V = 0).
+impl<T: Real, D: Damping<T>, L: rolling::RollingLaw> Step<T>
+    for Rolling<T, VaryingContact<T, D, Best>, L>
+{
+    type Branch = ();
+    #[inline(always)]
+    fn step(&self, curv: &Curvatures<T>, h: T, hdot: T, slip: Slip<T>) -> Wrench<T, ()> {
+        self.wrench(curv, h, hdot, slip, RollingVelocity::ZERO)
+    }
+}
+
+/// The elasticity [`Select::build`] gives a [`Rolls`] scene: quasi-identical bodies of E*,
+/// ν = [`ROLLING_NU`], G = E*(1 − ν). Errors: those of [`Elasticity::new`] (none for a valid
+/// E*).
+pub fn rolling_elasticity<T: Real>(estar: Modulus<T>) -> Result<Elasticity<T>, Error> {
+    let nu = T::from_f64(ROLLING_NU);
+    Elasticity::new(estar.get() * (T::ONE - nu), nu)
+}
+
+/// A [`Rolls`] scene built with any elasticity.
+pub trait SelectRolling: Select {
+    /// [`Select::build`] with the pair's elastic constants `elasticity` instead of the
+    /// default ([`rolling_elasticity`]). Errors: those of the geometry kind's constructor and
+    /// of [`Rolling::new`].
+    fn build_rolling<D: Damping<Self::Real>>(
+        geometry: &Self::Geometry,
+        estar: Modulus<Self::Real>,
+        damping: D,
+        friction: Friction<Self::Real, Self::Law>,
+        elasticity: Elasticity<Self::Real>,
+    ) -> Result<Self::Contact<D>, Error>;
+}
+
+/// One [`Select`] + [`SelectRolling`] impl per geometry kind for [`Rolls`]: patch, geometry,
+/// key name, constructor input, base contact type (damping `$d`), the base constructor, the
+/// geometry input from curvatures.
+macro_rules! select_rolling {
+    ($p:ty, $g:ty, $name:literal, $geometry:ty,
+     |$d:ident| $base:ty,
+     |$geo:pat_param, $estar:ident, $damping:ident, $friction:ident| $build:expr,
+     |$c:pat_param| $of:expr) => {
+        impl<B: Budget, T: Precision> Select for Scene<$p, $g, Rolls, B, T> {
+            type Real = T;
+            type Normal = Hertz<T>;
+            type Law = Best;
+            type Geometry = $geometry;
+            type Contact<$d: Damping<T>> = Rolling<T, $base, rolling::Table>;
+            const GEOMETRY: &'static str = $name;
+            const SPINS: bool = true;
+            const NORMAL: f64 = NORMAL_BOUND;
+            const FORCE: f64 = ROLLING_FORCE;
+            const TORQUE: f64 = ROLLING_TORQUE;
+
+            fn build<$d: Damping<T>>(
+                geometry: &$geometry,
+                estar: Modulus<T>,
+                damping: $d,
+                friction: Friction<T, Best>,
+            ) -> Result<Self::Contact<$d>, Error> {
+                Self::build_rolling(
+                    geometry,
+                    estar,
+                    damping,
+                    friction,
+                    rolling_elasticity(estar)?,
+                )
+            }
+
+            #[inline(always)]
+            fn geometry($c: &Curvatures<T>) -> $geometry {
+                $of
+            }
+        }
+
+        impl<B: Budget, T: Precision> SelectRolling for Scene<$p, $g, Rolls, B, T> {
+            fn build_rolling<$d: Damping<T>>(
+                $geo: &$geometry,
+                $estar: Modulus<T>,
+                $damping: $d,
+                $friction: Friction<T, Best>,
+                elasticity: Elasticity<T>,
+            ) -> Result<Self::Contact<$d>, Error> {
+                Rolling::new($build, elasticity)
+            }
+        }
+    };
+}
+
+select_rolling!(Circular, Fixed, "sphere-plane", Curvatures<T>,
+    |D| Contact<T, Hertz<T>, D, Best>,
+    |curvatures, estar, damping, friction| Contact::circular_with(curvatures, estar, damping, friction)?,
+    |c| *c);
+
+select_rolling!(Elliptic, Fixed, "ball-race", Curvatures<T>,
+    |D| Contact<T, Hertz<T>, D, Best>,
+    |curvatures, estar, damping, friction| Contact::hertz_with::<Table>(curvatures, estar, damping, friction)?,
+    |c| *c);
+
+select_rolling!(Elliptic, Varying, "varying", (),
+    |D| VaryingContact<T, D, Best>,
+    |_, estar, damping, friction| VaryingContact::new(estar, damping, friction),
     |_| ());

@@ -19,17 +19,38 @@
 //!   groove conforms closely). The curvatures — hence e² and the friction constants — are those
 //!   of the nominal contact angle 0, fixed per race (the contact angle that a load develops in
 //!   a zero-clearance bearing is a few degrees).
+//! - Race laws ([`RaceLaw`]): any contact [`crate::select`] builds — a full-slip
+//!   [`Contact`] (the rolling velocity ignored) or, with the motion [`crate::select::Rolls`],
+//!   [`crate::contact::Rolling`] over `best` with the default rolling law `table` (the creep
+//!   forces and spin moment from the elasticity; needs RK4 steps ≤ 0.1 µs at the 209's loads:
+//!   the creep law is a stiff damper, G c² C₁₁/V ≈ 2.2e4 N·s/m at the inner race at 900 N).
 //! - Slip: ball minus ring material velocity at P; spin: (ω_ball − ω_ring)·z.
+//! - Rolling velocity ([`RaceContact::rolling`], the input of a rolling law): the velocity at
+//!   which the contact point moves over both surfaces relative to their material, averaged,
+//!   V = v_P − ½(u_A + u_B), tangential components in the contact frame. u_A = v_r + ω_r ẑ ×
+//!   (P − c) is the ring's material velocity at P, u_B = v + ω × (r_b u) the ball's. v_P is the
+//!   velocity of the geometric contact point P = p + r_b u: the torus is symmetric about the
+//!   ring's axis, so P does not move with the ring's rotation, only with the ball's centre
+//!   relative to the ring centre, r = p − c, ṙ = v − v_r. With ρ, e_ρ, e_θ the cylindrical
+//!   radius and unit vectors of r, g = (ρ − ρ_c)e_ρ + r_z ẑ and u = g/d, d = |g|:
+//!   ġ = ṙ − (ρ_c/ρ)(e_θ·ṙ)e_θ (the meridian components of ṙ move g one to one, the
+//!   circumferential one turns e_ρ and moves g by (ρ − ρ_c)/ρ of it), u̇ = (ġ − u(u·ġ))/d
+//!   (e_θ ⟂ u, so u·ġ = u·ṙ) and v_P = v + r_b u̇. Examples (tested): pure rolling at the
+//!   cage speed ω_c, contact angle 0 — outer race V = ω_c(d_m/2 + r_b) along +e_θ, inner race
+//!   V = −(ω_i − ω_c)(d_m/2 − r_b) along e_θ (the contact point runs backwards over the faster
+//!   inner ring); a ball pivoting in place about the normal: V = 0. P is the ball's surface
+//!   point (the slip's point too); the mid-point of the overlap would change V by O(h/r_b).
 //! - State ([`N`] scalars): inner ring centre and velocity (6), then per ball centre, velocity
 //!   and angular velocity (9; a sphere's attitude does not enter).
 
 use super::integrate::Ode;
 use super::rigid::Vec3;
-use crate::contact::{Contact, Wrench};
+#[cfg(doc)]
+use crate::contact::Contact;
 use crate::frame::{ContactFrame, Frame, MajorAxis, point_velocity};
-use crate::friction::{FrictionLaw, Slip};
+use crate::friction::rolling::RollingVelocity;
 use crate::geometry::{Curvatures, Race};
-use crate::normal::{HuntCrossley, NormalLaw};
+use crate::select::StepRolling;
 use crate::{Error, Real};
 
 /// Number of balls (the 209 bearing has 9).
@@ -125,6 +146,8 @@ struct Raceway<T, C> {
     groove: T,
     /// The major axis, from the rolling direction.
     axis: MajorAxis<T>,
+    /// The curvatures at contact angle 0.
+    curvatures: Curvatures<T>,
     contact: C,
 }
 
@@ -143,37 +166,33 @@ pub struct RaceContact<T> {
     pub fy: T,
     /// Drilling torque (N·m).
     pub tz: T,
+    /// Slip (v_x, v_y) of the ball relative to the ring at P in the contact frame (m/s).
+    pub slip: [T; 2],
     /// Relative spin (ω_ball − ω_ring)·z (rad/s).
     pub spin: T,
     /// Relative rolling speed |ω_ball − ω_ring| in the contact plane (rad/s).
     pub roll: T,
+    /// Rolling velocity V = v_P − ½(u_A + u_B) in the contact frame (x = major axis) (m/s):
+    /// see the [module docs](self).
+    pub rolling: [T; 2],
+    /// Torque about the bearing axis through the ring's centre on the ring from this contact
+    /// (N·m): the friction forces' moment plus the drilling torque's axial part.
+    pub ring_torque: T,
     /// Force on the ball, world frame (N).
     pub force: Vec3<T>,
     /// Torque on the ball about its centre, world frame (N·m).
     pub torque: Vec3<T>,
 }
 
-/// A per-step contact law for the races: [`Contact`] with any normal law (exact Hertz, the G*
-/// shape, the volumetric law), Hunt–Crossley damping and friction law `L`.
-pub trait RaceLaw<T: Real> {
-    /// The wrench at (h, ḣ, slip), without the friction law's branch.
-    fn wrench_at(&self, h: T, hdot: T, slip: Slip<T>) -> Wrench<T, ()>;
-}
+/// A per-step contact law for the races: any contact [`crate::select`] builds, through
+/// [`StepRolling`] — [`Contact`] with any normal law (exact Hertz, the G* shape, the volumetric
+/// law), damping and friction law (full slip: the rolling velocity is ignored), or
+/// [`crate::contact::Rolling`] (what [`crate::select::Rolls`] resolves to: the rolling
+/// velocity drives the creep law). The race's curvatures at contact angle 0 are passed every
+/// step (read by a varying contact only).
+pub trait RaceLaw<T: Real>: StepRolling<T> {}
 
-impl<T: Real, Nl: NormalLaw<T>, L: FrictionLaw> RaceLaw<T> for Contact<T, Nl, HuntCrossley<T>, L> {
-    #[inline(always)]
-    fn wrench_at(&self, h: T, hdot: T, slip: Slip<T>) -> Wrench<T, ()> {
-        let w = self.wrench(h, hdot, slip);
-        Wrench {
-            n: w.n,
-            fx: w.fx,
-            fy: w.fy,
-            tz: w.tz,
-            patch: w.patch,
-            branch: (),
-        }
-    }
-}
+impl<T: Real, C: StepRolling<T>> RaceLaw<T> for C {}
 
 impl<T: Real, C: RaceLaw<T>> Raceway<T, C> {
     /// The contact of a ball (centre `p`, velocity `v`, angular velocity `w`, radius `rb`)
@@ -216,8 +235,21 @@ impl<T: Real, C: RaceLaw<T>> Raceway<T, C> {
         let vp = (ball_p - ring_p).into();
         let w_rel = w - ring_w;
         let slip = frame.slip(vp, w_rel.into()).unwrap_or_default();
-        let wrench = self.contact.wrench_at(h, frame.approach_rate(vp), slip);
+        // Rolling velocity (module docs): v_P = v + r_b u̇ with the torus' u̇.
+        let rdot = v - vr;
+        let g_dot = rdot - e_theta * (self.centre_radius / rho * e_theta.dot(rdot));
+        let u_dot = (g_dot - u * u.dot(rdot)) * (T::ONE / d);
+        let v_contact = v + u_dot * rb;
+        let rolling_world = v_contact - (ball_p + ring_p) * T::HALF;
+        let [vrx, vry, _] = frame.to_contact(rolling_world.into());
+        // A non-finite V (never from a finite state) falls back to full slip.
+        let rolling = RollingVelocity::new(vrx, vry).unwrap_or(RollingVelocity::ZERO);
+        let wrench =
+            self.contact
+                .step_rolling(&self.curvatures, h, frame.approach_rate(vp), slip, rolling);
         let load = frame.on_b(&wrench, arm.into());
+        let force: Vec3<T> = load.force.into();
+        let ring_torque = -((rel + arm).cross(force).z + z.z * wrench.tz);
         RaceContact {
             h,
             n: wrench.n,
@@ -225,9 +257,12 @@ impl<T: Real, C: RaceLaw<T>> Raceway<T, C> {
             fx: wrench.fx,
             fy: wrench.fy,
             tz: wrench.tz,
+            slip: [slip.vx(), slip.vy()],
             spin: slip.omega(),
             roll: (w_rel - z * slip.omega()).norm(),
-            force: load.force.into(),
+            rolling: [vrx, vry],
+            ring_torque,
+            force,
             torque: load.torque.into(),
         }
     }
@@ -249,19 +284,20 @@ impl<T: Real, C: RaceLaw<T>> Bearing<T, C> {
     /// Errors: those of [`Geometry::curvatures`].
     pub fn new(g: &Geometry<T>, inner: C, outer: C) -> Result<Self, Error> {
         let half = T::HALF;
-        let axis =
-            |race| -> Result<MajorAxis<T>, Error> { Ok(MajorAxis::of(&g.curvatures(race)?)) };
+        let (ci, co) = (g.curvatures(Race::Inner)?, g.curvatures(Race::Outer)?);
         Ok(Bearing {
             inner: Raceway {
                 centre_radius: (g.pitch_diameter - g.ball_diameter) * half + g.inner_groove,
                 groove: g.inner_groove,
-                axis: axis(Race::Inner)?,
+                axis: MajorAxis::of(&ci),
+                curvatures: ci,
                 contact: inner,
             },
             outer: Raceway {
                 centre_radius: (g.pitch_diameter + g.ball_diameter) * half - g.outer_groove,
                 groove: g.outer_groove,
-                axis: axis(Race::Outer)?,
+                axis: MajorAxis::of(&co),
+                curvatures: co,
                 contact: outer,
             },
             ball_inertia: T::from_f64(0.1) * g.ball_mass * g.ball_diameter * g.ball_diameter,
@@ -307,6 +343,16 @@ impl<T: Real, C: RaceLaw<T>> Bearing<T, C> {
             Some(b) => self.ball_contacts(ring(y), b),
             None => Default::default(),
         }
+    }
+
+    /// The friction torque on the inner ring about the bearing axis at state `y` (N·m): the
+    /// sum of every ball's [`RaceContact::ring_torque`] at the inner race (negative: it brakes
+    /// the ring, which the drive holds at ω_i).
+    pub fn inner_ring_torque(&self, y: &State<T>) -> T {
+        let r = ring(y);
+        y[6..].chunks_exact(9).fold(T::ZERO, |acc, b| {
+            acc + self.ball_contacts(r, b).0.ring_torque
+        })
     }
 
     #[inline(always)]
