@@ -245,3 +245,152 @@ fn from_quadratic_matches_from_bodies_and_rejects_indefinite_forms() {
     );
     assert!(Curvatures::from_quadratic(f64::NAN, 1.0, 0.0).is_err());
 }
+
+// ---- The contact's rolling velocity (issue 20 item 5) ----
+
+/// A state with attitude `q` (body → world), the support point `gap` below the floor (the
+/// approach, m), world angular velocity `w` and Ġ such that the rattleback's material point at
+/// `pin` (world arm from G: "arm" = the floor point P, "lowest" = the support point x*) is at
+/// rest.
+fn pinned_state(
+    rb: &Rattleback<f64, Best>,
+    q: contensou::scenes::rigid::Quat<f64>,
+    gap: f64,
+    w: contensou::scenes::rigid::Vec3<f64>,
+    pin_at_lowest: bool,
+) -> [f64; 13] {
+    let mut y = [
+        0.0, 0.0, 0.0, 0.0, 0.0, 0.0, q.w, q.x, q.y, q.z, 0.0, 0.0, 0.0,
+    ];
+    let g0 = rb.geometry(&y);
+    y[2] = -g0.lowest.z - gap;
+    let g = rb.geometry(&y);
+    let pin = if pin_at_lowest { g.lowest } else { g.arm };
+    let v = -w.cross(pin);
+    let wb = q.rotate_inv(w);
+    y[3..6].copy_from_slice(&[v.x, v.y, v.z]);
+    y[10..13].copy_from_slice(&[wb.x, wb.y, wb.z]);
+    y
+}
+
+/// Rocking without slip about an axis of curvature, upright and tilted in the rocking plane:
+/// the material at P is at rest (u_B = 0) and V is the contact point's travel over the floor,
+/// ρ(θ)·ω with ρ the radius of curvature of the ellipse section in the rocking plane at the
+/// support point (independent formula: a²c²/(a²sin²θ + c²cos²θ)^{3/2}, θ the tilt), less
+/// ω·h (the floor point P is h below x*).
+#[test]
+fn rolling_velocity_of_rocking_without_slip_is_the_contact_points_travel() {
+    use contensou::scenes::rigid::{Quat, Vec3};
+    let p = Params::kane_levinson();
+    let rb = body::<Best>(&p);
+    let [a1, a2, a3] = p.semi_axes;
+    let skew = Quat::about_z(p.skew);
+    let gap = 1e-6;
+    for theta in [0.0, 0.02, -0.1, 0.3] {
+        let rho = |a: f64| {
+            let (s, c) = f64::sin_cos(theta);
+            (a * a3).powi(2) / (a * a * s * s + a3 * a3 * c * c).powf(1.5)
+        };
+        // Pitch: rocking about world y, the long axis a₁ in the rocking plane.
+        let q = Quat::about_y(theta).product(skew);
+        let w = 1.3;
+        let y = pinned_state(&rb, q, gap, Vec3::new(0.0, w, 0.0), false);
+        let k = rb.kinematics(&y);
+        assert!(k.material.norm() < 1e-15, "{:?}", k.material);
+        let want = w * (rho(a1) - gap);
+        assert!(
+            (k.rolling.x - want).abs() < 1e-12 * want.abs() && k.rolling.y.abs() < 1e-12,
+            "θ = {theta}: V = {:?}, want ({want}, 0)",
+            k.rolling
+        );
+        assert!((k.rolling - k.contact_point).norm() < 1e-15);
+        // Roll: rocking about world x, the axis a₂ in the rocking plane (ρ = a₂²/a₃ upright).
+        let q = Quat::about_x(theta).product(skew);
+        let y = pinned_state(&rb, q, gap, Vec3::new(w, 0.0, 0.0), false);
+        let k = rb.kinematics(&y);
+        assert!(k.material.norm() < 1e-15, "{:?}", k.material);
+        let want = -w * (rho(a2) - gap);
+        assert!(
+            (k.rolling.y - want).abs() < 1e-12 * want.abs() && k.rolling.x.abs() < 1e-12,
+            "θ = {theta}: V = {:?}, want (0, {want})",
+            k.rolling
+        );
+    }
+}
+
+/// A pure spin about the vertical through the support point: the contact point stays where it
+/// is (u̇ = 0: the spin axis is the world's "down"), V = 0 whatever the attitude.
+#[test]
+fn pure_spin_about_the_vertical_through_the_support_point_does_not_roll() {
+    use contensou::scenes::rigid::{Quat, Vec3};
+    let p = Params::kane_levinson();
+    let rb = body::<Best>(&p);
+    for (roll, pitch) in [(0.0, 0.0), (0.3, -0.2), (-0.05, 0.4)] {
+        let q = Quat::about_x(roll)
+            .product(Quat::about_y(pitch))
+            .product(Quat::about_z(p.skew));
+        let y = pinned_state(&rb, q, 1e-6, Vec3::new(0.0, 0.0, -2.0), true);
+        let k = rb.kinematics(&y);
+        assert!(k.rolling.norm() < 1e-15, "{:?}", k.rolling);
+        assert!(k.contact_point.norm() < 1e-15, "{:?}", k.contact_point);
+        // …while the state does move (tilted): G circles the vertical through x*.
+        assert!(roll == 0.0 || y[3].hypot(y[4]) > 1e-3);
+    }
+}
+
+/// v_P against a finite difference of the support point along trajectories (Kane–Levinson's
+/// start, both spins): (i) along the RK4 trajectory at h = 10 µs, central differences of the
+/// floor point below x* (error ≈ h²/6·|X'''|); (ii) along the flow at a state,
+/// (X(y + εẏ) − X(y − εẏ))/2ε with ε = 1e-7 s. And V differs from the material velocity: the
+/// contact point travels at ≈ ρω while the material at P is nearly at rest (rolling).
+#[test]
+fn contact_point_velocity_matches_a_finite_difference_of_the_support_point() {
+    use contensou::scenes::integrate::Ode;
+    let rb = body::<Best>(&Params::kane_levinson());
+    let foot = |y: &[f64; 13]| {
+        let g = rb.geometry(y);
+        (y[0] + g.lowest.x, y[1] + g.lowest.y)
+    };
+    for spin in [-2.0, 2.0] {
+        let h = 1e-5;
+        let y0 = rb.initial_state(TILT, spin);
+        let mut states = vec![y0];
+        rk4(&rb, 0.0, y0, h, 20_000, |_, _, y| states.push(*y));
+        let (mut worst, mut peak, mut worst_flow, mut peak_material) =
+            (0.0f64, 0.0f64, 0.0f64, 0.0f64);
+        for i in (1..states.len() - 1).step_by(7) {
+            let k = rb.kinematics(&states[i]);
+            let (a, b) = (foot(&states[i - 1]), foot(&states[i + 1]));
+            let fd = ((b.0 - a.0) / (2.0 * h), (b.1 - a.1) / (2.0 * h));
+            worst = worst.max((fd.0 - k.contact_point.x).hypot(fd.1 - k.contact_point.y));
+            peak = peak.max(k.contact_point.norm());
+            peak_material = peak_material.max(k.material.norm());
+            // Along the flow at this state.
+            let (y, dy, eps) = (states[i], rb.rhs(0.0, &states[i]), 1e-7);
+            let shifted = |s: f64| {
+                let mut z = y;
+                z.iter_mut().zip(dy).for_each(|(z, d)| *z += s * d);
+                foot(&z)
+            };
+            let (a, b) = (shifted(-eps), shifted(eps));
+            let fd = ((b.0 - a.0) / (2.0 * eps), (b.1 - a.1) / (2.0 * eps));
+            worst_flow = worst_flow.max((fd.0 - k.contact_point.x).hypot(fd.1 - k.contact_point.y));
+        }
+        assert!(peak > 0.5, "ω₀ = {spin}: peak |v_P| {peak}");
+        assert!(
+            peak_material < 0.05 * peak,
+            "ω₀ = {spin}: |u_B| {peak_material}"
+        );
+        assert!(
+            worst < 1e-5 * peak,
+            "ω₀ = {spin}: trajectory FD off by {worst:e} (peak {peak})"
+        );
+        assert!(
+            worst_flow < 1e-7 * peak,
+            "ω₀ = {spin}: flow FD off by {worst_flow:e} (peak {peak})"
+        );
+        eprintln!(
+            "ω₀ = {spin}: peak |v_P| = {peak:.4} m/s, |u_B| ≤ {peak_material:.2e}, FD: trajectory {worst:.2e}, flow {worst_flow:.2e}"
+        );
+    }
+}
