@@ -34,28 +34,36 @@ use std::fmt::Write as _;
 
 use contensou::friction::{Best, Coulomb, Ellipsoid, Friction, FrictionLaw, Simplified};
 use contensou::scenes::integrate::rk4;
-use contensou::scenes::rattleback::{Params, Probe, Rattleback, SpinEvents};
+use contensou::scenes::rattleback::{FloorLaw, Params, Probe, Rattleback, SpinEvents};
 use plotters::prelude::*;
 use plotters::style::{FontStyle, register_font};
 
 const F: f64 = 0.3;
-const DELTA: f64 = 1e-3;
+/// The full-slip laws' regularisation speed δ (m/s); `RATTLEBACK_DELTA` overrides it (the
+/// README's δ study; the rolling laws do not use it).
+fn delta() -> f64 {
+    env_or("RATTLEBACK_DELTA", 1e-3)
+}
 const TILT_DEG: f64 = 0.5;
 const SPIN: f64 = 2.0;
 /// RK4 step (s); `RATTLEBACK_H` overrides it (the step-size check in the README).
 fn step() -> f64 {
-    std::env::var("RATTLEBACK_H")
-        .ok()
-        .and_then(|h| h.parse().ok())
-        .unwrap_or(1e-4)
+    env_or("RATTLEBACK_H", 1e-4)
 }
-const T_END: f64 = 20.0;
+/// Simulated time (s); `RATTLEBACK_T` overrides it.
+fn t_end() -> f64 {
+    env_or("RATTLEBACK_T", 20.0)
+}
 /// Output interval (s); `RATTLEBACK_SAMPLE` overrides it (the sampling check in the README).
 fn sample() -> f64 {
-    std::env::var("RATTLEBACK_SAMPLE")
+    env_or("RATTLEBACK_SAMPLE", 1e-2)
+}
+
+fn env_or(name: &str, default: f64) -> f64 {
+    std::env::var(name)
         .ok()
         .and_then(|h| h.parse().ok())
-        .unwrap_or(1e-2)
+        .unwrap_or(default)
 }
 
 struct Run {
@@ -107,27 +115,30 @@ impl Run {
 /// Kane & Levinson's body; `RATTLEBACK_ESTAR` overrides E* (Pa) for the stiffness study.
 fn params() -> Params<f64> {
     let p = Params::kane_levinson();
-    let estar = std::env::var("RATTLEBACK_ESTAR")
-        .ok()
-        .and_then(|e| e.parse().ok())
-        .unwrap_or(p.estar);
-    Params { estar, ..p }
+    Params {
+        estar: env_or("RATTLEBACK_ESTAR", p.estar),
+        ..p
+    }
 }
 
-fn run<L: FrictionLaw>(law: &'static str, direction: &'static str, spin0: f64) -> Run {
-    let rb = Rattleback::new(&params(), Friction::<f64, L>::with_law(F, DELTA).unwrap()).unwrap();
+fn run<L: FloorLaw<f64>>(
+    rb: &Rattleback<f64, L>,
+    law: &'static str,
+    direction: &'static str,
+    spin0: f64,
+) -> Run {
     let y0 = rb.initial_state(TILT_DEG.to_radians(), spin0);
     let mut rows = vec![(0.0, rb.probe(&y0))];
-    let mut events = SpinEvents::new(&rb, 0.0, &y0, spin0, 0.1);
+    let mut events = SpinEvents::new(rb, 0.0, &y0, spin0, 0.1);
     let every = ((sample() / step()).round() as usize).max(1);
     rk4(
-        &rb,
+        rb,
         0.0,
         y0,
         step(),
-        (T_END / step()).round() as usize,
+        (t_end() / step()).round() as usize,
         |i, t, y| {
-            events.update(&rb, t, y);
+            events.update(rb, t, y);
             if i % every == 0 {
                 rows.push((t, rb.probe(y)));
             }
@@ -142,12 +153,23 @@ fn run<L: FrictionLaw>(law: &'static str, direction: &'static str, spin0: f64) -
     }
 }
 
-fn both<L: FrictionLaw>(law: &'static str) -> [Run; 2] {
+fn both<L: FloorLaw<f64>>(rb: &Rattleback<f64, L>, law: &'static str) -> [Run; 2] {
     // δ > 0 for these parameters: the negative spin is the unstable one.
     [
-        run::<L>(law, "unstable", -SPIN),
-        run::<L>(law, "steady", SPIN),
+        run(rb, law, "unstable", -SPIN),
+        run(rb, law, "steady", SPIN),
     ]
+}
+
+/// Both directions with the full-slip law `L`.
+fn sliding<L: FrictionLaw>(law: &'static str) -> [Run; 2] {
+    let rb = Rattleback::new(&params(), Friction::<f64, L>::with_law(F, delta()).unwrap()).unwrap();
+    both(&rb, law)
+}
+
+/// Whether `RATTLEBACK_LAWS` (comma-separated names; default all) asks for `law`.
+fn wanted(law: &str) -> bool {
+    std::env::var("RATTLEBACK_LAWS").map_or(true, |l| l.split(',').any(|x| x == law))
 }
 
 fn opt(x: Option<f64>) -> String {
@@ -168,28 +190,37 @@ fn main() {
     }
     let p = params();
     println!(
-        "Kane–Levinson rattleback: δ = {:.5} rad, I = {:?} kg·m², E* = {:e} Pa, f = {F}, δ_v = {DELTA} m/s, ω₀ = ±{SPIN} rad/s, tilt {TILT_DEG}°, RK4 h = {} s, T = {T_END} s, output every {} s",
+        "Kane–Levinson rattleback: δ = {:.5} rad, I = {:?} kg·m², E* = {:e} Pa, f = {F}, δ_v = {} m/s, ω₀ = ±{SPIN} rad/s, tilt {TILT_DEG}°, RK4 h = {} s, T = {} s, output every {} s",
         p.skew,
         p.inertia,
         p.estar,
+        delta(),
         step(),
+        t_end(),
         sample()
     );
-    let laws = [
-        both::<Best>("best"),
-        both::<Simplified>("simplified"),
-        both::<Ellipsoid>("ellipsoid"),
-        both::<Coulomb>("coulomb"),
-    ];
+    let mut laws = Vec::new();
+    if wanted("best") {
+        laws.push(sliding::<Best>("best"));
+    }
+    if wanted("simplified") {
+        laws.push(sliding::<Simplified>("simplified"));
+    }
+    if wanted("ellipsoid") {
+        laws.push(sliding::<Ellipsoid>("ellipsoid"));
+    }
+    if wanted("coulomb") {
+        laws.push(sliding::<Coulomb>("coulomb"));
+    }
     let mut csv = String::from(
-        "law,direction,reversal_s,stall_s,peak_rock_rad,final_spin,energy_start,energy_end,reversal_sampled_s,stall_sampled_s\n",
+        "law,direction,reversal_s,stall_s,peak_rock_rad,final_spin,energy_start,energy_end,reversal_sampled_s,stall_sampled_s,peak_reversed_spin\n",
     );
     for runs in &laws {
         for r in runs {
             let (first, last) = (r.rows[0].1, r.rows[r.rows.len() - 1].1);
             writeln!(
                 csv,
-                "{},{},{},{},{:.5},{:.4},{:.6},{:.6},{},{}",
+                "{},{},{},{},{:.5},{:.4},{:.6},{:.6},{},{},{:.4}",
                 r.law,
                 r.direction,
                 opt(r.reversal()),
@@ -199,7 +230,8 @@ fn main() {
                 first.energy,
                 last.energy,
                 opt(r.sampled_reversal()),
-                opt(r.sampled_stall())
+                opt(r.sampled_stall()),
+                r.peak(|p| -p.spin * r.spin0.signum())
             )
             .unwrap();
             println!(
@@ -241,7 +273,7 @@ fn plot(runs: &[Run; 2], path: &str) -> Result<(), Box<dyn std::error::Error>> {
         .margin(15)
         .x_label_area_size(40)
         .y_label_area_size(55)
-        .build_cartesian_2d(0.0..T_END, -1.1 * SPIN..1.1 * SPIN)?;
+        .build_cartesian_2d(0.0..t_end(), -1.1 * SPIN..1.1 * SPIN)?;
     chart
         .configure_mesh()
         .x_desc("t (s)")
