@@ -32,9 +32,10 @@
 
 use std::fmt::Write as _;
 
+use contensou::friction::rolling::{Blend, RollingLaw, Table};
 use contensou::friction::{Best, Coulomb, Ellipsoid, Friction, FrictionLaw, Simplified};
 use contensou::scenes::integrate::rk4;
-use contensou::scenes::rattleback::{FloorLaw, Params, Probe, Rattleback, SpinEvents};
+use contensou::scenes::rattleback::{Creeping, FloorLaw, Params, Probe, Rattleback, SpinEvents};
 use plotters::prelude::*;
 use plotters::style::{FontStyle, register_font};
 
@@ -72,6 +73,8 @@ struct Run {
     spin0: f64,
     rows: Vec<(f64, Probe<f64>)>,
     events: SpinEvents<f64>,
+    /// (t, h·friction rate) per step with `RATTLEBACK_STIFFNESS`.
+    stiff: Vec<(f64, f64)>,
 }
 
 impl Run {
@@ -131,6 +134,8 @@ fn run<L: FloorLaw<f64>>(
     let mut rows = vec![(0.0, rb.probe(&y0))];
     let mut events = SpinEvents::new(rb, 0.0, &y0, spin0, 0.1);
     let every = ((sample() / step()).round() as usize).max(1);
+    let track = std::env::var("RATTLEBACK_STIFFNESS").is_ok();
+    let mut stiff = Vec::new();
     rk4(
         rb,
         0.0,
@@ -142,6 +147,9 @@ fn run<L: FloorLaw<f64>>(
             if i % every == 0 {
                 rows.push((t, rb.probe(y)));
             }
+            if track {
+                stiff.push((t, step() * friction_rate(rb, y)));
+            }
         },
     );
     Run {
@@ -150,7 +158,40 @@ fn run<L: FloorLaw<f64>>(
         spin0,
         rows,
         events,
+        stiff,
     }
+}
+
+/// The friction's tangential rate at state `y` (1/s, a diagnostic: `RATTLEBACK_STIFFNESS`):
+/// the larger over world x, y of −e·∂u̇_B/∂u_B, u_B the material velocity at P, by central
+/// differences of the right-hand side in Ġ (ε = 1e-9 m/s, inside Kalker's linear range).
+/// h times it against RK4's bound on the negative real axis, 2.785: above it an explicit step
+/// does not resolve the creep force (chatter).
+fn friction_rate<L: FloorLaw<f64>>(rb: &Rattleback<f64, L>, y: &[f64; 13]) -> f64 {
+    use contensou::scenes::integrate::Ode;
+    use contensou::scenes::rigid::{Quat, Vec3};
+    let arm = rb.geometry(y).arm;
+    let q = Quat {
+        w: y[6],
+        x: y[7],
+        y: y[8],
+        z: y[9],
+    }
+    .normalized();
+    let eps = 1e-9;
+    let mut rate = 0.0f64;
+    for (k, e) in [(3, Vec3::new(1.0, 0.0, 0.0)), (4, Vec3::new(0.0, 1.0, 0.0))] {
+        let du = |s: f64| {
+            let mut z = *y;
+            z[k] += s;
+            let f = rb.rhs(0.0, &z);
+            let alpha = q.rotate(Vec3::new(f[10], f[11], f[12]));
+            Vec3::new(f[3], f[4], f[5]) + alpha.cross(arm)
+        };
+        let d = (du(eps) - du(-eps)) * (0.5 / eps);
+        rate = rate.max(-d.dot(e));
+    }
+    rate
 }
 
 fn both<L: FloorLaw<f64>>(rb: &Rattleback<f64, L>, law: &'static str) -> [Run; 2] {
@@ -164,6 +205,16 @@ fn both<L: FloorLaw<f64>>(rb: &Rattleback<f64, L>, law: &'static str) -> [Run; 2
 /// Both directions with the full-slip law `L`.
 fn sliding<L: FrictionLaw>(law: &'static str) -> [Run; 2] {
     let rb = Rattleback::new(&params(), Friction::<f64, L>::with_law(F, delta()).unwrap()).unwrap();
+    both(&rb, law)
+}
+
+/// Both directions with the rolling law `L` (Kalker's creep saturating to `Best`'s full slip;
+/// the contact's δ is not used) and the polymer-on-glass elasticity ([`Params::elasticity`]).
+fn creeping<L: RollingLaw>(law: &'static str) -> [Run; 2] {
+    let p = params();
+    let friction = Friction::<f64, Best>::with_law(F, delta()).unwrap();
+    let rb =
+        Rattleback::<f64, Creeping<L>>::rolling(&p, friction, p.elasticity().unwrap()).unwrap();
     both(&rb, law)
 }
 
@@ -199,6 +250,12 @@ fn main() {
         t_end(),
         sample()
     );
+    let el = p.elasticity().unwrap();
+    println!(
+        "rolling laws: G = {:.4e} Pa, ν = {:.4} (polymer on glass, Params::elasticity)",
+        el.g(),
+        el.nu()
+    );
     let mut laws = Vec::new();
     if wanted("best") {
         laws.push(sliding::<Best>("best"));
@@ -211,6 +268,12 @@ fn main() {
     }
     if wanted("coulomb") {
         laws.push(sliding::<Coulomb>("coulomb"));
+    }
+    if wanted("table") {
+        laws.push(creeping::<Table>("table"));
+    }
+    if wanted("blend") {
+        laws.push(creeping::<Blend>("blend"));
     }
     let mut csv = String::from(
         "law,direction,reversal_s,stall_s,peak_rock_rad,final_spin,energy_start,energy_end,reversal_sampled_s,stall_sampled_s,peak_reversed_spin\n",
@@ -251,6 +314,19 @@ fn main() {
                 last.energy,
                 r.peak(|p| p.friction_ratio)
             );
+            if !r.stiff.is_empty() {
+                let event = r.reversal().or(r.stall()).unwrap_or(f64::MAX);
+                let share = |before: bool| {
+                    let part: Vec<_> = r.stiff.iter().filter(|s| (s.0 < event) == before).collect();
+                    let over = part.iter().filter(|s| s.1 > 2.785).count();
+                    let peak = part.iter().map(|s| s.1).fold(0.0, f64::max);
+                    (100.0 * over as f64 / part.len().max(1) as f64, peak)
+                };
+                let ((b, pb), (a, pa)) = (share(true), share(false));
+                println!(
+                    "    h·(friction rate): before the event max {pb:.3}, {b:.2} % of steps > 2.785; after it max {pa:.3}, {a:.2} %"
+                );
+            }
         }
         plot(runs, &format!("{dir}/rattleback_{}.png", runs[0].law)).unwrap();
     }

@@ -394,3 +394,96 @@ fn contact_point_velocity_matches_a_finite_difference_of_the_support_point() {
         );
     }
 }
+
+// ---- The rolling law (issue 20 item 5) ----
+
+/// Probes (t, probe).
+type Rows = Vec<(f64, Probe<f64>)>;
+
+/// Kane–Levinson's start with the rolling law `L` on the polymer-on-glass elasticity, the
+/// contact's δ = `delta` (not used by the rolling laws), RK4 at `h` over `t_end`: probes every
+/// 10 steps, the spin events and the final state.
+fn run_rolling<L: contensou::friction::rolling::RollingLaw>(
+    spin: f64,
+    t_end: f64,
+    h: f64,
+    delta: f64,
+) -> (Rows, SpinEvents<f64>, [f64; 13]) {
+    use contensou::scenes::rattleback::Creeping;
+    let p = Params::kane_levinson();
+    let rb = Rattleback::<f64, Creeping<L>>::rolling(
+        &p,
+        Friction::new(F, delta).unwrap(),
+        p.elasticity().unwrap(),
+    )
+    .unwrap();
+    let y0 = rb.initial_state(TILT, spin);
+    let mut out = vec![(0.0, rb.probe(&y0))];
+    let mut events = SpinEvents::new(&rb, 0.0, &y0, spin, 0.1);
+    let y = rk4(&rb, 0.0, y0, h, (t_end / h).round() as usize, |i, t, y| {
+        events.update(&rb, t, y);
+        if i % 10 == 0 {
+            out.push((t, rb.probe(y)));
+        }
+    });
+    assert!(y.iter().all(|v| v.is_finite()));
+    (out, events, y)
+}
+
+/// The polymer-on-glass pair of `Params::elasticity`: E* = 3 GPa (the scene's), Kalker's
+/// dissimilar combination G = 1.963 GPa, ν = 0.346; G scales with E*.
+#[test]
+fn elasticity_is_the_polymer_on_glass_pair_of_the_scenes_estar() {
+    let p = Params::<f64>::kane_levinson();
+    let el = p.elasticity().unwrap();
+    assert!((el.g() - 1.9633e9).abs() < 1e5, "{}", el.g());
+    assert!((el.nu() - 0.3456).abs() < 1e-4, "{}", el.nu());
+    // E* of the pair: E₁ = 2.744 GPa, ν₁ = 0.35 on E₂ = 70 GPa, ν₂ = 0.22.
+    let estar = 1.0 / ((1.0 - 0.35f64.powi(2)) / 2.744e9 + (1.0 - 0.22f64.powi(2)) / 70e9);
+    assert!((estar / p.estar - 1.0).abs() < 1e-3, "{estar}");
+    let hard = Params { estar: 200e9, ..p }.elasticity().unwrap();
+    assert!((hard.g() / el.g() / (200.0 / 3.0) - 1.0).abs() < 1e-12);
+    assert!((hard.nu() - el.nu()).abs() < 1e-15);
+}
+
+/// With Kalker's creep (`table`) the unstable spin reverses — where the full-slip `Best` stalls
+/// at 0.84 s — at 2.094 s (h = 0.1 ms, the example; 2.0936 s at the 0.2 ms here; the no-slip
+/// model: 2.38 s), and the steady one stalls (2.28 s). The contact's δ does not enter: the runs
+/// at δ = 1 mm/s and 0.1 m/s are bit-identical. Energy never increases.
+#[test]
+fn rolling_law_reverses_the_unstable_spin_and_does_not_use_delta() {
+    use contensou::friction::rolling::Table;
+    let (rows, events, y) = run_rolling::<Table>(-2.0, 2.3, H, 1e-3);
+    let t = events.reversal();
+    assert!(t.is_some_and(|t| (t - 2.0945).abs() < 3e-3), "{t:?}");
+    // Still growing at 2.3 s (peak 0.67 rad/s at 2.5 s in the example).
+    let peak = rows.iter().map(|r| r.1.spin).fold(0.0, f64::max);
+    assert!(peak > 0.25, "reversed spin {peak} at 2.3 s");
+    assert_energy_never_increases(&rows);
+    let (_, other, z) = run_rolling::<Table>(-2.0, 2.3, H, 0.1);
+    assert_eq!(y, z, "δ changed the rolling run");
+    assert_eq!(events.reversal(), other.reversal());
+}
+
+#[test]
+fn rolling_law_stalls_the_steady_spin_without_reversal() {
+    use contensou::friction::rolling::Table;
+    let (rows, events, _) = run_rolling::<Table>(2.0, 2.5, H, 1e-3);
+    assert!(events.reversal().is_none());
+    let t = events.stall();
+    // h = 0.1 ms: 2.2841 s; 0.2 ms: 2.2888 s; 50 µs: 2.2826 s.
+    assert!(t.is_some_and(|t| (t - 2.285).abs() < 0.01), "{t:?}");
+    assert_energy_never_increases(&rows);
+}
+
+/// The reversal time converges with the step: h = 0.2 → 0.1 ms moves it by < 2 ms (measured
+/// 0.9 ms; 0.1 ms at 0.1 → 0.05 ms) although the creep rate G c² C₁₁/(m|V|) exceeds RK4's
+/// bound 2.785/h on ≈ 1.5 % of the steps (README).
+#[test]
+fn rolling_reversal_converges_with_the_step() {
+    use contensou::friction::rolling::Table;
+    let (_, coarse, _) = run_rolling::<Table>(-2.0, 2.2, H, 1e-3);
+    let (_, fine, _) = run_rolling::<Table>(-2.0, 2.2, H / 2.0, 1e-3);
+    let (a, b) = (coarse.reversal().unwrap(), fine.reversal().unwrap());
+    assert!((a - b).abs() < 2e-3, "{a} vs {b}");
+}

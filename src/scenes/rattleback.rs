@@ -51,13 +51,17 @@
 use super::event::{Crossing, Direction};
 use super::integrate::Ode;
 use super::rigid::{Quat, Vec3, euler_rate};
+use crate::contact::Rolling;
 use crate::contact::VaryingContact;
-use crate::frame::{ContactFrame, Frame, Load, MajorAxis, Vector, point_velocity};
-use crate::friction::{Friction, FrictionLaw, Slip};
+use crate::contact::Wrench;
+use crate::frame::{ContactFrame, Frame, Load, MajorAxis, point_velocity};
+use crate::friction::rolling::{Elasticity, RollingLaw, RollingVelocity};
+use crate::friction::{Best, Friction, FrictionLaw, Slip};
 use crate::geometry::Curvatures;
 use crate::normal::{Hertz, HuntCrossley, Modulus, NormalLaw};
 use crate::shape::Newton;
 use crate::{Error, Real};
+use core::marker::PhantomData;
 
 /// Number of scalars in the state.
 pub const N: usize = 13;
@@ -114,6 +118,23 @@ impl<T: Real> Params<T> {
             damping: t(5.0),
             gravity: t(9.81),
         }
+    }
+
+    /// The pair's tangential elastic constants for the rolling laws, consistent with `estar`:
+    /// a hard polymer (E₁ = 2.744 GPa, ν₁ = 0.35: PMMA-like) on soda-lime glass (E₂ = 70 GPa,
+    /// ν₂ = 0.22), whose E* = 1/((1−ν₁²)/E₁ + (1−ν₂²)/E₂) is the default 3.00 GPa, combined by
+    /// Kalker's rule for dissimilar bodies ([`Elasticity::dissimilar`]; Gᵢ = Eᵢ/(2(1+νᵢ))):
+    /// G = 1.963 GPa, ν = 0.346. For another `estar` (the stiffness study) G is scaled by
+    /// estar/E*_pair (the same G/E* = 0.654 and ν).
+    ///
+    /// Errors: those of [`Elasticity::dissimilar`] (a non-positive or non-finite E*).
+    pub fn elasticity(&self) -> Result<Elasticity<T>, Error> {
+        let (e1, nu1, e2, nu2) = (2.744e9f64, 0.35f64, 70e9f64, 0.22f64);
+        let pair_estar = 1.0 / ((1.0 - nu1 * nu1) / e1 + (1.0 - nu2 * nu2) / e2);
+        let g = |e: f64, nu: f64| e / (2.0 * (1.0 + nu));
+        let scale = self.estar / T::from_f64(pair_estar);
+        let t = T::from_f64;
+        Elasticity::dissimilar(t(g(e1, nu1)) * scale, t(nu1), t(g(e2, nu2)) * scale, t(nu2))
     }
 
     /// The same body with equal bottom curvatures (a₂ = a₁ = 0.2 m: a sphere-like bottom of
@@ -239,34 +260,44 @@ pub struct Step<'a, T> {
 }
 
 /// The floor contact's law: how the scene turns a step's geometry and kinematics into the
-/// normal force and the load on the rattleback about G. Every [`FrictionLaw`] is one (full
+/// contact's wrench. Every [`FrictionLaw`] is one (full
 /// slip through [`VaryingContact`]: the rolling velocity is ignored, bit for bit the scene
 /// before it existed).
 pub trait FloorLaw<T: Real> {
     /// The contact built once per scene.
     type Contact: Clone + core::fmt::Debug;
-    /// N (N) and the load on the rattleback (force, torque about G; world frame) for `step`,
-    /// in `frame`, with `arm` = G → P.
-    fn load(
-        contact: &Self::Contact,
-        frame: &Frame<T>,
-        arm: Vector<T>,
-        step: &Step<'_, T>,
-    ) -> (T, Load<T>);
+    /// The wrench's branch tag ([`FrictionLaw::Branch`]; `()` for the rolling laws).
+    type Branch;
+    /// The wrench on the rattleback (contact frame) for `step`.
+    fn wrench(contact: &Self::Contact, step: &Step<'_, T>) -> Wrench<T, Self::Branch>;
 }
 
 impl<T: Real, L: FrictionLaw> FloorLaw<T> for L {
     type Contact = VaryingContact<T, HuntCrossley<T>, L>;
+    type Branch = L::Branch;
 
     #[inline(always)]
-    fn load(
-        contact: &Self::Contact,
-        frame: &Frame<T>,
-        arm: Vector<T>,
-        step: &Step<'_, T>,
-    ) -> (T, Load<T>) {
-        let wr = contact.wrench(step.curvatures, step.h, step.hdot, step.slip);
-        (wr.n, frame.on_b(&wr, arm))
+    fn wrench(contact: &Self::Contact, step: &Step<'_, T>) -> Wrench<T, L::Branch> {
+        contact.wrench(step.curvatures, step.h, step.hdot, step.slip)
+    }
+}
+
+/// A rolling law `L` ([`RollingLaw`]: `Table`, `Blend`, …) on the floor contact, as a
+/// [`FloorLaw`]: [`Rolling`] over the scene's [`VaryingContact`] with `Best` (its δ is not
+/// used), fed the step's rolling velocity ([`Kinematics::rolling`], contact frame). Build it
+/// with [`Rattleback::rolling`].
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Creeping<L>(PhantomData<L>);
+
+impl<T: Real, L: RollingLaw> FloorLaw<T> for Creeping<L> {
+    type Contact = Rolling<T, VaryingContact<T, HuntCrossley<T>, Best>, L>;
+    type Branch = ();
+
+    #[inline(always)]
+    fn wrench(contact: &Self::Contact, step: &Step<'_, T>) -> Wrench<T, ()> {
+        // Non-finite only if the state is (then the step is rejected anyway): V = 0, full slip.
+        let v = RollingVelocity::new(step.rolling[0], step.rolling[1]).unwrap_or_default();
+        contact.wrench(step.curvatures, step.h, step.hdot, step.slip, v)
     }
 }
 
@@ -299,6 +330,24 @@ impl<T: Real, L: FrictionLaw> Rattleback<T, L> {
     pub fn new(p: &Params<T>, friction: Friction<T, L>) -> Result<Self, Error> {
         Self::build(p, |estar, damping| {
             Ok(VaryingContact::new(estar, damping, friction))
+        })
+    }
+}
+
+impl<T: Real, L: RollingLaw> Rattleback<T, Creeping<L>> {
+    /// The rattleback `p` with the rolling law `L` (Kalker's creep, saturating to `Best`'s
+    /// full slip on the real patch): coefficient of friction from `friction` (its δ is not
+    /// used), the pair's tangential elastic constants `elasticity` ([`Params::elasticity`] for
+    /// the default polymer on glass).
+    ///
+    /// Errors: those of [`Rattleback::new`].
+    pub fn rolling(
+        p: &Params<T>,
+        friction: Friction<T, Best>,
+        elasticity: Elasticity<T>,
+    ) -> Result<Self, Error> {
+        Self::build(p, |estar, damping| {
+            Rolling::new(VaryingContact::new(estar, damping, friction), elasticity)
         })
     }
 }
@@ -518,11 +567,12 @@ impl<T: Real, L: FloorLaw<T>> Rattleback<T, L> {
             slip,
             rolling: [vx, vy],
         };
-        let (n, Load { force, torque }) = L::load(&self.contact, &frame, arm, &step);
+        let wr = L::wrench(&self.contact, &step);
+        let Load { force, torque } = frame.on_b(&wr, arm);
         (
             ContactState {
                 h: g.h,
-                n,
+                n: wr.n,
                 force: force.into(),
                 torque: torque.into(),
             },
