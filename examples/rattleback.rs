@@ -1,17 +1,24 @@
 //! The rattleback (Kane & Levinson's body, `contensou::scenes::rattleback`) with each friction
-//! law, spun both ways: spin reversal or stall, peak rocking, final spin and energy.
+//! law — the full-slip laws `best`, `simplified`, `ellipsoid`, `coulomb` and the rolling laws
+//! `table`, `blend` (Kalker's creep from the contact's rolling velocity, polymer on glass:
+//! `Params::elasticity`) — spun both ways: spin reversal or stall, peak rocking, peak reversed
+//! spin, final spin and energy.
 //!
 //! ```sh
 //! cargo run --release --features scenes --example rattleback         # into out/
 //! cargo run --release --features scenes --example rattleback -- DIR  # into DIR
 //! ```
 //!
-//! `RATTLEBACK_H` (s), `RATTLEBACK_ESTAR` (Pa) and `RATTLEBACK_SAMPLE` (s, the output
-//! interval, default 10 ms) override the step, E* and the sampling (README: step, stiffness
-//! and sampling checks).
+//! `RATTLEBACK_H` (s), `RATTLEBACK_ESTAR` (Pa), `RATTLEBACK_SAMPLE` (s, the output
+//! interval, default 10 ms), `RATTLEBACK_DELTA` (m/s, the full-slip laws' δ, default 1 mm/s)
+//! and `RATTLEBACK_T` (s, default 20) override the step, E* (the rolling laws' G scales with
+//! it), the sampling, δ and the run's length (README: step, stiffness, sampling and δ checks);
+//! `RATTLEBACK_LAWS=table,blend` runs only the named laws; `RATTLEBACK_STIFFNESS=1` prints
+//! h × the friction's tangential rate against RK4's bound (before / after the event).
 //!
 //! Writes `rattleback_summary.csv` (`law,direction,reversal_s,stall_s,peak_rock_rad,
-//! final_spin,energy_start,energy_end,reversal_sampled_s,stall_sampled_s`, empty fields when
+//! final_spin,energy_start,energy_end,reversal_sampled_s,stall_sampled_s,peak_reversed_spin`,
+//! empty fields when
 //! there is none) and one labelled PNG of ω·ẑ(t) per law (`rattleback_<law>.png`, both
 //! directions). `reversal_s`, `stall_s`: located between the RK4 steps on every step
 //! ([`SpinEvents`], Hermite interpolant + bisection), independent of the output sampling;

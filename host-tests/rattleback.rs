@@ -175,8 +175,8 @@ fn contensou_drilling_torque_stalls_the_spin_without_reversal() {
 /// The stall of the default law is located between steps: the same time whatever the output
 /// sampling (2 ms or 10 ms), 26 ms before the first 10 ms sample past the threshold (the spin
 /// wobbles with the rocking and first dips below 10 % between samples), and it converges with
-/// the step. Measured: h = 0.2 ms 0.843840 s (first 10 ms sample 0.870 s), 0.1 ms 0.843558 s
-/// (−0.28 ms), 0.05 ms 0.843558 s (< 1 µs; the example).
+/// the step. Measured (after issue 21's `Best`): h = 0.2 ms 0.843404 s (first 10 ms sample
+/// 0.870 s), 0.1 ms 0.843168 s (−0.24 ms), 0.05 ms 0.843169 s (1 µs; the example).
 #[test]
 fn stall_is_located_between_steps_whatever_the_sampling_and_converges_with_the_step() {
     let p = Params::kane_levinson();

@@ -39,6 +39,11 @@
 //!   [`crate::shape::Table`], Hunt–Crossley N = k h^{3/2}(1 + (3/2)c_d ḣ) clamped ≥ 0, friction
 //!   by the law `L` (Best, Simplified, Ellipsoid, Coulomb). Slip, ḣ and the world force and
 //!   torque about G through [`crate::frame`] (normal ẑ, reference tangent world x).
+//! - **Rolling** ([`Creeping`], [`Rattleback::rolling`]): a rolling law (Kalker's creep,
+//!   `Table`, `Blend`) through [`Rolling`] on the same contact with `Best`, fed the contact's
+//!   rolling velocity V = v_P − ½u_B in closed form ([`Kinematics`]) and the pair's elasticity
+//!   ([`Params::elasticity`]); the contact's δ is not used. Near V = 0 the creep rate grows
+//!   as 1/|V| and an explicit step chatters there (README, "The rattleback rolling").
 //!
 //! # Diagnostics ([`Probe`])
 //!
