@@ -487,3 +487,35 @@ fn rolling_reversal_converges_with_the_step() {
     let (a, b) = (coarse.reversal().unwrap(), fine.reversal().unwrap());
     assert!((a - b).abs() < 2e-3, "{a} vs {b}");
 }
+
+/// The contrast: with full slip the outcome follows δ (`Simplified` at h = 0.1 ms stalls at
+/// 1.1632 s with δ = 0.5 mm/s and reverses at 2.3806 s with 2 mm/s; 1.9351 s at 1 mm/s), with
+/// the rolling law it does not (above: bit-identical runs).
+#[test]
+fn full_slip_outcome_follows_delta() {
+    use contensou::friction::Simplified;
+    let p = Params::kane_levinson();
+    let run = |delta: f64| {
+        let rb =
+            Rattleback::<f64, Simplified>::new(&p, Friction::with_law(F, delta).unwrap()).unwrap();
+        let y0 = rb.initial_state(TILT, -2.0);
+        let mut events = SpinEvents::new(&rb, 0.0, &y0, -2.0, 0.1);
+        rk4(&rb, 0.0, y0, 1e-4, 24_500, |_, t, y| {
+            events.update(&rb, t, y)
+        });
+        events
+    };
+    let narrow = run(5e-4);
+    assert!(narrow.reversal().is_none());
+    assert!(
+        narrow.stall().is_some_and(|t| (t - 1.1632).abs() < 1e-3),
+        "{:?}",
+        narrow.stall()
+    );
+    let wide = run(2e-3);
+    assert!(
+        wide.reversal().is_some_and(|t| (t - 2.3806).abs() < 1e-3),
+        "{:?}",
+        wide.reversal()
+    );
+}
