@@ -31,7 +31,7 @@ fn same_as_generic<T: Real>() {
             }
         }
     }
-    assert_eq!(n, 4 * 2 * 5 * 24);
+    assert_eq!(n, 4 * 2 * Law::ALL.len() * 24);
 }
 
 #[test]

@@ -37,7 +37,7 @@
 //! ```
 
 mod rolling;
-pub use rolling::{Rolling, RollingBase};
+pub use rolling::{FixedShapes, Rolling, RollingBase};
 
 use crate::friction::law::{PerCall, PerContact};
 use crate::friction::{Best, Constants, Explicit, Friction, FrictionLaw, Slip, Tangential};

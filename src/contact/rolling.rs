@@ -71,7 +71,7 @@ use core::marker::PhantomData;
 
 use super::{Contact, VaryingContact, Wrench};
 use crate::friction::rolling::{
-    Creep, Elasticity, Input, RollingLaw, RollingShape, RollingSlip, RollingVelocity,
+    Creep, Elasticity, Input, RollingLaw, RollingShape, RollingSlip, RollingVelocity, ShapePath,
     aligned_ellipse,
 };
 use crate::friction::{Best, Constants, FrictionLaw, Slip, SlipState};
@@ -89,9 +89,18 @@ pub trait RollingBase<T: Real> {
     fn cache(&self, elasticity: &Elasticity<T>) -> Self::Cache;
 }
 
+/// A fixed contact's creep shapes: rolling along x (a/b) and along y (b/a), and the path
+/// between them for a skewed rolling velocity.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct FixedShapes<T> {
+    axes: [RollingShape<T>; 2],
+    path: ShapePath<T>,
+}
+
 impl<T: Real, N, D> RollingBase<T> for Contact<T, N, D, Best> {
-    type Cache = [RollingShape<T>; 2];
-    /// The creep shapes for rolling along x (a/b) and along y (b/a); one for a circle.
+    type Cache = FixedShapes<T>;
+    /// The creep shapes for rolling along x (a/b) and along y (b/a) (one for a circle), and
+    /// the path between them ([`ShapePath`]).
     fn cache(&self, elasticity: &Elasticity<T>) -> Self::Cache {
         let m1 = self.constants.m1();
         // a/b = 1/√m₁
@@ -102,13 +111,23 @@ impl<T: Real, N, D> RollingBase<T> for Contact<T, N, D, Best> {
         } else {
             RollingShape::new(T::ONE / r, elasticity.nu())
         };
-        [along_x, along_y]
+        FixedShapes {
+            axes: [along_x, along_y],
+            path: ShapePath::new(-r.ln(), r.ln(), elasticity.nu()),
+        }
     }
 }
 
 impl<T: Real, D> RollingBase<T> for VaryingContact<T, D, Best> {
-    type Cache = ();
-    fn cache(&self, _: &Elasticity<T>) -> Self::Cache {}
+    type Cache = ShapePath<T>;
+    /// The path over every aligned ratio ([`ShapePath`]).
+    fn cache(&self, elasticity: &Elasticity<T>) -> Self::Cache {
+        ShapePath::new(
+            T::from_f64(-libm::log(100.0)),
+            T::from_f64(libm::log(100.0)),
+            elasticity.nu(),
+        )
+    }
 }
 
 /// A rolling contact at the wrench level: a contact `C` ([`Contact`] or [`VaryingContact`],
@@ -182,12 +201,23 @@ impl<T: Real, C: RollingBase<T>, L: RollingLaw> Rolling<T, C, L> {
 #[inline(always)]
 fn direction<T: Real>(v: RollingVelocity<T>) -> (T, T, T) {
     let m = v.vx.abs().max(v.vy.abs());
-    if !(m > T::ZERO) {
+    if m <= T::ZERO {
         return (T::ONE, T::ZERO, T::ZERO);
     }
     let (ux, uy) = (v.vx / m, v.vy / m);
     let n = (ux * ux + uy * uy).sqrt();
     (ux / n, uy / n, m * n)
+}
+
+/// Where the creep shape of a step comes from.
+#[derive(Clone, Copy)]
+enum Shapes<'a, T> {
+    /// Cached and exact (rolling along an axis, or a circle).
+    One(&'a RollingShape<T>),
+    /// The aligned ellipse's shape from the contact's path ([`ShapePath::shape`]), per call.
+    Path(&'a ShapePath<T>),
+    /// The aligned ellipse's own shape, built per call in `f64` ([`RollingShape::new`]).
+    Build,
 }
 
 /// What one step needs besides the creep shape: the patch, f, E*-free parts.
@@ -201,30 +231,55 @@ impl<T: Real, N: NormalLaw<T>, D: Damping<T>, L: RollingLaw> Rolling<T, Contact<
     /// One step: approach h (m), its rate ḣ (m/s, > 0 compression), the slip of B relative to
     /// A and the rolling velocity, both in the contact frame → the wrench on B from A (contact
     /// frame, x the major axis). Total.
+    ///
+    /// The creep shape: cached along the axes (and for a circle); for a skewed V from the
+    /// contact's [`ShapePath`] per call (see the module docs; [`Rolling::wrench_aligned`]
+    /// builds it in `f64` instead).
     #[inline]
     pub fn wrench(&self, h: T, hdot: T, slip: Slip<T>, v: RollingVelocity<T>) -> Wrench<T, ()> {
+        self.fixed(h, hdot, slip, v, Shapes::Path(&self.cache.path))
+    }
+
+    /// [`Rolling::wrench`] with the aligned ellipse's creep shape built per call in `f64`
+    /// ([`RollingShape::new`]) for a skewed V (≈ 5 µs on a host, ≈ 3e5 M4F instructions): the
+    /// reference [`ShapePath`] is measured against.
+    pub fn wrench_aligned(
+        &self,
+        h: T,
+        hdot: T,
+        slip: Slip<T>,
+        v: RollingVelocity<T>,
+    ) -> Wrench<T, ()> {
+        self.fixed(h, hdot, slip, v, Shapes::Build)
+    }
+
+    /// The fixed contact's step: the cached shape along an axis (or for a circle), else
+    /// `skewed`.
+    #[inline(always)]
+    fn fixed(
+        &self,
+        h: T,
+        hdot: T,
+        slip: Slip<T>,
+        v: RollingVelocity<T>,
+        skewed: Shapes<'_, T>,
+    ) -> Wrench<T, ()> {
+        let frame = direction(v);
+        let (cx, sx, _) = frame;
+        let [along_x, along_y] = &self.cache.axes;
+        let shapes = if sx == T::ZERO || along_x.rho == T::ONE {
+            Shapes::One(along_x)
+        } else if cx == T::ZERO {
+            Shapes::One(along_y)
+        } else {
+            skewed
+        };
         let c = &self.contact;
         let patch = c.normal.damped_patch(h, hdot, &c.damping);
         let step = Step::of(patch, c.friction.coefficient());
-        let (cx, sx, speed) = direction(v);
-        let circle = self.cache[0].rho == T::ONE;
-        let cached = if sx == T::ZERO || circle {
-            Some(&self.cache[0])
-        } else if cx == T::ZERO {
-            Some(&self.cache[1])
-        } else {
-            None
-        };
         let prepared = &c.prepared;
         let full_slip = |st: &SlipState<T>| Best::traction_prepared(prepared, st).0;
-        tangential::<T, L>(
-            &step,
-            cached,
-            self.elasticity,
-            (cx, sx, speed),
-            slip,
-            full_slip,
-        )
+        tangential::<T, L>(&step, shapes, self.elasticity, frame, slip, full_slip)
     }
 }
 
@@ -248,7 +303,9 @@ impl<T: Real, D: Damping<T>, L: RollingLaw> Rolling<T, VaryingContact<T, D, Best
         let patch = normal.damped_patch(h, hdot, damping);
         let step = Step::of(patch, friction.coefficient());
         let full_slip = |st: &SlipState<T>| Best::traction(&constants, st).0;
-        tangential::<T, L>(&step, None, self.elasticity, direction(v), slip, full_slip)
+        let frame = direction(v);
+        let shapes = Shapes::Path(&self.cache);
+        tangential::<T, L>(&step, shapes, self.elasticity, frame, slip, full_slip)
     }
 }
 
@@ -269,7 +326,7 @@ impl<T: Real> Step<T> {
 #[inline(always)]
 fn tangential<T: Real, L: RollingLaw>(
     step: &Step<T>,
-    cached: Option<&RollingShape<T>>,
+    shapes: Shapes<'_, T>,
     elasticity: Elasticity<T>,
     (cx, sx, speed): (T, T, T),
     slip: Slip<T>,
@@ -284,7 +341,7 @@ fn tangential<T: Real, L: RollingLaw>(
         patch,
         branch: (),
     };
-    if !(step.fn_ > T::ZERO) {
+    if step.fn_ <= T::ZERO {
         return zero;
     }
     let (a, b) = (patch.a, patch.b);
@@ -298,15 +355,6 @@ fn tangential<T: Real, L: RollingLaw>(
     };
     let s = rs.scaled(c);
     let w = c * s.omega;
-    let built;
-    let shape = match cached {
-        Some(shape) => shape,
-        None => {
-            let (ar, br) = aligned_ellipse(a, b, cx, sx);
-            built = RollingShape::new(ar / br, elasticity.nu());
-            &built
-        }
-    };
     let fs = if L::FULL_SLIP {
         // full slip on the real patch: the slip direction back in the contact frame
         let (lx, ly) = (cx * s.vx - sx * s.vy, sx * s.vx + cx * s.vy);
@@ -322,8 +370,8 @@ fn tangential<T: Real, L: RollingLaw>(
         Creep::default()
     };
     let kappa = elasticity.g() * c * c / step.fn_;
-    let input = Input {
-        contact: shape,
+    let input = |contact| Input {
+        contact,
         kappa: if kappa.is_finite() { kappa } else { T::MAX },
         vx: s.vx,
         vy: s.vy,
@@ -331,7 +379,17 @@ fn tangential<T: Real, L: RollingLaw>(
         v: s.v,
         full_slip: fs,
     };
-    let cr = L::creep(&input);
+    let cr = match shapes {
+        Shapes::One(shape) => L::creep(&input(shape)),
+        Shapes::Path(path) => {
+            let (ar, br) = aligned_ellipse(a, b, cx, sx);
+            L::creep(&input(&path.shape(ar / br)))
+        }
+        Shapes::Build => {
+            let (ar, br) = aligned_ellipse(a, b, cx, sx);
+            L::creep(&input(&RollingShape::new(ar / br, elasticity.nu())))
+        }
+    };
     let (fx, fy) = (cr.fx * step.fn_, cr.fy * step.fn_);
     Wrench {
         fx: cx * fx - sx * fy,

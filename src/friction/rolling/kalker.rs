@@ -119,14 +119,16 @@ fn c33_simplified(r: f64, c23: f64) -> f64 {
 /// theory's value times its ratio to the exact one at the nearer end row (continuous).
 fn c33(r: f64, nu: f64) -> f64 {
     let x = libm::log(r.clamp(0.2, 5.0));
+    // the nodes' logarithms once (the same values as evaluated in the loop: bit for bit)
+    let ln_nodes = C33_NODES.map(libm::log);
     let col = |j: usize| {
         let mut sum = 0.0;
         for (i, row) in C33_EXACT.iter().enumerate() {
             let mut l = 1.0;
-            for (k, node) in C33_NODES.iter().enumerate() {
+            let xi = ln_nodes.get(i).copied().unwrap_or(0.0);
+            for (k, xk) in ln_nodes.iter().enumerate() {
                 if k != i {
-                    let xk = libm::log(*node);
-                    l *= (x - xk) / (libm::log(C33_NODES.get(i).copied().unwrap_or(1.0)) - xk);
+                    l *= (x - xk) / (xi - xk);
                 }
             }
             sum += l * libm::log(row.get(j).copied().unwrap_or(1.0));

@@ -28,8 +28,10 @@
 //!   rolling velocity turns the frame to the rolling direction and uses the ellipse aligned with
 //!   it whose semi-axis along the rolling direction is the patch's extent in that direction,
 //!   r(θ) = ab/√(b²cos²θ + a²sin²θ), and the other one ab/r (same area, same c):
-//!   [`aligned_ellipse`]. Exact along either axis and continuous in between; the full-slip part
-//!   stays exact only along the axes (not wired into the per-step contract yet).
+//!   [`aligned_ellipse`]. Exact along either axis and continuous in between. The per-step
+//!   wrench [`crate::contact::Rolling`] does this from a rolling velocity in the contact frame
+//!   ([`RollingVelocity`]) and takes the full slip from the real patch (exact in every
+//!   direction); the creep shape of a skewed direction per call by [`ShapePath`].
 //! - **Elasticity**: [`Elasticity`]: quasi-identical bodies (G, ν), or Kalker's combination
 //!   of dissimilar bodies with the normal–tangential coupling neglected.
 //!
@@ -81,7 +83,7 @@ pub use contact::{
 pub use elastic::Elasticity;
 pub use fastsim::{Fastsim, FastsimGrid};
 pub use kalker::Kalker;
-pub use skew::aligned_ellipse;
+pub use skew::{ShapePath, aligned_ellipse};
 pub use slip::{RollingSlip, Scaled};
 pub use table::Table;
 pub use velocity::RollingVelocity;

@@ -12,9 +12,12 @@
 //!
 //! (the same area and the same c = √(ab)). Exact along either axis (θ = 0: (a_M, b_m);
 //! θ = π/2: (b_m, a_M)), continuous in θ, and symmetric under θ → −θ, θ → π − θ. The
-//! approximation is the rest of the shape: the aligned ellipse is not the patch, so the
-//! full-slip limit is the Contensou integral of the aligned ellipse, not of the patch, for
-//! 0 < |θ| < π/2 (the per-step contract still takes its rolling velocity along x).
+//! approximation is the rest of the shape: the aligned ellipse is not the patch. The per-step
+//! wrench ([`crate::contact::Rolling`]) takes only the creep shape (Kalker's coefficients, the
+//! laws' per-shape data) from it and the full slip from the real patch, so the full-slip
+//! limit stays exact in every direction.
+//!
+//! [`ShapePath`] gives that creep shape per call for an aligned ratio that changes every call.
 //!
 //! # Domain
 //!
@@ -25,6 +28,7 @@
 //!
 //! Two square roots and two divisions.
 
+use super::{Kalker, RollingShape};
 use crate::Real;
 
 /// The aligned ellipse (a_r along the rolling direction, b_r across) for a patch (a_M along x,
@@ -40,4 +44,236 @@ pub fn aligned_ellipse<T: Real>(a_major: T, b_minor: T, cx: T, sx: T) -> (T, T) 
     let ab = a_major * b_minor;
     let ar = ab / (b_minor * b_minor * c2 + a_major * a_major * s2).sqrt();
     (ar, ab / ar)
+}
+
+/// Nodes of [`ShapePath`]'s Kalker table.
+const PATH_NODES: usize = 33;
+
+/// Where Kalker's coefficients have a kink in x = ln(a/b): 0 (the two sides of Table E3),
+/// ±ln 5 (the end rows of C₃₃'s exact values), ±ln 10 (Table E3's g = 0.1 meets the
+/// asymptotes).
+const KINKS: [f64; 5] = [
+    -core::f64::consts::LN_10,
+    -1.609_437_912_434_100_3,
+    0.0,
+    1.609_437_912_434_100_3,
+    core::f64::consts::LN_10,
+];
+
+/// The creep shape ([`RollingShape`]) of any aligned ratio a/b in a range [e^{lo}, e^{hi}], per
+/// call in the working precision, for a contact whose aligned ratio changes every call (a
+/// skewed rolling velocity: the range between the two axes' ratios; a varying contact: the
+/// laws' domain).
+///
+/// # Formula
+///
+/// - Kalker's coefficients: ln C of [`Kalker::new`] at 33 nodes in x = ln(a/b) ∈ [lo, hi]
+///   (built once, `f64`): the ends and the kinks of the coefficients inside (x = 0, ±ln 5,
+///   ±ln 10) are nodes, uniform between them; per call cubic Hermite in x with
+///   finite-difference slopes, one-sided at the ends and the kinks, then `exp`. Exact at the
+///   nodes (the ends: the two axes of a fixed contact), continuous.
+/// - `blend`'s (σ, γ): linear in x between the fitted shapes, as [`super::Blend::shape`].
+/// - `table`'s residual tables: [`super::table::Tables::at_ln`] (linear in x between the
+///   fitted shapes, as [`super::table::Tables::new`]).
+///
+/// # Domain and error
+///
+/// lo < hi in [ln 0.01, ln 100] (clamped; a/b outside the range is clamped to it).
+/// Measured (`host-tests/rolling_wrench.rs`): over [0.01, 100] Kalker's coefficients within
+/// 3.7e-3 relative of [`Kalker::new`] (near a/b = 1.1, where Table E3's rows are densest in
+/// ln(a/b); 5.8e-4 outside [0.1, 10]); a fixed contact's skewed rolling wrench within 9.2e-4
+/// fN / fNc of the `f64` build ([`RollingShape::new`]) at P/Q = 0.0025 (2.0e-5 at
+/// P/Q = 0.25), `f32` alike.
+///
+/// # Cost
+///
+/// Per call one `ln`, a 6-step bisection, one Hermite segment and one `exp` per coefficient,
+/// 10 `exp` and 435 multiply-adds (the tables); per contact 33 × 5 numbers.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ShapePath<T> {
+    /// the nodes x = ln(a/b), increasing
+    x: [T; PATH_NODES],
+    /// ln of Kalker's coefficients at the nodes
+    kalker: [Kalker<T>; PATH_NODES],
+    /// bit j: node j is a kink (slopes one-sided)
+    kinks: u64,
+}
+
+impl<T: Real> ShapePath<T> {
+    /// For aligned ratios in [e^{lo}, e^{hi}] and ν ∈ [0, 0.5] (an [`super::Elasticity`]'s).
+    pub fn new(lo: T, hi: T, nu: T) -> Self {
+        let ln100 = libm::log(100.0);
+        let lo = lo.to_f64().clamp(-ln100, ln100);
+        let hi = hi.to_f64().clamp(-ln100, ln100).max(lo + 1e-9);
+        // breakpoints: the ends and the kinks strictly inside
+        let mut br = [0.0f64; 7];
+        let mut n = 0;
+        for b in core::iter::once(lo)
+            .chain(
+                KINKS
+                    .iter()
+                    .copied()
+                    .filter(|k| *k > lo + 1e-9 && *k < hi - 1e-9),
+            )
+            .chain(core::iter::once(hi))
+        {
+            if let Some(slot) = br.get_mut(n) {
+                *slot = b;
+                n += 1;
+            }
+        }
+        // PATH_NODES − 1 intervals shared among the n − 1 segments by length, ≥ 1 each
+        let total = hi - lo;
+        let mut xs = [0.0f64; PATH_NODES];
+        let mut at = 0usize;
+        let mut left = PATH_NODES - 1;
+        let mut kinks = 0u64;
+        for s in 0..n.saturating_sub(1) {
+            let (a, b) = (
+                br.get(s).copied().unwrap_or(lo),
+                br.get(s + 1).copied().unwrap_or(hi),
+            );
+            let rest = n - 2 - s; // segments after this one
+            let k = if rest == 0 {
+                left
+            } else {
+                (((b - a) / total * (PATH_NODES - 1) as f64) as usize).clamp(1, left - rest)
+            };
+            for j in 0..k {
+                if let Some(x) = xs.get_mut(at + j) {
+                    *x = a + (b - a) * j as f64 / k as f64;
+                }
+            }
+            at += k;
+            left -= k;
+            if rest > 0 {
+                kinks |= 1 << at; // the next segment starts at a kink
+            }
+        }
+        if let Some(x) = xs.get_mut(PATH_NODES - 1) {
+            *x = hi;
+        }
+        // ln C: Kalker's coefficients are near power laws of a/b (C₁₁, C₂₂ ∝ a/b, C₂₃ ∝
+        // (a/b)^{3/2} for long patches), nearly linear in ln(a/b) in the logarithm
+        let kalker = xs.map(|x| {
+            let k = Kalker::new(T::from_f64(libm::exp(x)), nu);
+            let ln = |c: T| T::from_f64(libm::log(c.to_f64()));
+            Kalker {
+                c11: ln(k.c11),
+                c22: ln(k.c22),
+                c23: ln(k.c23),
+                c33: ln(k.c33),
+            }
+        });
+        Self {
+            x: xs.map(T::from_f64),
+            kalker,
+            kinks,
+        }
+    }
+
+    /// The creep shape for the aligned ratio a/b (see the type docs). Total.
+    pub fn shape(&self, a_over_b: T) -> RollingShape<T> {
+        let last = PATH_NODES - 1;
+        let node = |j: usize| self.x.get(j).copied().unwrap_or(T::ZERO);
+        let (lo, hi) = (node(0), node(last));
+        let x = if a_over_b > T::ZERO {
+            a_over_b.ln().max(lo).min(hi)
+        } else {
+            lo
+        };
+        // bisection: node(i) ≤ x ≤ node(i + 1), 6 steps (2⁶ > 32 intervals)
+        let (mut i, mut j) = (0usize, last);
+        for _ in 0..6 {
+            let m = (i + j) / 2;
+            if j - i > 1 {
+                if x < node(m) {
+                    j = m;
+                } else {
+                    i = m;
+                }
+            }
+        }
+        let i = i.min(last - 1);
+        let d = node(i + 1) - node(i);
+        let f = if d > T::ZERO {
+            ((x - node(i)) / d).max(T::ZERO).min(T::ONE)
+        } else {
+            T::ZERO
+        };
+        let k = |j: usize| self.kalker.get(j).copied().unwrap_or(self.kalker[0]);
+        let kink = |j: usize| (self.kinks >> j) & 1 == 1;
+        // slopes dy/dx at the interval's ends, one-sided at the ends and the kinks
+        let slope = |j: usize, from_right: bool, c: fn(&Kalker<T>) -> T| {
+            let y = |n: usize| c(&k(n));
+            let dx = |a: usize, b: usize| {
+                let d = node(b) - node(a);
+                if d > T::ZERO { d } else { T::ONE }
+            };
+            if j == 0 || (kink(j) && from_right) {
+                (y(j + 1) - y(j)) / dx(j, j + 1)
+            } else if j == last || kink(j) {
+                (y(j) - y(j - 1)) / dx(j - 1, j)
+            } else {
+                (y(j + 1) - y(j - 1)) / dx(j - 1, j + 1)
+            }
+        };
+        let hermite = |c: fn(&Kalker<T>) -> T| {
+            let (y0, y1) = (c(&k(i)), c(&k(i + 1)));
+            let (m0, m1) = (slope(i, true, c) * d, slope(i + 1, false, c) * d);
+            let f2 = f * f;
+            let f3 = f2 * f;
+            let h00 = T::TWO * f3 - T::from_f64(3.0) * f2 + T::ONE;
+            let h10 = f3 - T::TWO * f2 + f;
+            let h01 = T::from_f64(3.0) * f2 - T::TWO * f3;
+            let h11 = f3 - f2;
+            h00 * y0 + h10 * m0 + h01 * y1 + h11 * m1
+        };
+        let kalker = Kalker {
+            c11: hermite(|k| k.c11).exp(),
+            c22: hermite(|k| k.c22).exp(),
+            c23: hermite(|k| k.c23).exp(),
+            c33: hermite(|k| k.c33).exp(),
+        };
+        RollingShape {
+            rho: (T::HALF * x).exp(),
+            kalker,
+            blend: blend_shape(x),
+            table: super::table::Tables::at_ln(x),
+        }
+    }
+}
+
+/// ln of the fitted shapes of `blend` and `table` (a/b = 0.2, 0.5, 1, 2, 5).
+const LN_FITTED: [f64; 5] = [
+    -1.609_437_912_434_100_3,
+    -core::f64::consts::LN_2,
+    0.0,
+    core::f64::consts::LN_2,
+    1.609_437_912_434_100_3,
+];
+
+/// Where x = ln(a/b) falls among the fitted shapes: the interval i (0 … 3) and the fraction
+/// u ∈ [0, 1] (the end shapes outside), in the working precision.
+pub(crate) fn between_fitted<T: Real>(x: T) -> (usize, T) {
+    let node = |k: usize| T::from_f64(LN_FITTED.get(k).copied().unwrap_or(0.0));
+    let x = x.max(node(0)).min(node(4));
+    let mut i = 0;
+    while i < 3 && x > node(i + 1) {
+        i += 1;
+    }
+    (
+        i,
+        ((x - node(i)) / (node(i + 1) - node(i)))
+            .max(T::ZERO)
+            .min(T::ONE),
+    )
+}
+
+/// [`super::Blend::shape`] at x = ln(a/b) in the working precision.
+fn blend_shape<T: Real>(x: T) -> (T, T) {
+    let (i, u) = between_fitted(x);
+    let at = |v: &[f64; 5], k: usize| T::from_f64(v.get(k).copied().unwrap_or(1.0));
+    let lerp = |v: &[f64; 5]| at(v, i) + u * (at(v, i + 1) - at(v, i));
+    (lerp(&super::Blend::SIGMA), lerp(&super::Blend::GAMMA))
 }

@@ -259,3 +259,94 @@ impl RollingLaw for Table {
         bounded(passive(out, i.vx, i.vy, i.w))
     }
 }
+
+// ---- The per-call form for a shape that changes every call (`crate::contact::Rolling` with
+// a skewed rolling velocity or a varying contact): `Tables::new` in the working precision from
+// flattened copies of the generated data, no `f64` on the path. Structure only: reads
+// `TABLES` whatever its values.
+
+/// One (shape, curve) row: ln m₀, Δ(ln m), then the residuals F_x, F_y, M_z at the nodes.
+const ROW: usize = 2 + 3 * NODES;
+
+/// The generated tables flattened per (shape, curve), shape-major.
+const fn flat64() -> [[f64; ROW]; 25] {
+    let mut out = [[0.0; ROW]; 25];
+    let mut s = 0;
+    while s < 5 {
+        let mut k = 0;
+        while k < 5 {
+            let (x0, dx, v) = &TABLES[s][k];
+            let row = &mut out[5 * s + k];
+            row[0] = *x0;
+            row[1] = *dx;
+            let mut ch = 0;
+            while ch < 3 {
+                let mut n = 0;
+                while n < NODES {
+                    row[2 + ch * NODES + n] = v[ch][n];
+                    n += 1;
+                }
+                ch += 1;
+            }
+            k += 1;
+        }
+        s += 1;
+    }
+    out
+}
+
+/// [`flat64`] rounded to `f32`.
+const fn flat32() -> [[f32; ROW]; 25] {
+    let wide = flat64();
+    let mut out = [[0.0; ROW]; 25];
+    let mut i = 0;
+    while i < 25 {
+        let mut j = 0;
+        while j < ROW {
+            out[i][j] = wide[i][j] as f32;
+            j += 1;
+        }
+        i += 1;
+    }
+    out
+}
+
+static FLAT64: [[f64; ROW]; 25] = flat64();
+static FLAT32: [[f32; ROW]; 25] = flat32();
+
+impl<T: Real> Tables<T> {
+    /// [`Tables::new`] for a/b = e^x, computed in `T` from the generated data (rounded to `T`
+    /// at compile time): the same interpolation (linear in ln(a/b) between the fitted shapes,
+    /// the end shapes outside), 2 `exp` per curve. Agrees with `new` to `T`'s rounding.
+    /// Per-call cost: 5 × (2 + 3 × 29) multiply-adds and 10 `exp`.
+    pub fn at_ln(x: T) -> Self {
+        let flat = T::of_precision(&FLAT32, &FLAT64);
+        let (i, u) = super::skew::between_fitted(x);
+        let zero = [T::ZERO; ROW];
+        let curve = |k: usize| {
+            let a = flat.get(5 * i + k).unwrap_or(&zero);
+            let b = flat.get(5 * (i + 1) + k).unwrap_or(&zero);
+            let mut row = [T::ZERO; ROW];
+            for (o, (p, q)) in row.iter_mut().zip(a.iter().zip(b.iter())) {
+                *o = *p + u * (*q - *p);
+            }
+            let (x0, dx) = (row[0], row[1]);
+            let mut v = [[T::ZERO; NODES]; 3];
+            for (ch, out) in v.iter_mut().enumerate() {
+                if let Some(src) = row.get(2 + ch * NODES..2 + (ch + 1) * NODES) {
+                    out.copy_from_slice(src);
+                }
+            }
+            Curve {
+                x0,
+                inv_dx: T::ONE / dx,
+                inv_m0: (-x0).exp(),
+                m_last: (x0 + T::from_usize(NODES - 1) * dx).exp(),
+                v,
+            }
+        };
+        Self {
+            c: [curve(0), curve(1), curve(2), curve(3), curve(4)],
+        }
+    }
+}
