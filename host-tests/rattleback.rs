@@ -461,7 +461,7 @@ fn rolling_law_reverses_the_unstable_spin_and_does_not_use_delta() {
     let (rows, events, y) = run_rolling::<Table>(-2.0, 2.3, H, 1e-3);
     let t = events.reversal();
     assert!(t.is_some_and(|t| (t - 2.0945).abs() < 3e-3), "{t:?}");
-    // Still growing at 2.3 s (peak 0.67 rad/s at 2.5 s in the example).
+    // Still growing at 2.3 s (peak 0.674 rad/s at ≈ 3.9 s in the example).
     let peak = rows.iter().map(|r| r.1.spin).fold(0.0, f64::max);
     assert!(peak > 0.25, "reversed spin {peak} at 2.3 s");
     assert_energy_never_increases(&rows);
@@ -476,7 +476,7 @@ fn rolling_law_stalls_the_steady_spin_without_reversal() {
     let (rows, events, _) = run_rolling::<Table>(2.0, 2.5, H, 1e-3);
     assert!(events.reversal().is_none());
     let t = events.stall();
-    // h = 0.1 ms: 2.2841 s; 0.2 ms: 2.2888 s; 50 µs: 2.2826 s.
+    // h = 0.1 ms: 2.2840 s; 0.2 ms: 2.2877 s; 50 µs: 2.2824 s.
     assert!(t.is_some_and(|t| (t - 2.285).abs() < 0.01), "{t:?}");
     assert_energy_never_increases(&rows);
 }
