@@ -1,17 +1,24 @@
 //! The rattleback (Kane & Levinson's body, `contensou::scenes::rattleback`) with each friction
-//! law, spun both ways: spin reversal or stall, peak rocking, final spin and energy.
+//! law — the full-slip laws `best`, `simplified`, `ellipsoid`, `coulomb` and the rolling laws
+//! `table`, `blend` (Kalker's creep from the contact's rolling velocity, polymer on glass:
+//! `Params::elasticity`) — spun both ways: spin reversal or stall, peak rocking, peak reversed
+//! spin, final spin and energy.
 //!
 //! ```sh
 //! cargo run --release --features scenes --example rattleback         # into out/
 //! cargo run --release --features scenes --example rattleback -- DIR  # into DIR
 //! ```
 //!
-//! `RATTLEBACK_H` (s), `RATTLEBACK_ESTAR` (Pa) and `RATTLEBACK_SAMPLE` (s, the output
-//! interval, default 10 ms) override the step, E* and the sampling (README: step, stiffness
-//! and sampling checks).
+//! `RATTLEBACK_H` (s), `RATTLEBACK_ESTAR` (Pa), `RATTLEBACK_SAMPLE` (s, the output
+//! interval, default 10 ms), `RATTLEBACK_DELTA` (m/s, the full-slip laws' δ, default 1 mm/s)
+//! and `RATTLEBACK_T` (s, default 20) override the step, E* (the rolling laws' G scales with
+//! it), the sampling, δ and the run's length (README: step, stiffness, sampling and δ checks);
+//! `RATTLEBACK_LAWS=table,blend` runs only the named laws; `RATTLEBACK_STIFFNESS=1` prints
+//! h × the friction's tangential rate against RK4's bound (before / after the event).
 //!
 //! Writes `rattleback_summary.csv` (`law,direction,reversal_s,stall_s,peak_rock_rad,
-//! final_spin,energy_start,energy_end,reversal_sampled_s,stall_sampled_s`, empty fields when
+//! final_spin,energy_start,energy_end,reversal_sampled_s,stall_sampled_s,peak_reversed_spin`,
+//! empty fields when
 //! there is none) and one labelled PNG of ω·ẑ(t) per law (`rattleback_<law>.png`, both
 //! directions). `reversal_s`, `stall_s`: located between the RK4 steps on every step
 //! ([`SpinEvents`], Hermite interpolant + bisection), independent of the output sampling;
@@ -32,30 +39,39 @@
 
 use std::fmt::Write as _;
 
+use contensou::friction::rolling::{Blend, RollingLaw, Table};
 use contensou::friction::{Best, Coulomb, Ellipsoid, Friction, FrictionLaw, Simplified};
 use contensou::scenes::integrate::rk4;
-use contensou::scenes::rattleback::{Params, Probe, Rattleback, SpinEvents};
+use contensou::scenes::rattleback::{Creeping, FloorLaw, Params, Probe, Rattleback, SpinEvents};
 use plotters::prelude::*;
 use plotters::style::{FontStyle, register_font};
 
 const F: f64 = 0.3;
-const DELTA: f64 = 1e-3;
+/// The full-slip laws' regularisation speed δ (m/s); `RATTLEBACK_DELTA` overrides it (the
+/// README's δ study; the rolling laws do not use it).
+fn delta() -> f64 {
+    env_or("RATTLEBACK_DELTA", 1e-3)
+}
 const TILT_DEG: f64 = 0.5;
 const SPIN: f64 = 2.0;
 /// RK4 step (s); `RATTLEBACK_H` overrides it (the step-size check in the README).
 fn step() -> f64 {
-    std::env::var("RATTLEBACK_H")
-        .ok()
-        .and_then(|h| h.parse().ok())
-        .unwrap_or(1e-4)
+    env_or("RATTLEBACK_H", 1e-4)
 }
-const T_END: f64 = 20.0;
+/// Simulated time (s); `RATTLEBACK_T` overrides it.
+fn t_end() -> f64 {
+    env_or("RATTLEBACK_T", 20.0)
+}
 /// Output interval (s); `RATTLEBACK_SAMPLE` overrides it (the sampling check in the README).
 fn sample() -> f64 {
-    std::env::var("RATTLEBACK_SAMPLE")
+    env_or("RATTLEBACK_SAMPLE", 1e-2)
+}
+
+fn env_or(name: &str, default: f64) -> f64 {
+    std::env::var(name)
         .ok()
         .and_then(|h| h.parse().ok())
-        .unwrap_or(1e-2)
+        .unwrap_or(default)
 }
 
 struct Run {
@@ -64,6 +80,8 @@ struct Run {
     spin0: f64,
     rows: Vec<(f64, Probe<f64>)>,
     events: SpinEvents<f64>,
+    /// (t, h·friction rate) per step with `RATTLEBACK_STIFFNESS`.
+    stiff: Vec<(f64, f64)>,
 }
 
 impl Run {
@@ -107,29 +125,37 @@ impl Run {
 /// Kane & Levinson's body; `RATTLEBACK_ESTAR` overrides E* (Pa) for the stiffness study.
 fn params() -> Params<f64> {
     let p = Params::kane_levinson();
-    let estar = std::env::var("RATTLEBACK_ESTAR")
-        .ok()
-        .and_then(|e| e.parse().ok())
-        .unwrap_or(p.estar);
-    Params { estar, ..p }
+    Params {
+        estar: env_or("RATTLEBACK_ESTAR", p.estar),
+        ..p
+    }
 }
 
-fn run<L: FrictionLaw>(law: &'static str, direction: &'static str, spin0: f64) -> Run {
-    let rb = Rattleback::new(&params(), Friction::<f64, L>::with_law(F, DELTA).unwrap()).unwrap();
+fn run<L: FloorLaw<f64>>(
+    rb: &Rattleback<f64, L>,
+    law: &'static str,
+    direction: &'static str,
+    spin0: f64,
+) -> Run {
     let y0 = rb.initial_state(TILT_DEG.to_radians(), spin0);
     let mut rows = vec![(0.0, rb.probe(&y0))];
-    let mut events = SpinEvents::new(&rb, 0.0, &y0, spin0, 0.1);
+    let mut events = SpinEvents::new(rb, 0.0, &y0, spin0, 0.1);
     let every = ((sample() / step()).round() as usize).max(1);
+    let track = std::env::var("RATTLEBACK_STIFFNESS").is_ok();
+    let mut stiff = Vec::new();
     rk4(
-        &rb,
+        rb,
         0.0,
         y0,
         step(),
-        (T_END / step()).round() as usize,
+        (t_end() / step()).round() as usize,
         |i, t, y| {
-            events.update(&rb, t, y);
+            events.update(rb, t, y);
             if i % every == 0 {
                 rows.push((t, rb.probe(y)));
+            }
+            if track {
+                stiff.push((t, step() * friction_rate(rb, y)));
             }
         },
     );
@@ -139,15 +165,69 @@ fn run<L: FrictionLaw>(law: &'static str, direction: &'static str, spin0: f64) -
         spin0,
         rows,
         events,
+        stiff,
     }
 }
 
-fn both<L: FrictionLaw>(law: &'static str) -> [Run; 2] {
+/// The friction's tangential rate at state `y` (1/s, a diagnostic: `RATTLEBACK_STIFFNESS`):
+/// the larger over world x, y of −e·∂u̇_B/∂u_B, u_B the material velocity at P, by central
+/// differences of the right-hand side in Ġ (ε = 1e-9 m/s, inside Kalker's linear range).
+/// h times it against RK4's bound on the negative real axis, 2.785: above it an explicit step
+/// does not resolve the creep force (chatter).
+fn friction_rate<L: FloorLaw<f64>>(rb: &Rattleback<f64, L>, y: &[f64; 13]) -> f64 {
+    use contensou::scenes::integrate::Ode;
+    use contensou::scenes::rigid::{Quat, Vec3};
+    let arm = rb.geometry(y).arm;
+    let q = Quat {
+        w: y[6],
+        x: y[7],
+        y: y[8],
+        z: y[9],
+    }
+    .normalized();
+    let eps = 1e-9;
+    let mut rate = 0.0f64;
+    for (k, e) in [(3, Vec3::new(1.0, 0.0, 0.0)), (4, Vec3::new(0.0, 1.0, 0.0))] {
+        let du = |s: f64| {
+            let mut z = *y;
+            z[k] += s;
+            let f = rb.rhs(0.0, &z);
+            let alpha = q.rotate(Vec3::new(f[10], f[11], f[12]));
+            Vec3::new(f[3], f[4], f[5]) + alpha.cross(arm)
+        };
+        let d = (du(eps) - du(-eps)) * (0.5 / eps);
+        rate = rate.max(-d.dot(e));
+    }
+    rate
+}
+
+fn both<L: FloorLaw<f64>>(rb: &Rattleback<f64, L>, law: &'static str) -> [Run; 2] {
     // δ > 0 for these parameters: the negative spin is the unstable one.
     [
-        run::<L>(law, "unstable", -SPIN),
-        run::<L>(law, "steady", SPIN),
+        run(rb, law, "unstable", -SPIN),
+        run(rb, law, "steady", SPIN),
     ]
+}
+
+/// Both directions with the full-slip law `L`.
+fn sliding<L: FrictionLaw>(law: &'static str) -> [Run; 2] {
+    let rb = Rattleback::new(&params(), Friction::<f64, L>::with_law(F, delta()).unwrap()).unwrap();
+    both(&rb, law)
+}
+
+/// Both directions with the rolling law `L` (Kalker's creep saturating to `Best`'s full slip;
+/// the contact's δ is not used) and the polymer-on-glass elasticity ([`Params::elasticity`]).
+fn creeping<L: RollingLaw>(law: &'static str) -> [Run; 2] {
+    let p = params();
+    let friction = Friction::<f64, Best>::with_law(F, delta()).unwrap();
+    let rb =
+        Rattleback::<f64, Creeping<L>>::rolling(&p, friction, p.elasticity().unwrap()).unwrap();
+    both(&rb, law)
+}
+
+/// Whether `RATTLEBACK_LAWS` (comma-separated names; default all) asks for `law`.
+fn wanted(law: &str) -> bool {
+    std::env::var("RATTLEBACK_LAWS").map_or(true, |l| l.split(',').any(|x| x == law))
 }
 
 fn opt(x: Option<f64>) -> String {
@@ -168,28 +248,49 @@ fn main() {
     }
     let p = params();
     println!(
-        "Kane–Levinson rattleback: δ = {:.5} rad, I = {:?} kg·m², E* = {:e} Pa, f = {F}, δ_v = {DELTA} m/s, ω₀ = ±{SPIN} rad/s, tilt {TILT_DEG}°, RK4 h = {} s, T = {T_END} s, output every {} s",
+        "Kane–Levinson rattleback: δ = {:.5} rad, I = {:?} kg·m², E* = {:e} Pa, f = {F}, δ_v = {} m/s, ω₀ = ±{SPIN} rad/s, tilt {TILT_DEG}°, RK4 h = {} s, T = {} s, output every {} s",
         p.skew,
         p.inertia,
         p.estar,
+        delta(),
         step(),
+        t_end(),
         sample()
     );
-    let laws = [
-        both::<Best>("best"),
-        both::<Simplified>("simplified"),
-        both::<Ellipsoid>("ellipsoid"),
-        both::<Coulomb>("coulomb"),
-    ];
+    let el = p.elasticity().unwrap();
+    println!(
+        "rolling laws: G = {:.4e} Pa, ν = {:.4} (polymer on glass, Params::elasticity)",
+        el.g(),
+        el.nu()
+    );
+    let mut laws = Vec::new();
+    if wanted("best") {
+        laws.push(sliding::<Best>("best"));
+    }
+    if wanted("simplified") {
+        laws.push(sliding::<Simplified>("simplified"));
+    }
+    if wanted("ellipsoid") {
+        laws.push(sliding::<Ellipsoid>("ellipsoid"));
+    }
+    if wanted("coulomb") {
+        laws.push(sliding::<Coulomb>("coulomb"));
+    }
+    if wanted("table") {
+        laws.push(creeping::<Table>("table"));
+    }
+    if wanted("blend") {
+        laws.push(creeping::<Blend>("blend"));
+    }
     let mut csv = String::from(
-        "law,direction,reversal_s,stall_s,peak_rock_rad,final_spin,energy_start,energy_end,reversal_sampled_s,stall_sampled_s\n",
+        "law,direction,reversal_s,stall_s,peak_rock_rad,final_spin,energy_start,energy_end,reversal_sampled_s,stall_sampled_s,peak_reversed_spin\n",
     );
     for runs in &laws {
         for r in runs {
             let (first, last) = (r.rows[0].1, r.rows[r.rows.len() - 1].1);
             writeln!(
                 csv,
-                "{},{},{},{},{:.5},{:.4},{:.6},{:.6},{},{}",
+                "{},{},{},{},{:.5},{:.4},{:.6},{:.6},{},{},{:.4}",
                 r.law,
                 r.direction,
                 opt(r.reversal()),
@@ -199,7 +300,8 @@ fn main() {
                 first.energy,
                 last.energy,
                 opt(r.sampled_reversal()),
-                opt(r.sampled_stall())
+                opt(r.sampled_stall()),
+                r.peak(|p| -p.spin * r.spin0.signum())
             )
             .unwrap();
             println!(
@@ -219,6 +321,19 @@ fn main() {
                 last.energy,
                 r.peak(|p| p.friction_ratio)
             );
+            if !r.stiff.is_empty() {
+                let event = r.reversal().or(r.stall()).unwrap_or(f64::MAX);
+                let share = |before: bool| {
+                    let part: Vec<_> = r.stiff.iter().filter(|s| (s.0 < event) == before).collect();
+                    let over = part.iter().filter(|s| s.1 > 2.785).count();
+                    let peak = part.iter().map(|s| s.1).fold(0.0, f64::max);
+                    (100.0 * over as f64 / part.len().max(1) as f64, peak)
+                };
+                let ((b, pb), (a, pa)) = (share(true), share(false));
+                println!(
+                    "    h·(friction rate): before the event max {pb:.3}, {b:.2} % of steps > 2.785; after it max {pa:.3}, {a:.2} %"
+                );
+            }
         }
         plot(runs, &format!("{dir}/rattleback_{}.png", runs[0].law)).unwrap();
     }
@@ -241,7 +356,7 @@ fn plot(runs: &[Run; 2], path: &str) -> Result<(), Box<dyn std::error::Error>> {
         .margin(15)
         .x_label_area_size(40)
         .y_label_area_size(55)
-        .build_cartesian_2d(0.0..T_END, -1.1 * SPIN..1.1 * SPIN)?;
+        .build_cartesian_2d(0.0..t_end(), -1.1 * SPIN..1.1 * SPIN)?;
     chart
         .configure_mesh()
         .x_desc("t (s)")

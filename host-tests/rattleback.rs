@@ -14,7 +14,7 @@
 
 use contensou::friction::{Best, Coulomb, Friction, FrictionLaw};
 use contensou::scenes::integrate::rk4;
-use contensou::scenes::rattleback::{Params, Probe, Rattleback, SpinEvents};
+use contensou::scenes::rattleback::{FloorLaw, Params, Probe, Rattleback, SpinEvents};
 
 const H: f64 = 2e-4;
 const F: f64 = 0.3;
@@ -175,8 +175,8 @@ fn contensou_drilling_torque_stalls_the_spin_without_reversal() {
 /// The stall of the default law is located between steps: the same time whatever the output
 /// sampling (2 ms or 10 ms), 26 ms before the first 10 ms sample past the threshold (the spin
 /// wobbles with the rocking and first dips below 10 % between samples), and it converges with
-/// the step. Measured: h = 0.2 ms 0.843840 s (first 10 ms sample 0.870 s), 0.1 ms 0.843558 s
-/// (−0.28 ms), 0.05 ms 0.843558 s (< 1 µs; the example).
+/// the step. Measured (after issue 21's `Best`): h = 0.2 ms 0.843404 s (first 10 ms sample
+/// 0.870 s), 0.1 ms 0.843168 s (−0.24 ms), 0.05 ms 0.843169 s (1 µs; the example).
 #[test]
 fn stall_is_located_between_steps_whatever_the_sampling_and_converges_with_the_step() {
     let p = Params::kane_levinson();
@@ -203,18 +203,23 @@ fn stall_is_located_between_steps_whatever_the_sampling_and_converges_with_the_s
     assert!((0.835..0.855).contains(&stall), "{stall}");
 }
 
+/// 0.2 s of f32 RK4 at h = 0.1 ms from the unstable start: finite, N near mg, no energy gain.
+fn assert_f32_run_stays_finite_and_on_the_floor<L: FloorLaw<f32>>(rb: &Rattleback<f32, L>) {
+    let y0 = rb.initial_state(0.5f32.to_radians(), -2.0);
+    let e0 = rb.probe(&y0).energy;
+    let y = rk4(rb, 0.0, y0, 1e-4, 2_000, |_, _, _| {});
+    let p = rb.probe(&y);
+    assert!(y.iter().all(|v| v.is_finite()));
+    assert!(p.n > 5.0 && p.n < 15.0, "{}", p.n);
+    assert!(p.energy <= e0 * (1.0 + 1e-4), "{} vs {e0}", p.energy);
+}
+
 #[test]
 fn f32_rk4_step_stays_finite_and_on_the_floor() {
     let rb =
         Rattleback::<f32, Best>::new(&Params::kane_levinson(), Friction::new(0.3, 1e-3).unwrap())
             .unwrap();
-    let y0 = rb.initial_state(0.5f32.to_radians(), -2.0);
-    let e0 = rb.probe(&y0).energy;
-    let y = rk4(&rb, 0.0, y0, 1e-4, 2_000, |_, _, _| {});
-    let p = rb.probe(&y);
-    assert!(y.iter().all(|v| v.is_finite()));
-    assert!(p.n > 5.0 && p.n < 15.0, "{}", p.n);
-    assert!(p.energy <= e0 * (1.0 + 1e-4), "{} vs {e0}", p.energy);
+    assert_f32_run_stays_finite_and_on_the_floor(&rb);
 }
 
 #[test]
@@ -244,4 +249,292 @@ fn from_quadratic_matches_from_bodies_and_rejects_indefinite_forms() {
         Err(Error::CurvatureNotPositive)
     );
     assert!(Curvatures::from_quadratic(f64::NAN, 1.0, 0.0).is_err());
+}
+
+// ---- The contact's rolling velocity (issue 20 item 5) ----
+
+/// A state with attitude `q` (body → world), the support point `gap` below the floor (the
+/// approach, m), world angular velocity `w` and Ġ such that the rattleback's material point at
+/// `pin` (world arm from G: "arm" = the floor point P, "lowest" = the support point x*) is at
+/// rest.
+fn pinned_state(
+    rb: &Rattleback<f64, Best>,
+    q: contensou::scenes::rigid::Quat<f64>,
+    gap: f64,
+    w: contensou::scenes::rigid::Vec3<f64>,
+    pin_at_lowest: bool,
+) -> [f64; 13] {
+    let mut y = [
+        0.0, 0.0, 0.0, 0.0, 0.0, 0.0, q.w, q.x, q.y, q.z, 0.0, 0.0, 0.0,
+    ];
+    let g0 = rb.geometry(&y);
+    y[2] = -g0.lowest.z - gap;
+    let g = rb.geometry(&y);
+    let pin = if pin_at_lowest { g.lowest } else { g.arm };
+    let v = -w.cross(pin);
+    let wb = q.rotate_inv(w);
+    y[3..6].copy_from_slice(&[v.x, v.y, v.z]);
+    y[10..13].copy_from_slice(&[wb.x, wb.y, wb.z]);
+    y
+}
+
+/// Rocking without slip about an axis of curvature, upright and tilted in the rocking plane:
+/// the material at P is at rest (u_B = 0) and V is the contact point's travel over the floor,
+/// ρ(θ)·ω with ρ the radius of curvature of the ellipse section in the rocking plane at the
+/// support point (independent formula: a²c²/(a²sin²θ + c²cos²θ)^{3/2}, θ the tilt), less
+/// ω·h (the floor point P is h below x*).
+#[test]
+fn rolling_velocity_of_rocking_without_slip_is_the_contact_points_travel() {
+    use contensou::scenes::rigid::{Quat, Vec3};
+    let p = Params::kane_levinson();
+    let rb = body::<Best>(&p);
+    let [a1, a2, a3] = p.semi_axes;
+    let skew = Quat::about_z(p.skew);
+    let gap = 1e-6;
+    for theta in [0.0, 0.02, -0.1, 0.3] {
+        let rho = |a: f64| {
+            let (s, c) = f64::sin_cos(theta);
+            (a * a3).powi(2) / (a * a * s * s + a3 * a3 * c * c).powf(1.5)
+        };
+        // Pitch: rocking about world y, the long axis a₁ in the rocking plane.
+        let q = Quat::about_y(theta).product(skew);
+        let w = 1.3;
+        let y = pinned_state(&rb, q, gap, Vec3::new(0.0, w, 0.0), false);
+        let k = rb.kinematics(&y);
+        assert!(k.material.norm() < 1e-15, "{:?}", k.material);
+        let want = w * (rho(a1) - gap);
+        assert!(
+            (k.rolling.x - want).abs() < 1e-12 * want.abs() && k.rolling.y.abs() < 1e-12,
+            "θ = {theta}: V = {:?}, want ({want}, 0)",
+            k.rolling
+        );
+        assert!((k.rolling - k.contact_point).norm() < 1e-15);
+        // Roll: rocking about world x, the axis a₂ in the rocking plane (ρ = a₂²/a₃ upright).
+        let q = Quat::about_x(theta).product(skew);
+        let y = pinned_state(&rb, q, gap, Vec3::new(w, 0.0, 0.0), false);
+        let k = rb.kinematics(&y);
+        assert!(k.material.norm() < 1e-15, "{:?}", k.material);
+        let want = -w * (rho(a2) - gap);
+        assert!(
+            (k.rolling.y - want).abs() < 1e-12 * want.abs() && k.rolling.x.abs() < 1e-12,
+            "θ = {theta}: V = {:?}, want (0, {want})",
+            k.rolling
+        );
+    }
+}
+
+/// A pure spin about the vertical through the support point: the contact point stays where it
+/// is (u̇ = 0: the spin axis is the world's "down"), V = 0 whatever the attitude.
+#[test]
+fn pure_spin_about_the_vertical_through_the_support_point_does_not_roll() {
+    use contensou::scenes::rigid::{Quat, Vec3};
+    let p = Params::kane_levinson();
+    let rb = body::<Best>(&p);
+    for (roll, pitch) in [(0.0, 0.0), (0.3, -0.2), (-0.05, 0.4)] {
+        let q = Quat::about_x(roll)
+            .product(Quat::about_y(pitch))
+            .product(Quat::about_z(p.skew));
+        let y = pinned_state(&rb, q, 1e-6, Vec3::new(0.0, 0.0, -2.0), true);
+        let k = rb.kinematics(&y);
+        assert!(k.rolling.norm() < 1e-15, "{:?}", k.rolling);
+        assert!(k.contact_point.norm() < 1e-15, "{:?}", k.contact_point);
+        // …while the state does move (tilted): G circles the vertical through x*.
+        assert!(roll == 0.0 || y[3].hypot(y[4]) > 1e-3);
+    }
+}
+
+/// v_P against a finite difference of the support point along trajectories (Kane–Levinson's
+/// start, both spins): (i) along the RK4 trajectory at h = 10 µs, central differences of the
+/// floor point below x* (error ≈ h²/6·|X'''|); (ii) along the flow at a state,
+/// (X(y + εẏ) − X(y − εẏ))/2ε with ε = 1e-7 s. And V differs from the material velocity: the
+/// contact point travels at ≈ ρω while the material at P is nearly at rest (rolling).
+#[test]
+fn contact_point_velocity_matches_a_finite_difference_of_the_support_point() {
+    use contensou::scenes::integrate::Ode;
+    let rb = body::<Best>(&Params::kane_levinson());
+    let foot = |y: &[f64; 13]| {
+        let g = rb.geometry(y);
+        (y[0] + g.lowest.x, y[1] + g.lowest.y)
+    };
+    for spin in [-2.0, 2.0] {
+        let h = 1e-5;
+        let y0 = rb.initial_state(TILT, spin);
+        let mut states = vec![y0];
+        rk4(&rb, 0.0, y0, h, 20_000, |_, _, y| states.push(*y));
+        let (mut worst, mut peak, mut worst_flow, mut peak_material) =
+            (0.0f64, 0.0f64, 0.0f64, 0.0f64);
+        for i in (1..states.len() - 1).step_by(7) {
+            let k = rb.kinematics(&states[i]);
+            let (a, b) = (foot(&states[i - 1]), foot(&states[i + 1]));
+            let fd = ((b.0 - a.0) / (2.0 * h), (b.1 - a.1) / (2.0 * h));
+            worst = worst.max((fd.0 - k.contact_point.x).hypot(fd.1 - k.contact_point.y));
+            peak = peak.max(k.contact_point.norm());
+            peak_material = peak_material.max(k.material.norm());
+            // Along the flow at this state.
+            let (y, dy, eps) = (states[i], rb.rhs(0.0, &states[i]), 1e-7);
+            let shifted = |s: f64| {
+                let mut z = y;
+                z.iter_mut().zip(dy).for_each(|(z, d)| *z += s * d);
+                foot(&z)
+            };
+            let (a, b) = (shifted(-eps), shifted(eps));
+            let fd = ((b.0 - a.0) / (2.0 * eps), (b.1 - a.1) / (2.0 * eps));
+            worst_flow = worst_flow.max((fd.0 - k.contact_point.x).hypot(fd.1 - k.contact_point.y));
+        }
+        assert!(peak > 0.5, "ω₀ = {spin}: peak |v_P| {peak}");
+        assert!(
+            peak_material < 0.05 * peak,
+            "ω₀ = {spin}: |u_B| {peak_material}"
+        );
+        assert!(
+            worst < 1e-5 * peak,
+            "ω₀ = {spin}: trajectory FD off by {worst:e} (peak {peak})"
+        );
+        assert!(
+            worst_flow < 1e-7 * peak,
+            "ω₀ = {spin}: flow FD off by {worst_flow:e} (peak {peak})"
+        );
+        eprintln!(
+            "ω₀ = {spin}: peak |v_P| = {peak:.4} m/s, |u_B| ≤ {peak_material:.2e}, FD: trajectory {worst:.2e}, flow {worst_flow:.2e}"
+        );
+    }
+}
+
+// ---- The rolling law (issue 20 item 5) ----
+
+/// Probes (t, probe).
+type Rows = Vec<(f64, Probe<f64>)>;
+
+/// Kane–Levinson's start with the rolling law `L` on the polymer-on-glass elasticity, the
+/// contact's δ = `delta` (not used by the rolling laws), RK4 at `h` over `t_end`: probes every
+/// 10 steps, the spin events and the final state.
+fn run_rolling<L: contensou::friction::rolling::RollingLaw>(
+    spin: f64,
+    t_end: f64,
+    h: f64,
+    delta: f64,
+) -> (Rows, SpinEvents<f64>, [f64; 13]) {
+    use contensou::scenes::rattleback::Creeping;
+    let p = Params::kane_levinson();
+    let rb = Rattleback::<f64, Creeping<L>>::rolling(
+        &p,
+        Friction::new(F, delta).unwrap(),
+        p.elasticity().unwrap(),
+    )
+    .unwrap();
+    let y0 = rb.initial_state(TILT, spin);
+    let mut out = vec![(0.0, rb.probe(&y0))];
+    let mut events = SpinEvents::new(&rb, 0.0, &y0, spin, 0.1);
+    let y = rk4(&rb, 0.0, y0, h, (t_end / h).round() as usize, |i, t, y| {
+        events.update(&rb, t, y);
+        if i % 10 == 0 {
+            out.push((t, rb.probe(y)));
+        }
+    });
+    assert!(y.iter().all(|v| v.is_finite()));
+    (out, events, y)
+}
+
+/// The polymer-on-glass pair of `Params::elasticity`: E* = 3 GPa (the scene's), Kalker's
+/// dissimilar combination G = 1.963 GPa, ν = 0.346; G scales with E*.
+#[test]
+fn elasticity_is_the_polymer_on_glass_pair_of_the_scenes_estar() {
+    let p = Params::<f64>::kane_levinson();
+    let el = p.elasticity().unwrap();
+    assert!((el.g() - 1.9633e9).abs() < 1e5, "{}", el.g());
+    assert!((el.nu() - 0.3456).abs() < 1e-4, "{}", el.nu());
+    // E* of the pair: E₁ = 2.744 GPa, ν₁ = 0.35 on E₂ = 70 GPa, ν₂ = 0.22.
+    let estar = 1.0 / ((1.0 - 0.35f64.powi(2)) / 2.744e9 + (1.0 - 0.22f64.powi(2)) / 70e9);
+    assert!((estar / p.estar - 1.0).abs() < 1e-3, "{estar}");
+    let hard = Params { estar: 200e9, ..p }.elasticity().unwrap();
+    assert!((hard.g() / el.g() / (200.0 / 3.0) - 1.0).abs() < 1e-12);
+    assert!((hard.nu() - el.nu()).abs() < 1e-15);
+}
+
+/// With Kalker's creep (`table`) the unstable spin reverses — where the full-slip `Best` stalls
+/// at 0.84 s — at 2.094 s (h = 0.1 ms, the example; 2.0936 s at the 0.2 ms here; the no-slip
+/// model: 2.38 s), and the steady one stalls (2.28 s). The contact's δ does not enter: the runs
+/// at δ = 1 mm/s and 0.1 m/s are bit-identical. Energy never increases.
+#[test]
+fn rolling_law_reverses_the_unstable_spin_and_does_not_use_delta() {
+    use contensou::friction::rolling::Table;
+    let (rows, events, y) = run_rolling::<Table>(-2.0, 2.3, H, 1e-3);
+    let t = events.reversal();
+    assert!(t.is_some_and(|t| (t - 2.0945).abs() < 3e-3), "{t:?}");
+    // Still growing at 2.3 s (peak 0.674 rad/s at ≈ 3.9 s in the example).
+    let peak = rows.iter().map(|r| r.1.spin).fold(0.0, f64::max);
+    assert!(peak > 0.25, "reversed spin {peak} at 2.3 s");
+    assert_energy_never_increases(&rows);
+    let (_, other, z) = run_rolling::<Table>(-2.0, 2.3, H, 0.1);
+    assert_eq!(y, z, "δ changed the rolling run");
+    assert_eq!(events.reversal(), other.reversal());
+}
+
+#[test]
+fn rolling_law_stalls_the_steady_spin_without_reversal() {
+    use contensou::friction::rolling::Table;
+    let (rows, events, _) = run_rolling::<Table>(2.0, 2.5, H, 1e-3);
+    assert!(events.reversal().is_none());
+    let t = events.stall();
+    // h = 0.1 ms: 2.2840 s; 0.2 ms: 2.2877 s; 50 µs: 2.2824 s.
+    assert!(t.is_some_and(|t| (t - 2.285).abs() < 0.01), "{t:?}");
+    assert_energy_never_increases(&rows);
+}
+
+/// The reversal time converges with the step: h = 0.2 → 0.1 ms moves it by < 2 ms (measured
+/// 0.9 ms; 0.1 ms at 0.1 → 0.05 ms) although the creep rate G c² C₁₁/(m|V|) exceeds RK4's
+/// bound 2.785/h on ≈ 1.5 % of the steps (README).
+#[test]
+fn rolling_reversal_converges_with_the_step() {
+    use contensou::friction::rolling::Table;
+    let (_, coarse, _) = run_rolling::<Table>(-2.0, 2.2, H, 1e-3);
+    let (_, fine, _) = run_rolling::<Table>(-2.0, 2.2, H / 2.0, 1e-3);
+    let (a, b) = (coarse.reversal().unwrap(), fine.reversal().unwrap());
+    assert!((a - b).abs() < 2e-3, "{a} vs {b}");
+}
+
+/// The contrast: with full slip the outcome follows δ (`Simplified` at h = 0.1 ms stalls at
+/// 1.1632 s with δ = 0.5 mm/s and reverses at 2.3806 s with 2 mm/s; 1.9351 s at 1 mm/s), with
+/// the rolling law it does not (above: bit-identical runs).
+#[test]
+fn full_slip_outcome_follows_delta() {
+    use contensou::friction::Simplified;
+    let p = Params::kane_levinson();
+    let run = |delta: f64| {
+        let rb =
+            Rattleback::<f64, Simplified>::new(&p, Friction::with_law(F, delta).unwrap()).unwrap();
+        let y0 = rb.initial_state(TILT, -2.0);
+        let mut events = SpinEvents::new(&rb, 0.0, &y0, -2.0, 0.1);
+        rk4(&rb, 0.0, y0, 1e-4, 24_500, |_, t, y| {
+            events.update(&rb, t, y)
+        });
+        events
+    };
+    let narrow = run(5e-4);
+    assert!(narrow.reversal().is_none());
+    assert!(
+        narrow.stall().is_some_and(|t| (t - 1.1632).abs() < 1e-3),
+        "{:?}",
+        narrow.stall()
+    );
+    let wide = run(2e-3);
+    assert!(
+        wide.reversal().is_some_and(|t| (t - 2.3806).abs() < 1e-3),
+        "{:?}",
+        wide.reversal()
+    );
+}
+
+#[test]
+fn f32_rolling_rk4_stays_finite_and_on_the_floor() {
+    use contensou::friction::rolling::Table;
+    use contensou::scenes::rattleback::Creeping;
+    let p = Params::<f32>::kane_levinson();
+    let rb = Rattleback::<f32, Creeping<Table>>::rolling(
+        &p,
+        Friction::new(0.3, 1e-3).unwrap(),
+        p.elasticity().unwrap(),
+    )
+    .unwrap();
+    assert_f32_run_stays_finite_and_on_the_floor(&rb);
 }

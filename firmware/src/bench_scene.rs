@@ -12,11 +12,15 @@
 //!   body, default law `Best`, f = 0.3, δ = 1 mm/s, h = 0.1 ms): 4 right-hand sides, each the
 //!   closed-form ellipsoid geometry + `VaryingContact` (shape table per call) + frame mapping;
 //!   16 states along the first 0.16 s of the unstable start (ω₀ = −2 rad/s, 0.5° rock).
+//! - `rattleback_rolling_step`: the same with the default rolling law (`Creeping<Table>`:
+//!   `contact::Rolling` over the `VaryingContact<Best>`, the contact's rolling velocity, the
+//!   polymer-on-glass `Params::elasticity`), over the same law's 16 states.
 
 use crate::harness::Runner;
 use contensou::friction::{Best, Friction, Simplified};
 use contensou::scenes::integrate::{rk4, rk4_step};
-use contensou::scenes::rattleback::{self, Rattleback};
+use contensou::friction::rolling::Table;
+use contensou::scenes::rattleback::{self, Creeping, FloorLaw, Rattleback};
 use contensou::scenes::tippe_top::{Params, State, TippeTop};
 
 type Top = TippeTop<f32, Simplified>;
@@ -36,9 +40,34 @@ fn tippe_top_10ms(x: (&Top, State<f32>)) -> State<f32> {
 type Celt = Rattleback<f32, Best>;
 const H_CELT: f32 = 1e-4;
 
+type CeltRolling = Rattleback<f32, Creeping<Table>>;
+
 #[inline(never)]
 fn rattleback_step(x: (&Celt, rattleback::State<f32>)) -> rattleback::State<f32> {
     rk4_step(x.0, 0.0, &x.1, H_CELT)
+}
+
+#[inline(never)]
+fn rattleback_rolling_step(
+    x: (&CeltRolling, rattleback::State<f32>),
+) -> rattleback::State<f32> {
+    rk4_step(x.0, 0.0, &x.1, H_CELT)
+}
+
+/// 16 states along the first 0.16 s of the unstable start.
+fn celt_states<L: FloorLaw<f32>>(
+    celt: &Rattleback<f32, L>,
+) -> [(&Rattleback<f32, L>, rattleback::State<f32>); 16] {
+    let y0 = celt.initial_state(0.5 * core::f32::consts::PI / 180.0, -2.0);
+    let mut along = [(celt, y0); 16];
+    let mut k = 1;
+    rk4(celt, 0.0, y0, H_CELT, 1_600, |i, _, y| {
+        if i % 100 == 0 && k < 16 {
+            along[k] = (celt, *y);
+            k += 1;
+        }
+    });
+    along
 }
 
 pub fn run(r: &Runner) {
@@ -88,14 +117,20 @@ pub fn run(r: &Runner) {
         Friction::new(0.3, 1e-3).expect("valid f and δ"),
     )
     .expect("Kane–Levinson's parameters are valid");
-    let y0 = celt.initial_state(0.5 * core::f32::consts::PI / 180.0, -2.0);
-    let mut along = [(&celt, y0); 16];
-    let mut k = 1;
-    rk4(&celt, 0.0, y0, H_CELT, 1_600, |i, _, y| {
-        if i % 100 == 0 && k < 16 {
-            along[k] = (&celt, *y);
-            k += 1;
-        }
-    });
-    r.bench("scene", "rattleback_step", "f32", &along, rattleback_step);
+    r.bench("scene", "rattleback_step", "f32", &celt_states(&celt), rattleback_step);
+
+    let p = rattleback::Params::kane_levinson();
+    let rolling = CeltRolling::rolling(
+        &p,
+        Friction::new(0.3, 1e-3).expect("valid f and δ"),
+        p.elasticity().expect("valid E*"),
+    )
+    .expect("Kane–Levinson's parameters are valid");
+    r.bench(
+        "scene",
+        "rattleback_rolling_step",
+        "f32",
+        &celt_states(&rolling),
+        rattleback_rolling_step,
+    );
 }

@@ -39,6 +39,11 @@
 //!   [`crate::shape::Table`], Hunt–Crossley N = k h^{3/2}(1 + (3/2)c_d ḣ) clamped ≥ 0, friction
 //!   by the law `L` (Best, Simplified, Ellipsoid, Coulomb). Slip, ḣ and the world force and
 //!   torque about G through [`crate::frame`] (normal ẑ, reference tangent world x).
+//! - **Rolling** ([`Creeping`], [`Rattleback::rolling`]): a rolling law (Kalker's creep,
+//!   `Table`, `Blend`) through [`Rolling`] on the same contact with `Best`, fed the contact's
+//!   rolling velocity V = v_P − ½u_B in closed form ([`Kinematics`]) and the pair's elasticity
+//!   ([`Params::elasticity`]); the contact's δ is not used. Near V = 0 the creep rate grows
+//!   as 1/|V| and an explicit step chatters there (README, "The rattleback rolling").
 //!
 //! # Diagnostics ([`Probe`])
 //!
@@ -51,13 +56,17 @@
 use super::event::{Crossing, Direction};
 use super::integrate::Ode;
 use super::rigid::{Quat, Vec3, euler_rate};
+use crate::contact::Rolling;
 use crate::contact::VaryingContact;
+use crate::contact::Wrench;
 use crate::frame::{ContactFrame, Frame, Load, MajorAxis, point_velocity};
-use crate::friction::{Friction, FrictionLaw};
+use crate::friction::rolling::{Elasticity, RollingLaw, RollingVelocity};
+use crate::friction::{Best, Friction, FrictionLaw, Slip};
 use crate::geometry::Curvatures;
 use crate::normal::{Hertz, HuntCrossley, Modulus, NormalLaw};
 use crate::shape::Newton;
 use crate::{Error, Real};
+use core::marker::PhantomData;
 
 /// Number of scalars in the state.
 pub const N: usize = 13;
@@ -114,6 +123,23 @@ impl<T: Real> Params<T> {
             damping: t(5.0),
             gravity: t(9.81),
         }
+    }
+
+    /// The pair's tangential elastic constants for the rolling laws, consistent with `estar`:
+    /// a hard polymer (E₁ = 2.744 GPa, ν₁ = 0.35: PMMA-like) on soda-lime glass (E₂ = 70 GPa,
+    /// ν₂ = 0.22), whose E* = 1/((1−ν₁²)/E₁ + (1−ν₂²)/E₂) is the default 3.00 GPa, combined by
+    /// Kalker's rule for dissimilar bodies ([`Elasticity::dissimilar`]; Gᵢ = Eᵢ/(2(1+νᵢ))):
+    /// G = 1.963 GPa, ν = 0.346. For another `estar` (the stiffness study) G is scaled by
+    /// estar/E*_pair (the same G/E* = 0.654 and ν).
+    ///
+    /// Errors: those of [`Elasticity::dissimilar`] (a non-positive or non-finite E*).
+    pub fn elasticity(&self) -> Result<Elasticity<T>, Error> {
+        let (e1, nu1, e2, nu2) = (2.744e9f64, 0.35f64, 70e9f64, 0.22f64);
+        let pair_estar = 1.0 / ((1.0 - nu1 * nu1) / e1 + (1.0 - nu2 * nu2) / e2);
+        let g = |e: f64, nu: f64| e / (2.0 * (1.0 + nu));
+        let scale = self.estar / T::from_f64(pair_estar);
+        let t = T::from_f64;
+        Elasticity::dissimilar(t(g(e1, nu1)) * scale, t(nu1), t(g(e2, nu2)) * scale, t(nu2))
     }
 
     /// The same body with equal bottom curvatures (a₂ = a₁ = 0.2 m: a sphere-like bottom of
@@ -173,9 +199,117 @@ pub struct Probe<T> {
     pub h: T,
 }
 
-/// The rattleback with friction law `L` (see the [module docs](self)).
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Rattleback<T: Real, L: FrictionLaw> {
+/// The contact's kinematics at a state (world frame; horizontal vectors, z = 0).
+///
+/// - `contact_point` v_P: the velocity of the geometric contact point P, the floor point below
+///   the support point x* — which moves over the body as it turns. With u the world's "down"
+///   in curvature coordinates (world-fixed, so u̇ = −ω × u, ω in curvature coordinates) and
+///   x*ᵢ = aᵢ²uᵢ/s, s² = Σaᵢ²uᵢ², in closed form:
+///
+///   ```text
+///   ẋ* = (A u̇ − x* (x*·u̇)) / s,   A = diag(aᵢ²)     (ṡ = x*·u̇)
+///   v_P = horizontal part of  Ġ + ω × (x* − G) + R ẋ*
+///   ```
+///
+/// - `material` u_B: the rattleback's material velocity at P, Ġ + ω × (P − G), horizontal
+///   (the slip the friction laws take; the floor, body A, is at rest: u_A = 0).
+/// - `rolling` V = v_P − ½(u_A + u_B): the velocity at which the contact point moves over the
+///   two surfaces relative to their material, averaged (Kalker's rolling velocity; issue 20).
+///
+/// Rolling without slip about a principal axis of curvature: u_B = 0 and |V| = ρω, ρ the
+/// radius of curvature in the rolling plane; a pure spin about the vertical through x*: V = 0
+/// (`host-tests/rattleback.rs`). Cost: one quaternion rotation, three cross/dot products, ≈ 40
+/// multiply-adds; no division beyond the geometry's 1/s, no root.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Kinematics<T> {
+    /// v_P (m/s).
+    pub contact_point: Vec3<T>,
+    /// u_B (m/s).
+    pub material: Vec3<T>,
+    /// V = v_P − ½u_B (m/s).
+    pub rolling: Vec3<T>,
+}
+
+/// The support point in the curvature frame: the direction u, x* and 1/s.
+#[derive(Clone, Copy, Debug)]
+struct Support<T> {
+    u: Vec3<T>,
+    x: Vec3<T>,
+    inv_len: T,
+}
+
+impl<T: Real> Support<T> {
+    /// ẋ* (curvature frame) for the angular velocity `omega_c` (curvature frame) and the
+    /// squared semi-axes `axes2`: (A u̇ − x*(x*·u̇))/s with u̇ = −ω × u ([`Kinematics`]).
+    #[inline(always)]
+    fn rate(&self, axes2: &[T; 3], omega_c: Vec3<T>) -> Vec3<T> {
+        let du = self.u.cross(omega_c);
+        let a_du = Vec3::new(axes2[0] * du.x, axes2[1] * du.y, axes2[2] * du.z);
+        (a_du - self.x * self.x.dot(du)) * self.inv_len
+    }
+}
+
+/// What a step hands the floor contact's law, in the contact frame (x along the major axis).
+#[derive(Clone, Copy, Debug)]
+pub struct Step<'a, T> {
+    /// This step's curvatures.
+    pub curvatures: &'a Curvatures<T>,
+    /// Approach h (m).
+    pub h: T,
+    /// ḣ (m/s).
+    pub hdot: T,
+    /// The slip of the rattleback's material at P over the floor, and its spin.
+    pub slip: Slip<T>,
+    /// The rolling velocity V (m/s, [`Kinematics::rolling`]) along x, y.
+    pub rolling: [T; 2],
+}
+
+/// The floor contact's law: how the scene turns a step's geometry and kinematics into the
+/// contact's wrench. Every [`FrictionLaw`] is one (full
+/// slip through [`VaryingContact`]: the rolling velocity is ignored, bit for bit the scene
+/// before it existed).
+pub trait FloorLaw<T: Real> {
+    /// The contact built once per scene.
+    type Contact: Clone + core::fmt::Debug;
+    /// The wrench's branch tag ([`FrictionLaw::Branch`]; `()` for the rolling laws).
+    type Branch;
+    /// The wrench on the rattleback (contact frame) for `step`.
+    fn wrench(contact: &Self::Contact, step: &Step<'_, T>) -> Wrench<T, Self::Branch>;
+}
+
+impl<T: Real, L: FrictionLaw> FloorLaw<T> for L {
+    type Contact = VaryingContact<T, HuntCrossley<T>, L>;
+    type Branch = L::Branch;
+
+    #[inline(always)]
+    fn wrench(contact: &Self::Contact, step: &Step<'_, T>) -> Wrench<T, L::Branch> {
+        contact.wrench(step.curvatures, step.h, step.hdot, step.slip)
+    }
+}
+
+/// A rolling law `L` ([`RollingLaw`]: `Table`, `Blend`, …) on the floor contact, as a
+/// [`FloorLaw`]: [`Rolling`] over the scene's [`VaryingContact`] with `Best` (its δ is not
+/// used), fed the step's rolling velocity ([`Kinematics::rolling`], contact frame). Build it
+/// with [`Rattleback::rolling`].
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Creeping<L>(PhantomData<L>);
+
+impl<T: Real, L: RollingLaw> FloorLaw<T> for Creeping<L> {
+    type Contact = Rolling<T, VaryingContact<T, HuntCrossley<T>, Best>, L>;
+    type Branch = ();
+
+    #[inline(always)]
+    fn wrench(contact: &Self::Contact, step: &Step<'_, T>) -> Wrench<T, ()> {
+        // Non-finite only if the state is (then the step is rejected anyway): V = 0, full slip.
+        let v = RollingVelocity::new(step.rolling[0], step.rolling[1]).unwrap_or_default();
+        contact.wrench(step.curvatures, step.h, step.hdot, step.slip, v)
+    }
+}
+
+/// The rattleback with the floor contact's law `L`: a friction law (full slip) or a rolling
+/// law ([`FloorLaw`]; see the [module docs](self)).
+#[derive(Clone, Debug)]
+pub struct Rattleback<T: Real, L: FloorLaw<T>> {
     mass: T,
     gravity: T,
     inertia: Vec3<T>,
@@ -189,15 +323,47 @@ pub struct Rattleback<T: Real, L: FrictionLaw> {
     /// The curvatures at rest (fallback for a degenerate state).
     rest: Curvatures<T>,
     estar: Modulus<T>,
-    contact: VaryingContact<T, HuntCrossley<T>, L>,
+    contact: L::Contact,
 }
 
 impl<T: Real, L: FrictionLaw> Rattleback<T, L> {
-    /// The rattleback `p` with the friction law `friction`.
+    /// The rattleback `p` with the friction law `friction` (full slip: the rolling velocity is
+    /// not used).
     ///
     /// Errors: [`Error::LengthNotPositive`] for a semi-axis ≤ 0, [`Error::NonFinite`], and
     /// those of [`Modulus::new`] and [`HuntCrossley::new`].
     pub fn new(p: &Params<T>, friction: Friction<T, L>) -> Result<Self, Error> {
+        Self::build(p, |estar, damping| {
+            Ok(VaryingContact::new(estar, damping, friction))
+        })
+    }
+}
+
+impl<T: Real, L: RollingLaw> Rattleback<T, Creeping<L>> {
+    /// The rattleback `p` with the rolling law `L` (Kalker's creep, saturating to `Best`'s
+    /// full slip on the real patch): coefficient of friction from `friction` (its δ is not
+    /// used), the pair's tangential elastic constants `elasticity` ([`Params::elasticity`] for
+    /// the default polymer on glass).
+    ///
+    /// Errors: those of [`Rattleback::new`].
+    pub fn rolling(
+        p: &Params<T>,
+        friction: Friction<T, Best>,
+        elasticity: Elasticity<T>,
+    ) -> Result<Self, Error> {
+        Self::build(p, |estar, damping| {
+            Rolling::new(VaryingContact::new(estar, damping, friction), elasticity)
+        })
+    }
+}
+
+impl<T: Real, L: FloorLaw<T>> Rattleback<T, L> {
+    /// The parameters' common part, validated, with the contact `contact` makes from E* and
+    /// the damping.
+    fn build(
+        p: &Params<T>,
+        contact: impl FnOnce(Modulus<T>, HuntCrossley<T>) -> Result<L::Contact, Error>,
+    ) -> Result<Self, Error> {
         let mut axes2 = [T::ZERO; 3];
         let mut inv_axes2 = [T::ZERO; 3];
         for ((a2, inv), a) in axes2.iter_mut().zip(inv_axes2.iter_mut()).zip(p.semi_axes) {
@@ -222,7 +388,7 @@ impl<T: Real, L: FrictionLaw> Rattleback<T, L> {
             skew: (cos, sin),
             rest,
             estar,
-            contact: VaryingContact::new(estar, HuntCrossley::new(p.damping)?, friction),
+            contact: contact(estar, HuntCrossley::new(p.damping)?)?,
         })
     }
 
@@ -262,15 +428,16 @@ impl<T: Real, L: FrictionLaw> Rattleback<T, L> {
     /// (non-finite) state gives the curvatures of the body at rest.
     pub fn geometry(&self, y: &State<T>) -> Geometry<T> {
         let (r, _, q, _) = split(y);
-        self.geometry_at(r, q.normalized())
+        self.geometry_at(r, q.normalized()).0
     }
 
+    /// The geometry, and the support point's data in the curvature frame that its rate
+    /// ([`Support::rate`]) needs.
     #[inline(always)]
-    fn geometry_at(&self, r: Vec3<T>, q: Quat<T>) -> Geometry<T> {
+    fn geometry_at(&self, r: Vec3<T>, q: Quat<T>) -> (Geometry<T>, Support<T>) {
         let [wx, wy, wz] = q.world_axes_in_body();
         let (c, s) = self.skew;
-        // Body (principal) → curvature coordinates: R_z(δ).
-        let to_c = |v: Vec3<T>| Vec3::new(c * v.x - s * v.y, s * v.x + c * v.y, v.z);
+        let to_c = |v: Vec3<T>| self.to_curvature(v);
         let [a1, a2, a3] = self.axes2;
         let [i1, i2, i3] = self.inv_axes2;
         let u = -to_c(wz);
@@ -297,32 +464,85 @@ impl<T: Real, L: FrictionLaw> Rattleback<T, L> {
             half_len * form(tx, ty),
         )
         .unwrap_or(self.rest);
-        Geometry {
-            h,
-            arm: Vec3::new(lowest.x, lowest.y, -r.z),
-            lowest,
-            curvatures,
+        (
+            Geometry {
+                h,
+                arm: Vec3::new(lowest.x, lowest.y, -r.z),
+                lowest,
+                curvatures,
+            },
+            Support {
+                u,
+                x: xc,
+                inv_len: inv,
+            },
+        )
+    }
+
+    /// Body (principal) → curvature coordinates: R_z(δ)·v.
+    #[inline(always)]
+    fn to_curvature(&self, v: Vec3<T>) -> Vec3<T> {
+        let (c, s) = self.skew;
+        Vec3::new(c * v.x - s * v.y, s * v.x + c * v.y, v.z)
+    }
+
+    /// Curvature → body (principal) coordinates: R_z(−δ)·v.
+    #[inline(always)]
+    fn to_body(&self, v: Vec3<T>) -> Vec3<T> {
+        let (c, s) = self.skew;
+        Vec3::new(c * v.x + s * v.y, -s * v.x + c * v.y, v.z)
+    }
+
+    /// The contact's kinematics at state `y` (see [`Kinematics`]): the velocity of the
+    /// geometric contact point, the rattleback's material velocity there and the rolling
+    /// velocity, in closed form.
+    pub fn kinematics(&self, y: &State<T>) -> Kinematics<T> {
+        let (r, v, q, omega) = split(y);
+        let q = q.normalized();
+        let (g, support) = self.geometry_at(r, q);
+        self.kinematics_at(v, q, omega, &g, &support)
+    }
+
+    #[inline(always)]
+    fn kinematics_at(
+        &self,
+        v: Vec3<T>,
+        q: Quat<T>,
+        omega: Vec3<T>,
+        g: &Geometry<T>,
+        support: &Support<T>,
+    ) -> Kinematics<T> {
+        let w = q.rotate(omega);
+        let flat = |p: Vec3<T>| Vec3::new(p.x, p.y, T::ZERO);
+        // The floor point below x* moves with x*'s horizontal velocity: the material velocity
+        // of x* plus the support point's own travel over the body.
+        let travel = q.rotate(self.to_body(support.rate(&self.axes2, self.to_curvature(omega))));
+        let contact_point = flat(v + w.cross(g.lowest) + travel);
+        let material = flat(v + w.cross(g.arm));
+        Kinematics {
+            contact_point,
+            material,
+            rolling: contact_point - material * T::HALF,
         }
     }
 
     /// The contact at state `y`.
     pub fn contact(&self, y: &State<T>) -> ContactState<T> {
         let (r, v, q, omega) = split(y);
-        let q = q.normalized();
-        self.contact_at(r, v, q, q.rotate(omega)).0
+        self.contact_at(r, v, q.normalized(), omega).0
     }
 
-    /// The contact at G = `r`, Ġ = `v`, unit attitude `q`, world angular velocity `w`; also
-    /// the geometry it used.
+    /// The contact at G = `r`, Ġ = `v`, unit attitude `q`, body angular velocity `omega`;
+    /// also the geometry it used.
     #[inline(always)]
     fn contact_at(
         &self,
         r: Vec3<T>,
         v: Vec3<T>,
         q: Quat<T>,
-        w: Vec3<T>,
+        omega: Vec3<T>,
     ) -> (ContactState<T>, Geometry<T>) {
-        let g = self.geometry_at(r, q);
+        let (g, support) = self.geometry_at(r, q);
         if g.h <= T::ZERO {
             return (
                 ContactState {
@@ -336,14 +556,23 @@ impl<T: Real, L: FrictionLaw> Rattleback<T, L> {
         // frame `Curvatures::from_quadratic` measured the major angle in).
         let z = [T::ZERO, T::ZERO, T::ONE];
         let frame = Frame::new(z, [T::ONE, T::ZERO, T::ZERO], MajorAxis::of(&g.curvatures));
+        let w = q.rotate(omega);
         let (arm, w) = (g.arm.into(), w.into());
         // The floor is at rest: v_rel is the rattleback's material point at P.
         let v_rel = point_velocity(v.into(), w, arm);
         // Non-finite only if the state is: then no friction (the step is rejected anyway).
         let slip = frame.slip(v_rel, w).unwrap_or_default();
-        let wr = self
-            .contact
-            .wrench(&g.curvatures, g.h, frame.approach_rate(v_rel), slip);
+        // The rolling velocity in the contact frame (dead code for the full-slip laws).
+        let [vx, vy, _] =
+            frame.to_contact(self.kinematics_at(v, q, omega, &g, &support).rolling.into());
+        let step = Step {
+            curvatures: &g.curvatures,
+            h: g.h,
+            hdot: frame.approach_rate(v_rel),
+            slip,
+            rolling: [vx, vy],
+        };
+        let wr = L::wrench(&self.contact, &step);
         let Load { force, torque } = frame.on_b(&wr, arm);
         (
             ContactState {
@@ -368,7 +597,7 @@ impl<T: Real, L: FrictionLaw> Rattleback<T, L> {
     pub fn probe(&self, y: &State<T>) -> Probe<T> {
         let (r, v, q, omega) = split(y);
         let q = q.normalized();
-        let (contact, g) = self.contact_at(r, v, q, q.rotate(omega));
+        let (contact, g) = self.contact_at(r, v, q, omega);
         let elastic = if g.h > T::ZERO {
             Hertz::new::<Newton>(&g.curvatures, self.estar)
                 .map(|k| k.energy(g.h))
@@ -419,7 +648,7 @@ pub struct SpinEvents<T: Real> {
 
 impl<T: Real> SpinEvents<T> {
     /// Tracking from the start (t₀, y₀) with initial spin `spin0` and fraction `fraction`.
-    pub fn new<L: FrictionLaw>(
+    pub fn new<L: FloorLaw<T>>(
         rb: &Rattleback<T, L>,
         t0: T,
         y0: &State<T>,
@@ -441,7 +670,7 @@ impl<T: Real> SpinEvents<T> {
     /// After an accepted step ending at (t, y). Cost: one spin evaluation (a quaternion
     /// normalisation and rotation), plus two right-hand sides and the bisections on a step that
     /// crosses.
-    pub fn update<L: FrictionLaw>(&mut self, rb: &Rattleback<T, L>, t: T, y: &State<T>) {
+    pub fn update<L: FloorLaw<T>>(&mut self, rb: &Rattleback<T, L>, t: T, y: &State<T>) {
         let (sign, level) = (self.sign, self.level);
         let s = rb.spin(y) * sign;
         self.reversal
@@ -469,12 +698,12 @@ fn elevation<T: Real>(e: Vec3<T>) -> T {
     e.z.atan2(e.x.hypot(e.y))
 }
 
-impl<T: Real, L: FrictionLaw> Ode<T, N> for Rattleback<T, L> {
+impl<T: Real, L: FloorLaw<T>> Ode<T, N> for Rattleback<T, L> {
     #[inline]
     fn rhs(&self, _t: T, y: &State<T>) -> State<T> {
         let (r, v, q, omega) = split(y);
         let qn = q.normalized();
-        let (c, _) = self.contact_at(r, v, qn, qn.rotate(omega));
+        let (c, _) = self.contact_at(r, v, qn, omega);
         let force = c.force - Vec3::new(T::ZERO, T::ZERO, self.mass * self.gravity);
         let a = force * (T::ONE / self.mass);
         let dq = q.derivative(omega);
