@@ -16,6 +16,7 @@
 
 use contensou::contact::{Contact, VaryingContact, Wrench};
 use contensou::elliptic::{self, Agm, Integrals, Method, Parameter, Theta};
+use contensou::friction::rolling;
 use contensou::friction::{
     self, Best, Constants, Coulomb, Ellipsoid, Exact, Friction, FrictionLaw, Pade, Simplified,
     Slip, SlipState,
@@ -687,5 +688,172 @@ pub fn all(data: &[u8]) {
         2 => normal::<f64>(&mut inp),
         3 => friction::<f64>(&mut inp),
         _ => wrench::<f64>(&mut inp),
+    }
+}
+
+/// The outputs of one rolling law on one patch and slip (issue 20 item 7): never NaN unless
+/// fN·c overflowed; inside the physical box finite, |F| ≤ fN (1 + 1e-5) (`bounded`: not for
+/// the unsaturated `linear`), and passive: F·v + M_z·ω ≤ 1e-5·fN·S with
+/// S = max(|V|, |v_x| + |v_y| + c|ω|).
+fn rolling_law<L: rolling::RollingLaw, T: Fz>(
+    contact: &rolling::RollingContact<T>,
+    patch: &rolling::Patch<T>,
+    slip: &rolling::RollingSlip<T>,
+    scale: (T, T, T),
+    boxed: bool,
+    bounded: bool,
+) {
+    let (fn_, c, s) = (scale.0.to_f64(), scale.1.to_f64(), scale.2.to_f64());
+    let (r, g) = (contact.kalker(), ());
+    let w = contact.wrench::<L>(patch, slip);
+    let overflow = !(fn_ * c).is_finite() || !c.is_finite() || c == 0.0;
+    for v in [w.fx, w.fy, w.mz] {
+        assert!(
+            !nan(v) || overflow,
+            "{}: NaN in {w:?} at {slip:?}, {patch:?}, a/b = {r:?}, G = {g:?}",
+            L::NAME
+        );
+        if boxed && bounded {
+            fin(v, L::NAME);
+        }
+    }
+    if !(boxed && bounded) {
+        return;
+    }
+    let (fx, fy, mz) = (w.fx.to_f64(), w.fy.to_f64(), w.mz.to_f64());
+    assert!(
+        fx.hypot(fy) <= fn_ * (1.0 + 1e-5),
+        "{}: |F| = {} > fN = {fn_} at {slip:?}, {patch:?}, a/b = {r:?}, G = {g:?}",
+        L::NAME,
+        fx.hypot(fy)
+    );
+    let p = fx * slip.vx().to_f64() + fy * slip.vy().to_f64() + mz * slip.omega().to_f64();
+    assert!(
+        p <= 1e-5 * fn_ * s,
+        "{}: power {p} > 0 (fN·S = {}) at {slip:?}, {patch:?}, a/b = {r:?}, G = {g:?}: {w:?}",
+        L::NAME,
+        fn_ * s
+    );
+}
+
+/// Every rolling law (issue 20): `Elasticity::new`/`dissimilar`, `RollingContact::new`,
+/// `Patch::new`, `RollingSlip::new`/`from_creepages` return the documented result; then every
+/// law's `wrench` on the accepted inputs ([`rolling_law`]). Physical box: G ∈ [1e3, 1e13] Pa,
+/// a, b ∈ [1e-9, 1e3] m, N ≤ 1e20 N, f ≤ 10, |v_x|, |v_y|, |V| ≤ 1e12 m/s, |ω| ≤ 1e12 rad/s.
+pub fn rolling<T: Fz>(inp: &mut Input<'_>) {
+    let (g, nu, g2, nu2): (T, T, T, T) = (inp.val(), inp.val(), inp.val(), inp.val());
+    let valid = |g: T, nu: T| g > T::ZERO && nu >= T::ZERO && nu <= T::HALF;
+    let first = |g: T| {
+        if !(g > T::ZERO) {
+            Error::ShearModulusNotPositive
+        } else {
+            Error::RollingPoissonRatioOutOfRange
+        }
+    };
+    let el = rolling::Elasticity::new(g, nu);
+    expect(
+        &el,
+        g.is_finite() && nu.is_finite(),
+        valid(g, nu),
+        first(g),
+        "Elasticity::new",
+    );
+    let dis = rolling::Elasticity::dissimilar(g, nu, g2, nu2);
+    match (&el, rolling::Elasticity::new(g2, nu2), &dis) {
+        // Two valid bodies always combine: G between G₁ and G₂, ν ∈ [0, 0.5].
+        (Ok(_), Ok(_), Ok(e)) => {
+            let (lo, hi) = (g.min(g2).to_f64(), g.max(g2).to_f64());
+            let gd = e.g().to_f64();
+            assert!(
+                gd >= lo * (1.0 - 1e-6) && gd <= hi && e.g().is_finite(),
+                "dissimilar({g:?}, {g2:?}): G = {gd}"
+            );
+            assert!(e.nu() >= T::ZERO && e.nu() <= T::HALF, "dissimilar ν {e:?}");
+        }
+        (Ok(_), b2, d) => assert_eq!(b2.map(|_| ()), d.map(|_| ()), "dissimilar"),
+        (Err(e1), _, d) => assert_eq!(Err(*e1), d.map(|_| ()), "dissimilar"),
+    }
+
+    let (r, a, b, n, f): (T, T, T, T, T) = (inp.val(), inp.val(), inp.val(), inp.val(), inp.val());
+    let patch = rolling::Patch::new(a, b, n, f);
+    let fine = [a, b, n, f].iter().all(|x| x.is_finite());
+    let (ok, err) = if !(a > T::ZERO && b > T::ZERO) {
+        (false, Error::LengthNotPositive)
+    } else if f < T::ZERO {
+        (false, Error::FrictionCoefficientNegative)
+    } else {
+        (true, Error::LengthNotPositive)
+    };
+    expect(&patch, fine, ok, err, "Patch::new");
+    // The contact's a/b: the patch's own (byte odd) or independent.
+    let r = if inp.byte() & 1 == 1 && fine {
+        a / b
+    } else {
+        r
+    };
+    let Ok(el) = el else { return };
+    let contact = rolling::RollingContact::new(r, el);
+    let in_range = r >= T::from_f64(0.01) && r <= T::from_f64(100.0);
+    expect(
+        &contact,
+        r.is_finite(),
+        in_range,
+        Error::RollingAspectOutOfRange,
+        "RollingContact::new",
+    );
+    let (vx, vy, om, v): (T, T, T, T) = (inp.val(), inp.val(), inp.val(), inp.val());
+    let slip = rolling::RollingSlip::new(vx, vy, om, v);
+    let all_fine = [vx, vy, om, v].iter().all(|x| x.is_finite());
+    expect(
+        &slip,
+        all_fine,
+        true,
+        Error::NonFinite(""),
+        "RollingSlip::new",
+    );
+    if let Ok(s) = slip {
+        match s.creepages() {
+            None => assert!(v == T::ZERO),
+            Some((x, y, p)) => {
+                for c in [x, y, p] {
+                    not_nan(c, "creepages");
+                }
+            }
+        }
+    }
+    let crp = rolling::RollingSlip::from_creepages(vx, vy, om, v);
+    let prod_fine = [vx * v, vy * v, om * v, v].iter().all(|x| x.is_finite());
+    expect(
+        &crp,
+        prod_fine,
+        true,
+        Error::NonFinite(""),
+        "RollingSlip::from_creepages",
+    );
+    let (Ok(contact), Ok(patch)) = (contact, patch) else {
+        return;
+    };
+    let fn_ = f * n.max(T::ZERO);
+    let c = patch.c();
+    let boxed = Box::within(el.g(), 1e3, 1e13)
+        && Box::within(a, 1e-9, 1e3)
+        && Box::within(b, 1e-9, 1e3)
+        && n.to_f64() <= 1e20
+        && f.to_f64() <= 10.0;
+    for s in [slip.ok(), crp.ok()].into_iter().flatten() {
+        let boxed = boxed
+            && Box::small(s.vx(), 1e12)
+            && Box::small(s.vy(), 1e12)
+            && Box::small(s.omega(), 1e12)
+            && Box::small(s.v(), 1e12);
+        let sum = s.vx().abs().to_f64() + s.vy().abs().to_f64() + (c * s.omega()).abs().to_f64();
+        let scale = (fn_, c, T::from_f64(sum.max(s.v().abs().to_f64())));
+        let (ct, p) = (&contact, &patch);
+        rolling_law::<rolling::Table, T>(ct, p, &s, scale, boxed, true);
+        rolling_law::<rolling::Blend, T>(ct, p, &s, scale, boxed, true);
+        rolling_law::<rolling::Fastsim, T>(ct, p, &s, scale, boxed, true);
+        rolling_law::<rolling::FastsimGrid<16, 16>, T>(ct, p, &s, scale, boxed, true);
+        rolling_law::<rolling::FullSlip, T>(ct, p, &s, scale, boxed, true);
+        rolling_law::<rolling::Linear, T>(ct, p, &s, scale, boxed, false);
     }
 }

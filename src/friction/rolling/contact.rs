@@ -160,13 +160,21 @@ impl<T: Real> RollingContact<T> {
             return Creep::default();
         }
         let kappa = self.g * patch.c * patch.c / patch.fn_;
+        // κ is clamped to 1/ε² (f32: 7e13, f64: 2e31): a larger κ only moves the end of the
+        // linear range to creepages below ε²/C, under the rounding of the velocities they come
+        // from (and needs a patch 1/ε² times smaller than the bodies' radii: nothing Hertzian);
+        // the clamp keeps κ·C and its square finite in every law. A subnormal v = |V|/S (a
+        // creepage beyond 1/MIN_POSITIVE) is full slip: v = 0, so 1/v stays finite.
+        // (Both: fuzz findings, issue 20 — NaN at G near the float's maximum, N tiny, or
+        // V subnormal.)
+        let kappa_max = T::ONE / (T::EPSILON * T::EPSILON);
         let input = Input {
             contact: self,
-            kappa: if kappa.is_finite() { kappa } else { T::MAX },
+            kappa: if kappa < kappa_max { kappa } else { kappa_max },
             vx: s.vx,
             vy: s.vy,
             w: patch.c * s.omega,
-            v: s.v,
+            v: if s.v >= T::MIN_POSITIVE { s.v } else { T::ZERO },
         };
         let mut cr = L::creep(&input);
         if s.mirrored {

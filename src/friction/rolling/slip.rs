@@ -80,13 +80,15 @@ impl<T: Real> RollingSlip<T> {
         self.v
     }
 
-    /// Kalker's creepages (ξ, η, φ) = (v_x, v_y, ω)/V; `None` for V = 0 (full slip).
+    /// Kalker's creepages (ξ, η, φ) = (v_x, v_y, ω)/V; `None` for V = 0 (full slip). Never
+    /// NaN: a component is ±∞ only if the quotient overflows (|V| tiny), 0 if its numerator is.
     pub fn creepages(&self) -> Option<(T, T, T)> {
         if self.v == T::ZERO {
             None
         } else {
-            let r = T::ONE / self.v;
-            Some((self.vx * r, self.vy * r, self.omega * r))
+            // three divisions, not 1/V times each: 1/V overflows for subnormal V and
+            // 0 · ∞ would be NaN (fuzz finding, issue 20)
+            Some((self.vx / self.v, self.vy / self.v, self.omega / self.v))
         }
     }
 
@@ -102,10 +104,12 @@ impl<T: Real> RollingSlip<T> {
         let v = self.v.abs();
         let l1 = vx.abs() + self.vy.abs() + (c * om).abs();
         let s = if l1 > v { l1 } else { v };
-        if !(s.is_finite() && s > T::ZERO) {
+        let r = T::ONE / s;
+        // rest (1/0), an overflowing sum, or a subnormal S whose reciprocal overflows
+        if !(s.is_finite() && r.is_finite()) {
             return self.unusual(c, mirrored, vx, om, v);
         }
-        Self::times(vx, self.vy, om, v, T::ONE / s, mirrored)
+        Self::times(vx, self.vy, om, v, r, mirrored)
     }
 
     #[inline(always)]
@@ -119,7 +123,9 @@ impl<T: Real> RollingSlip<T> {
         }
     }
 
-    /// Rest, or an overflowing sum: divide by the largest magnitude (c|ω| overflowing: pure spin).
+    /// Rest, an overflowing sum, or a subnormal one: divide by the largest magnitude (c|ω|
+    /// overflowing: pure spin), by four divisions (1/m may overflow for a subnormal m: ∞·0 =
+    /// NaN, a fuzz finding of issue 20).
     #[cold]
     fn unusual(&self, c: T, mirrored: bool, vx: T, om: T, v: T) -> Scaled<T> {
         let cw = c * om;
@@ -134,7 +140,13 @@ impl<T: Real> RollingSlip<T> {
         }
         let m = vx.abs().max(self.vy.abs()).max(cw.abs()).max(v);
         if m > T::ZERO {
-            Self::times(vx, self.vy, om, v, T::ONE / m, mirrored)
+            Scaled {
+                vx: vx / m,
+                vy: self.vy / m,
+                omega: om / m,
+                v: v / m,
+                mirrored,
+            }
         } else {
             Scaled {
                 mirrored,
