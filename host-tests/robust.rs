@@ -161,6 +161,26 @@ mod rolling_findings {
         assert!((e.g() / (2.0 / (1.0 / 80e9 + 1.0 / 1e6)) - 1.0).abs() < 1e-15);
     }
 
+    /// The passivity projection W − P·u/|u|² with |u|² underflowing (f64: v_y/V = 5e-169,
+    /// cω/V = 1e-167, κ = 2e24): P/0 = ∞ and NaN in FASTSIM. u is now scaled first.
+    #[test]
+    fn passivity_projection_of_a_tiny_slip() {
+        let c = RollingContact::new(40.0f64, Elasticity::new(1.00390625e23, 0.0).unwrap()).unwrap();
+        let p = Patch::new(2.4 * 40f64.sqrt(), 2.4 / 40f64.sqrt(), 0.25, 1.0).unwrap();
+        let s = RollingSlip::new(
+            0.0,
+            -1.6835937500000002e-28,
+            -1.68359375e-27,
+            -3.4534724410691748e140,
+        )
+        .unwrap();
+        let ws = all(&c, &p, &s);
+        finite(&ws);
+        for w in &ws {
+            assert!(w.fx.hypot(w.fy) <= 0.25, "{w:?}");
+        }
+    }
+
     /// `RollingSlip::creepages` at a subnormal V: 1/V overflowed and 0·∞ gave NaN.
     #[test]
     fn creepages_at_subnormal_speed() {

@@ -267,7 +267,11 @@ impl RollingLaw for Linear {
 pub(crate) fn passive<T: Real>(c: Creep<T>, vx: T, vy: T, w: T) -> Creep<T> {
     let p = c.fx * vx + c.fy * vy + c.mz * w;
     if p > T::ZERO {
-        let k = p / (vx * vx + vy * vy + w * w);
+        let n2 = vx * vx + vy * vy + w * w;
+        if !(n2 >= T::MIN_POSITIVE) {
+            return passive_tiny(c, vx, vy, w);
+        }
+        let k = p / n2;
         Creep {
             fx: c.fx - k * vx,
             fy: c.fy - k * vy,
@@ -275,5 +279,27 @@ pub(crate) fn passive<T: Real>(c: Creep<T>, vx: T, vy: T, w: T) -> Creep<T> {
         }
     } else {
         c
+    }
+}
+
+/// [`passive`] for a slip direction whose |u|² underflows (every component below ≈ 1e-19 in
+/// f32, 1e-154 in f64: p/|u|² was ∞, a fuzz finding of issue 20): u scaled by its largest
+/// component first.
+#[cold]
+fn passive_tiny<T: Real>(c: Creep<T>, vx: T, vy: T, w: T) -> Creep<T> {
+    let m = vx.abs().max(vy.abs()).max(w.abs());
+    if !(m > T::ZERO) {
+        return c;
+    }
+    let (ux, uy, uw) = (vx / m, vy / m, w / m);
+    let p = c.fx * ux + c.fy * uy + c.mz * uw;
+    if !(p > T::ZERO) {
+        return c;
+    }
+    let k = p / (ux * ux + uy * uy + uw * uw);
+    Creep {
+        fx: c.fx - k * ux,
+        fy: c.fy - k * uy,
+        mz: c.mz - k * uw,
     }
 }
