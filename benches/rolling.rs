@@ -66,7 +66,9 @@ fn main() {
     bench::<f64, Blend>(&mut c, "blend");
     bench::<f32, FullSlip>(&mut c, "full-slip");
     bench::<f64, FullSlip>(&mut c, "full-slip");
+    bench::<f32, FastsimGrid<16, 16>>(&mut c, "fastsim-16");
     bench::<f64, FastsimGrid<16, 16>>(&mut c, "fastsim-16");
+    bench::<f32, Fastsim>(&mut c, "fastsim");
     bench::<f64, Fastsim>(&mut c, "fastsim");
     c.final_summary();
 }

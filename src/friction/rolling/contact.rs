@@ -268,7 +268,7 @@ pub(crate) fn passive<T: Real>(c: Creep<T>, vx: T, vy: T, w: T) -> Creep<T> {
     let p = c.fx * vx + c.fy * vy + c.mz * w;
     if p > T::ZERO {
         let n2 = vx * vx + vy * vy + w * w;
-        if !(n2 >= T::MIN_POSITIVE) {
+        if n2 < T::MIN_POSITIVE {
             return passive_tiny(c, vx, vy, w);
         }
         let k = p / n2;
@@ -288,12 +288,12 @@ pub(crate) fn passive<T: Real>(c: Creep<T>, vx: T, vy: T, w: T) -> Creep<T> {
 #[cold]
 fn passive_tiny<T: Real>(c: Creep<T>, vx: T, vy: T, w: T) -> Creep<T> {
     let m = vx.abs().max(vy.abs()).max(w.abs());
-    if !(m > T::ZERO) {
+    if m <= T::ZERO {
         return c;
     }
     let (ux, uy, uw) = (vx / m, vy / m, w / m);
     let p = c.fx * ux + c.fy * uy + c.mz * uw;
-    if !(p > T::ZERO) {
+    if p <= T::ZERO {
         return c;
     }
     let k = p / (ux * ux + uy * uy + uw * uw);
