@@ -170,7 +170,7 @@ fn usage_errors_name_the_value_and_exit_2() {
     for (args, message) in [
         (
             &["wrench", "--law", "exact"][..],
-            "--law = exact: unknown (one of best, simplified, pade, ellipsoid, coulomb)",
+            "--law = exact: unknown (one of best, simplified, pade, ellipsoid, coulomb, table, blend, fastsim, fastsim-16)",
         ),
         (
             &["wrench", "--form", "x"],

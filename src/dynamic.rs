@@ -45,8 +45,11 @@
 
 use core::fmt;
 
-use crate::contact::{Contact, VaryingContact, Wrench};
+use crate::contact::{Contact, Rolling, VaryingContact, Wrench};
 use crate::error::finite;
+use crate::friction::rolling::{
+    Blend, Elasticity, Fastsim, FastsimGrid, RollingLaw, RollingVelocity, Table,
+};
 use crate::friction::{Best, Coulomb, Ellipsoid, Friction, FrictionLaw, Pade, Simplified, Slip};
 use crate::geometry::Curvatures;
 use crate::normal::{Hertz, HuntCrossley, Modulus};
@@ -57,6 +60,10 @@ use crate::{Error, Real};
 pub const INPUTS: [&str; 11] = [
     "P", "Q", "estar", "cd", "f", "delta", "h", "hdot", "vx", "vy", "omega",
 ];
+
+/// The contract's optional rolling columns, in order: contact `G, nu` ([`RollingSpec`]), step
+/// `vrx, vry` ([`RollingStep`]). Absent: the defaults (see the module docs).
+pub const ROLLING_INPUTS: [&str; 4] = ["G", "nu", "vrx", "vry"];
 
 /// The contract's output columns, in order ([`Output::to_array`]).
 pub const OUTPUTS: [&str; 7] = ["N", "Fx", "Fy", "Tz", "a", "b", "e2"];
@@ -75,11 +82,32 @@ pub enum Law {
     Ellipsoid,
     /// [`Coulomb`] (point contact: no drilling torque).
     Coulomb,
+    /// Rolling: [`Table`], the default rolling law.
+    Table,
+    /// Rolling: [`Blend`].
+    Blend,
+    /// Rolling: [`Fastsim`] (FASTSIM, 32 × 32).
+    Fastsim,
+    /// Rolling: [`FastsimGrid`]`<16, 16>`.
+    Fastsim16,
 }
 
 impl Law {
-    /// Every law, the default first.
-    pub const ALL: [Law; 5] = [
+    /// Every law: the sliding laws (the default first), then the rolling laws.
+    pub const ALL: [Law; 9] = [
+        Law::Best,
+        Law::Simplified,
+        Law::Pade,
+        Law::Ellipsoid,
+        Law::Coulomb,
+        Law::Table,
+        Law::Blend,
+        Law::Fastsim,
+        Law::Fastsim16,
+    ];
+
+    /// The sliding laws (full slip everywhere; the rolling columns are ignored).
+    pub const SLIDING: [Law; 5] = [
         Law::Best,
         Law::Simplified,
         Law::Pade,
@@ -87,7 +115,12 @@ impl Law {
         Law::Coulomb,
     ];
 
-    /// The law's name: `"best"`, `"simplified"`, `"pade"`, `"ellipsoid"`, `"coulomb"`.
+    /// The rolling laws ([`crate::contact::Rolling`]: the rolling columns are read).
+    pub const ROLLING: [Law; 4] = [Law::Table, Law::Blend, Law::Fastsim, Law::Fastsim16];
+
+    /// The law's name: `"best"`, `"simplified"`, `"pade"`, `"ellipsoid"`, `"coulomb"`;
+    /// rolling: `"table"`, `"blend"`, `"fastsim"`, `"fastsim-16"` (as `contact_eval rolling
+    /// --law`).
     pub const fn name(self) -> &'static str {
         match self {
             Law::Best => Best::NAME,
@@ -95,7 +128,19 @@ impl Law {
             Law::Pade => Pade::NAME,
             Law::Ellipsoid => Ellipsoid::NAME,
             Law::Coulomb => Coulomb::NAME,
+            Law::Table => Table::NAME,
+            Law::Blend => Blend::NAME,
+            Law::Fastsim => Fastsim::NAME,
+            Law::Fastsim16 => "fastsim-16",
         }
+    }
+
+    /// A rolling law ([`Law::ROLLING`])?
+    pub const fn is_rolling(self) -> bool {
+        matches!(
+            self,
+            Law::Table | Law::Blend | Law::Fastsim | Law::Fastsim16
+        )
     }
 
     /// The law of that name ([`Law::name`]); `None` for any other string.
@@ -162,6 +207,81 @@ pub struct Step<T> {
     pub vy: T,
     /// ω (rad/s) about the normal.
     pub omega: T,
+}
+
+/// The optional contact columns `G, nu` of the rolling laws (`None`: absent, the default).
+///
+/// - `G` (Pa), the pair's combined shear modulus: default E*·(1 − ν) (quasi-identical
+///   bodies of the contact's E*: E* = E/(2(1 − ν²)), G = E/(2(1 + ν))). G ≤ 0:
+///   [`Error::ShearModulusNotPositive`].
+/// - `nu`, the Poisson ratio of the tangential problem: default 0.3; outside [0, 0.5]:
+///   [`Error::RollingPoissonRatioOutOfRange`].
+///
+/// Non-finite: [`Error::NonFinite`]. Read (and validated) by the rolling laws only.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct RollingSpec<T> {
+    /// G (Pa); `None`: E*·(1 − ν).
+    pub g: Option<T>,
+    /// ν; `None`: 0.3.
+    pub nu: Option<T>,
+}
+
+impl<T: Real> RollingSpec<T> {
+    /// The default ν (0.3).
+    pub const NU: f64 = 0.3;
+
+    /// The elastic constants for a contact of effective modulus `estar` (Pa), the defaults
+    /// filled in; errors name the column (`G`, `nu`).
+    pub fn elasticity(&self, estar: T) -> Result<Elasticity<T>, Invalid> {
+        let nu = match self.nu {
+            Some(nu) => at("nu", finite(nu, "nu"))?,
+            None => T::from_f64(Self::NU),
+        };
+        if !(nu >= T::ZERO && nu <= T::HALF) {
+            return Err(Invalid {
+                column: "nu",
+                error: Error::RollingPoissonRatioOutOfRange,
+            });
+        }
+        let g = match self.g {
+            Some(g) => at("G", finite(g, "G"))?,
+            None => estar * (T::ONE - nu),
+        };
+        at(
+            if self.g.is_some() { "G" } else { "estar" },
+            Elasticity::new(g, nu),
+        )
+    }
+}
+
+/// The optional step columns `vrx, vry` of the rolling laws: the contact's rolling velocity in
+/// the contact frame (m/s; [`RollingVelocity`]); default 0 (no rolling: full slip).
+/// Non-finite: [`Error::NonFinite`] naming the column. Read (and validated) by the rolling laws
+/// only.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct RollingStep<T> {
+    /// V_x (m/s), along the major axis.
+    pub vrx: T,
+    /// V_y (m/s).
+    pub vry: T,
+}
+
+impl<T: Real> RollingStep<T> {
+    /// The validated rolling velocity; errors name the column (`vrx`, `vry`).
+    pub fn velocity(&self) -> Result<RollingVelocity<T>, Invalid> {
+        let vx = at("vrx", finite(self.vrx, "vrx"))?;
+        let vy = at("vry", finite(self.vry, "vry"))?;
+        at("vrx", RollingVelocity::new(vx, vy))
+    }
+}
+
+/// The rolling columns of a batch ([`DynContact::wrench_many_rolling`]), each as long as `h`.
+#[derive(Clone, Copy, Debug)]
+pub struct RollingSteps<'a, T> {
+    /// V_x (m/s).
+    pub vrx: &'a [T],
+    /// V_y (m/s).
+    pub vry: &'a [T],
 }
 
 /// The output columns `N,Fx,Fy,Tz,a,b,e2`.
@@ -263,6 +383,57 @@ impl<T: Real, L: FrictionLaw> Formed<T, L> {
     }
 }
 
+/// One rolling law's contact in either form.
+#[derive(Clone, Copy, Debug)]
+enum RollingFormed<T: Real, L> {
+    Fixed(Rolling<T, Fixed<T, Best>, L>),
+    Varying(Rolling<T, Varying<T, Best>, L>),
+}
+
+// By hand: the law `L` is a marker (no `PartialEq` bound on it).
+impl<T: Real, L> PartialEq for RollingFormed<T, L> {
+    fn eq(&self, other: &Self) -> bool {
+        match (self, other) {
+            (RollingFormed::Fixed(a), RollingFormed::Fixed(b)) => a == b,
+            (RollingFormed::Varying(a), RollingFormed::Varying(b)) => a == b,
+            _ => false,
+        }
+    }
+}
+
+impl<T: Real, L: RollingLaw> RollingFormed<T, L> {
+    fn new(
+        form: Form,
+        curvatures: &Curvatures<T>,
+        estar: Modulus<T>,
+        damping: HuntCrossley<T>,
+        friction: Friction<T, Best>,
+        elasticity: Elasticity<T>,
+    ) -> Result<Self, Invalid> {
+        Ok(
+            match Formed::new(form, curvatures, estar, damping, friction)? {
+                Formed::Fixed(c) => RollingFormed::Fixed(at("P", Rolling::new(c, elasticity))?),
+                Formed::Varying(c) => RollingFormed::Varying(at("P", Rolling::new(c, elasticity))?),
+            },
+        )
+    }
+
+    #[inline]
+    fn wrench(
+        &self,
+        curvatures: &Curvatures<T>,
+        h: T,
+        hdot: T,
+        slip: Slip<T>,
+        v: RollingVelocity<T>,
+    ) -> Output<T> {
+        match self {
+            RollingFormed::Fixed(c) => c.wrench(h, hdot, slip, v).into(),
+            RollingFormed::Varying(c) => c.wrench(curvatures, h, hdot, slip, v).into(),
+        }
+    }
+}
+
 #[derive(Clone, Copy, Debug, PartialEq)]
 enum ByLaw<T: Real> {
     Best(Formed<T, Best>),
@@ -270,6 +441,10 @@ enum ByLaw<T: Real> {
     Pade(Formed<T, Pade>),
     Ellipsoid(Formed<T, Ellipsoid>),
     Coulomb(Formed<T, Coulomb>),
+    Table(RollingFormed<T, Table>),
+    Blend(RollingFormed<T, Blend>),
+    Fastsim(RollingFormed<T, Fastsim>),
+    Fastsim16(RollingFormed<T, FastsimGrid<16, 16>>),
 }
 
 /// A validated contact of the contract, its law and form chosen at run time. Per step,
@@ -278,6 +453,7 @@ enum ByLaw<T: Real> {
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct DynContact<T: Real> {
     spec: Spec<T>,
+    rolling: RollingSpec<T>,
     curvatures: Curvatures<T>,
     law: Law,
     form: Form,
@@ -291,7 +467,19 @@ impl<T: Real> DynContact<T> {
     /// reported on `P`), `estar` ([`Error::ModulusNotPositive`]), `cd`
     /// ([`Error::DampingNegative`]), `f` ([`Error::FrictionCoefficientNegative`]), `delta`
     /// ([`Error::RegularizationSpeedNegative`]); any NaN or ±∞ is [`Error::NonFinite`].
+    /// A rolling law takes the default rolling columns ([`DynContact::new_rolling`]).
     pub fn new(spec: &Spec<T>, law: Law, form: Form) -> Result<Self, Invalid> {
+        Self::new_rolling(spec, &RollingSpec::default(), law, form)
+    }
+
+    /// [`DynContact::new`] with the optional rolling columns `G, nu` ([`RollingSpec`]: read
+    /// and validated by the rolling laws only; errors name `G` or `nu`).
+    pub fn new_rolling(
+        spec: &Spec<T>,
+        rolling: &RollingSpec<T>,
+        law: Law,
+        form: Form,
+    ) -> Result<Self, Invalid> {
         let curvatures = curvatures_of(spec.p, spec.q)?;
         let estar = at("estar", Modulus::new(spec.estar))?;
         let damping = at("cd", HuntCrossley::new(spec.cd))?;
@@ -310,15 +498,42 @@ impl<T: Real> DynContact<T> {
                 ByLaw::$variant(Formed::new(form, &curvatures, estar, damping, friction)?)
             }};
         }
+        macro_rules! roll {
+            ($variant:ident) => {{
+                let friction =
+                    Friction::<T, Best>::with_law(f, delta).map_err(|error| Invalid {
+                        column: if matches!(error, Error::RegularizationSpeedNegative) {
+                            "delta"
+                        } else {
+                            "f"
+                        },
+                        error,
+                    })?;
+                let elasticity = rolling.elasticity(estar.get())?;
+                ByLaw::$variant(RollingFormed::new(
+                    form,
+                    &curvatures,
+                    estar,
+                    damping,
+                    friction,
+                    elasticity,
+                )?)
+            }};
+        }
         let contact = match law {
             Law::Best => build!(Best),
             Law::Simplified => build!(Simplified),
             Law::Pade => build!(Pade),
             Law::Ellipsoid => build!(Ellipsoid),
             Law::Coulomb => build!(Coulomb),
+            Law::Table => roll!(Table),
+            Law::Blend => roll!(Blend),
+            Law::Fastsim => roll!(Fastsim),
+            Law::Fastsim16 => roll!(Fastsim16),
         };
         Ok(DynContact {
             spec: *spec,
+            rolling: *rolling,
             curvatures,
             law,
             form,
@@ -328,8 +543,21 @@ impl<T: Real> DynContact<T> {
 
     /// One step: validates `h, hdot, vx, vy, omega` (finite; any NaN or ±∞ is
     /// [`Error::NonFinite`] naming the column) and returns the wrench of the generic contact.
+    /// A rolling law takes the default rolling step (V = 0: full slip;
+    /// [`DynContact::wrench_rolling`]).
     #[inline]
     pub fn wrench(&self, step: &Step<T>) -> Result<Output<T>, Invalid> {
+        self.wrench_rolling(step, &RollingStep::default())
+    }
+
+    /// [`DynContact::wrench`] with the optional rolling columns `vrx, vry` ([`RollingStep`]:
+    /// read and validated by the rolling laws only, after the step columns).
+    #[inline]
+    pub fn wrench_rolling(
+        &self,
+        step: &Step<T>,
+        rolling: &RollingStep<T>,
+    ) -> Result<Output<T>, Invalid> {
         let h = at("h", finite(step.h, "h"))?;
         let hdot = at("hdot", finite(step.hdot, "hdot"))?;
         let vx = at("vx", finite(step.vx, "vx"))?;
@@ -343,6 +571,10 @@ impl<T: Real> DynContact<T> {
             ByLaw::Pade(x) => x.wrench(c, h, hdot, slip),
             ByLaw::Ellipsoid(x) => x.wrench(c, h, hdot, slip),
             ByLaw::Coulomb(x) => x.wrench(c, h, hdot, slip),
+            ByLaw::Table(x) => x.wrench(c, h, hdot, slip, rolling.velocity()?),
+            ByLaw::Blend(x) => x.wrench(c, h, hdot, slip, rolling.velocity()?),
+            ByLaw::Fastsim(x) => x.wrench(c, h, hdot, slip, rolling.velocity()?),
+            ByLaw::Fastsim16(x) => x.wrench(c, h, hdot, slip, rolling.velocity()?),
         })
     }
 
@@ -357,7 +589,9 @@ impl<T: Real> DynContact<T> {
                 self.curvatures = curvatures_of(p, q)?;
                 self.spec = spec;
             }
-            Form::Fixed => *self = DynContact::new(&spec, self.law, self.form)?,
+            Form::Fixed => {
+                *self = DynContact::new_rolling(&spec, &self.rolling, self.law, self.form)?
+            }
         }
         Ok(())
     }
@@ -365,6 +599,11 @@ impl<T: Real> DynContact<T> {
     /// The contact columns it was built from (after [`DynContact::set_curvatures`], the new P, Q).
     pub fn spec(&self) -> &Spec<T> {
         &self.spec
+    }
+
+    /// The optional rolling columns it was built from (as given: `None` for a default).
+    pub fn rolling_spec(&self) -> &RollingSpec<T> {
+        &self.rolling
     }
 
     /// The friction law.
@@ -387,6 +626,19 @@ pub fn wrench<T: Real>(
     step: &Step<T>,
 ) -> Result<Output<T>, Invalid> {
     DynContact::new(spec, law, form)?.wrench(step)
+}
+
+/// [`wrench`] with the optional rolling columns (the per-row form of `contact_eval wrench`
+/// with `G, nu, vrx, vry`).
+pub fn wrench_rolling<T: Real>(
+    spec: &Spec<T>,
+    rolling_spec: &RollingSpec<T>,
+    law: Law,
+    form: Form,
+    step: &Step<T>,
+    rolling_step: &RollingStep<T>,
+) -> Result<Output<T>, Invalid> {
+    DynContact::new_rolling(spec, rolling_spec, law, form)?.wrench_rolling(step, rolling_step)
 }
 
 /// Validated, ordered curvatures with P/Q in the solvers' range (both forms: nothing clamped).
@@ -428,6 +680,67 @@ impl<T: crate::batch::BatchReal> DynContact<T> {
             ByLaw::Pade(x) => many!(x),
             ByLaw::Ellipsoid(x) => many!(x),
             ByLaw::Coulomb(x) => many!(x),
+            ByLaw::Table(_) | ByLaw::Blend(_) | ByLaw::Fastsim(_) | ByLaw::Fastsim16(_) => {
+                self.rows(steps, None, out)
+            }
         }
+    }
+
+    /// [`DynContact::wrench_many`] with the rolling columns `vrx, vry` ([`RollingSteps`]):
+    /// row i is bit for bit `self.wrench_rolling(&Step { h: h[i], … }, &RollingStep { vrx:
+    /// vrx[i], vry: vry[i] })`. A scalar loop over the rows for every law (the sliding laws
+    /// ignore the rolling columns but their lengths are checked). Errors as
+    /// [`DynContact::wrench_many`] (`vrx`, `vry` named too).
+    pub fn wrench_many_rolling(
+        &self,
+        steps: &crate::batch::Steps<'_, T>,
+        rolling: &RollingSteps<'_, T>,
+        out: &mut crate::batch::Wrenches<'_, T>,
+    ) -> Result<(), crate::batch::RowError> {
+        self.rows(steps, Some(rolling), out)
+    }
+
+    /// The scalar loop: one [`DynContact::wrench_rolling`] per row.
+    fn rows(
+        &self,
+        steps: &crate::batch::Steps<'_, T>,
+        rolling: Option<&RollingSteps<'_, T>>,
+        out: &mut crate::batch::Wrenches<'_, T>,
+    ) -> Result<(), crate::batch::RowError> {
+        let n = crate::batch::check_lengths(None, steps, out)?;
+        if let Some(r) = rolling {
+            for (column, len) in [("vrx", r.vrx.len()), ("vry", r.vry.len())] {
+                if len != n {
+                    return Err(crate::batch::RowError {
+                        row: len.min(n),
+                        column,
+                        error: Error::ColumnLengthMismatch,
+                    });
+                }
+            }
+        }
+        let get = |c: &[T], i: usize| c.get(i).copied().unwrap_or(T::ZERO);
+        for i in 0..n {
+            let step = Step {
+                h: get(steps.h, i),
+                hdot: get(steps.hdot, i),
+                vx: get(steps.vx, i),
+                vy: get(steps.vy, i),
+                omega: get(steps.omega, i),
+            };
+            let roll = rolling.map_or(RollingStep::default(), |r| RollingStep {
+                vrx: get(r.vrx, i),
+                vry: get(r.vry, i),
+            });
+            let o = self
+                .wrench_rolling(&step, &roll)
+                .map_err(|e| crate::batch::RowError {
+                    row: i,
+                    column: e.column,
+                    error: e.error,
+                })?;
+            crate::batch::put(out, i, o.to_array());
+        }
+        Ok(())
     }
 }

@@ -3,8 +3,11 @@
 //! (host-tests/dynamic.rs) and for `contact_eval wrench` (host-tests/contact_eval.rs).
 
 use contensou::Real;
-use contensou::contact::{Contact, VaryingContact};
+use contensou::contact::{Contact, Rolling, VaryingContact};
 use contensou::dynamic::{Form, Law, Spec, Step};
+use contensou::friction::rolling::{
+    Blend, Elasticity, Fastsim, FastsimGrid, RollingLaw, RollingVelocity, Table,
+};
 use contensou::friction::{
     Best, Coulomb, Ellipsoid, Friction, FrictionLaw, Pade, Simplified, Slip,
 };
@@ -74,6 +77,31 @@ fn generic_of<T: Real, L: FrictionLaw>(spec: &Spec<T>, form: Form, s: &Step<T>) 
     [w.n, w.fx, w.fy, w.tz, w.patch.a, w.patch.b, w.patch.e2]
 }
 
+/// The generic rolling contact's output for rolling law `L` with the default rolling columns
+/// (G = E*·(1 − 0.3), ν = 0.3, V = 0), as the contract's seven numbers.
+fn generic_rolling_of<T: Real, L: RollingLaw>(spec: &Spec<T>, form: Form, s: &Step<T>) -> [T; 7] {
+    let c = Curvatures::new(spec.p, spec.q).unwrap();
+    let e = Modulus::new(spec.estar).unwrap();
+    let d = HuntCrossley::new(spec.cd).unwrap();
+    let fr = Friction::<T, Best>::with_law(spec.f, spec.delta).unwrap();
+    let slip = Slip::new(s.vx, s.vy, s.omega).unwrap();
+    let nu = T::from_f64(0.3);
+    let el = Elasticity::new(spec.estar * (T::ONE - nu), nu).unwrap();
+    let v = RollingVelocity::ZERO;
+    let w = match form {
+        Form::Fixed => {
+            let contact = Contact::hertz::<Newton>(&c, e, d, fr).unwrap();
+            Rolling::<T, _, L>::new(contact, el)
+                .unwrap()
+                .wrench(s.h, s.hdot, slip, v)
+        }
+        Form::Varying => Rolling::<T, _, L>::new(VaryingContact::new(e, d, fr), el)
+            .unwrap()
+            .wrench(&c, s.h, s.hdot, slip, v),
+    };
+    [w.n, w.fx, w.fy, w.tz, w.patch.a, w.patch.b, w.patch.e2]
+}
+
 /// The values' bits (f32 widened exactly), for bit-for-bit comparison.
 pub fn bits<T: Real>(v: [T; 7]) -> [u64; 7] {
     v.map(|x| x.to_f64().to_bits())
@@ -87,5 +115,9 @@ pub fn generic<T: Real>(law: Law, spec: &Spec<T>, form: Form, s: &Step<T>) -> [T
         Law::Pade => generic_of::<T, Pade>(spec, form, s),
         Law::Ellipsoid => generic_of::<T, Ellipsoid>(spec, form, s),
         Law::Coulomb => generic_of::<T, Coulomb>(spec, form, s),
+        Law::Table => generic_rolling_of::<T, Table>(spec, form, s),
+        Law::Blend => generic_rolling_of::<T, Blend>(spec, form, s),
+        Law::Fastsim => generic_rolling_of::<T, Fastsim>(spec, form, s),
+        Law::Fastsim16 => generic_rolling_of::<T, FastsimGrid<16, 16>>(spec, form, s),
     }
 }

@@ -322,7 +322,7 @@ const STEP_COLUMNS: [&str; 5] = ["h", "hdot", "vx", "vy", "omega"];
 const OUTPUT_COLUMNS: [&str; 7] = ["N", "Fx", "Fy", "Tz", "a", "b", "e2"];
 
 /// Every column as long as `h`.
-fn check_lengths<T>(
+pub(crate) fn check_lengths<T>(
     curvatures: Option<&CurvatureColumns<'_, T>>,
     steps: &Steps<'_, T>,
     out: &Wrenches<'_, T>,
@@ -387,7 +387,7 @@ fn step_row<T: Real>(steps: &Steps<'_, T>, i: usize) -> Result<(T, T, Slip<T>), 
 
 /// Writes row i of the outputs.
 #[inline]
-fn put<T: Copy>(out: &mut Wrenches<'_, T>, i: usize, row: [T; 7]) {
+pub(crate) fn put<T: Copy>(out: &mut Wrenches<'_, T>, i: usize, row: [T; 7]) {
     let cols = [
         &mut *out.n,
         &mut *out.fx,

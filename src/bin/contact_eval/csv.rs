@@ -33,6 +33,22 @@ pub fn run_csv<T: Real + LowerExp>(
     outputs: &[&str],
     eval: &mut RowFn<'_, T>,
 ) -> ExitCode {
+    run_csv_optional(inputs, &[], outputs, &mut |r, _| eval(r))
+}
+
+/// Evaluate one row with optional columns: the required inputs, then the optional ones by
+/// their index in the optional list (`None`: absent from the header).
+pub type OptionalRowFn<'a, T> = dyn FnMut(&[T], &[Option<T>]) -> Result<Vec<T>, String> + 'a;
+
+/// [`run_csv`] whose header may add, after `inputs`, any of the `optional` columns (each at
+/// most once, in any order); they are echoed as given. With none of them the output is that of
+/// [`run_csv`] byte for byte.
+pub fn run_csv_optional<T: Real + LowerExp>(
+    inputs: &[&str],
+    optional: &[&str],
+    outputs: &[&str],
+    eval: &mut OptionalRowFn<'_, T>,
+) -> ExitCode {
     let stdin = std::io::stdin();
     let stdout = std::io::stdout();
     let mut out = std::io::BufWriter::new(stdout.lock());
@@ -43,14 +59,30 @@ pub fn run_csv<T: Real + LowerExp>(
         None => return fail(&message("header", "(none)", "missing header row")),
     };
     let names: Vec<&str> = header.trim().split(',').map(str::trim).collect();
-    if names != inputs {
-        return fail(&message(
-            "header",
-            header.trim(),
-            format!("must be `{}`", inputs.join(",")),
-        ));
-    }
-    if writeln!(out, "{},{}", inputs.join(","), outputs.join(",")).is_err() {
+    // the optional columns of the header, as indices into `optional`
+    let extra: Option<Vec<usize>> = names.get(inputs.len()..).and_then(|rest| {
+        let idx: Option<Vec<usize>> = rest
+            .iter()
+            .map(|n| optional.iter().position(|o| o == n))
+            .collect();
+        idx.filter(|v| (0..v.len()).all(|i| !v[..i].contains(&v[i])))
+    });
+    let extra = match extra {
+        Some(extra) if names.get(..inputs.len()) == Some(inputs) => extra,
+        _ => {
+            let allowed = if optional.is_empty() {
+                format!("must be `{}`", inputs.join(","))
+            } else {
+                format!(
+                    "must be `{}` then any of `{}`",
+                    inputs.join(","),
+                    optional.join(",")
+                )
+            };
+            return fail(&message("header", header.trim(), allowed));
+        }
+    };
+    if writeln!(out, "{},{}", names.join(","), outputs.join(",")).is_err() {
         return fail("stdout = ?: cannot write output");
     }
     for (index, line) in lines.enumerate() {
@@ -63,18 +95,18 @@ pub fn run_csv<T: Real + LowerExp>(
             continue;
         }
         let fields: Vec<&str> = line.split(',').map(str::trim).collect();
-        if fields.len() != inputs.len() {
+        if fields.len() != names.len() {
             return fail_row(
                 row,
                 &message(
                     "fields",
                     fields.len(),
-                    format!("expected {} ({})", inputs.len(), inputs.join(",")),
+                    format!("expected {} ({})", names.len(), names.join(",")),
                 ),
             );
         }
         let mut values = Vec::with_capacity(fields.len());
-        for (name, field) in inputs.iter().zip(&fields) {
+        for (name, field) in names.iter().zip(&fields) {
             match field.parse::<T>() {
                 // NaN: the one value not ordered against itself.
                 Ok(v) if v.partial_cmp(&v).is_none() => {
@@ -84,7 +116,13 @@ pub fn run_csv<T: Real + LowerExp>(
                 Err(_) => return fail_row(row, &message(name, field, "not a number")),
             }
         }
-        match eval(&values) {
+        let mut opt = vec![None; optional.len()];
+        for (k, &i) in extra.iter().enumerate() {
+            if let (Some(slot), Some(&v)) = (opt.get_mut(i), values.get(inputs.len() + k)) {
+                *slot = Some(v);
+            }
+        }
+        match eval(values.get(..inputs.len()).unwrap_or(&[]), &opt) {
             Ok(results) => {
                 let all: Vec<String> = values
                     .iter()

@@ -5,9 +5,11 @@ use std::fmt::LowerExp;
 use std::process::ExitCode;
 
 use contensou::Real;
-use contensou::dynamic::{self, Form, INPUTS, Invalid, Law, OUTPUTS, Spec, Step};
+use contensou::dynamic::{
+    self, Form, INPUTS, Invalid, Law, OUTPUTS, ROLLING_INPUTS, RollingSpec, RollingStep, Spec, Step,
+};
 
-use crate::csv::{message, run_csv, shortest};
+use crate::csv::{message, run_csv_optional, shortest};
 use crate::{Args, Precision, by_name, list};
 
 /// One line per law for `--help`.
@@ -18,6 +20,10 @@ fn about_law(law: Law) -> &'static str {
         Law::Pade => "Pade approximants",
         Law::Ellipsoid => "ellipsoidal pressure fit",
         Law::Coulomb => "point contact (no drilling torque)",
+        Law::Table => "rolling: Kalker's creep, blend + residual tables (default rolling law)",
+        Law::Blend => "rolling: Kalker's linear theory joined to the exact full slip",
+        Law::Fastsim => "rolling: FASTSIM, elliptic traction bound, 32 x 32",
+        Law::Fastsim16 => "rolling: FASTSIM, elliptic traction bound, 16 x 16",
     }
 }
 
@@ -39,6 +45,11 @@ const COLUMNS: &str =
     vx,vy      slip of B relative to A at the patch centre (m/s)
     omega      spin about z (rad/s)
     -> N,Fx,Fy,Tz,a,b,e2   normal force, friction force, drilling torque, semi-axes, e^2
+  optional columns, after those, any of (read by the rolling laws only; echoed):
+    G          combined shear modulus (Pa), > 0; default estar*(1 - nu)
+    nu         Poisson ratio of the tangential problem, in [0, 0.5]; default 0.3
+    vrx,vry    rolling velocity of the contact in the contact frame (m/s): the velocity of
+               the contact point over both surfaces, averaged; default 0 (full slip)
 ";
 
 /// The help text.
@@ -68,7 +79,7 @@ pub fn run(mut args: Args) -> Result<ExitCode, String> {
 }
 
 fn rows<T: Real + LowerExp>(law: Law, form: Form) -> ExitCode {
-    run_csv::<T>(&INPUTS, &OUTPUTS, &mut |r| {
+    run_csv_optional::<T>(&INPUTS, &ROLLING_INPUTS, &OUTPUTS, &mut |r, o| {
         let spec = Spec {
             p: r[0],
             q: r[1],
@@ -84,10 +95,26 @@ fn rows<T: Real + LowerExp>(law: Law, form: Form) -> ExitCode {
             vy: r[9],
             omega: r[10],
         };
-        match dynamic::wrench(&spec, law, form, &step) {
+        let get = |i: usize| o.get(i).copied().flatten();
+        let rolling_spec = RollingSpec {
+            g: get(0),
+            nu: get(1),
+        };
+        let rolling_step = RollingStep {
+            vrx: get(2).unwrap_or(T::ZERO),
+            vry: get(3).unwrap_or(T::ZERO),
+        };
+        match dynamic::wrench_rolling(&spec, &rolling_spec, law, form, &step, &rolling_step) {
             Ok(out) => Ok(out.to_array().to_vec()),
             Err(Invalid { column, error }) => {
-                let value = INPUTS.iter().position(|&c| c == column).map(|i| r[i]);
+                let value = INPUTS
+                    .iter()
+                    .position(|&c| c == column)
+                    .map(|i| r[i])
+                    .or_else(|| {
+                        let i = ROLLING_INPUTS.iter().position(|&c| c == column)?;
+                        get(i)
+                    });
                 Err(message(
                     column,
                     value.map_or_else(|| "?".into(), shortest),

@@ -140,7 +140,7 @@ pub(crate) fn creep<T: Real>(i: &Input<'_, T>) -> Creep<T> {
     } else {
         (T::ZERO, T::ZERO)
     };
-    let fs = i.contact.full_slip(i.vx, i.vy, i.w);
+    let fs = i.full_slip;
     // moment: S(d/m)·M_fs, S(x) = (4x + x²)/(2 + x)², d = |κC₃₃cφ| + γ|q_φ|(1 − A_s)
     let dv = (i.kappa * k.c33 * i.w).abs() + gamma * qp.abs() * one_minus_as.max(T::ZERO);
     let mv = fs.mz.abs() * v;

@@ -65,12 +65,15 @@ impl<T: Real> Patch<T> {
 }
 
 /// What a rolling law sees per call, all dimensionless: the load parameter κ = Gc²/(fN), the
-/// slip in homogeneous form with ω̂ = cω/S, and the contact.
+/// slip in homogeneous form with ω̂ = cω/S, the creep shape, and the full-slip traction in the
+/// direction of the slip (given by the caller: [`RollingContact`] from the aligned ellipse's
+/// own `best`, [`crate::contact::Rolling`] from the contact's real patch).
 #[derive(Debug)]
 pub struct Input<'a, T> {
-    /// The contact (shape, coefficients, full-slip tables).
-    pub contact: &'a RollingContact<T>,
-    /// κ = Gc²/(fN) > 0 (the inverse of the load ratio fN/(Gc²)).
+    /// The creep shape (Kalker's coefficients, `blend`'s constants, `table`'s residuals).
+    pub contact: &'a RollingShape<T>,
+    /// κ = Gc²/(fN) > 0 (the inverse of the load ratio fN/(Gc²)), at most 1/ε²
+    /// ([`load_parameter`]).
     pub kappa: T,
     /// v_x/S
     pub vx: T,
@@ -80,22 +83,65 @@ pub struct Input<'a, T> {
     pub w: T,
     /// |V|/S ∈ [0, 1]
     pub v: T,
+    /// The full-slip traction F/(fN), M_z/(fNc) in the direction of (vx, vy, w), rolling frame
+    /// (zero when the law does not read it: [`RollingLaw::FULL_SLIP`] false).
+    pub full_slip: Creep<T>,
 }
 
 /// A rolling law: dimensionless creep from the dimensionless input (V ≥ 0 after the mirror).
 pub trait RollingLaw {
     /// The name `contact_eval rolling --law` takes.
     const NAME: &'static str;
+    /// Whether the law reads [`Input::full_slip`] (the caller evaluates it only then).
+    const FULL_SLIP: bool = true;
     /// F/(fN), M_z/(fNc) on body B.
     fn creep<T: Real>(input: &Input<'_, T>) -> Creep<T>;
 }
 
-/// A rolling contact: the patch shape a/b (a along the rolling direction), the elasticity, and
-/// what depends on them only, built once (Kalker's coefficients, the full-slip law's tables).
-#[derive(Clone, Debug)]
-pub struct RollingContact<T> {
+/// The creep shape of one aligned ellipse a/b (a along the rolling direction) and ν: what the
+/// rolling laws read besides the slip (Kalker's coefficients, `blend`'s per-shape constants,
+/// `table`'s residual tables). Built in `f64` ([`RollingShape::new`]: tens of µs on a host).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RollingShape<T> {
+    /// √(a/b)
     pub(crate) rho: T,
     pub(crate) kalker: Kalker<T>,
+    /// `blend`'s per-shape constants (σ, γ) ([`super::Blend::shape`]).
+    pub(crate) blend: (T, T),
+    /// The default law's residual tables for this shape ([`super::table::Tables`]).
+    pub(crate) table: super::table::Tables<T>,
+}
+
+impl<T: Real> RollingShape<T> {
+    /// For a/b (a along the rolling direction), clamped to [0.01, 100] (NaN: 1), and ν ∈
+    /// [0, 0.5] (an [`Elasticity`]'s). Total.
+    pub fn new(a_over_b: T, nu: T) -> Self {
+        let r = if a_over_b >= T::from_f64(0.01) {
+            a_over_b.min(T::from_f64(100.0))
+        } else if a_over_b < T::from_f64(0.01) {
+            T::from_f64(0.01)
+        } else {
+            T::ONE
+        };
+        Self {
+            rho: r.sqrt(),
+            kalker: Kalker::new(r, nu),
+            blend: super::Blend::shape(r),
+            table: super::table::Tables::new(r),
+        }
+    }
+
+    /// Kalker's coefficients of this shape.
+    pub fn kalker(&self) -> &Kalker<T> {
+        &self.kalker
+    }
+}
+
+/// A rolling contact: the patch shape a/b (a along the rolling direction), the elasticity, and
+/// what depends on them only, built once (the creep shape, the full-slip law's tables).
+#[derive(Clone, Debug)]
+pub struct RollingContact<T> {
+    pub(crate) shape: RollingShape<T>,
     pub(crate) g: T,
     /// a_major/c: √(a/b) or √(b/a)
     pub(crate) major_over_c: T,
@@ -103,10 +149,6 @@ pub struct RollingContact<T> {
     /// turned by 90°.
     pub(crate) along_major: bool,
     pub(crate) best: BestContact<T>,
-    /// `blend`'s per-shape constants (σ, γ) ([`super::Blend::shape`]).
-    pub(crate) blend: (T, T),
-    /// The default law's residual tables for this shape ([`super::table::Tables`]).
-    pub(crate) table: super::table::Tables<T>,
 }
 
 impl<T: Real> RollingContact<T> {
@@ -122,22 +164,28 @@ impl<T: Real> RollingContact<T> {
         let minor_over_major = if along_major { T::ONE / r } else { r };
         let m = T::ONE - minor_over_major * minor_over_major;
         let k = Constants::from_parameter(Parameter::new(m)?);
-        let rho = r.sqrt();
+        let shape = RollingShape::new(r, elasticity.nu());
         Ok(Self {
-            rho,
-            kalker: Kalker::new(r, elasticity.nu()),
+            major_over_c: if along_major {
+                shape.rho
+            } else {
+                T::ONE / shape.rho
+            },
+            shape,
             g: elasticity.g(),
-            major_over_c: if along_major { rho } else { T::ONE / rho },
             along_major,
             best: BestContact::new(&k),
-            blend: super::Blend::shape(r),
-            table: super::table::Tables::new(r),
         })
     }
 
     /// Kalker's coefficients of this contact.
     pub fn kalker(&self) -> &Kalker<T> {
-        &self.kalker
+        &self.shape.kalker
+    }
+
+    /// The creep shape of this contact.
+    pub fn shape(&self) -> &RollingShape<T> {
+        &self.shape
     }
 
     /// The wrench on body B by the law `L` for one patch and slip state. Total: rest, N ≤ 0
@@ -160,21 +208,19 @@ impl<T: Real> RollingContact<T> {
             return Creep::default();
         }
         let kappa = self.g * patch.c * patch.c / patch.fn_;
-        // κ is clamped to 1/ε² (f32: 7e13, f64: 2e31): a larger κ only moves the end of the
-        // linear range to creepages below ε²/C, under the rounding of the velocities they come
-        // from (and needs a patch 1/ε² times smaller than the bodies' radii: nothing Hertzian);
-        // the clamp keeps κ·C and its square finite in every law. A subnormal v = |V|/S (a
-        // creepage beyond 1/MIN_POSITIVE) is full slip: v = 0, so 1/v stays finite.
-        // (Both: fuzz findings, issue 20 — NaN at G near the float's maximum, N tiny, or
-        // V subnormal.)
-        let kappa_max = T::ONE / (T::EPSILON * T::EPSILON);
+        let w = patch.c * s.omega;
         let input = Input {
-            contact: self,
-            kappa: if kappa < kappa_max { kappa } else { kappa_max },
+            contact: &self.shape,
+            kappa: load_parameter(kappa),
             vx: s.vx,
             vy: s.vy,
-            w: patch.c * s.omega,
-            v: if s.v >= T::MIN_POSITIVE { s.v } else { T::ZERO },
+            w,
+            v: s.v,
+            full_slip: if L::FULL_SLIP {
+                self.full_slip(s.vx, s.vy, w)
+            } else {
+                Creep::default()
+            },
         };
         let mut cr = L::creep(&input);
         if s.mirrored {
@@ -210,6 +256,18 @@ impl<T: Real> RollingContact<T> {
     }
 }
 
+/// κ = Gc²/(fN) as the laws read it ([`Input::kappa`]): clamped to 1/ε² (f32: 7e13, f64:
+/// 2e31; ∞ and NaN too). A larger κ only moves the end of the linear range to creepages below
+/// ε²/C, under the rounding of the velocities they come from (and needs a patch 1/ε² times
+/// smaller than the bodies' radii: nothing Hertzian); the clamp keeps κ·C and its square finite
+/// in every law (fuzz finding, issue 20: NaN from every law at G near the float's maximum, or
+/// a tiny N in f32, with the old clamp κ ≤ T::MAX). Every caller building an [`Input`] uses it.
+#[inline(always)]
+pub(crate) fn load_parameter<T: Real>(kappa: T) -> T {
+    let max = T::ONE / (T::EPSILON * T::EPSILON);
+    if kappa < max { kappa } else { max }
+}
+
 /// Full slip everywhere, whatever V (the sliding law of the library, `best`): the limit every
 /// rolling law meets at large creepage and V → 0.
 #[derive(Clone, Copy, Debug, Default)]
@@ -219,7 +277,7 @@ impl RollingLaw for FullSlip {
     const NAME: &'static str = "full-slip";
     #[inline]
     fn creep<T: Real>(i: &Input<'_, T>) -> Creep<T> {
-        i.contact.full_slip(i.vx, i.vy, i.w)
+        i.full_slip
     }
 }
 
@@ -245,6 +303,7 @@ impl Linear {
 
 impl RollingLaw for Linear {
     const NAME: &'static str = "linear";
+    const FULL_SLIP: bool = false;
     fn creep<T: Real>(i: &Input<'_, T>) -> Creep<T> {
         if i.v <= T::ZERO {
             return Creep::default();

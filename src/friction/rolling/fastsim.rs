@@ -119,6 +119,7 @@ impl<const NX: usize, const NY: usize> FastsimGrid<NX, NY> {
 
 impl<const NX: usize, const NY: usize> RollingLaw for FastsimGrid<NX, NY> {
     const NAME: &'static str = "fastsim";
+    const FULL_SLIP: bool = false;
 
     fn creep<T: Real>(i: &Input<'_, T>) -> Creep<T> {
         let [cx, sx] = T::of_precision(&Self::X32, &Self::X64);

@@ -72,12 +72,16 @@ pub mod skew;
 pub mod slip;
 pub mod table;
 mod table_data;
+pub mod velocity;
 
 pub use blend::Blend;
-pub use contact::{Creep, FullSlip, Input, Linear, Patch, RollingContact, RollingLaw, Wrench};
+pub use contact::{
+    Creep, FullSlip, Input, Linear, Patch, RollingContact, RollingLaw, RollingShape, Wrench,
+};
 pub use elastic::Elasticity;
 pub use fastsim::{Fastsim, FastsimGrid};
 pub use kalker::Kalker;
 pub use skew::aligned_ellipse;
 pub use slip::{RollingSlip, Scaled};
 pub use table::Table;
+pub use velocity::RollingVelocity;

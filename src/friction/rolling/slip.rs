@@ -39,7 +39,7 @@ pub struct Scaled<T> {
     pub vy: T,
     /// ω/S (1/m; mirrored: −ω/S)
     pub omega: T,
-    /// |V|/S ∈ [0, 1]
+    /// |V|/S ∈ [0, 1]: 0 or at least the smallest normal float (a subnormal ratio is 0)
     pub v: T,
     /// V < 0: the caller negates F_x and M_z.
     pub mirrored: bool,
@@ -106,10 +106,17 @@ impl<T: Real> RollingSlip<T> {
         let s = if l1 > v { l1 } else { v };
         let r = T::ONE / s;
         // rest (1/0), an overflowing sum, or a subnormal S whose reciprocal overflows
-        if !(s.is_finite() && r.is_finite()) {
-            return self.unusual(c, mirrored, vx, om, v);
+        let mut out = if s.is_finite() && r.is_finite() {
+            Self::times(vx, self.vy, om, v, r, mirrored)
+        } else {
+            self.unusual(c, mirrored, vx, om, v)
+        };
+        // a subnormal |V|/S (a creepage beyond 1/MIN_POSITIVE) is full slip: 0, so that the
+        // laws' 1/v stays finite (fuzz finding, issue 20: ∞·0 in `blend` at V = 1e-310 m/s)
+        if out.v < T::MIN_POSITIVE {
+            out.v = T::ZERO;
         }
-        Self::times(vx, self.vy, om, v, r, mirrored)
+        out
     }
 
     #[inline(always)]

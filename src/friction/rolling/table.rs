@@ -96,7 +96,7 @@ const SHAPES: [f64; 5] = [0.2, 0.5, 1.0, 2.0, 5.0];
 
 /// One residual curve of one contact: ln m of the first node, 1/Δ(ln m), m₀, m_N and the
 /// residual (F_x, F_y, M_z) at the nodes.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Curve<T> {
     x0: T,
     inv_dx: T,
@@ -142,7 +142,7 @@ impl<T: Real> Curve<T> {
 }
 
 /// The five residual curves (ξ, η, φ, ξη, ηφ) of one contact shape.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Tables<T> {
     c: [Curve<T>; 5],
 }

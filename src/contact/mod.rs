@@ -36,6 +36,9 @@
 //! # Ok::<(), contensou::Error>(())
 //! ```
 
+mod rolling;
+pub use rolling::{Rolling, RollingBase};
+
 use crate::friction::law::{PerCall, PerContact};
 use crate::friction::{Best, Constants, Explicit, Friction, FrictionLaw, Slip, Tangential};
 use crate::geometry::Curvatures;

@@ -1,0 +1,342 @@
+//! The per-step wrench of a rolling contact: the contact's normal law and patch, the tangential
+//! part by a rolling law ([`crate::friction::rolling`]) from the slip and the rolling velocity.
+//!
+//! # Formula
+//!
+//! Per step: the patch (a ≥ b along the contact frame's x, y; N) from the contact's normal law
+//! as in [`Contact::wrench`]; the rolling velocity V = (V_x, V_y) ([`RollingVelocity`]) sets
+//! the **rolling frame**: x_r along V, (c_θ, s_θ) = V/|V| (θ = 0 when V = 0), y_r = z × x_r.
+//! In that frame the slip (v_x, v_y, ω) of B relative to A is
+//! (c_θ v_x + s_θ v_y, −s_θ v_x + c_θ v_y, ω), the rolling speed is |V| > 0, and the rolling law
+//! `L` evaluates Kalker's creepages on the **aligned ellipse**
+//! ([`crate::friction::rolling::aligned_ellipse`]): semi-axis a_r = ab/√(b²c_θ² + a²s_θ²)
+//! along V (the patch's extent in that direction), b_r = ab/a_r across (same area, same
+//! c = √(ab)), with the creep shape of a_r/b_r (Kalker's coefficients, `blend`'s constants,
+//! `table`'s residuals: [`RollingShape`]). The **full-slip part** the law saturates to is the
+//! contact's own `best` (δ = 0) on the **real** patch, in the direction of the slip, turned into
+//! the rolling frame. The law's (F_x, F_y) are turned back: F = (c_θF_xr − s_θF_yr,
+//! s_θF_xr + c_θF_yr); T_z = M_z.
+//!
+//! # Domain and special cases
+//!
+//! Every validated input; total (no panic, finite output).
+//!
+//! - **V along an axis** (V_y = 0 or V_x = 0; every direction for a circle): the aligned
+//!   ellipse is the patch, the rolling law's own domain — exact (the law's error only).
+//!   `Rolling` over a fixed [`Contact`] caches the two shapes; otherwise the shape is built per
+//!   call.
+//! - **V skewed**: the aligned ellipse is an approximation of the patch (Kalker's theory and
+//!   the laws' data are for rolling along an axis): exact along both axes, continuous in θ.
+//!   The full slip stays exact (the real patch's).
+//! - **V = 0** (and creepage → ∞): the full slip of `best` on the real patch, in every
+//!   direction (`table`, `blend`: exactly, up to rounding; FASTSIM: its grid's full slip on the
+//!   patch, 7.4e-3 fN from the exact integrals on 32 × 32).
+//! - h ≤ 0 (apart), N ≤ 0, f = 0: zero tangential wrench. The contact's δ is not used.
+//! - a_r/b_r outside [0.01, 100] (patches more elongated than the laws' domain): the shape of
+//!   the nearer end (Kalker's asymptotes, the end tables).
+//!
+//! # Example
+//!
+//! ```
+//! use contensou::contact::{Contact, Rolling};
+//! use contensou::friction::rolling::{Elasticity, RollingVelocity, Table};
+//! use contensou::friction::{Friction, Slip};
+//! use contensou::geometry::Curvatures;
+//! use contensou::normal::{Modulus, Undamped};
+//! use contensou::shape::Newton;
+//!
+//! // A steel ball (R = 10 mm) in a groove (Q > P), f = 0.1.
+//! let contact = Contact::hertz::<Newton>(
+//!     &Curvatures::new(25.0, 100.0)?,
+//!     Modulus::new(1.15e11)?,
+//!     Undamped,
+//!     Friction::new(0.1_f64, 0.0)?,
+//! )?;
+//! let rolling = Rolling::<_, _, Table>::new(contact, Elasticity::new(80e9, 0.3)?)?;
+//! // rolling along the minor axis at 2 m/s with 0.1 % creepage along it
+//! let v = RollingVelocity::new(0.0, 2.0)?;
+//! let w = rolling.wrench(1e-6, 0.0, Slip::new(0.0, 2e-3, 0.0)?, v);
+//! assert!(w.n > 0.0 && w.fy < 0.0 && w.fy.abs() < 0.1 * w.n);
+//! # Ok::<(), contensou::Error>(())
+//! ```
+//!
+//! # Cost
+//!
+//! A fixed contact rolling along an axis (or a circle): the normal law, one `best` traction,
+//! the law's call, two rotations. Otherwise also the creep shape of a_r/b_r
+//! ([`RollingShape::new`], `f64`) per call. Measured: `bench-results/qemu.csv`, stage
+//! `rolling`, methods `wrench-*`; host: the README's rolling section.
+
+use core::marker::PhantomData;
+
+use super::{Contact, VaryingContact, Wrench};
+use crate::friction::rolling::{
+    Creep, Elasticity, Input, RollingLaw, RollingShape, RollingSlip, RollingVelocity,
+    aligned_ellipse,
+};
+use crate::friction::{Best, Constants, FrictionLaw, Slip, SlipState};
+use crate::geometry::Curvatures;
+use crate::normal::{Damping, Hertz, NormalLaw, Patch};
+use crate::shape::{self, Eccentricity, Ratio};
+use crate::{Error, Real};
+
+/// A contact the rolling laws drive ([`Contact`] or [`VaryingContact`] with [`Best`]): what
+/// [`Rolling`] keeps besides it.
+pub trait RollingBase<T: Real> {
+    /// The per-contact creep shapes (fixed contact: rolling along x and along y; varying: none).
+    type Cache: Clone + Copy + core::fmt::Debug + PartialEq;
+    /// Builds the cache for these elastic constants.
+    fn cache(&self, elasticity: &Elasticity<T>) -> Self::Cache;
+}
+
+impl<T: Real, N, D> RollingBase<T> for Contact<T, N, D, Best> {
+    type Cache = [RollingShape<T>; 2];
+    /// The creep shapes for rolling along x (a/b) and along y (b/a); one for a circle.
+    fn cache(&self, elasticity: &Elasticity<T>) -> Self::Cache {
+        let m1 = self.constants.m1();
+        // a/b = 1/√m₁
+        let r = T::ONE / m1.sqrt();
+        let along_x = RollingShape::new(r, elasticity.nu());
+        let along_y = if m1 == T::ONE {
+            along_x
+        } else {
+            RollingShape::new(T::ONE / r, elasticity.nu())
+        };
+        [along_x, along_y]
+    }
+}
+
+impl<T: Real, D> RollingBase<T> for VaryingContact<T, D, Best> {
+    type Cache = ();
+    fn cache(&self, _: &Elasticity<T>) -> Self::Cache {}
+}
+
+/// A rolling contact at the wrench level: a contact `C` ([`Contact`] or [`VaryingContact`],
+/// friction [`Best`]), the pair's [`Elasticity`] and the rolling law `L` (see the
+/// [module docs](self)).
+pub struct Rolling<T: Real, C: RollingBase<T>, L> {
+    contact: C,
+    elasticity: Elasticity<T>,
+    cache: C::Cache,
+    law: PhantomData<L>,
+}
+
+// By hand: the law `L` is a marker (no `Clone`/`PartialEq` bound on it).
+impl<T: Real, C: RollingBase<T> + Clone, L> Clone for Rolling<T, C, L> {
+    fn clone(&self) -> Self {
+        Self {
+            contact: self.contact.clone(),
+            elasticity: self.elasticity,
+            cache: self.cache,
+            law: PhantomData,
+        }
+    }
+}
+
+impl<T: Real, C: RollingBase<T> + Copy, L> Copy for Rolling<T, C, L> {}
+
+impl<T: Real, C: RollingBase<T> + PartialEq, L> PartialEq for Rolling<T, C, L> {
+    fn eq(&self, other: &Self) -> bool {
+        self.contact == other.contact
+            && self.elasticity == other.elasticity
+            && self.cache == other.cache
+    }
+}
+
+impl<T: Real, C: RollingBase<T> + core::fmt::Debug, L> core::fmt::Debug for Rolling<T, C, L> {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.debug_struct("Rolling")
+            .field("contact", &self.contact)
+            .field("elasticity", &self.elasticity)
+            .field("law", &core::any::type_name::<L>())
+            .finish_non_exhaustive()
+    }
+}
+
+impl<T: Real, C: RollingBase<T>, L: RollingLaw> Rolling<T, C, L> {
+    /// From a contact ([`Contact`] or [`VaryingContact`], friction [`Best`]; its δ is not
+    /// used) and the pair's elastic constants. A fixed contact builds the creep shapes for
+    /// rolling along x (a/b) and along y (b/a) once (one for a circle); a varying one builds
+    /// nothing. Errors: none today (the `Result` is the contract's: a future shape check).
+    pub fn new(contact: C, elasticity: Elasticity<T>) -> Result<Self, Error> {
+        Ok(Self {
+            cache: contact.cache(&elasticity),
+            contact,
+            elasticity,
+            law: PhantomData,
+        })
+    }
+
+    /// The contact (normal law, damping, friction coefficient, `best`'s tables).
+    pub fn contact(&self) -> &C {
+        &self.contact
+    }
+
+    /// The pair's elastic constants.
+    pub fn elasticity(&self) -> &Elasticity<T> {
+        &self.elasticity
+    }
+}
+
+/// The rolling frame of a rolling velocity: (cos θ, sin θ) of V and |V|; V = 0: θ = 0.
+#[inline(always)]
+fn direction<T: Real>(v: RollingVelocity<T>) -> (T, T, T) {
+    let m = v.vx.abs().max(v.vy.abs());
+    if m <= T::ZERO {
+        return (T::ONE, T::ZERO, T::ZERO);
+    }
+    let (ux, uy) = (v.vx / m, v.vy / m);
+    let n = (ux * ux + uy * uy).sqrt();
+    (ux / n, uy / n, m * n)
+}
+
+/// What one step needs besides the creep shape: the patch, f, E*-free parts.
+struct Step<T> {
+    patch: Patch<T>,
+    /// fN (N), 0 without contact
+    fn_: T,
+}
+
+impl<T: Real, N: NormalLaw<T>, D: Damping<T>, L: RollingLaw> Rolling<T, Contact<T, N, D, Best>, L> {
+    /// One step: approach h (m), its rate ḣ (m/s, > 0 compression), the slip of B relative to
+    /// A and the rolling velocity, both in the contact frame → the wrench on B from A (contact
+    /// frame, x the major axis). Total.
+    #[inline]
+    pub fn wrench(&self, h: T, hdot: T, slip: Slip<T>, v: RollingVelocity<T>) -> Wrench<T, ()> {
+        let c = &self.contact;
+        let patch = c.normal.damped_patch(h, hdot, &c.damping);
+        let step = Step::of(patch, c.friction.coefficient());
+        let (cx, sx, speed) = direction(v);
+        let circle = self.cache[0].rho == T::ONE;
+        let cached = if sx == T::ZERO || circle {
+            Some(&self.cache[0])
+        } else if cx == T::ZERO {
+            Some(&self.cache[1])
+        } else {
+            None
+        };
+        let prepared = &c.prepared;
+        let full_slip = |st: &SlipState<T>| Best::traction_prepared(prepared, st).0;
+        tangential::<T, L>(
+            &step,
+            cached,
+            self.elasticity,
+            (cx, sx, speed),
+            slip,
+            full_slip,
+        )
+    }
+}
+
+impl<T: Real, D: Damping<T>, L: RollingLaw> Rolling<T, VaryingContact<T, D, Best>, L> {
+    /// One step at this step's curvatures (as [`VaryingContact::wrench`]) with the rolling
+    /// velocity (contact frame: x this step's major axis). The creep shape is built per call.
+    /// Total.
+    #[inline]
+    pub fn wrench(
+        &self,
+        curvatures: &Curvatures<T>,
+        h: T,
+        hdot: T,
+        slip: Slip<T>,
+        v: RollingVelocity<T>,
+    ) -> Wrench<T, ()> {
+        let (estar, damping, friction) = self.contact.parts();
+        let shape = shape::Table::shape(Ratio::clamped(curvatures.ratio()));
+        let normal = Hertz::from_shape(curvatures, &shape, estar);
+        let constants = Constants::from_shape(&shape);
+        let patch = normal.damped_patch(h, hdot, damping);
+        let step = Step::of(patch, friction.coefficient());
+        let full_slip = |st: &SlipState<T>| Best::traction(&constants, st).0;
+        tangential::<T, L>(&step, None, self.elasticity, direction(v), slip, full_slip)
+    }
+}
+
+impl<T: Real> Step<T> {
+    #[inline(always)]
+    fn of(patch: Patch<T>, f: T) -> Self {
+        let fn_ = if patch.n > T::ZERO && patch.a > T::ZERO && patch.b > T::ZERO {
+            f * patch.n
+        } else {
+            T::ZERO
+        };
+        Step { patch, fn_ }
+    }
+}
+
+/// The tangential part (see the module docs): the rolling frame, the creep shape (cached or
+/// built), the full slip on the real patch, the law, back to the contact frame.
+#[inline(always)]
+fn tangential<T: Real, L: RollingLaw>(
+    step: &Step<T>,
+    cached: Option<&RollingShape<T>>,
+    elasticity: Elasticity<T>,
+    (cx, sx, speed): (T, T, T),
+    slip: Slip<T>,
+    full_slip: impl Fn(&SlipState<T>) -> crate::friction::Traction<T>,
+) -> Wrench<T, ()> {
+    let patch = step.patch;
+    let zero = Wrench {
+        n: patch.n,
+        fx: T::ZERO,
+        fy: T::ZERO,
+        tz: T::ZERO,
+        patch,
+        branch: (),
+    };
+    if step.fn_ <= T::ZERO {
+        return zero;
+    }
+    let (a, b) = (patch.a, patch.b);
+    let c = (a * b).sqrt();
+    // the slip in the rolling frame, homogeneous form (V ≥ 0: no mirror)
+    let rs = RollingSlip {
+        vx: cx * slip.vx() + sx * slip.vy(),
+        vy: cx * slip.vy() - sx * slip.vx(),
+        omega: slip.omega(),
+        v: speed,
+    };
+    let s = rs.scaled(c);
+    let w = c * s.omega;
+    let built;
+    let shape = match cached {
+        Some(shape) => shape,
+        None => {
+            let (ar, br) = aligned_ellipse(a, b, cx, sx);
+            built = RollingShape::new(ar / br, elasticity.nu());
+            &built
+        }
+    };
+    let fs = if L::FULL_SLIP {
+        // full slip on the real patch: the slip direction back in the contact frame
+        let (lx, ly) = (cx * s.vx - sx * s.vy, sx * s.vx + cx * s.vy);
+        let major_over_c = (a / b).sqrt();
+        let st = SlipState::from_slip(Slip::or_rest(lx, ly, w), major_over_c, T::ZERO);
+        let t = full_slip(&st);
+        Creep {
+            fx: cx * t.fx + sx * t.fy,
+            fy: cx * t.fy - sx * t.fx,
+            mz: t.tz * major_over_c,
+        }
+    } else {
+        Creep::default()
+    };
+    let kappa = elasticity.g() * c * c / step.fn_;
+    let input = Input {
+        contact: shape,
+        kappa: if kappa.is_finite() { kappa } else { T::MAX },
+        vx: s.vx,
+        vy: s.vy,
+        w,
+        v: s.v,
+        full_slip: fs,
+    };
+    let cr = L::creep(&input);
+    let (fx, fy) = (cr.fx * step.fn_, cr.fy * step.fn_);
+    Wrench {
+        fx: cx * fx - sx * fy,
+        fy: sx * fx + cx * fy,
+        tz: cr.mz * step.fn_ * c,
+        ..zero
+    }
+}
