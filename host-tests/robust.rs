@@ -36,7 +36,15 @@ macro_rules! areas {
     )*};
 }
 
-areas!(elliptic, geometry, normal, friction, wrench, rolling);
+areas!(
+    elliptic,
+    geometry,
+    normal,
+    friction,
+    wrench,
+    rolling,
+    rolling_wrench
+);
 
 /// The rolling fuzz target's findings (issue 20), each once, deterministic: every output
 /// finite where the library used to return NaN (or a wrong error).
@@ -179,6 +187,44 @@ mod rolling_findings {
         for w in &ws {
             assert!(w.fx.hypot(w.fy) <= 0.25, "{w:?}");
         }
+    }
+
+    /// `contact::Rolling` (issue 20 round 2): κ = Gc²/(fN) overflowing (f32, G = 3e38 Pa,
+    /// h = 1e-30 m on a 1 mm sphere: N ≈ 4e-36 N, κ ≈ 2e41) gave NaN through the old clamp
+    /// κ ≤ T::MAX; it now shares `RollingContact`'s clamp (κ ≤ 1/ε²).
+    #[test]
+    fn rolling_wrench_at_a_tiny_load() {
+        use contensou::contact::{Contact, Rolling};
+        use contensou::friction::rolling::RollingVelocity;
+        use contensou::friction::{Best, Friction, Slip};
+        use contensou::geometry::Curvatures;
+        use contensou::normal::{Modulus, Undamped};
+        use contensou::shape::Newton;
+        let contact = Contact::hertz::<Newton>(
+            &Curvatures::new(1000.0f32, 1000.0).unwrap(),
+            Modulus::new(1e11).unwrap(),
+            Undamped,
+            Friction::<f32, Best>::with_law(0.3, 0.0).unwrap(),
+        )
+        .unwrap();
+        let el = Elasticity::new(3e38f32, 0.3).unwrap();
+        let v = RollingVelocity::new(1.0f32, 0.0).unwrap();
+        let slip = Slip::new(1e-3f32, 0.0, 1.0).unwrap();
+        macro_rules! law {
+            ($l:ty) => {{
+                let r = Rolling::<_, _, $l>::new(contact, el).unwrap();
+                let w = r.wrench(1e-30, 0.0, slip, v);
+                assert!(
+                    w.n > 0.0 && w.fx.is_finite() && w.fy.is_finite() && w.tz.is_finite(),
+                    "{w:?}"
+                );
+                assert!(w.fx.hypot(w.fy) <= 0.3 * w.n * (1.0 + 1e-5), "{w:?}");
+            }};
+        }
+        law!(Table);
+        law!(Blend);
+        law!(Fastsim);
+        law!(FastsimGrid<16, 16>);
     }
 
     /// `RollingSlip::creepages` at a subnormal V: 1/V overflowed and 0·∞ gave NaN.

@@ -14,7 +14,7 @@
 //! A failed check panics (a fuzzer crash).
 #![allow(dead_code, clippy::neg_cmp_op_on_partial_ord, clippy::collapsible_if)]
 
-use contensou::contact::{Contact, VaryingContact, Wrench};
+use contensou::contact::{self, Contact, VaryingContact, Wrench};
 use contensou::elliptic::{self, Agm, Integrals, Method, Parameter, Theta};
 use contensou::friction::rolling;
 use contensou::friction::{
@@ -864,4 +864,132 @@ pub fn rolling<T: Fz>(inp: &mut Input<'_>) {
         rolling_law::<rolling::FullSlip, T>(ct, p, &s, scale, el.g(), boxed, true);
         rolling_law::<rolling::Linear, T>(ct, p, &s, scale, el.g(), boxed, false);
     }
+}
+
+/// One rolling wrench (issue 20, `contact::Rolling`): no NaN unless N·a·f or N·f overflowed;
+/// in the box finite, |F| ≤ fN (1 + 1e-5) and F·v + T_z·ω ≤ 1e-5·fN·S, S = max(|V|, |v_x| +
+/// |v_y| + c|ω|) (plus a few of the smallest subnormals), v the slip, V the rolling velocity.
+fn rolling_wrench_ok<T: Real>(
+    w: &Wrench<T, ()>,
+    f: T,
+    boxed: bool,
+    slip: &Slip<T>,
+    v: &rolling::RollingVelocity<T>,
+    who: &str,
+) {
+    patch_ok(&w.patch, boxed, who);
+    // as for the sliding wrench, plus the patch's c² = ab (the laws' length scale) over- or
+    // underflowing
+    let ab = w.patch.a * w.patch.b;
+    let overflow = !(w.n * w.patch.a * f).is_finite()
+        || !(w.n * f).is_finite()
+        || !ab.is_finite()
+        || (ab == T::ZERO && w.patch.a > T::ZERO);
+    for x in [w.n, w.fx, w.fy, w.tz] {
+        assert!(
+            !nan(x) || overflow,
+            "{who}: NaN in {w:?} at {slip:?}, {v:?}"
+        );
+        if boxed {
+            fin(x, who);
+        }
+    }
+    if !boxed {
+        return;
+    }
+    let fn_ = (f * w.n.max(T::ZERO)).to_f64();
+    let c = (w.patch.a * w.patch.b).sqrt().to_f64();
+    let (fx, fy, tz) = (w.fx.to_f64(), w.fy.to_f64(), w.tz.to_f64());
+    let (vx, vy, om) = (
+        slip.vx().to_f64(),
+        slip.vy().to_f64(),
+        slip.omega().to_f64(),
+    );
+    let speed = v.vx().to_f64().hypot(v.vy().to_f64());
+    let s = speed.max(vx.abs() + vy.abs() + c * om.abs());
+    let tiny = 4.0 * T::MIN_POSITIVE.to_f64() * T::EPSILON.to_f64();
+    assert!(
+        fx.hypot(fy) <= fn_ * (1.0 + 1e-5) + tiny,
+        "{who}: |F| = {} > fN = {fn_} in {w:?} at {slip:?}, {v:?}",
+        fx.hypot(fy)
+    );
+    let p = fx * vx + fy * vy + tz * om;
+    assert!(
+        p <= 1e-5 * fn_ * s + tiny * (vx.abs() + vy.abs() + om.abs()),
+        "{who}: power {p} > 0 (fN·S = {}) in {w:?} at {slip:?}, {v:?}",
+        fn_ * s
+    );
+}
+
+fn rolling_contact_law<L: rolling::RollingLaw, T: Fz>(
+    inp: &mut Input<'_>,
+    c: &Curvatures<T>,
+    e: Modulus<T>,
+    el: rolling::Elasticity<T>,
+    boxed: bool,
+) {
+    let (f, h, hdot, vx, vy, om, vrx, vry): (T, T, T, T, T, T, T, T) = (
+        inp.val(),
+        inp.val(),
+        inp.val(),
+        inp.val(),
+        inp.val(),
+        inp.val(),
+        inp.val(),
+        inp.val(),
+    );
+    let v = rolling::RollingVelocity::new(vrx, vry);
+    match (vrx.is_finite(), vry.is_finite(), &v) {
+        (true, true, Ok(_)) => {}
+        (false, _, Err(Error::NonFinite("V_x"))) => {}
+        (true, false, Err(Error::NonFinite("V_y"))) => {}
+        _ => panic!("RollingVelocity::new({vrx:?}, {vry:?}) = {v:?}"),
+    }
+    let (Ok(fr), Ok(slip), Ok(v)) = (
+        Friction::<T, Best>::with_law(f, T::ZERO),
+        Slip::new(vx, vy, om),
+        v,
+    ) else {
+        return;
+    };
+    if !(h.is_finite() && hdot.is_finite()) {
+        return;
+    }
+    let boxed = boxed
+        && f.to_f64() <= 10.0
+        && h.to_f64() <= 1.0
+        && Box::small(hdot, 1e6)
+        && [vx, vy, om, vrx, vry].iter().all(|x| Box::small(*x, 1e12));
+    if let Ok(contact) = Contact::hertz::<Newton>(c, e, Undamped, fr) {
+        let r = contact::Rolling::<T, _, L>::new(contact, el);
+        let r = r.unwrap_or_else(|err| panic!("Rolling::new: {err:?}"));
+        rolling_wrench_ok(&r.wrench(h, hdot, slip, v), f, boxed, &slip, &v, L::NAME);
+    }
+    let varying = VaryingContact::new(e, Undamped, fr);
+    let r = contact::Rolling::<T, _, L>::new(varying, el);
+    let r = r.unwrap_or_else(|err| panic!("Rolling::new (varying): {err:?}"));
+    rolling_wrench_ok(&r.wrench(c, h, hdot, slip, v), f, boxed, &slip, &v, L::NAME);
+}
+
+/// `contact::Rolling` (fixed `Contact` and `VaryingContact`, friction `Best`) with every
+/// rolling law, `RollingVelocity::new` (issue 20). Box: the `wrench` box, G ∈ [1e3, 1e13] Pa,
+/// |V_x|, |V_y| ≤ 1e12 m/s.
+pub fn rolling_wrench<T: Fz>(inp: &mut Input<'_>) {
+    let (p, q, es, g, nu): (T, T, T, T, T) =
+        (inp.val(), inp.val(), inp.val(), inp.val(), inp.val());
+    let (Ok(c), Ok(e), Ok(el)) = (
+        Curvatures::new(p, q),
+        Modulus::new(es),
+        rolling::Elasticity::new(g, nu),
+    ) else {
+        return;
+    };
+    let boxed = Box::within(c.p(), 1e-6, 1e9)
+        && Box::within(c.q(), 1e-6, 1e9)
+        && Box::within(e.get(), 1e3, 1e13)
+        && Box::within(el.g(), 1e3, 1e13);
+    rolling_contact_law::<rolling::Table, T>(inp, &c, e, el, boxed);
+    rolling_contact_law::<rolling::Blend, T>(inp, &c, e, el, boxed);
+    rolling_contact_law::<rolling::Fastsim, T>(inp, &c, e, el, boxed);
+    rolling_contact_law::<rolling::FastsimGrid<16, 16>, T>(inp, &c, e, el, boxed);
 }
