@@ -628,14 +628,11 @@ fn contact_law<L: Law, T: Fz>(inp: &mut Input<'_>, c: &Curvatures<T>, e: Modulus
     ) else {
         return;
     };
-    if !(h.is_finite() && hdot.is_finite()) {
+    let Some(boxed) = step_box(boxed, f, h, hdot) else {
         return;
-    }
+    };
     let boxed = boxed
-        && f.to_f64() <= 10.0
         && delta.to_f64() <= 1e6
-        && h.to_f64() <= 1.0
-        && Box::small(hdot, 1e6)
         && cd.to_f64() <= 1e6
         && Box::small(vx, 1e12)
         && Box::small(vy, 1e12)
@@ -652,6 +649,13 @@ fn contact_law<L: Law, T: Fz>(inp: &mut Input<'_>, c: &Curvatures<T>, e: Modulus
         Constants::from_shape(&shape::Table::shape(Ratio::clamped(c.ratio()))),
     );
     wrench_ok(&fitted.wrench(h, hdot, slip), f, boxed, &slip, L::NAME);
+}
+
+/// A step's h, ḣ: `None` if not finite (nothing to check), else whether the step stays in the
+/// box (f ≤ 10, h ≤ 1 m, |ḣ| ≤ 1e6 m/s) given the contact's `boxed`.
+fn step_box<T: Real>(boxed: bool, f: T, h: T, hdot: T) -> Option<bool> {
+    (h.is_finite() && hdot.is_finite())
+        .then(|| boxed && f.to_f64() <= 10.0 && h.to_f64() <= 1.0 && Box::small(hdot, 1e6))
 }
 
 /// `Contact::wrench` and `VaryingContact::wrench` with every friction law.
@@ -952,14 +956,10 @@ fn rolling_contact_law<L: rolling::RollingLaw, T: Fz>(
     ) else {
         return;
     };
-    if !(h.is_finite() && hdot.is_finite()) {
+    let Some(boxed) = step_box(boxed, f, h, hdot) else {
         return;
-    }
-    let boxed = boxed
-        && f.to_f64() <= 10.0
-        && h.to_f64() <= 1.0
-        && Box::small(hdot, 1e6)
-        && [vx, vy, om, vrx, vry].iter().all(|x| Box::small(*x, 1e12));
+    };
+    let boxed = boxed && [vx, vy, om, vrx, vry].iter().all(|x| Box::small(*x, 1e12));
     if let Ok(contact) = Contact::hertz::<Newton>(c, e, Undamped, fr) {
         let r = contact::Rolling::<T, _, L>::new(contact, el);
         let r = r.unwrap_or_else(|err| panic!("Rolling::new: {err:?}"));
