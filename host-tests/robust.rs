@@ -43,7 +43,8 @@ areas!(
     friction,
     wrench,
     rolling,
-    rolling_wrench
+    rolling_wrench,
+    dynamic_rolling
 );
 
 /// The rolling fuzz target's findings (issue 20), each once, deterministic: every output

@@ -993,3 +993,129 @@ pub fn rolling_wrench<T: Fz>(inp: &mut Input<'_>) {
     rolling_contact_law::<rolling::Fastsim, T>(inp, &c, e, el, boxed);
     rolling_contact_law::<rolling::FastsimGrid<16, 16>, T>(inp, &c, e, el, boxed);
 }
+
+/// `dynamic::DynContact::new_rolling` + `wrench_rolling` with every rolling law and both forms
+/// (issue 20): the optional columns' errors name the column (`nu` first, then `G`; `vrx`, `vry`
+/// after the step's own columns); accepted inputs give the `rolling_wrench` oracles.
+pub fn dynamic_rolling<T: Fz>(inp: &mut Input<'_>) {
+    use contensou::dynamic::{DynContact, Form, Law, RollingSpec, RollingStep, Spec, Step};
+    let [p, q, estar, cd, f, delta, g, nu]: [T; 8] = core::array::from_fn(|_| inp.val());
+    let pick = inp.byte();
+    let law = Law::ROLLING[usize::from(pick % 4)];
+    let form = Form::ALL[usize::from(pick / 4 % 2)];
+    let rs = RollingSpec {
+        g: (pick & 0x10 != 0).then_some(g),
+        nu: (pick & 0x20 != 0).then_some(nu),
+    };
+    let spec = Spec {
+        p,
+        q,
+        estar,
+        cd,
+        f,
+        delta,
+    };
+    let sliding = DynContact::new(&spec, Law::Best, form);
+    let rolling = DynContact::new_rolling(&spec, &rs, law, form);
+    let Ok(_) = sliding else {
+        // the contract's own columns are checked first, as for the sliding laws
+        assert_eq!(rolling.err(), sliding.err(), "new_rolling vs new");
+        return;
+    };
+    let nu_v = rs.nu.unwrap_or(T::from_f64(0.3));
+    let expected = if !nu_v.is_finite() {
+        Some(("nu", Error::NonFinite("nu")))
+    } else if !(nu_v >= T::ZERO && nu_v <= T::HALF) {
+        Some(("nu", Error::RollingPoissonRatioOutOfRange))
+    } else {
+        match rs.g {
+            Some(g) if !g.is_finite() => Some(("G", Error::NonFinite("G"))),
+            Some(g) if g <= T::ZERO => Some(("G", Error::ShearModulusNotPositive)),
+            Some(_) => None,
+            // E*·(1 − ν) underflowing to 0 for a subnormal E*
+            None if estar * (T::ONE - nu_v) <= T::ZERO => {
+                Some(("estar", Error::ShearModulusNotPositive))
+            }
+            None => None,
+        }
+    };
+    let got = rolling.as_ref().err().map(|e| (e.column, e.error));
+    assert_eq!(got, expected, "new_rolling({rs:?})");
+    let Ok(contact) = rolling else { return };
+    let [h, hdot, vx, vy, om, vrx, vry]: [T; 7] = core::array::from_fn(|_| inp.val());
+    let step = Step {
+        h,
+        hdot,
+        vx,
+        vy,
+        omega: om,
+    };
+    let out = contact.wrench_rolling(&step, &RollingStep { vrx, vry });
+    let first_bad = [
+        ("h", h),
+        ("hdot", hdot),
+        ("vx", vx),
+        ("vy", vy),
+        ("omega", om),
+    ]
+    .into_iter()
+    .chain([("vrx", vrx), ("vry", vry)])
+    .find(|(_, x)| !x.is_finite());
+    let w = match (first_bad, out) {
+        (Some((col, _)), Err(e)) => {
+            assert_eq!(e.column, col, "wrench_rolling: {e:?}");
+            assert!(matches!(e.error, Error::NonFinite(_)), "{e:?}");
+            return;
+        }
+        (None, Ok(w)) => w,
+        (bad, out) => panic!("wrench_rolling: {bad:?} gave {out:?}"),
+    };
+    let el = contact.rolling_spec().elasticity(estar).unwrap();
+    let boxed = Box::within(p.min(q), 1e-6, 1e9)
+        && Box::within(p.max(q), 1e-6, 1e9)
+        && Box::within(estar, 1e3, 1e13)
+        && Box::within(el.g(), 1e3, 1e13)
+        && cd.to_f64() <= 1e6;
+    let Some(boxed) = step_box(boxed, f, h, hdot) else {
+        return;
+    };
+    let boxed = boxed && [vx, vy, om, vrx, vry].iter().all(|x| Box::small(*x, 1e12));
+    let ab = w.a * w.b;
+    let overflow = !(w.n * w.a * f).is_finite()
+        || !(w.n * f).is_finite()
+        || !ab.is_finite()
+        || (ab == T::ZERO && w.a > T::ZERO);
+    for x in [w.n, w.fx, w.fy, w.tz] {
+        assert!(
+            !nan(x) || overflow,
+            "{}: NaN in {w:?} at {step:?}",
+            law.name()
+        );
+        if boxed {
+            fin(x, law.name());
+        }
+    }
+    if !boxed {
+        return;
+    }
+    let fn_ = (f * w.n.max(T::ZERO)).to_f64();
+    let c = ab.sqrt().to_f64();
+    let (fx, fy, tz) = (w.fx.to_f64(), w.fy.to_f64(), w.tz.to_f64());
+    let (vx, vy, om) = (vx.to_f64(), vy.to_f64(), om.to_f64());
+    let s = vrx
+        .to_f64()
+        .hypot(vry.to_f64())
+        .max(vx.abs() + vy.abs() + c * om.abs());
+    let tiny = 4.0 * T::MIN_POSITIVE.to_f64() * T::EPSILON.to_f64();
+    assert!(
+        fx.hypot(fy) <= fn_ * (1.0 + 1e-5) + tiny,
+        "{}: |F| > fN in {w:?}",
+        law.name()
+    );
+    let pw = fx * vx + fy * vy + tz * om;
+    assert!(
+        pw <= 1e-5 * fn_ * s + tiny * (vx.abs() + vy.abs() + om.abs()),
+        "{}: power {pw} > 0 in {w:?} at {step:?}",
+        law.name()
+    );
+}
