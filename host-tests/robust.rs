@@ -228,6 +228,46 @@ mod rolling_findings {
         law!(FastsimGrid<16, 16>);
     }
 
+    /// `contact::Rolling` with a slip whose magnitude overflows f32 (v = (f32::MAX, −1.77e38),
+    /// V at 45°): the rotation into the rolling frame gave v_y = −∞ and ∞/∞ = NaN in
+    /// `RollingSlip::scaled`. Now the limit direction: full slip, finite.
+    #[test]
+    fn rolling_wrench_of_an_overflowing_slip() {
+        use contensou::contact::{Contact, Rolling};
+        use contensou::friction::rolling::RollingVelocity;
+        use contensou::friction::{Best, Friction, Slip};
+        use contensou::geometry::Curvatures;
+        use contensou::normal::{Modulus, Undamped};
+        use contensou::shape::Newton;
+        let contact = Contact::hertz::<Newton>(
+            &Curvatures::new(10.0f32, 200.0).unwrap(),
+            Modulus::new(1e11).unwrap(),
+            Undamped,
+            Friction::<f32, Best>::with_law(0.3, 0.0).unwrap(),
+        )
+        .unwrap();
+        let el = Elasticity::new(8e10f32, 0.3).unwrap();
+        let v = RollingVelocity::new(1.0f32, 1.0).unwrap();
+        let slip = Slip::new(f32::MAX, -1.7698068e38, 1.0).unwrap();
+        macro_rules! law {
+            ($l:ty) => {{
+                let r = Rolling::<_, _, $l>::new(contact, el).unwrap();
+                let w = r.wrench(1e-5, 0.0, slip, v);
+                assert!(
+                    w.n > 0.0 && w.fx.is_finite() && w.fy.is_finite() && w.tz.is_finite(),
+                    "{w:?}"
+                );
+                assert!(w.fx.hypot(w.fy) <= 0.3 * w.n * (1.0 + 1e-5), "{w:?}");
+                // opposing the slip
+                assert!(w.fx < 0.0 && w.fy > 0.0, "{w:?}");
+            }};
+        }
+        law!(Table);
+        law!(Blend);
+        law!(Fastsim);
+        law!(FastsimGrid<16, 16>);
+    }
+
     /// `RollingSlip::creepages` at a subnormal V: 1/V overflowed and 0·∞ gave NaN.
     #[test]
     fn creepages_at_subnormal_speed() {

@@ -131,7 +131,7 @@ impl<T: Real> RollingSlip<T> {
     }
 
     /// Rest, an overflowing sum, or a subnormal one: divide by the largest magnitude (c|ω|
-    /// overflowing: pure spin), by four divisions (1/m may overflow for a subnormal m: ∞·0 =
+    /// overflowing: pure spin; an infinite component, from a caller's arithmetic: its sign), by four divisions (1/m may overflow for a subnormal m: ∞·0 =
     /// NaN, a fuzz finding of issue 20).
     #[cold]
     fn unusual(&self, c: T, mirrored: bool, vx: T, om: T, v: T) -> Scaled<T> {
@@ -146,6 +146,25 @@ impl<T: Real> RollingSlip<T> {
             };
         }
         let m = vx.abs().max(self.vy.abs()).max(cw.abs()).max(v);
+        if !m.is_finite() {
+            // a component itself overflowed (a caller's rotation of an extreme slip, or |V|
+            // from its components): the limit direction, ±1 for the infinite ones (fuzz
+            // finding, issue 20: ∞/∞ = NaN in contact::Rolling at f32 |v| ≈ 3.8e38)
+            let unit = |x: T| {
+                if !x.is_finite() {
+                    T::ONE.copysign(x)
+                } else {
+                    T::ZERO
+                }
+            };
+            return Scaled {
+                vx: unit(vx),
+                vy: unit(self.vy),
+                omega: T::ZERO,
+                v: unit(v),
+                mirrored,
+            };
+        }
         if m > T::ZERO {
             Scaled {
                 vx: vx / m,
