@@ -268,6 +268,43 @@ mod rolling_findings {
         law!(FastsimGrid<16, 16>);
     }
 
+    /// FASTSIM at V = 0 with a tiny κ (f32 G = 0.11 Pa under N = 5.6e24 N: κ = 6e-24): its
+    /// squared increments underflowed, the adhesion test read 0 ≤ 0 and the traction became
+    /// q/MIN_POSITIVE: F_x = ∞, F_y = NaN. κ is now at least ε².
+    #[test]
+    fn fastsim_at_a_tiny_load_parameter() {
+        use contensou::contact::{Rolling, VaryingContact};
+        use contensou::friction::rolling::RollingVelocity;
+        use contensou::friction::{Best, Friction, Slip};
+        use contensou::geometry::Curvatures;
+        use contensou::normal::{Modulus, Undamped};
+        let c = Curvatures::new(1.1523438e-5f32, 0.14335938).unwrap();
+        let contact = VaryingContact::new(
+            Modulus::new(1.90625e23f32).unwrap(),
+            Undamped,
+            Friction::<f32, Best>::with_law(0.5, 0.0).unwrap(),
+        );
+        let el = Elasticity::new(0.10976563f32, 0.115234375).unwrap();
+        let slip = Slip::new(-0.046852607f32, 0.0, 0.0).unwrap();
+        macro_rules! law {
+            ($l:ty) => {{
+                let r = Rolling::<_, _, $l>::new(contact, el).unwrap();
+                let w = r.wrench(&c, 0.5, 1e-45, slip, RollingVelocity::ZERO);
+                assert!(
+                    w.fx.is_finite() && w.fy.is_finite() && w.tz.is_finite(),
+                    "{w:?}"
+                );
+                // full slip along +x (opposing v_x < 0): |F| = fN to FASTSIM's grid error
+                assert!(w.fx > 0.0 && w.fx <= 0.5 * w.n * (1.0 + 1e-5), "{w:?}");
+                assert!(w.fx >= 0.5 * w.n * 0.9, "{w:?}");
+            }};
+        }
+        law!(Table);
+        law!(Blend);
+        law!(Fastsim);
+        law!(FastsimGrid<16, 16>);
+    }
+
     /// `RollingSlip::creepages` at a subnormal V: 1/V overflowed and 0·∞ gave NaN.
     #[test]
     fn creepages_at_subnormal_speed() {

@@ -72,7 +72,7 @@ impl<T: Real> Patch<T> {
 pub struct Input<'a, T> {
     /// The creep shape (Kalker's coefficients, `blend`'s constants, `table`'s residuals).
     pub contact: &'a RollingShape<T>,
-    /// κ = Gc²/(fN) > 0 (the inverse of the load ratio fN/(Gc²)), at most 1/ε²
+    /// κ = Gc²/(fN) > 0 (the inverse of the load ratio fN/(Gc²)), within [ε², 1/ε²]
     /// ([`load_parameter`]).
     pub kappa: T,
     /// v_x/S
@@ -256,16 +256,22 @@ impl<T: Real> RollingContact<T> {
     }
 }
 
-/// κ = Gc²/(fN) as the laws read it ([`Input::kappa`]): clamped to 1/ε² (f32: 7e13, f64:
+/// κ = Gc²/(fN) as the laws read it ([`Input::kappa`]): at most 1/ε² (f32: 7e13, f64:
 /// 2e31; ∞ and NaN too). A larger κ only moves the end of the linear range to creepages below
 /// ε²/C, under the rounding of the velocities they come from (and needs a patch 1/ε² times
 /// smaller than the bodies' radii: nothing Hertzian); the clamp keeps κ·C and its square finite
 /// in every law (fuzz finding, issue 20: NaN from every law at G near the float's maximum, or
 /// a tiny N in f32, with the old clamp κ ≤ T::MAX). Every caller building an [`Input`] uses it.
+///
+/// And at least ε² (f32: 1.4e-14, f64: 4.9e-32): κ ≳ 1/f for any Hertzian contact (fN/(Gc²)
+/// is of the order of f·p₀/G, and p₀/G ≪ 1), so a κ below ε² needs a pressure 1/ε² times the
+/// shear modulus; the floor keeps FASTSIM's squared increments (κ·C·ΔX)² from underflowing to
+/// an adhesion test 0 ≤ 0 at V = 0 (fuzz finding: an infinite force at f32 κ = 6e-24).
 #[inline(always)]
 pub(crate) fn load_parameter<T: Real>(kappa: T) -> T {
-    let max = T::ONE / (T::EPSILON * T::EPSILON);
-    if kappa < max { kappa } else { max }
+    let min = T::EPSILON * T::EPSILON;
+    let max = T::ONE / min;
+    if kappa < max { kappa.max(min) } else { max }
 }
 
 /// Full slip everywhere, whatever V (the sliding law of the library, `best`): the limit every
