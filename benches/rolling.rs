@@ -139,7 +139,9 @@ fn main() {
     bench::<f64, Blend>(&mut c, "blend");
     bench::<f32, FullSlip>(&mut c, "full-slip");
     bench::<f64, FullSlip>(&mut c, "full-slip");
+    bench::<f32, FastsimGrid<16, 16>>(&mut c, "fastsim-16");
     bench::<f64, FastsimGrid<16, 16>>(&mut c, "fastsim-16");
+    bench::<f32, Fastsim>(&mut c, "fastsim");
     bench::<f64, Fastsim>(&mut c, "fastsim");
     wrench_bench::<f32>(&mut c);
     wrench_bench::<f64>(&mut c);

@@ -217,6 +217,86 @@ fn each_variant<T: Real>() {
     );
 }
 
+/// Every rolling constructor (issue 20 item 7): bad G, ν, a/b, patch, non-finite slip or
+/// rolling velocity → the documented variant, naming the input for `NonFinite`; the domain's
+/// ends accepted.
+fn rolling_errors<T: Real>() {
+    use contensou::friction::rolling::{Elasticity, Patch, RollingContact, RollingSlip};
+    let x = T::from_f64;
+    let (nan, inf) = (x(f64::NAN), x(f64::INFINITY));
+    let (g, nu) = (x(8e10), x(0.3));
+    // G: ≤ 0 (−0 included) → ShearModulusNotPositive, NaN/±∞ → NonFinite("G"); a tiny G is valid
+    for bad in [x(0.0), x(-0.0), x(-1e9), -x(f64::MIN_POSITIVE)] {
+        let e = Error::ShearModulusNotPositive;
+        assert_eq!(Elasticity::new(bad, nu).unwrap_err(), e);
+        assert_eq!(Elasticity::dissimilar(bad, nu, g, nu).unwrap_err(), e);
+        assert_eq!(Elasticity::dissimilar(g, nu, bad, nu).unwrap_err(), e);
+    }
+    assert!(Elasticity::new(T::MIN_POSITIVE, nu).is_ok());
+    for bad in [nan, inf, -inf] {
+        nonfinite(Elasticity::new(bad, nu), "G");
+        nonfinite(Elasticity::dissimilar(g, nu, bad, nu), "G");
+        nonfinite(Elasticity::new(g, bad), "nu");
+        nonfinite(Elasticity::dissimilar(g, bad, g, nu), "nu");
+    }
+    // ν outside [0, 0.5] → RollingPoissonRatioOutOfRange; both ends valid
+    for bad in [x(-0.01), x(0.5000001), x(1.0), x(-1.0)] {
+        let e = Error::RollingPoissonRatioOutOfRange;
+        assert_eq!(Elasticity::new(g, bad).unwrap_err(), e);
+        assert_eq!(Elasticity::dissimilar(g, nu, g, bad).unwrap_err(), e);
+    }
+    for ok in [x(0.0), x(0.5)] {
+        assert_eq!(Elasticity::new(g, ok).unwrap().nu(), ok);
+    }
+    // a/b outside [0.01, 100] → RollingAspectOutOfRange, NaN/±∞ → NonFinite("a/b")
+    let el = Elasticity::new(g, nu).unwrap();
+    for bad in [x(0.0), x(-1.0), x(0.0099), x(100.01), x(1e30)] {
+        assert_eq!(
+            RollingContact::new(bad, el).unwrap_err(),
+            Error::RollingAspectOutOfRange
+        );
+    }
+    for ok in [x(0.01), x(1.0), x(100.0)] {
+        assert!(RollingContact::new(ok, el).is_ok());
+    }
+    for bad in [nan, inf, -inf] {
+        nonfinite(RollingContact::new(bad, el), "a/b");
+    }
+    // patch: a, b ≤ 0 → LengthNotPositive, f < 0 → FrictionCoefficientNegative, names
+    let one = x(1.0);
+    for (a, b) in [(x(0.0), one), (one, x(-1.0)), (x(-0.0), one)] {
+        assert_eq!(
+            Patch::new(a, b, one, x(0.3)).unwrap_err(),
+            Error::LengthNotPositive
+        );
+    }
+    assert_eq!(
+        Patch::new(one, one, one, x(-0.1)).unwrap_err(),
+        Error::FrictionCoefficientNegative
+    );
+    assert!(Patch::new(one, one, x(-5.0), x(0.0)).is_ok()); // N ≤ 0: no contact, not an error
+    nonfinite(Patch::new(nan, one, one, one), "a");
+    nonfinite(Patch::new(one, inf, one, one), "b");
+    nonfinite(Patch::new(one, one, -inf, one), "N");
+    nonfinite(Patch::new(one, one, one, nan), "f");
+    // rolling slip and velocity: every non-finite input named (V = the rolling velocity)
+    let z = x(0.0);
+    for bad in [nan, inf, -inf] {
+        nonfinite(RollingSlip::new(bad, z, z, one), "v_x");
+        nonfinite(RollingSlip::new(z, bad, z, one), "v_y");
+        nonfinite(RollingSlip::new(z, z, bad, one), "omega");
+        nonfinite(RollingSlip::new(z, z, z, bad), "V");
+        nonfinite(RollingSlip::from_creepages(z, z, z, bad), "v_x");
+        nonfinite(RollingSlip::from_creepages(z, bad, z, one), "v_y");
+    }
+    // creepage × V overflowing is non-finite too
+    let big = T::MAX.sqrt() * x(2.0);
+    nonfinite(RollingSlip::from_creepages(big, z, z, big), "v_x");
+    nonfinite(RollingSlip::from_creepages(z, z, big, -big), "omega");
+    // V = 0 (full slip) and V < 0 (mirrored) are valid
+    assert!(RollingSlip::new(one, z, z, z).is_ok() && RollingSlip::new(one, z, z, -one).is_ok());
+}
+
 /// ColumnLengthMismatch: a batch call whose columns differ in length (here `vy`).
 fn column_length_mismatch<T: BatchReal>() {
     let x = T::from_f64;
@@ -251,6 +331,8 @@ fn column_length_mismatch<T: BatchReal>() {
 fn each_variant_is_produced_by_the_documented_input() {
     each_variant::<f32>();
     each_variant::<f64>();
+    rolling_errors::<f32>();
+    rolling_errors::<f64>();
     column_length_mismatch::<f32>();
     column_length_mismatch::<f64>();
 }

@@ -36,4 +36,281 @@ macro_rules! areas {
     )*};
 }
 
-areas!(elliptic, geometry, normal, friction, wrench);
+areas!(
+    elliptic,
+    geometry,
+    normal,
+    friction,
+    wrench,
+    rolling,
+    rolling_wrench,
+    dynamic_rolling
+);
+
+/// The rolling fuzz target's findings (issue 20), each once, deterministic: every output
+/// finite where the library used to return NaN (or a wrong error).
+mod rolling_findings {
+    use contensou::Real;
+    use contensou::friction::rolling::{
+        Blend, Elasticity, Fastsim, FastsimGrid, FullSlip, Patch, RollingContact, RollingLaw,
+        RollingSlip, Table, Wrench,
+    };
+
+    fn all<T: Real>(c: &RollingContact<T>, p: &Patch<T>, s: &RollingSlip<T>) -> [Wrench<T>; 5] {
+        fn one<L: RollingLaw, T: Real>(
+            c: &RollingContact<T>,
+            p: &Patch<T>,
+            s: &RollingSlip<T>,
+        ) -> Wrench<T> {
+            c.wrench::<L>(p, s)
+        }
+        [
+            one::<Table, T>(c, p, s),
+            one::<Blend, T>(c, p, s),
+            one::<Fastsim, T>(c, p, s),
+            one::<FastsimGrid<16, 16>, T>(c, p, s),
+            one::<FullSlip, T>(c, p, s),
+        ]
+    }
+
+    fn finite<T: Real>(ws: &[Wrench<T>]) {
+        for w in ws {
+            assert!(
+                w.fx.is_finite() && w.fy.is_finite() && w.mz.is_finite(),
+                "{:?}",
+                (w.fx.to_f64(), w.fy.to_f64(), w.mz.to_f64())
+            );
+        }
+    }
+
+    /// `blend`/`table`: M_z = S(d/m)·M_fs squared d and m: a spin of 1e-27 rad/s at a
+    /// saturated ξ underflowed to 0/0 = NaN in f32. Now M_z is tiny, F_x full slip.
+    #[test]
+    fn tiny_spin_at_saturated_creep() {
+        let c = RollingContact::new(2.0f32, Elasticity::new(8e10, 0.3).unwrap()).unwrap();
+        let p = Patch::new(1e-3, 1e-3, 1.0, 0.3).unwrap();
+        let s = RollingSlip::new(1e-3f32, 0.0, 1e-27, 1.0).unwrap();
+        let ws = all(&c, &p, &s);
+        finite(&ws);
+        for w in &ws[..2] {
+            assert!((w.fx + 0.3).abs() < 1e-6 && w.mz.abs() < 1e-20, "{w:?}");
+        }
+    }
+
+    /// A subnormal rolling speed (V = 1e-310 m/s, pure spin): (a/v)·κ overflowed, ∞·0 = NaN
+    /// in `blend`/`table`'s M_z. Now the full-slip pure spin moment, as `full-slip` gives.
+    #[test]
+    fn subnormal_rolling_speed() {
+        let c = RollingContact::new(2.0f64, Elasticity::new(8e10, 0.3).unwrap()).unwrap();
+        let p = Patch::new(1e-3, 1e-3, 1e3, 0.3).unwrap();
+        let s = RollingSlip::new(0.0, 0.0, 1.0, 1e-310).unwrap();
+        let ws = all(&c, &p, &s);
+        finite(&ws);
+        let fs = ws[4].mz;
+        for w in &ws[..2] {
+            assert!((w.mz - fs).abs() <= 1e-9 * fs.abs(), "{w:?} vs {fs}");
+        }
+        // f32: V/S subnormal
+        let c = RollingContact::new(2.0f32, Elasticity::new(8e10, 0.3).unwrap()).unwrap();
+        let p = Patch::new(1e-3, 1e-3, 1e3, 0.3).unwrap();
+        finite(&all(
+            &c,
+            &p,
+            &RollingSlip::new(1.0f32, 0.0, 0.0, 1e-40).unwrap(),
+        ));
+    }
+
+    /// A subnormal slip sum S (f32 v_x = −1e-40 at V = 0): 1/S overflowed in
+    /// `RollingSlip::scaled` (0·∞ = NaN in v_y). Now full slip along −x.
+    #[test]
+    fn subnormal_slip() {
+        let c = RollingContact::new(1.0f32, Elasticity::new(1e9, 0.3).unwrap()).unwrap();
+        let p = Patch::new(0.5, 0.5, 1e-16, 0.28).unwrap();
+        let s = RollingSlip::new(-1e-40f32, 0.0, 0.0, 0.0).unwrap();
+        let sc = s.scaled(0.5);
+        assert_eq!((sc.vx, sc.vy, sc.omega, sc.v), (-1.0, 0.0, 0.0, 0.0));
+        let ws = all(&c, &p, &s);
+        finite(&ws);
+        let fn_ = 0.28f32 * 1e-16;
+        for w in &ws {
+            assert!((w.fx - fn_).abs() < 1e-3 * fn_ && w.fy == 0.0, "{w:?}");
+        }
+    }
+
+    /// κ = Gc²/(fN) overflowing (G near the float's maximum, or a tiny load in f32): κ·C
+    /// overflowed to ∞ and 0·∞ gave NaN in every law. κ is clamped to 1/ε².
+    #[test]
+    fn huge_load_parameter() {
+        let c = RollingContact::new(21.0f64, Elasticity::new(f64::MAX, 0.3).unwrap()).unwrap();
+        let p = Patch::new(1e-10, 2e-11, 8.4e-86, 1.0).unwrap();
+        let s = RollingSlip::new(-1.4e28, 4.9e-9, 1.25e104, 6.27e271).unwrap();
+        finite(&all(&c, &p, &s));
+        let c = RollingContact::new(2.0f32, Elasticity::new(8e10, 0.3).unwrap()).unwrap();
+        let p = Patch::new(1e-3, 1e-3, 1e-30, 0.3).unwrap();
+        let ws = all(&c, &p, &RollingSlip::new(1e-3f32, 0.0, 1.0, 1.0).unwrap());
+        finite(&ws);
+        for w in &ws {
+            assert!(w.fx.hypot(w.fy) <= 0.3e-30 * (1.0 + 1e-5), "{w:?}");
+        }
+    }
+
+    /// `Elasticity::dissimilar` of two valid bodies near the float's maximum: 1/G₁ + 1/G₂
+    /// rounded to G = ∞ and the call returned `ShearModulusNotPositive`.
+    #[test]
+    fn dissimilar_extremes() {
+        let e = Elasticity::dissimilar(f32::MAX, 0.3, f32::MAX, 0.3).unwrap();
+        assert_eq!((e.g(), e.nu()), (f32::MAX, 0.3));
+        let e = Elasticity::dissimilar(1e-45f32, 0.5, 1e30, 0.0).unwrap();
+        assert!(
+            e.g() > 0.0 && e.g() <= 2.0 * 1e-45f32 && e.nu() == 0.5,
+            "{e:?}"
+        );
+        // the ordinary case is unchanged (1/G = ½(1/G₁ + 1/G₂))
+        let e = Elasticity::dissimilar(80e9f64, 0.3, 1e6, 0.5).unwrap();
+        assert!((e.g() / (2.0 / (1.0 / 80e9 + 1.0 / 1e6)) - 1.0).abs() < 1e-15);
+    }
+
+    /// The passivity projection W − P·u/|u|² with |u|² underflowing (f64: v_y/V = 5e-169,
+    /// cω/V = 1e-167, κ = 2e24): P/0 = ∞ and NaN in FASTSIM. u is now scaled first.
+    #[test]
+    fn passivity_projection_of_a_tiny_slip() {
+        let c = RollingContact::new(40.0f64, Elasticity::new(1.00390625e23, 0.0).unwrap()).unwrap();
+        let p = Patch::new(2.4 * 40f64.sqrt(), 2.4 / 40f64.sqrt(), 0.25, 1.0).unwrap();
+        let s = RollingSlip::new(
+            0.0,
+            -1.6835937500000002e-28,
+            -1.68359375e-27,
+            -3.4534724410691748e140,
+        )
+        .unwrap();
+        let ws = all(&c, &p, &s);
+        finite(&ws);
+        for w in &ws {
+            assert!(w.fx.hypot(w.fy) <= 0.25, "{w:?}");
+        }
+    }
+
+    /// `contact::Rolling` (issue 20 round 2): κ = Gc²/(fN) overflowing (f32, G = 3e38 Pa,
+    /// h = 1e-30 m on a 1 mm sphere: N ≈ 4e-36 N, κ ≈ 2e41) gave NaN through the old clamp
+    /// κ ≤ T::MAX; it now shares `RollingContact`'s clamp (κ ≤ 1/ε²).
+    #[test]
+    fn rolling_wrench_at_a_tiny_load() {
+        use contensou::contact::{Contact, Rolling};
+        use contensou::friction::rolling::RollingVelocity;
+        use contensou::friction::{Best, Friction, Slip};
+        use contensou::geometry::Curvatures;
+        use contensou::normal::{Modulus, Undamped};
+        use contensou::shape::Newton;
+        let contact = Contact::hertz::<Newton>(
+            &Curvatures::new(1000.0f32, 1000.0).unwrap(),
+            Modulus::new(1e11).unwrap(),
+            Undamped,
+            Friction::<f32, Best>::with_law(0.3, 0.0).unwrap(),
+        )
+        .unwrap();
+        let el = Elasticity::new(3e38f32, 0.3).unwrap();
+        let v = RollingVelocity::new(1.0f32, 0.0).unwrap();
+        let slip = Slip::new(1e-3f32, 0.0, 1.0).unwrap();
+        macro_rules! law {
+            ($l:ty) => {{
+                let r = Rolling::<_, _, $l>::new(contact, el).unwrap();
+                let w = r.wrench(1e-30, 0.0, slip, v);
+                assert!(
+                    w.n > 0.0 && w.fx.is_finite() && w.fy.is_finite() && w.tz.is_finite(),
+                    "{w:?}"
+                );
+                assert!(w.fx.hypot(w.fy) <= 0.3 * w.n * (1.0 + 1e-5), "{w:?}");
+            }};
+        }
+        law!(Table);
+        law!(Blend);
+        law!(Fastsim);
+        law!(FastsimGrid<16, 16>);
+    }
+
+    /// `contact::Rolling` with a slip whose magnitude overflows f32 (v = (f32::MAX, −1.77e38),
+    /// V at 45°): the rotation into the rolling frame gave v_y = −∞ and ∞/∞ = NaN in
+    /// `RollingSlip::scaled`. Now the limit direction: full slip, finite.
+    #[test]
+    fn rolling_wrench_of_an_overflowing_slip() {
+        use contensou::contact::{Contact, Rolling};
+        use contensou::friction::rolling::RollingVelocity;
+        use contensou::friction::{Best, Friction, Slip};
+        use contensou::geometry::Curvatures;
+        use contensou::normal::{Modulus, Undamped};
+        use contensou::shape::Newton;
+        let contact = Contact::hertz::<Newton>(
+            &Curvatures::new(10.0f32, 200.0).unwrap(),
+            Modulus::new(1e11).unwrap(),
+            Undamped,
+            Friction::<f32, Best>::with_law(0.3, 0.0).unwrap(),
+        )
+        .unwrap();
+        let el = Elasticity::new(8e10f32, 0.3).unwrap();
+        let v = RollingVelocity::new(1.0f32, 1.0).unwrap();
+        let slip = Slip::new(f32::MAX, -1.7698068e38, 1.0).unwrap();
+        macro_rules! law {
+            ($l:ty) => {{
+                let r = Rolling::<_, _, $l>::new(contact, el).unwrap();
+                let w = r.wrench(1e-5, 0.0, slip, v);
+                assert!(
+                    w.n > 0.0 && w.fx.is_finite() && w.fy.is_finite() && w.tz.is_finite(),
+                    "{w:?}"
+                );
+                assert!(w.fx.hypot(w.fy) <= 0.3 * w.n * (1.0 + 1e-5), "{w:?}");
+                // opposing the slip
+                assert!(w.fx < 0.0 && w.fy > 0.0, "{w:?}");
+            }};
+        }
+        law!(Table);
+        law!(Blend);
+        law!(Fastsim);
+        law!(FastsimGrid<16, 16>);
+    }
+
+    /// FASTSIM at V = 0 with a tiny κ (f32 G = 0.11 Pa under N = 5.6e24 N: κ = 6e-24): its
+    /// squared increments underflowed, the adhesion test read 0 ≤ 0 and the traction became
+    /// q/MIN_POSITIVE: F_x = ∞, F_y = NaN. κ is now at least ε².
+    #[test]
+    fn fastsim_at_a_tiny_load_parameter() {
+        use contensou::contact::{Rolling, VaryingContact};
+        use contensou::friction::rolling::RollingVelocity;
+        use contensou::friction::{Best, Friction, Slip};
+        use contensou::geometry::Curvatures;
+        use contensou::normal::{Modulus, Undamped};
+        let c = Curvatures::new(1.1523438e-5f32, 0.14335938).unwrap();
+        let contact = VaryingContact::new(
+            Modulus::new(1.90625e23f32).unwrap(),
+            Undamped,
+            Friction::<f32, Best>::with_law(0.5, 0.0).unwrap(),
+        );
+        let el = Elasticity::new(0.10976563f32, 0.115234375).unwrap();
+        let slip = Slip::new(-0.046852607f32, 0.0, 0.0).unwrap();
+        macro_rules! law {
+            ($l:ty) => {{
+                let r = Rolling::<_, _, $l>::new(contact, el).unwrap();
+                let w = r.wrench(&c, 0.5, 1e-45, slip, RollingVelocity::ZERO);
+                assert!(
+                    w.fx.is_finite() && w.fy.is_finite() && w.tz.is_finite(),
+                    "{w:?}"
+                );
+                // full slip along +x (opposing v_x < 0): |F| = fN to FASTSIM's grid error
+                assert!(w.fx > 0.0 && w.fx <= 0.5 * w.n * (1.0 + 1e-5), "{w:?}");
+                assert!(w.fx >= 0.5 * w.n * 0.9, "{w:?}");
+            }};
+        }
+        law!(Table);
+        law!(Blend);
+        law!(Fastsim);
+        law!(FastsimGrid<16, 16>);
+    }
+
+    /// `RollingSlip::creepages` at a subnormal V: 1/V overflowed and 0·∞ gave NaN.
+    #[test]
+    fn creepages_at_subnormal_speed() {
+        let s = RollingSlip::new(0.0f64, 1e-300, 0.0, 1e-310).unwrap();
+        let (x, y, p) = s.creepages().unwrap();
+        assert_eq!((x, p), (0.0, 0.0));
+        assert!((y - 1e10).abs() < 1e-3 * 1e10);
+    }
+}

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Host nanoseconds per call for the report: runs the criterion benches elliptic, hertz, friction
-# and wrench with short measurement times, then reads target/criterion/<id>/new/sample.json and
+# Host nanoseconds per call for the report: runs the criterion benches elliptic, hertz, friction,
+# wrench and rolling with short measurement times, then reads target/criterion/<id>/new/sample.json and
 # keeps the fastest sample (time/iterations; on a shared, loaded machine the minimum is far more
 # repeatable than the mean), divided by the calls per iteration, and writes
 #   bench-results/host-ns.csv    stage,method,precision,ns   (keys as in bench-results/qemu.csv)
@@ -17,7 +17,7 @@ if [[ "${1:-}" != "--collect" ]]; then
     # the optional micromath backend's twins get their own rows (`*_micromath_f32` ids)
     features=()
     grep -q '^micromath *=' Cargo.toml && features=(--features micromath)
-    for b in elliptic hertz friction wrench; do
+    for b in elliptic hertz friction wrench rolling; do
         cargo bench "${features[@]}" --bench "$b" -- "${args[@]}" >&2
     done
 fi
@@ -49,6 +49,9 @@ for p in ("f32", "f64"):
     for g in ("fixed", "table_each_step"):
         for law, suffix in (("simplified", ""), ("best", "-best")):
             rows.append(("wrench", g + suffix, p, fastest(f"wrench_{g}_{law}_{p}", 1)))
+    # benches/rolling.rs: RollingContact::wrench over the 64 states of the QEMU stage `rolling`
+    for m in ("table", "blend", "fastsim", "fastsim-16", "full-slip"):
+        rows.append(("rolling", m, p, fastest(f"rolling_{m}-{p}", 64)))
 # the micromath twins (f32 only; present when the benches ran with --features micromath)
 rows.append(("elliptic", "theta-micromath", "f32", fastest("kebd_theta_micromath_f32", 64)))
 for m in ("per_step", "shape_hamrock-dowson"):

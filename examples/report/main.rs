@@ -17,6 +17,7 @@ mod inputs;
 mod measure;
 mod plot;
 mod registry;
+mod rolling;
 
 use std::collections::HashMap;
 use std::fmt::Write as _;
@@ -134,7 +135,7 @@ fn pareto_front(pts: &[(String, f64, f64)]) -> Vec<&(String, f64, f64)> {
 }
 
 /// "At a glance": per stage, the methods on the Pareto front with their cost and error.
-fn glance(md: &mut String, measured: &[Measured], qemu: &Keyed) {
+fn glance(md: &mut String, measured: &[Measured], qemu: &Keyed, rolling: Option<&str>) {
     md.push_str(
         "\n## At a glance: the Pareto front of each stage\n\n\
          The methods no other method beats on both M4F instructions and max error (computed \
@@ -153,6 +154,12 @@ fn glance(md: &mut String, measured: &[Measured], qemu: &Keyed) {
         if !front.is_empty() {
             let _ = writeln!(md, "| {} | {} |", s.title, front.join("; "));
         }
+    }
+    if let Some(front) = rolling {
+        let _ = writeln!(
+            md,
+            "| Rolling contact (held-out exact-reference points) | {front} |"
+        );
     }
     md.push('\n');
 }
@@ -344,12 +351,15 @@ fn main() {
         );
     }
 
-    glance(&mut out.md, &measured, &qemu);
+    let mut rolling_md = String::new();
+    let rolling_front = rolling::section(&mut rolling_md, &out.dir, &host, &qemu);
+    glance(&mut out.md, &measured, &qemu, rolling_front.as_deref());
     out.md.push_str("\n## Error against cost, per stage\n\n");
     for s in &SECTIONS {
         let rows: Vec<&Measured> = measured.iter().filter(|r| r.m.section.id == s.id).collect();
         section(&mut out, s, &rows, &host, &qemu, &cycles, &flash);
     }
+    out.md.push_str(&rolling_md);
 
     out.md.push_str(FRICTION_MAPS);
     let t = Instant::now();

@@ -14,8 +14,9 @@
 //! A failed check panics (a fuzzer crash).
 #![allow(dead_code, clippy::neg_cmp_op_on_partial_ord, clippy::collapsible_if)]
 
-use contensou::contact::{Contact, VaryingContact, Wrench};
+use contensou::contact::{self, Contact, VaryingContact, Wrench};
 use contensou::elliptic::{self, Agm, Integrals, Method, Parameter, Theta};
+use contensou::friction::rolling;
 use contensou::friction::{
     self, Best, Constants, Coulomb, Ellipsoid, Exact, Friction, FrictionLaw, Pade, Simplified,
     Slip, SlipState,
@@ -627,14 +628,11 @@ fn contact_law<L: Law, T: Fz>(inp: &mut Input<'_>, c: &Curvatures<T>, e: Modulus
     ) else {
         return;
     };
-    if !(h.is_finite() && hdot.is_finite()) {
+    let Some(boxed) = step_box(boxed, f, h, hdot) else {
         return;
-    }
+    };
     let boxed = boxed
-        && f.to_f64() <= 10.0
         && delta.to_f64() <= 1e6
-        && h.to_f64() <= 1.0
-        && Box::small(hdot, 1e6)
         && cd.to_f64() <= 1e6
         && Box::small(vx, 1e12)
         && Box::small(vy, 1e12)
@@ -651,6 +649,13 @@ fn contact_law<L: Law, T: Fz>(inp: &mut Input<'_>, c: &Curvatures<T>, e: Modulus
         Constants::from_shape(&shape::Table::shape(Ratio::clamped(c.ratio()))),
     );
     wrench_ok(&fitted.wrench(h, hdot, slip), f, boxed, &slip, L::NAME);
+}
+
+/// A step's h, ḣ: `None` if not finite (nothing to check), else whether the step stays in the
+/// box (f ≤ 10, h ≤ 1 m, |ḣ| ≤ 1e6 m/s) given the contact's `boxed`.
+fn step_box<T: Real>(boxed: bool, f: T, h: T, hdot: T) -> Option<bool> {
+    (h.is_finite() && hdot.is_finite())
+        .then(|| boxed && f.to_f64() <= 10.0 && h.to_f64() <= 1.0 && Box::small(hdot, 1e6))
 }
 
 /// `Contact::wrench` and `VaryingContact::wrench` with every friction law.
@@ -688,4 +693,429 @@ pub fn all(data: &[u8]) {
         3 => friction::<f64>(&mut inp),
         _ => wrench::<f64>(&mut inp),
     }
+}
+
+/// The outputs of one rolling law on one patch and slip (issue 20 item 7): never NaN unless
+/// fN·c overflowed; inside the physical box finite, |F| ≤ fN (1 + 1e-5) (`bounded`: not for
+/// the unsaturated `linear`), and passive: F·v + M_z·ω ≤ 1e-5·fN·S with
+/// S = max(|V|, |v_x| + |v_y| + c|ω|).
+fn rolling_law<L: rolling::RollingLaw, T: Fz>(
+    contact: &rolling::RollingContact<T>,
+    patch: &rolling::Patch<T>,
+    slip: &rolling::RollingSlip<T>,
+    scale: (T, T, T),
+    g: T,
+    boxed: bool,
+    bounded: bool,
+) {
+    let (fn_, c, s) = (scale.0.to_f64(), scale.1.to_f64(), scale.2.to_f64());
+    let r = contact.kalker();
+    let w = contact.wrench::<L>(patch, slip);
+    let overflow = !(fn_ * c).is_finite() || !c.is_finite() || c == 0.0;
+    for v in [w.fx, w.fy, w.mz] {
+        assert!(
+            !nan(v) || overflow,
+            "{}: NaN in {w:?} at {slip:?}, {patch:?}, a/b = {r:?}, G = {g:?}",
+            L::NAME
+        );
+        if boxed && bounded {
+            fin(v, L::NAME);
+        }
+    }
+    if !(boxed && bounded) {
+        return;
+    }
+    let (fx, fy, mz) = (w.fx.to_f64(), w.fy.to_f64(), w.mz.to_f64());
+    // plus a few of the smallest subnormals: the output's rounding when fN is subnormal
+    let tiny = 4.0 * T::MIN_POSITIVE.to_f64() * T::EPSILON.to_f64();
+    let (vx, vy, om) = (
+        slip.vx().to_f64(),
+        slip.vy().to_f64(),
+        slip.omega().to_f64(),
+    );
+    assert!(
+        fx.hypot(fy) <= fn_ * (1.0 + 1e-5) + tiny,
+        "{}: |F| = {} > fN = {fn_} at {slip:?}, {patch:?}, a/b = {r:?}, G = {g:?}",
+        L::NAME,
+        fx.hypot(fy)
+    );
+    let p = fx * vx + fy * vy + mz * om;
+    assert!(
+        p <= 1e-5 * fn_ * s + tiny * (vx.abs() + vy.abs() + om.abs()),
+        "{}: power {p} > 0 (fN·S = {}) at {slip:?}, {patch:?}, a/b = {r:?}, G = {g:?}: {w:?}",
+        L::NAME,
+        fn_ * s
+    );
+}
+
+/// Every rolling law (issue 20): `Elasticity::new`/`dissimilar`, `RollingContact::new`,
+/// `Patch::new`, `RollingSlip::new`/`from_creepages` return the documented result; then every
+/// law's `wrench` on the accepted inputs ([`rolling_law`]). Physical box: G ∈ [1e3, 1e13] Pa,
+/// a, b ∈ [1e-9, 1e3] m, N ≤ 1e20 N, f ≤ 10, |v_x|, |v_y|, |V| ≤ 1e12 m/s, |ω| ≤ 1e12 rad/s.
+pub fn rolling<T: Fz>(inp: &mut Input<'_>) {
+    let (g, nu, g2, nu2): (T, T, T, T) = (inp.val(), inp.val(), inp.val(), inp.val());
+    let valid = |g: T, nu: T| g > T::ZERO && nu >= T::ZERO && nu <= T::HALF;
+    let first = |g: T| {
+        if !(g > T::ZERO) {
+            Error::ShearModulusNotPositive
+        } else {
+            Error::RollingPoissonRatioOutOfRange
+        }
+    };
+    let el = rolling::Elasticity::new(g, nu);
+    expect(
+        &el,
+        g.is_finite() && nu.is_finite(),
+        valid(g, nu),
+        first(g),
+        "Elasticity::new",
+    );
+    let dis = rolling::Elasticity::dissimilar(g, nu, g2, nu2);
+    match (&el, rolling::Elasticity::new(g2, nu2), &dis) {
+        // Two valid bodies always combine: G between G₁ and G₂, ν ∈ [0, 0.5].
+        (Ok(_), Ok(_), Ok(e)) => {
+            let (lo, hi) = (g.min(g2).to_f64(), g.max(g2).to_f64());
+            let gd = e.g().to_f64();
+            assert!(
+                gd >= lo * (1.0 - 1e-6) && gd <= hi && e.g().is_finite(),
+                "dissimilar({g:?}, {g2:?}): G = {gd}"
+            );
+            assert!(e.nu() >= T::ZERO && e.nu() <= T::HALF, "dissimilar ν {e:?}");
+        }
+        (Ok(_), b2, d) => assert_eq!(b2.map(|_| ()), d.map(|_| ()), "dissimilar"),
+        (Err(e1), _, d) => assert_eq!(Err(*e1), d.map(|_| ()), "dissimilar"),
+    }
+
+    let (r, a, b, n, f): (T, T, T, T, T) = (inp.val(), inp.val(), inp.val(), inp.val(), inp.val());
+    let patch = rolling::Patch::new(a, b, n, f);
+    let fine = [a, b, n, f].iter().all(|x| x.is_finite());
+    let (ok, err) = if !(a > T::ZERO && b > T::ZERO) {
+        (false, Error::LengthNotPositive)
+    } else if f < T::ZERO {
+        (false, Error::FrictionCoefficientNegative)
+    } else {
+        (true, Error::LengthNotPositive)
+    };
+    expect(&patch, fine, ok, err, "Patch::new");
+    // The contact's a/b: the patch's own (byte odd) or independent.
+    let r = if inp.byte() & 1 == 1 && fine {
+        a / b
+    } else {
+        r
+    };
+    let Ok(el) = el else { return };
+    let contact = rolling::RollingContact::new(r, el);
+    let in_range = r >= T::from_f64(0.01) && r <= T::from_f64(100.0);
+    expect(
+        &contact,
+        r.is_finite(),
+        in_range,
+        Error::RollingAspectOutOfRange,
+        "RollingContact::new",
+    );
+    let (vx, vy, om, v): (T, T, T, T) = (inp.val(), inp.val(), inp.val(), inp.val());
+    let slip = rolling::RollingSlip::new(vx, vy, om, v);
+    let all_fine = [vx, vy, om, v].iter().all(|x| x.is_finite());
+    expect(
+        &slip,
+        all_fine,
+        true,
+        Error::NonFinite(""),
+        "RollingSlip::new",
+    );
+    if let Ok(s) = slip {
+        match s.creepages() {
+            None => assert!(v == T::ZERO),
+            Some((x, y, p)) => {
+                for c in [x, y, p] {
+                    not_nan(c, "creepages");
+                }
+            }
+        }
+    }
+    let crp = rolling::RollingSlip::from_creepages(vx, vy, om, v);
+    let prod_fine = [vx * v, vy * v, om * v, v].iter().all(|x| x.is_finite());
+    expect(
+        &crp,
+        prod_fine,
+        true,
+        Error::NonFinite(""),
+        "RollingSlip::from_creepages",
+    );
+    let (Ok(contact), Ok(patch)) = (contact, patch) else {
+        return;
+    };
+    let fn_ = f * n.max(T::ZERO);
+    let c = patch.c();
+    let boxed = Box::within(el.g(), 1e3, 1e13)
+        && Box::within(a, 1e-9, 1e3)
+        && Box::within(b, 1e-9, 1e3)
+        && n.to_f64() <= 1e20
+        && f.to_f64() <= 10.0;
+    for s in [slip.ok(), crp.ok()].into_iter().flatten() {
+        let boxed = boxed
+            && Box::small(s.vx(), 1e12)
+            && Box::small(s.vy(), 1e12)
+            && Box::small(s.omega(), 1e12)
+            && Box::small(s.v(), 1e12);
+        let sum = s.vx().abs().to_f64() + s.vy().abs().to_f64() + (c * s.omega()).abs().to_f64();
+        let scale = (fn_, c, T::from_f64(sum.max(s.v().abs().to_f64())));
+        let (ct, p) = (&contact, &patch);
+        rolling_law::<rolling::Table, T>(ct, p, &s, scale, el.g(), boxed, true);
+        rolling_law::<rolling::Blend, T>(ct, p, &s, scale, el.g(), boxed, true);
+        rolling_law::<rolling::Fastsim, T>(ct, p, &s, scale, el.g(), boxed, true);
+        rolling_law::<rolling::FastsimGrid<16, 16>, T>(ct, p, &s, scale, el.g(), boxed, true);
+        rolling_law::<rolling::FullSlip, T>(ct, p, &s, scale, el.g(), boxed, true);
+        rolling_law::<rolling::Linear, T>(ct, p, &s, scale, el.g(), boxed, false);
+    }
+}
+
+/// One rolling wrench (issue 20, `contact::Rolling`): no NaN unless N·a·f or N·f overflowed;
+/// in the box finite, |F| ≤ fN (1 + 1e-5) and F·v + T_z·ω ≤ 1e-5·fN·S, S = max(|V|, |v_x| +
+/// |v_y| + c|ω|) (plus a few of the smallest subnormals), v the slip, V the rolling velocity.
+fn rolling_wrench_ok<T: Real>(
+    w: &Wrench<T, ()>,
+    f: T,
+    boxed: bool,
+    slip: &Slip<T>,
+    v: &rolling::RollingVelocity<T>,
+    who: &str,
+) {
+    patch_ok(&w.patch, boxed, who);
+    // as for the sliding wrench, plus the patch's c² = ab (the laws' length scale) over- or
+    // underflowing
+    let ab = w.patch.a * w.patch.b;
+    let overflow = !(w.n * w.patch.a * f).is_finite()
+        || !(w.n * f).is_finite()
+        || !ab.is_finite()
+        || (ab == T::ZERO && w.patch.a > T::ZERO);
+    for x in [w.n, w.fx, w.fy, w.tz] {
+        assert!(
+            !nan(x) || overflow,
+            "{who}: NaN in {w:?} at {slip:?}, {v:?}"
+        );
+        if boxed {
+            fin(x, who);
+        }
+    }
+    if !boxed {
+        return;
+    }
+    let fn_ = (f * w.n.max(T::ZERO)).to_f64();
+    let c = (w.patch.a * w.patch.b).sqrt().to_f64();
+    let (fx, fy, tz) = (w.fx.to_f64(), w.fy.to_f64(), w.tz.to_f64());
+    let (vx, vy, om) = (
+        slip.vx().to_f64(),
+        slip.vy().to_f64(),
+        slip.omega().to_f64(),
+    );
+    let speed = v.vx().to_f64().hypot(v.vy().to_f64());
+    let s = speed.max(vx.abs() + vy.abs() + c * om.abs());
+    let tiny = 4.0 * T::MIN_POSITIVE.to_f64() * T::EPSILON.to_f64();
+    assert!(
+        fx.hypot(fy) <= fn_ * (1.0 + 1e-5) + tiny,
+        "{who}: |F| = {} > fN = {fn_} in {w:?} at {slip:?}, {v:?}",
+        fx.hypot(fy)
+    );
+    let p = fx * vx + fy * vy + tz * om;
+    assert!(
+        p <= 1e-5 * fn_ * s + tiny * (vx.abs() + vy.abs() + om.abs()),
+        "{who}: power {p} > 0 (fN·S = {}) in {w:?} at {slip:?}, {v:?}",
+        fn_ * s
+    );
+}
+
+fn rolling_contact_law<L: rolling::RollingLaw, T: Fz>(
+    inp: &mut Input<'_>,
+    c: &Curvatures<T>,
+    e: Modulus<T>,
+    el: rolling::Elasticity<T>,
+    boxed: bool,
+) {
+    let (f, h, hdot, vx, vy, om, vrx, vry): (T, T, T, T, T, T, T, T) = (
+        inp.val(),
+        inp.val(),
+        inp.val(),
+        inp.val(),
+        inp.val(),
+        inp.val(),
+        inp.val(),
+        inp.val(),
+    );
+    let v = rolling::RollingVelocity::new(vrx, vry);
+    match (vrx.is_finite(), vry.is_finite(), &v) {
+        (true, true, Ok(_)) => {}
+        (false, _, Err(Error::NonFinite("V_x"))) => {}
+        (true, false, Err(Error::NonFinite("V_y"))) => {}
+        _ => panic!("RollingVelocity::new({vrx:?}, {vry:?}) = {v:?}"),
+    }
+    let (Ok(fr), Ok(slip), Ok(v)) = (
+        Friction::<T, Best>::with_law(f, T::ZERO),
+        Slip::new(vx, vy, om),
+        v,
+    ) else {
+        return;
+    };
+    let Some(boxed) = step_box(boxed, f, h, hdot) else {
+        return;
+    };
+    let boxed = boxed && [vx, vy, om, vrx, vry].iter().all(|x| Box::small(*x, 1e12));
+    if let Ok(contact) = Contact::hertz::<Newton>(c, e, Undamped, fr) {
+        let r = contact::Rolling::<T, _, L>::new(contact, el);
+        let r = r.unwrap_or_else(|err| panic!("Rolling::new: {err:?}"));
+        rolling_wrench_ok(&r.wrench(h, hdot, slip, v), f, boxed, &slip, &v, L::NAME);
+    }
+    let varying = VaryingContact::new(e, Undamped, fr);
+    let r = contact::Rolling::<T, _, L>::new(varying, el);
+    let r = r.unwrap_or_else(|err| panic!("Rolling::new (varying): {err:?}"));
+    rolling_wrench_ok(&r.wrench(c, h, hdot, slip, v), f, boxed, &slip, &v, L::NAME);
+}
+
+/// `contact::Rolling` (fixed `Contact` and `VaryingContact`, friction `Best`) with every
+/// rolling law, `RollingVelocity::new` (issue 20). Box: the `wrench` box, G ∈ [1e3, 1e13] Pa,
+/// |V_x|, |V_y| ≤ 1e12 m/s.
+pub fn rolling_wrench<T: Fz>(inp: &mut Input<'_>) {
+    let (p, q, es, g, nu): (T, T, T, T, T) =
+        (inp.val(), inp.val(), inp.val(), inp.val(), inp.val());
+    let (Ok(c), Ok(e), Ok(el)) = (
+        Curvatures::new(p, q),
+        Modulus::new(es),
+        rolling::Elasticity::new(g, nu),
+    ) else {
+        return;
+    };
+    let boxed = Box::within(c.p(), 1e-6, 1e9)
+        && Box::within(c.q(), 1e-6, 1e9)
+        && Box::within(e.get(), 1e3, 1e13)
+        && Box::within(el.g(), 1e3, 1e13);
+    rolling_contact_law::<rolling::Table, T>(inp, &c, e, el, boxed);
+    rolling_contact_law::<rolling::Blend, T>(inp, &c, e, el, boxed);
+    rolling_contact_law::<rolling::Fastsim, T>(inp, &c, e, el, boxed);
+    rolling_contact_law::<rolling::FastsimGrid<16, 16>, T>(inp, &c, e, el, boxed);
+}
+
+/// `dynamic::DynContact::new_rolling` + `wrench_rolling` with every rolling law and both forms
+/// (issue 20): the optional columns' errors name the column (`nu` first, then `G`; `vrx`, `vry`
+/// after the step's own columns); accepted inputs give the `rolling_wrench` oracles.
+pub fn dynamic_rolling<T: Fz>(inp: &mut Input<'_>) {
+    use contensou::dynamic::{DynContact, Form, Law, RollingSpec, RollingStep, Spec, Step};
+    let [p, q, estar, cd, f, delta, g, nu]: [T; 8] = core::array::from_fn(|_| inp.val());
+    let pick = inp.byte();
+    let law = Law::ROLLING[usize::from(pick % 4)];
+    let form = Form::ALL[usize::from(pick / 4 % 2)];
+    let rs = RollingSpec {
+        g: (pick & 0x10 != 0).then_some(g),
+        nu: (pick & 0x20 != 0).then_some(nu),
+    };
+    let spec = Spec {
+        p,
+        q,
+        estar,
+        cd,
+        f,
+        delta,
+    };
+    let sliding = DynContact::new(&spec, Law::Best, form);
+    let rolling = DynContact::new_rolling(&spec, &rs, law, form);
+    let Ok(_) = sliding else {
+        // the contract's own columns are checked first, as for the sliding laws
+        assert_eq!(rolling.err(), sliding.err(), "new_rolling vs new");
+        return;
+    };
+    let nu_v = rs.nu.unwrap_or(T::from_f64(0.3));
+    let expected = if !nu_v.is_finite() {
+        Some(("nu", Error::NonFinite("nu")))
+    } else if !(nu_v >= T::ZERO && nu_v <= T::HALF) {
+        Some(("nu", Error::RollingPoissonRatioOutOfRange))
+    } else {
+        match rs.g {
+            Some(g) if !g.is_finite() => Some(("G", Error::NonFinite("G"))),
+            Some(g) if g <= T::ZERO => Some(("G", Error::ShearModulusNotPositive)),
+            Some(_) => None,
+            // E*·(1 − ν) underflowing to 0 for a subnormal E*
+            None if estar * (T::ONE - nu_v) <= T::ZERO => {
+                Some(("estar", Error::ShearModulusNotPositive))
+            }
+            None => None,
+        }
+    };
+    let got = rolling.as_ref().err().map(|e| (e.column, e.error));
+    assert_eq!(got, expected, "new_rolling({rs:?})");
+    let Ok(contact) = rolling else { return };
+    let [h, hdot, vx, vy, om, vrx, vry]: [T; 7] = core::array::from_fn(|_| inp.val());
+    let step = Step {
+        h,
+        hdot,
+        vx,
+        vy,
+        omega: om,
+    };
+    let out = contact.wrench_rolling(&step, &RollingStep { vrx, vry });
+    let first_bad = [
+        ("h", h),
+        ("hdot", hdot),
+        ("vx", vx),
+        ("vy", vy),
+        ("omega", om),
+    ]
+    .into_iter()
+    .chain([("vrx", vrx), ("vry", vry)])
+    .find(|(_, x)| !x.is_finite());
+    let w = match (first_bad, out) {
+        (Some((col, _)), Err(e)) => {
+            assert_eq!(e.column, col, "wrench_rolling: {e:?}");
+            assert!(matches!(e.error, Error::NonFinite(_)), "{e:?}");
+            return;
+        }
+        (None, Ok(w)) => w,
+        (bad, out) => panic!("wrench_rolling: {bad:?} gave {out:?}"),
+    };
+    let el = contact.rolling_spec().elasticity(estar).unwrap();
+    let boxed = Box::within(p.min(q), 1e-6, 1e9)
+        && Box::within(p.max(q), 1e-6, 1e9)
+        && Box::within(estar, 1e3, 1e13)
+        && Box::within(el.g(), 1e3, 1e13)
+        && cd.to_f64() <= 1e6;
+    let Some(boxed) = step_box(boxed, f, h, hdot) else {
+        return;
+    };
+    let boxed = boxed && [vx, vy, om, vrx, vry].iter().all(|x| Box::small(*x, 1e12));
+    let ab = w.a * w.b;
+    let overflow = !(w.n * w.a * f).is_finite()
+        || !(w.n * f).is_finite()
+        || !ab.is_finite()
+        || (ab == T::ZERO && w.a > T::ZERO);
+    for x in [w.n, w.fx, w.fy, w.tz] {
+        assert!(
+            !nan(x) || overflow,
+            "{}: NaN in {w:?} at {step:?}",
+            law.name()
+        );
+        if boxed {
+            fin(x, law.name());
+        }
+    }
+    if !boxed {
+        return;
+    }
+    let fn_ = (f * w.n.max(T::ZERO)).to_f64();
+    let c = ab.sqrt().to_f64();
+    let (fx, fy, tz) = (w.fx.to_f64(), w.fy.to_f64(), w.tz.to_f64());
+    let (vx, vy, om) = (vx.to_f64(), vy.to_f64(), om.to_f64());
+    let s = vrx
+        .to_f64()
+        .hypot(vry.to_f64())
+        .max(vx.abs() + vy.abs() + c * om.abs());
+    let tiny = 4.0 * T::MIN_POSITIVE.to_f64() * T::EPSILON.to_f64();
+    assert!(
+        fx.hypot(fy) <= fn_ * (1.0 + 1e-5) + tiny,
+        "{}: |F| > fN in {w:?}",
+        law.name()
+    );
+    let pw = fx * vx + fy * vy + tz * om;
+    assert!(
+        pw <= 1e-5 * fn_ * s + tiny * (vx.abs() + vy.abs() + om.abs()),
+        "{}: power {pw} > 0 in {w:?} at {step:?}",
+        law.name()
+    );
 }

@@ -143,8 +143,8 @@ law_probes! {
 mod api {
     use super::*;
     use contensou::friction::rolling::{
-        Blend, Elasticity, FastsimGrid, FullSlip, Linear as KalkerLinear, Patch, RollingContact,
-        RollingLaw, RollingSlip, Table, Wrench,
+        Blend, Elasticity, Fastsim, FastsimGrid, FullSlip, Linear as KalkerLinear, Patch,
+        RollingContact, RollingLaw, RollingSlip, Table, Wrench,
     };
 
     /// One rolling wrench by law `L` from raw inputs (every constructor on the way).
@@ -186,6 +186,9 @@ mod api {
             rolling::<T, Table>(r, g, nu, a, b, n, f, vx, vy, om, v)
         }
         fn probe_rolling_fastsim<T>(r, g, nu, a, b, n, f, vx, vy, om, v) {
+            rolling::<T, Fastsim>(r, g, nu, a, b, n, f, vx, vy, om, v)
+        }
+        fn probe_rolling_fastsim_sixteen<T>(r, g, nu, a, b, n, f, vx, vy, om, v) {
             rolling::<T, FastsimGrid<16, 16>>(r, g, nu, a, b, n, f, vx, vy, om, v)
         }
         fn probe_rolling_full_slip<T>(r, g, nu, a, b, n, f, vx, vy, om, v) {

@@ -393,7 +393,7 @@ fn tangential<T: Real, L: RollingLaw>(
     let kappa = elasticity.g() * c * c / step.fn_;
     let input = |contact| Input {
         contact,
-        kappa: if kappa.is_finite() { kappa } else { T::MAX },
+        kappa: crate::friction::rolling::contact::load_parameter(kappa),
         vx: s.vx,
         vy: s.vy,
         w,

@@ -145,8 +145,11 @@ pub(crate) fn creep<T: Real>(i: &Input<'_, T>) -> Creep<T> {
     let dv = (i.kappa * k.c33 * i.w).abs() + gamma * qp.abs() * one_minus_as.max(T::ZERO);
     let mv = fs.mz.abs() * v;
     let den = T::TWO * mv + dv;
+    // S = (4dm + d²)/(2m + d)² = q(2 − q), q = d/(2m + d) ∈ [0, 1]: no square of a tiny or huge
+    // d, m to underflow to 0/0 (a spin of 1e-27 rad/s gave NaN in f32: fuzz finding, issue 20)
     let sm = if den > T::ZERO {
-        (T::from_f64(4.0) * dv * mv + dv * dv) / (den * den)
+        let q = dv / den;
+        q * (T::TWO - q)
     } else {
         T::ZERO
     };
@@ -167,7 +170,8 @@ pub(crate) fn creep<T: Real>(i: &Input<'_, T>) -> Creep<T> {
     let w = Creep {
         fx: -a_over_v * qx + b * fs.fx,
         fy: -a_over_v * qy - a_s_over_v * qp + b * fs.fy,
-        mz: sm * fs.mz + a_over_v * i.kappa * k.c23 * i.vy,
+        // κC₂₃v_y first: (a/v)·κ alone may overflow for tiny v (then ∞·0 at v_y = 0)
+        mz: sm * fs.mz + a_over_v * (i.kappa * k.c23 * i.vy),
     };
     bounded(super::contact::passive(w, i.vx, i.vy, i.w))
 }

@@ -72,7 +72,8 @@ impl<T: Real> Patch<T> {
 pub struct Input<'a, T> {
     /// The creep shape (Kalker's coefficients, `blend`'s constants, `table`'s residuals).
     pub contact: &'a RollingShape<T>,
-    /// κ = Gc²/(fN) > 0 (the inverse of the load ratio fN/(Gc²)).
+    /// κ = Gc²/(fN) > 0 (the inverse of the load ratio fN/(Gc²)), within [ε², 1/ε²]
+    /// ([`load_parameter`]).
     pub kappa: T,
     /// v_x/S
     pub vx: T,
@@ -210,7 +211,7 @@ impl<T: Real> RollingContact<T> {
         let w = patch.c * s.omega;
         let input = Input {
             contact: &self.shape,
-            kappa: if kappa.is_finite() { kappa } else { T::MAX },
+            kappa: load_parameter(kappa),
             vx: s.vx,
             vy: s.vy,
             w,
@@ -253,6 +254,24 @@ impl<T: Real> RollingContact<T> {
             mz: t.tz * self.major_over_c,
         }
     }
+}
+
+/// κ = Gc²/(fN) as the laws read it ([`Input::kappa`]): at most 1/ε² (f32: 7e13, f64:
+/// 2e31; ∞ and NaN too). A larger κ only moves the end of the linear range to creepages below
+/// ε²/C, under the rounding of the velocities they come from (and needs a patch 1/ε² times
+/// smaller than the bodies' radii: nothing Hertzian); the clamp keeps κ·C and its square finite
+/// in every law (fuzz finding, issue 20: NaN from every law at G near the float's maximum, or
+/// a tiny N in f32, with the old clamp κ ≤ T::MAX). Every caller building an [`Input`] uses it.
+///
+/// And at least ε² (f32: 1.4e-14, f64: 4.9e-32): κ ≳ 1/f for any Hertzian contact (fN/(Gc²)
+/// is of the order of f·p₀/G, and p₀/G ≪ 1), so a κ below ε² needs a pressure 1/ε² times the
+/// shear modulus; the floor keeps FASTSIM's squared increments (κ·C·ΔX)² from underflowing to
+/// an adhesion test 0 ≤ 0 at V = 0 (fuzz finding: an infinite force at f32 κ = 6e-24).
+#[inline(always)]
+pub(crate) fn load_parameter<T: Real>(kappa: T) -> T {
+    let min = T::EPSILON * T::EPSILON;
+    let max = T::ONE / min;
+    if kappa < max { kappa.max(min) } else { max }
 }
 
 /// Full slip everywhere, whatever V (the sliding law of the library, `best`): the limit every
@@ -313,7 +332,11 @@ impl RollingLaw for Linear {
 pub(crate) fn passive<T: Real>(c: Creep<T>, vx: T, vy: T, w: T) -> Creep<T> {
     let p = c.fx * vx + c.fy * vy + c.mz * w;
     if p > T::ZERO {
-        let k = p / (vx * vx + vy * vy + w * w);
+        let n2 = vx * vx + vy * vy + w * w;
+        if n2 < T::MIN_POSITIVE {
+            return passive_tiny(c, vx, vy, w);
+        }
+        let k = p / n2;
         Creep {
             fx: c.fx - k * vx,
             fy: c.fy - k * vy,
@@ -321,5 +344,27 @@ pub(crate) fn passive<T: Real>(c: Creep<T>, vx: T, vy: T, w: T) -> Creep<T> {
         }
     } else {
         c
+    }
+}
+
+/// [`passive`] for a slip direction whose |u|² underflows (every component below ≈ 1e-19 in
+/// f32, 1e-154 in f64: p/|u|² was ∞, a fuzz finding of issue 20): u scaled by its largest
+/// component first.
+#[cold]
+fn passive_tiny<T: Real>(c: Creep<T>, vx: T, vy: T, w: T) -> Creep<T> {
+    let m = vx.abs().max(vy.abs()).max(w.abs());
+    if m <= T::ZERO {
+        return c;
+    }
+    let (ux, uy, uw) = (vx / m, vy / m, w / m);
+    let p = c.fx * ux + c.fy * uy + c.mz * uw;
+    if p <= T::ZERO {
+        return c;
+    }
+    let k = p / (ux * ux + uy * uy + uw * uw);
+    Creep {
+        fx: c.fx - k * ux,
+        fy: c.fy - k * uy,
+        mz: c.mz - k * uw,
     }
 }

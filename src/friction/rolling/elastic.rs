@@ -49,16 +49,20 @@ impl<T: Real> Elasticity<T> {
 
     /// Kalker's combination of two dissimilar bodies (G₁, ν₁) and (G₂, ν₂):
     /// 1/G = ½(1/G₁ + 1/G₂), ν = G·½(ν₁/G₁ + ν₂/G₂); each body validated as in [`Self::new`].
-    /// The normal–tangential coupling is neglected (see the [module docs](self)).
+    /// The normal–tangential coupling is neglected (see the [module docs](self)). Two valid
+    /// bodies always combine (G finite, between G₁ and G₂).
     pub fn dissimilar(g1: T, nu1: T, g2: T, nu2: T) -> Result<Self, Error> {
         let b1 = Self::new(g1, nu1)?;
         let b2 = Self::new(g2, nu2)?;
-        let inv = T::HALF * (T::ONE / b1.g + T::ONE / b2.g);
-        let g = T::ONE / inv;
-        if !(g.is_finite() && g > T::ZERO) {
-            return Err(Error::ShearModulusNotPositive);
-        }
-        let nu = g * T::HALF * (b1.nu / b1.g + b2.nu / b2.g);
+        // In terms of q = G_lo/G_hi ∈ (0, 1]: G = 2G_lo/(1 + q), ν = (ν_lo + qν_hi)/(1 + q) —
+        // the same formulas, free of the overflow of 1/G_i for subnormal G_i and of
+        // 1/G₁ + 1/G₂ → G = ∞ for G_i near the float's maximum (fuzz finding, issue 20).
+        let (lo, hi) = if b1.g <= b2.g { (b1, b2) } else { (b2, b1) };
+        let q = lo.g / hi.g;
+        let r = T::ONE / (T::ONE + q);
+        // G ∈ [G_lo, G_hi]: the factor 2/(1 + q) ∈ [1, 2), min() keeps the rounding inside
+        let g = (lo.g * (T::TWO * r)).min(hi.g);
+        let nu = (lo.nu + q * hi.nu) * r;
         // a weighted mean of ν₁, ν₂ ∈ [0, 0.5]: inside up to rounding
         Ok(Self {
             g,

@@ -39,7 +39,7 @@ pub struct Scaled<T> {
     pub vy: T,
     /// ω/S (1/m; mirrored: −ω/S)
     pub omega: T,
-    /// |V|/S ∈ [0, 1]
+    /// |V|/S ∈ [0, 1]: 0 or at least the smallest normal float (a subnormal ratio is 0)
     pub v: T,
     /// V < 0: the caller negates F_x and M_z.
     pub mirrored: bool,
@@ -80,13 +80,15 @@ impl<T: Real> RollingSlip<T> {
         self.v
     }
 
-    /// Kalker's creepages (ξ, η, φ) = (v_x, v_y, ω)/V; `None` for V = 0 (full slip).
+    /// Kalker's creepages (ξ, η, φ) = (v_x, v_y, ω)/V; `None` for V = 0 (full slip). Never
+    /// NaN: a component is ±∞ only if the quotient overflows (|V| tiny), 0 if its numerator is.
     pub fn creepages(&self) -> Option<(T, T, T)> {
         if self.v == T::ZERO {
             None
         } else {
-            let r = T::ONE / self.v;
-            Some((self.vx * r, self.vy * r, self.omega * r))
+            // three divisions, not 1/V times each: 1/V overflows for subnormal V and
+            // 0 · ∞ would be NaN (fuzz finding, issue 20)
+            Some((self.vx / self.v, self.vy / self.v, self.omega / self.v))
         }
     }
 
@@ -102,10 +104,19 @@ impl<T: Real> RollingSlip<T> {
         let v = self.v.abs();
         let l1 = vx.abs() + self.vy.abs() + (c * om).abs();
         let s = if l1 > v { l1 } else { v };
-        if !(s.is_finite() && s > T::ZERO) {
-            return self.unusual(c, mirrored, vx, om, v);
+        let r = T::ONE / s;
+        // rest (1/0), an overflowing sum, or a subnormal S whose reciprocal overflows
+        let mut out = if s.is_finite() && r.is_finite() {
+            Self::times(vx, self.vy, om, v, r, mirrored)
+        } else {
+            self.unusual(c, mirrored, vx, om, v)
+        };
+        // a subnormal |V|/S (a creepage beyond 1/MIN_POSITIVE) is full slip: 0, so that the
+        // laws' 1/v stays finite (fuzz finding, issue 20: ∞·0 in `blend` at V = 1e-310 m/s)
+        if out.v < T::MIN_POSITIVE {
+            out.v = T::ZERO;
         }
-        Self::times(vx, self.vy, om, v, T::ONE / s, mirrored)
+        out
     }
 
     #[inline(always)]
@@ -119,7 +130,9 @@ impl<T: Real> RollingSlip<T> {
         }
     }
 
-    /// Rest, or an overflowing sum: divide by the largest magnitude (c|ω| overflowing: pure spin).
+    /// Rest, an overflowing sum, or a subnormal one: divide by the largest magnitude (c|ω|
+    /// overflowing: pure spin; an infinite component, from a caller's arithmetic: its sign), by four divisions (1/m may overflow for a subnormal m: ∞·0 =
+    /// NaN, a fuzz finding of issue 20).
     #[cold]
     fn unusual(&self, c: T, mirrored: bool, vx: T, om: T, v: T) -> Scaled<T> {
         let cw = c * om;
@@ -133,8 +146,33 @@ impl<T: Real> RollingSlip<T> {
             };
         }
         let m = vx.abs().max(self.vy.abs()).max(cw.abs()).max(v);
+        if !m.is_finite() {
+            // a component itself overflowed (a caller's rotation of an extreme slip, or |V|
+            // from its components): the limit direction, ±1 for the infinite ones (fuzz
+            // finding, issue 20: ∞/∞ = NaN in contact::Rolling at f32 |v| ≈ 3.8e38)
+            let unit = |x: T| {
+                if !x.is_finite() {
+                    T::ONE.copysign(x)
+                } else {
+                    T::ZERO
+                }
+            };
+            return Scaled {
+                vx: unit(vx),
+                vy: unit(self.vy),
+                omega: T::ZERO,
+                v: unit(v),
+                mirrored,
+            };
+        }
         if m > T::ZERO {
-            Self::times(vx, self.vy, om, v, T::ONE / m, mirrored)
+            Scaled {
+                vx: vx / m,
+                vy: self.vy / m,
+                omega: om / m,
+                v: v / m,
+                mirrored,
+            }
         } else {
             Scaled {
                 mirrored,
