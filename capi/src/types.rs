@@ -78,9 +78,9 @@ pub struct contensou_curvatures<T> {
 }
 
 /// Bytes of [`contensou_contact_f32`].
-pub const CONTENSOU_CONTACT_F32_SIZE: usize = 5912;
+pub const CONTENSOU_CONTACT_F32_SIZE: usize = 3264;
 /// Bytes of [`contensou_contact_f64`].
-pub const CONTENSOU_CONTACT_F64_SIZE: usize = 11824;
+pub const CONTENSOU_CONTACT_F64_SIZE: usize = 5896;
 /// Alignment (bytes) of both contact storage types.
 pub const CONTENSOU_CONTACT_ALIGN: usize = 8;
 
@@ -93,7 +93,7 @@ pub const CONTENSOU_CONTACT_ALIGN: usize = 8;
 #[derive(Debug)]
 pub struct contensou_contact_f32 {
     /// Opaque.
-    pub opaque: [u64; 739],
+    pub opaque: [u64; 408],
 }
 
 /// Caller-owned storage of one `double` contact: opaque, [`CONTENSOU_CONTACT_F64_SIZE`]
@@ -102,7 +102,7 @@ pub struct contensou_contact_f32 {
 #[derive(Debug)]
 pub struct contensou_contact_f64 {
     /// Opaque.
-    pub opaque: [u64; 1478],
+    pub opaque: [u64; 737],
 }
 
 /// What the storage holds: a tag that only a constructor writes, then the contact.

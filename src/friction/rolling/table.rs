@@ -122,20 +122,21 @@ use super::contact::{Creep, Input, RollingLaw, passive};
 use super::table_data::{COARSE, Data, FINE, KNEE_START, KNEE_WIDTH, SHAPES as DATA};
 use crate::Real;
 
-/// The fitted shapes (a/b).
-const SHAPES: [f64; 5] = [0.2, 0.5, 1.0, 2.0, 5.0];
-
 /// One residual curve of one contact: ln m of the first node, 1/Δ(ln m) (coarse spacing),
-/// m₀, m_N and the residual at the nodes, `C` channels (F_x; F_y, M_z; or all three). With
-/// `N` = 29 + 3 · 8 (the curves with φ) the 8 coarse intervals of the knee window hold three
-/// more nodes each.
+/// m₀, m_N, and the residual at the nodes, `C` channels (F_x; F_y, M_z; or all three), read
+/// from the generated data of the two fitted shapes around a/b and mixed at the weight `u` on
+/// each look-up (nothing copied: a curve is a few numbers and two references into flash).
+/// With `N` = 29 + 3 · 8 (the curves with φ) the 8 coarse intervals of the knee window hold
+/// three more nodes each.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Curve<T, const N: usize, const C: usize> {
     x0: T,
     inv_dx: T,
     inv_m0: T,
     m_last: T,
-    v: [[T; N]; C],
+    lo: &'static [[f32; N]; C],
+    hi: &'static [[f32; N]; C],
+    u: T,
 }
 
 /// Where ln m falls on a curve: node index and fraction, or a tail factor.
@@ -147,22 +148,21 @@ enum At<T> {
 }
 
 impl<T: Real, const N: usize, const C: usize> Curve<T, N, C> {
-    /// The curve for a/b between shapes `lo` and `hi` at weight `u` (f64, once per contact).
-    fn new(lo: &Data<N, C>, hi: &Data<N, C>, u: f64) -> Self {
-        let lerp = |p: f64, q: f64| p + u * (q - p);
-        let (x0, dx) = (lerp(lo.0, hi.0), lerp(lo.1, hi.1));
-        let mut v = [[T::ZERO; N]; C];
-        for (row, (ra, rb)) in v.iter_mut().zip(lo.2.iter().zip(hi.2.iter())) {
-            for (o, (p, q)) in row.iter_mut().zip(ra.iter().zip(rb.iter())) {
-                *o = T::from_f64(lerp(f64::from(*p), f64::from(*q)));
-            }
-        }
+    /// The curve for a/b between the shapes `lo` and `hi` at the weight `u` ∈ [0, 1]: ln m₀ and
+    /// Δ(ln m) linear in `u` (rounded to `T`), two `exp`.
+    #[inline]
+    fn between(lo: &'static Data<N, C>, hi: &'static Data<N, C>, u: T) -> Self {
+        let lerp = |p: T, q: T| p + u * (q - p);
+        let x0 = lerp(T::from_f64(lo.0), T::from_f64(hi.0));
+        let dx = lerp(T::from_f64(lo.1), T::from_f64(hi.1));
         Self {
-            x0: T::from_f64(x0),
-            inv_dx: T::from_f64(1.0 / dx),
-            inv_m0: T::from_f64(libm::exp(-x0)),
-            m_last: T::from_f64(libm::exp(x0 + (COARSE - 1) as f64 * dx)),
-            v,
+            x0,
+            inv_dx: T::ONE / dx,
+            inv_m0: (-x0).exp(),
+            m_last: (x0 + T::from_usize(COARSE - 1) * dx).exp(),
+            lo: &lo.2,
+            hi: &hi.2,
+            u,
         }
     }
 
@@ -205,8 +205,13 @@ impl<T: Real, const N: usize, const C: usize> Curve<T, N, C> {
     fn value(&self, at: At<T>) -> [T; 3] {
         let mut out = [T::ZERO; 3];
         let first = if C == 2 { 1 } else { 0 };
-        for (o, v) in out.iter_mut().skip(first).zip(self.v.iter()) {
-            let node = |k: usize| v.get(k).copied().unwrap_or(T::ZERO);
+        let rows = self.lo.iter().zip(self.hi.iter());
+        for (o, (a, b)) in out.iter_mut().skip(first).zip(rows) {
+            let node = |k: usize| {
+                let p = T::from_f32(a.get(k).copied().unwrap_or(0.0));
+                let q = T::from_f32(b.get(k).copied().unwrap_or(0.0));
+                p + self.u * (q - p)
+            };
             *o = match at {
                 At::Below(f) => node(0) * f,
                 At::Above(f) => node(N - 1) * f,
@@ -234,29 +239,9 @@ pub struct Tables<T> {
 
 impl<T: Real> Tables<T> {
     /// For a/b: the generated tables linear in ln(a/b) between the fitted shapes, the end
-    /// shapes outside [0.2, 5] (f64, once per contact).
+    /// shapes outside [0.2, 5] ([`Self::at_ln`] at x = ln(a/b)).
     pub fn new(a_over_b: T) -> Self {
-        let x = libm::log(super::within(a_over_b.to_f64(), 0.2, 5.0));
-        let mut i = 0;
-        while i < 3 && x > libm::log(SHAPES.get(i + 1).copied().unwrap_or(5.0)) {
-            i += 1;
-        }
-        let s = |k: usize| libm::log(SHAPES.get(k).copied().unwrap_or(1.0));
-        let u = super::within((x - s(i)) / (s(i + 1) - s(i)), 0.0, 1.0);
-        let (lo, hi) = (&DATA[i.min(3)], &DATA[i.min(3) + 1]);
-        let plane: [Curve<T, FINE, 2>; 6] =
-            core::array::from_fn(|k| Curve::new(&lo.plane[k], &hi.plane[k], u));
-        let ring: [Curve<T, FINE, 3>; 3] =
-            core::array::from_fn(|k| Curve::new(&lo.ring[k], &hi.ring[k], u));
-        Self {
-            xi: Curve::new(&lo.xi, &hi.xi, u),
-            eta: Curve::new(&lo.eta, &hi.eta, u),
-            xieta: Curve::new(&lo.xieta, &hi.xieta, u),
-            plane_shared: core::array::from_fn(|k| plane[k].same_grid(&plane[k + 1])),
-            ring_shared: core::array::from_fn(|k| ring[k].same_grid(&ring[k + 1])),
-            plane,
-            ring,
-        }
+        Self::at_ln(T::from_f64(libm::log(super::within(a_over_b.to_f64(), 0.2, 5.0))))
     }
 
     /// The plane's nodes `j` and `j + 1` mixed at `t` ∈ [0, 1). (`ring_mix` has the same shape:
@@ -419,39 +404,11 @@ impl RollingLaw for Table {
     }
 }
 
-// ---- The per-call form for a shape that changes every call (`crate::contact::Rolling` with
-// a skewed rolling velocity or a varying contact): the same curves built in the working
-// precision, no `f64` arithmetic on the path (the node values are `f32` in the data, widened
-// exactly for `f64`; ln m₀ and Δ(ln m) rounded to `T`).
-
-impl<T: Real, const N: usize, const C: usize> Curve<T, N, C> {
-    /// [`Self::new`] in `T`: the nodes linear in the weight `u` ∈ [0, 1] between two shapes.
-    #[inline]
-    fn between(lo: &Data<N, C>, hi: &Data<N, C>, u: T) -> Self {
-        let lerp = |p: T, q: T| p + u * (q - p);
-        let x0 = lerp(T::from_f64(lo.0), T::from_f64(hi.0));
-        let dx = lerp(T::from_f64(lo.1), T::from_f64(hi.1));
-        let mut v = [[T::ZERO; N]; C];
-        for (row, (ra, rb)) in v.iter_mut().zip(lo.2.iter().zip(hi.2.iter())) {
-            for (o, (p, q)) in row.iter_mut().zip(ra.iter().zip(rb.iter())) {
-                *o = lerp(T::from_f32(*p), T::from_f32(*q));
-            }
-        }
-        Self {
-            x0,
-            inv_dx: T::ONE / dx,
-            inv_m0: (-x0).exp(),
-            m_last: (x0 + T::from_usize(COARSE - 1) * dx).exp(),
-            v,
-        }
-    }
-}
-
 impl<T: Real> Tables<T> {
-    /// [`Tables::new`] for a/b = e^x, computed in `T` from the generated data: the same
-    /// interpolation (linear in ln(a/b) between the fitted shapes, the end shapes outside),
-    /// 2 `exp` per curve. Agrees with `new` to `T`'s rounding. Per-call cost: one
-    /// multiply-add per node (6,435 nodes over the 12 curves' channels) and 24 `exp`.
+    /// The tables for a/b = e^x (a contact's, or a per-call shape's: `crate::contact::Rolling`
+    /// with a skewed rolling velocity or a varying contact): the fitted shapes around x and
+    /// the weight between them (linear in ln(a/b), the end shapes outside [0.2, 5]); per curve
+    /// two `exp` (24 in all), no node copied.
     pub fn at_ln(x: T) -> Self {
         let (i, u) = super::skew::between_fitted(x);
         let (lo, hi) = (&DATA[i.min(3)], &DATA[i.min(3) + 1]);
