@@ -74,6 +74,11 @@ fn eval<T: Real + LowerExp, L: RollingLaw>() -> ExitCode {
     let inputs = ["a", "b", "G", "nu", "f", "N", "V", "xi", "eta", "phi"];
     run_csv::<T>(&inputs, &["Fx", "Fy", "Mz"], &mut |r| {
         let named = |i: usize, e| message(inputs[i], shortest(r[i]), e);
+        // a NaN or ±∞ is named by its own column (the constructors below see some columns
+        // only through others: a/b, the products of the creepages and V)
+        if let Some(k) = r.iter().position(|x| !x.is_finite()) {
+            return Err(named(k, contensou::Error::NonFinite(inputs[k])));
+        }
         let el = Elasticity::new(r[2], r[3])
             .map_err(|e| named(if r[2] > T::ZERO { 3 } else { 2 }, e))?;
         let patch = Patch::new(r[0], r[1], r[5], r[4]).map_err(|e| named(patch_culprit(r), e))?;
