@@ -232,7 +232,7 @@ impl<T: Real> RollingContact<T> {
 
     /// Full slip (the Contensou–Erismann integrals by `best`'s per-contact form) for the
     /// direction of (v_x, v_y, cω) in the rolling frame.
-    #[inline]
+    #[inline(always)]
     pub fn full_slip(&self, vx: T, vy: T, w: T) -> Creep<T> {
         // library frame: x along the major axis; a < b turns the frame by 90°:
         // x' = y, y' = −x (ω unchanged).

@@ -205,7 +205,7 @@ impl<T: Real> ShapePath<T> {
             T::ZERO
         };
         let k = |j: usize| self.kalker.get(j).copied().unwrap_or(self.kalker[0]);
-        let kink = |j: usize| (self.kinks >> j) & 1 == 1;
+        let kink = |j: usize| self.kinks.checked_shr(j as u32).unwrap_or(0) & 1 == 1;
         // slopes dy/dx at the interval's ends, one-sided at the ends and the kinks
         let slope = |j: usize, from_right: bool, c: fn(&Kalker<T>) -> T| {
             let y = |n: usize| c(&k(n));
