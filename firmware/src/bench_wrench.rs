@@ -162,6 +162,20 @@ fn dynamic(x: DynInput<'_>) -> Result<Output<f32>, Invalid> {
     x.0.wrench(&x.1)
 }
 
+/// The inputs of `dyn-*`: the contact and each slip at the approach `h`. Out of line: inlined
+/// into `run_all`, rustc 1.95.0 (the pinned rig) built this array wrongly for a 3,256-byte
+/// `DynContact<f32>` — after an `adds r1, #88` folded into a `stmia` the later stores of the
+/// 8-element unrolled loop kept the old base, so element 5's reference was never written
+/// (a garbage pointer, an UNALIGNED usage fault under QEMU; `bench-results/qemu-run.txt`
+/// stopped after `table_each_step-best-from-bodies`).
+#[inline(never)]
+fn dyn_inputs<'a>(contact: &'a DynContact<f32>, h: f32, slips: &[Slip<f32>; N]) -> [DynInput<'a>; N] {
+    core::array::from_fn(|i| {
+        let s = slips[i];
+        (contact, Step { h, hdot: 0.0, vx: s.vx(), vy: s.vy(), omega: s.omega() })
+    })
+}
+
 /// `dyn-fixed-best`, `dyn-varying-best`: the `best` rows' work through `contensou::dynamic`.
 fn dynamic_best(r: &Runner) {
     let (curv, _, _, h, slips) = wrench_scene::<f32, Best>();
@@ -175,11 +189,7 @@ fn dynamic_best(r: &Runner) {
     };
     for (form, name) in [(Form::Fixed, "dyn-fixed-best"), (Form::Varying, "dyn-varying-best")] {
         let contact = DynContact::new(&spec, Law::Best, form).expect("valid contract");
-        let inputs: [DynInput<'_>; N] = core::array::from_fn(|i| {
-            let s = slips[i];
-            let step = Step { h, hdot: 0.0, vx: s.vx(), vy: s.vy(), omega: s.omega() };
-            (&contact, step)
-        });
+        let inputs = dyn_inputs(&contact, h, &slips);
         r.bench("wrench", name, "f32", &inputs, dynamic);
     }
 }

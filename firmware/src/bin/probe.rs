@@ -300,7 +300,12 @@ fn rolling<T: Real, L: contensou::friction::rolling::RollingLaw>() {
     let el = ok(Elasticity::<T>::new(t(8e10), t(0.28)));
     let c = ok(RollingContact::new(t(1.5), el));
     let p = ok(Patch::new(t(6e-3), t(4e-3), t(8e4), t(0.3)));
-    let s = ok(RollingSlip::from_creepages(t(1e-3), t(2e-4), t(0.5), t(30.0)));
+    let s = ok(RollingSlip::from_creepages(
+        t(1e-3),
+        t(2e-4),
+        t(0.5),
+        t(30.0),
+    ));
     bb(c.wrench::<L>(&p, &s));
 }
 
