@@ -267,7 +267,11 @@ pub(crate) unsafe fn contact_wrench<T: Precision>(
     column: *mut contensou_column,
 ) -> S {
     // SAFETY: caller's contract.
-    unsafe { contact_wrench_rolling(storage, step, null(), out, column) }
+    unsafe {
+        wrench_with(storage, step, out, column, |c, s| {
+            c.wrench(s).map_err(invalid)
+        })
+    }
 }
 
 /// `contensou_contact_wrench_rolling_*` (`rolling` NULL: V = 0).
@@ -281,15 +285,41 @@ pub(crate) unsafe fn contact_wrench_rolling<T: Precision>(
     out: *mut contensou_wrench<T>,
     column: *mut contensou_column,
 ) -> S {
+    let eval = |c: &DynContact<T>, s: &Step<T>| {
+        // SAFETY: caller's contract.
+        let roll = unsafe { optional(rolling) }
+            .map_err(bare)?
+            .unwrap_or_default();
+        let roll = RollingStep {
+            vrx: roll.vrx,
+            vry: roll.vry,
+        };
+        c.wrench_rolling(s, &roll).map_err(invalid)
+    };
+    // SAFETY: caller's contract.
+    unsafe { wrench_with(storage, step, out, column, eval) }
+}
+
+/// The body of `contensou_contact_wrench_*` and `…_rolling_*`: `eval` on the validated contact
+/// and step, checked in the order storage, step, output, then what `eval` reads (the sliding
+/// call keeps its own `DynContact::wrench`, without the rolling columns' handling: the
+/// `c-fixed-best` M4F row).
+///
+/// # Safety
+/// Pointers NULL or valid for their types.
+#[inline(always)]
+unsafe fn wrench_with<T: Precision>(
+    storage: *const T::Storage,
+    step: *const contensou_step<T>,
+    out: *mut contensou_wrench<T>,
+    column: *mut contensou_column,
+    eval: impl FnOnce(&DynContact<T>, &Step<T>) -> Result<dynamic::Output<T>, (S, contensou_column)>,
+) -> S {
     let r = (|| {
         // SAFETY: caller's contract.
         let slot = unsafe { slot::<T>(storage) }.map_err(bare)?;
         // SAFETY: caller's contract.
         let s = unsafe { read(step) }.map_err(bare)?;
-        // SAFETY: caller's contract.
-        let roll = unsafe { optional(rolling) }
-            .map_err(bare)?
-            .unwrap_or_default();
         check(out).map_err(bare)?;
         let step = Step {
             h: s.h,
@@ -298,11 +328,7 @@ pub(crate) unsafe fn contact_wrench_rolling<T: Precision>(
             vy: s.vy,
             omega: s.omega,
         };
-        let roll = RollingStep {
-            vrx: roll.vrx,
-            vry: roll.vry,
-        };
-        let w = slot.contact.wrench_rolling(&step, &roll).map_err(invalid)?;
+        let w = eval(&slot.contact, &step)?;
         let w = contensou_wrench {
             n: w.n,
             fx: w.fx,
