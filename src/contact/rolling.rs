@@ -77,10 +77,11 @@
 //! # Cost
 //!
 //! Cortex-M4F, `f32`, `table`, 64 creep states (`bench-results/qemu.csv`, stage `rolling`):
-//! fixed contact, V along an axis **899** instructions (`RollingContact::wrench` alone: 779);
-//! V skewed 10,087 (the creep shape per call: 435 table values, 14 `exp`); varying contact
-//! 10,350. Host (x86-64, criterion, per call): 377 ns, 1.26 µs, 1.55 µs (`RollingContact`
-//! 338 ns in the same run). Per contact: two [`RollingShape`]s (1,848 bytes each in `f32`)
+//! fixed contact, V along an axis **1,037** instructions (`RollingContact::wrench` alone: 895);
+//! V skewed 5,025 (the creep shape per call from [`ShapePath`]: Kalker's coefficients and
+//! `table`'s 12 curves, 24 `exp`); varying contact 5,301. Host (x86-64, criterion, per call,
+//! before the curves read their nodes from flash): 377 ns, 1.26 µs, 1.55 µs (`RollingContact`
+//! 338 ns in the same run). Per contact: two [`RollingShape`]s (520 bytes each in `f32`)
 //! and a [`ShapePath`] (fixed), a [`ShapePath`] (varying).
 //!
 //! # References

@@ -106,10 +106,13 @@
 //!
 //! `blend`'s call plus a square root, two divisions, one `ln` and 1 to 4 curve look-ups (1 to 3
 //! channels each). M4F, f32, the dimensional call (firmware stage `rolling`, 64 creep states on
-//! a spiral of directions): 787 instructions on average (578 … 897; `blend` 416; f64: 32,724;
-//! before the direction curves 759); two neighbouring curves on the same magnitudes share one
-//! node search. Per contact 12 curves, 1,287 numbers (f32: 5.3 KB) in
-//! [`super::RollingContact`], built once; the generated data: 5 shapes × 1,287 `f32` + 60 pairs
+//! a spiral of directions): 895 instructions on average (638 … 1,025; `blend` 428; f64: 38,342;
+//! before the direction curves 759; 787 while each contact held its own mixed copy of the
+//! nodes); two neighbouring curves on the same magnitudes share one node search. Per contact
+//! 12 curves of a few numbers each and references to the two fitted shapes' nodes in flash,
+//! mixed at the shape weight on each look-up (a [`super::RollingShape`] is 520 bytes in f32;
+//! a mixed copy was 5.3 KB, and the per-call shape of a skewed rolling velocity built it each
+//! call); the generated data: 5 shapes × 1,287 `f32` + 60 pairs
 //! of `f64` (26.7 KB of flash when a/b is known only at run time; before 17.8 KB of `f64`); the
 //! size probe (a/b fixed at build time, `tools/flash-bench.sh --stage rolling`) measures
 //! `table` 70.3 KB, 4.1 KB over `blend` (f32; before 55.8 KB, 2.0 KB over `blend`): every
@@ -245,7 +248,8 @@ impl<T: Real> Tables<T> {
     }
 
     /// The plane's nodes `j` and `j + 1` mixed at `t` ∈ [0, 1). (`ring_mix` has the same shape:
-    /// one generic function over both measured 863 against 787 M4F instructions per call.)
+    /// one generic function over both measured 863 against 787 M4F instructions per call, with
+    /// the nodes copied per contact.)
     #[inline(always)]
     fn plane_mix(&self, j: usize, t: T, lnm: T, m: T, inv_m: T) -> [T; 3] {
         if t > T::ZERO
