@@ -244,7 +244,11 @@ impl<T: Real> Tables<T> {
     /// For a/b: the generated tables linear in ln(a/b) between the fitted shapes, the end
     /// shapes outside [0.2, 5] ([`Self::at_ln`] at x = ln(a/b)).
     pub fn new(a_over_b: T) -> Self {
-        Self::at_ln(T::from_f64(libm::log(super::within(a_over_b.to_f64(), 0.2, 5.0))))
+        Self::at_ln(T::from_f64(libm::log(super::within(
+            a_over_b.to_f64(),
+            0.2,
+            5.0,
+        ))))
     }
 
     /// The plane's nodes `j` and `j + 1` mixed at `t` ∈ [0, 1). (`ring_mix` has the same shape:
