@@ -73,7 +73,7 @@ pub struct Input<'a, T> {
     /// The creep shape (Kalker's coefficients, `blend`'s constants, `table`'s residuals).
     pub contact: &'a RollingShape<T>,
     /// κ = Gc²/(fN) > 0 (the inverse of the load ratio fN/(Gc²)), within [ε², 1/ε²]
-    /// ([`load_parameter`]).
+    /// (clamped there when G, c, f or N are extreme, so that no product overflows).
     pub kappa: T,
     /// v_x/S
     pub vx: T,
