@@ -155,9 +155,11 @@ fn bits_config<W: core::fmt::Write>(out: &mut W, law: Law, form: Form) -> core::
     writeln!(out, "END {}", BITS_SPECS * BITS_STEPS)
 }
 
-/// Every law and form, in `Law::ALL` × `Form::ALL` order.
+/// Every sliding law and form, in `Law::SLIDING` × `Form::ALL` order (the laws of the C twin
+/// `bits.c`; the rolling laws are not in this stream: FASTSIM's grids would take the QEMU run
+/// past its time limit, and their host = MCU identity is not checked here).
 fn bits_all<W: core::fmt::Write>(out: &mut W) -> core::fmt::Result {
-    for law in Law::ALL {
+    for law in Law::SLIDING {
         for form in Form::ALL {
             bits_config(out, law, form)?;
         }
