@@ -58,6 +58,7 @@ pub mod friction;
 pub mod geometry;
 pub mod guide;
 mod hw_sqrt;
+pub mod jacobian;
 pub mod math;
 pub mod normal;
 pub mod real;
