@@ -31,7 +31,7 @@
 //!   `../data/rolling_ref_plane.csv` (114 cases).
 //!
 //! With a/b arguments only those shapes are computed (to split the work; concatenate the rows).
-use rolling_exact::cases::{NL, SHAPES, magnitudes};
+use rolling_exact::cases::{NL, SHAPES, magnitudes, uniform};
 use rolling_exact::kalker;
 use rolling_exact::reference::{Patch, finest_k};
 use std::time::Instant;
@@ -70,16 +70,6 @@ fn nodes(spin: bool) -> Vec<f64> {
     let mut v: Vec<f64> = q.iter().copied().chain(between(&q, &[0.5])).collect();
     v.sort_by(f64::total_cmp);
     v
-}
-
-/// splitmix64 → uniform [0, 1).
-fn uniform(state: &mut u64) -> f64 {
-    *state = state.wrapping_add(0x9E37_79B9_7F4A_7C15);
-    let mut z = *state;
-    z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-    z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-    z ^= z >> 31;
-    (z >> 11) as f64 / (1u64 << 53) as f64
 }
 
 fn main() {

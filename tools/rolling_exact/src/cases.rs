@@ -166,3 +166,13 @@ pub const TESTBANK: [(f64, f64, f64, f64); 11] = [
     (0.5, 0.5, -30.0, 2.0),
     (2.0, 1.0, -90.0, 0.7),
 ];
+
+/// splitmix64 → uniform [0, 1) (the random case sets' generator; deterministic from the seed).
+pub fn uniform(state: &mut u64) -> f64 {
+    *state = state.wrapping_add(0x9E37_79B9_7F4A_7C15);
+    let mut z = *state;
+    z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+    z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+    z ^= z >> 31;
+    (z >> 11) as f64 / (1u64 << 53) as f64
+}

@@ -1,6 +1,16 @@
 //! The discretised Hertz ellipse: `m` strips along y, each cut into `n` equal elements that
 //! exactly cover the strip's chord, plus one "ghost" point per strip just upstream of its
 //! leading edge (where the displacement is needed by the upwind derivative, traction zero).
+//!
+//! **Skewed patch.** An ellipse with semi-axes (a₀, b₀) whose a₀ axis is turned by θ from the
+//! rolling direction x is the set A x² + 2B xy + C y² ≤ 1, A = cos²θ/a₀² + sin²θ/b₀²,
+//! B = sinθ cosθ (1/a₀² − 1/b₀²), C = sin²θ/a₀² + cos²θ/b₀², and since AC − B² = 1/(a₀b₀)²,
+//! A x² + 2B xy + C y² = (x − s y)²/a² + y²/b² with a = 1/√A, b = a₀b₀√A, s = −B/A: the
+//! aligned ellipse (a, b) (a along x: the patch's extent along the rolling direction) sheared
+//! along x by x → x + s y. The strips along x stay strips; each is shifted by s·y_j, and the
+//! Hertz pressure p₀√(1 − (x − s y)²/a² − y²/b²) is the aligned one carried along, so the
+//! grid is the aligned grid with every element and ghost moved by s·y_j ([`Grid::sheared`];
+//! s = 0 is [`Grid::new`] exactly).
 
 /// One rectangular element with piecewise-constant traction.
 #[derive(Clone, Copy, Debug)]
@@ -15,7 +25,7 @@ pub struct Element {
     pub bound: f64,
 }
 
-/// The element grid of one (a, b) ellipse.
+/// The element grid of one (a, b) ellipse (sheared by s: see the module docs).
 #[derive(Clone, Debug)]
 pub struct Grid {
     /// Strips (along y) and elements per strip (along x).
@@ -34,6 +44,12 @@ impl Grid {
     /// Hertz pressure p = p0 √(1 − x²/a² − y²/b²) whose p0 is set so that the discrete total
     /// Σ bound·area equals f·N exactly (`f_n` = f·N).
     pub fn new(a: f64, b: f64, m: usize, n: usize, f_n: f64) -> Self {
+        Self::sheared(a, b, 0.0, m, n, f_n)
+    }
+
+    /// The ellipse (x − s·y)²/a² + y²/b² ≤ 1 (see the module docs): [`Grid::new`]'s grid with
+    /// strip j moved along x by s·y_j.
+    pub fn sheared(a: f64, b: f64, s: f64, m: usize, n: usize, f_n: f64) -> Self {
         let dy = 2.0 * b / m as f64;
         let mut elements = Vec::with_capacity(m * n);
         let mut ghosts = Vec::with_capacity(m);
@@ -52,7 +68,7 @@ impl Grid {
                 // mean of √(a_j² − x²)/a over the element; p0 applied below
                 let mean = (h(x0 + dx, aj) - h(x0, aj)) / (dx * a);
                 elements.push(Element {
-                    x: x0 + 0.5 * dx,
+                    x: x0 + 0.5 * dx + s * y,
                     y,
                     hx: 0.5 * dx,
                     hy: 0.5 * dy,
@@ -60,7 +76,7 @@ impl Grid {
                 });
                 total += mean * dx * dy;
             }
-            ghosts.push((aj + 0.5 * dx, y));
+            ghosts.push((aj + 0.5 * dx + s * y, y));
         }
         let p0 = f_n / total;
         for e in &mut elements {

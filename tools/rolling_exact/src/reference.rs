@@ -9,6 +9,22 @@ use crate::influence::SlipOperator;
 use crate::solver::{Creepage, Settings, Stats, Totals, solve};
 use std::time::Instant;
 
+/// The sheared-grid parameters (a, b, s) of a patch a₀/b₀ = `aob` (c = √(a₀b₀) = 1) turned by
+/// `theta` from x: (x − s y)²/a² + y²/b² ≤ 1 (see [`crate::grid`]). At θ = 0 exactly
+/// (√aob, 1/√aob, 0), the grid of the aligned solver bit for bit.
+pub fn skew(aob: f64, theta: f64) -> (f64, f64, f64) {
+    let a0 = aob.sqrt();
+    let b0 = 1.0 / a0;
+    if theta == 0.0 {
+        return (a0, b0, 0.0);
+    }
+    let (sn, cs) = theta.sin_cos();
+    let big_a = cs * cs / (a0 * a0) + sn * sn / (b0 * b0);
+    let big_b = sn * cs * (1.0 / (a0 * a0) - 1.0 / (b0 * b0));
+    let a = 1.0 / big_a.sqrt();
+    (a, a0 * b0 / a, -big_b / big_a)
+}
+
 /// One grid of the extrapolation.
 pub struct Level {
     /// Elements along the shorter semi-axis' direction (h ∝ 1/k).
@@ -21,7 +37,12 @@ pub struct Level {
 
 /// A Hertz patch a/b with Poisson ratio ν and load ratio nl = fN/(Gc²), on three grids.
 pub struct Patch {
+    /// The patch's own semi-axis ratio a₀/b₀ (a₀ at `theta` from the rolling direction).
     pub aob: f64,
+    /// Angle (rad) from the rolling direction x to the patch's a₀ axis (0 for [`Patch::new`]).
+    pub theta: f64,
+    /// The sheared grid's (a, b, s): a along x, b across, shear s (see [`skew`]).
+    pub aligned: (f64, f64, f64),
     pub nu: f64,
     pub nl: f64,
     pub levels: Vec<Level>,
@@ -38,18 +59,33 @@ impl Patch {
     /// Grids k/2, 3k/4, k elements along the shorter axis (k a multiple of 4); square
     /// elements: n = k·a/b (a ≥ b) along x, m = k·b/a (a < b) along y.
     pub fn new(aob: f64, nu: f64, nl: f64, k: usize) -> Self {
-        let a = aob.sqrt();
-        let b = 1.0 / a;
+        Self::skewed(aob, 0.0, nu, nl, k)
+    }
+
+    /// A patch with semi-axis ratio a₀/b₀ = `aob` (c = 1) whose a₀ axis is turned by `theta`
+    /// (rad) from the rolling direction; the grids are those of the aligned ellipse [`skew`]
+    /// (k elements along its shorter axis) sheared along x. `theta = 0` is [`Patch::new`].
+    pub fn skewed(aob: f64, theta: f64, nu: f64, nl: f64, k: usize) -> Self {
+        let (a, b, _) = skew(aob, theta);
+        Self::skewed_on(aob, theta, nu, nl, k, a / b)
+    }
+
+    /// [`Patch::skewed`] with `nm` = n/m, the ratio of the elements per strip (along x) to the
+    /// strips (along y), instead of a/b (square elements): for very long or very narrow
+    /// patches, elements elongated along the long axis (k along the shorter direction).
+    pub fn skewed_on(aob: f64, theta: f64, nu: f64, nl: f64, k: usize, nm: f64) -> Self {
+        let (a, b, s) = skew(aob, theta);
+        let aob_grid = nm;
         let levels = [k / 2, 3 * k / 4, k]
             .into_iter()
             .map(|k| {
                 let t = Instant::now();
-                let (n, m) = if aob >= 1.0 {
-                    (((k as f64) * aob).round() as usize, k)
+                let (n, m) = if aob_grid >= 1.0 {
+                    (((k as f64) * aob_grid).round() as usize, k)
                 } else {
-                    (k, ((k as f64) / aob).round() as usize)
+                    (k, ((k as f64) / aob_grid).round() as usize)
                 };
-                let grid = Grid::new(a, b, m, n, nl);
+                let grid = Grid::sheared(a, b, s, m, n, nl);
                 let op = SlipOperator::new(&grid, nu);
                 Level {
                     k,
@@ -61,6 +97,8 @@ impl Patch {
             .collect();
         Patch {
             aob,
+            theta,
+            aligned: (a, b, s),
             nu,
             nl,
             levels,
@@ -111,4 +149,37 @@ pub struct Solution {
     pub err_m: f64,
     /// Per grid (coarse to fine): totals (÷ fN), solver statistics, seconds.
     pub levels: Vec<(Totals, Stats, f64)>,
+}
+
+/// Kalker's linear creep matrix of a patch (full adhesion, G = 1, c = 1): K with
+/// (F_x, F_y, M_z/c)/(Gc²) = −K·(ξ, η, cφ) (forces on body B). For a patch aligned with the
+/// rolling direction K = [[C₁₁, 0, 0], [0, C₂₂, C₂₃], [0, −C₂₃, C₃₃]]; a skewed patch couples
+/// every entry. Column j from the unit creepage j, extrapolated over the three grids.
+pub struct CreepMatrix {
+    /// K[row][column], rows (F_x, F_y, M_z), columns (ξ, η, cφ).
+    pub k: [[f64; 3]; 3],
+    /// The extrapolation's error estimate per entry.
+    pub err: [[f64; 3]; 3],
+}
+
+impl Patch {
+    /// The linear creep matrix ([`CreepMatrix`]) of this patch (three full-adhesion solves on
+    /// each grid; the load ratio does not enter).
+    pub fn creep_matrix(&self) -> CreepMatrix {
+        let mut k = [[0.0; 3]; 3];
+        let mut err = [[0.0; 3]; 3];
+        for j in 0..3 {
+            let mut c = [0.0; 3];
+            c[j] = 1.0;
+            let s = self.solve(c[0], c[1], c[2], false);
+            // totals are ÷ nl (= fN/(Gc²)): back to ÷ Gc²
+            let t = [s.totals.fx, s.totals.fy, s.totals.mz];
+            let e = [s.err_f, s.err_f, s.err_m];
+            for i in 0..3 {
+                k[i][j] = -t[i] * self.nl;
+                err[i][j] = e[i] * self.nl;
+            }
+        }
+        CreepMatrix { k, err }
+    }
 }

@@ -1,0 +1,131 @@
+//! The held-out test set of the rolling laws over the whole domain: `POINTS` cases drawn at
+//! random (seeded, reproducible) over the patch shape, the skew angle of the rolling
+//! direction to the patch axes, ν, the direction of the creepages and their magnitude — on no
+//! creep curve of the other reference files and not used to fit anything.
+//!
+//! `nice cargo run --release --example heldout -- [OUT [FIRST [LAST]]]` (from
+//! tools/rolling_exact; default `../data/rolling_ref_heldout.csv`, points FIRST..LAST of the
+//! sequence, to split the work; concatenate the rows).
+//!
+//! Draws per point (splitmix64, seed `SEED`, in this order):
+//! - a₀/b₀ log-uniform in [1/20, 20] (c = √(a₀b₀) = 1; a₀ may be the shorter semi-axis);
+//! - skew: one point in three aligned (θ = 0: a₀ along the rolling direction; with a₀/b₀ on
+//!   both sides of 1 this covers both axes), the others θ uniform in [0°, 180°) (the angle from
+//!   the rolling direction x to the a₀ axis, counter-clockwise; θ and 180° − θ are mirror
+//!   images);
+//! - ν uniform in [0, 0.5];
+//! - direction d uniform on the unit sphere and magnitude q log-uniform in [0.01, 10], placed
+//!   as the other files place them: ξ = 3·nl·q·d₁/C₁₁, η = 3·nl·q·d₂/C₂₂, φc = 3·nl·q·d₃/C₂₃
+//!   with Kalker's coefficients of the aligned ellipse ([`rolling_exact::reference::skew`];
+//!   the library's `Kalker`, used only to place the cases), nl = 0.01.
+//!
+//! Grids: the aligned ellipse's, sheared (`Patch::skewed_on`), ≈ 1,024 elements on the finest;
+//! square elements while the aligned ratio r is within [1/5, 5], beyond that n/m = 5·√(r/5)
+//! (1/r alike): elements elongated along the long axis, so that the short axis keeps ≥ 8
+//! elements on the finest grid. Columns: as rolling_ref.csv with `theta_deg` after
+//! `a_over_b`, then `converged` (every grid's Gauss–Seidel met its tolerance) and the seconds.
+use contensou::friction::rolling::Kalker;
+use rolling_exact::cases::uniform;
+use rolling_exact::reference::{Patch, finest_k, skew};
+use std::time::Instant;
+
+/// Points in the committed file.
+pub const POINTS: usize = 500;
+/// The generator's seed.
+pub const SEED: u64 = 29;
+/// Load ratio fN/(Gc²).
+const NL: f64 = 0.01;
+
+/// n/m of the grids for the aligned ratio r (see the module docs).
+pub fn elements_ratio(r: f64) -> f64 {
+    if r > 5.0 {
+        5.0 * (r / 5.0).sqrt()
+    } else if r < 0.2 {
+        1.0 / elements_ratio(1.0 / r)
+    } else {
+        r
+    }
+}
+
+/// One drawn case: (a₀/b₀, θ (rad), ν, ξ, η, φc).
+pub fn draw(state: &mut u64) -> (f64, f64, f64, f64, f64, f64) {
+    let aob = (20f64.ln() * (2.0 * uniform(state) - 1.0)).exp();
+    let aligned = uniform(state) < 1.0 / 3.0;
+    let t = uniform(state);
+    let theta = if aligned {
+        0.0
+    } else {
+        std::f64::consts::PI * t
+    };
+    let nu = 0.5 * uniform(state);
+    let z = 2.0 * uniform(state) - 1.0;
+    let az = std::f64::consts::TAU * uniform(state);
+    let w = (1.0 - z * z).sqrt();
+    let d = [z, w * az.cos(), w * az.sin()];
+    let q = 0.01 * 1000f64.powf(uniform(state));
+    let (a, b, _) = skew(aob, theta);
+    let k = Kalker::<f64>::new(a / b, nu);
+    let s = 3.0 * NL * q;
+    (
+        aob,
+        theta,
+        nu,
+        s * d[0] / k.c11,
+        s * d[1] / k.c22,
+        s * d[2] / k.c23,
+    )
+}
+
+fn main() {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    let out = args
+        .first()
+        .map(String::as_str)
+        .unwrap_or("../data/rolling_ref_heldout.csv");
+    let first: usize = args.get(1).map_or(0, |s| s.parse().expect("FIRST"));
+    let last: usize = args.get(2).map_or(POINTS, |s| s.parse().expect("LAST"));
+    let started = Instant::now();
+    let mut file = std::io::BufWriter::new(std::fs::File::create(out).expect("create csv"));
+    let mut line = |text: &str| {
+        use std::io::Write as _;
+        writeln!(file, "{text}")
+            .and_then(|()| file.flush())
+            .expect("write csv");
+    };
+    if first == 0 {
+        line(
+            "# Exact steady-rolling reference: the held-out set over the whole domain, tools/rolling_exact/examples/heldout.rs",
+        );
+        line(&format!(
+            "# ({POINTS} points drawn with seed {SEED}; see there). Method, extrapolation, error columns and units as rolling_ref.csv;"
+        ));
+        line(
+            "# theta_deg: angle from the rolling direction x to the patch's a axis (a/b = a_over_b, c = 1).",
+        );
+        line("family,a_over_b,theta_deg,nu,nl,xi,eta,phi_c,fx,fy,mz,err_f,err_m,converged,seconds");
+    }
+    let mut state = SEED;
+    for i in 0..last {
+        let (aob, theta, nu, xi, eta, phi_c) = draw(&mut state);
+        if i < first {
+            continue;
+        }
+        let t = Instant::now();
+        let (a, b, _) = skew(aob, theta);
+        let nm = elements_ratio(a / b);
+        let patch = Patch::skewed_on(aob, theta, nu, NL, finest_k(nm, 1024), nm);
+        let sol = patch.solve(xi, eta, phi_c, true);
+        line(&format!(
+            "heldout,{aob:.6},{:.4},{nu:.4},{NL},{xi:e},{eta:e},{phi_c:e},{:.10e},{:.10e},{:.10e},{:.3e},{:.3e},{},{:.2}",
+            theta.to_degrees(),
+            sol.totals.fx,
+            sol.totals.fy,
+            sol.totals.mz,
+            sol.err_f,
+            sol.err_m,
+            u8::from(sol.converged),
+            t.elapsed().as_secs_f64()
+        ));
+    }
+    eprintln!("wrote {out} in {:.1} s", started.elapsed().as_secs_f64());
+}
