@@ -26,7 +26,7 @@
 //! `a_over_b`, then `converged` (every grid's Gauss–Seidel met its tolerance) and the seconds.
 use contensou::friction::rolling::Kalker;
 use rolling_exact::cases::uniform;
-use rolling_exact::reference::{Patch, finest_k, skew};
+use rolling_exact::reference::{Patch, elements_ratio, finest_k, skew};
 use std::time::Instant;
 
 /// Points in the committed file.
@@ -35,17 +35,6 @@ pub const POINTS: usize = 500;
 pub const SEED: u64 = 29;
 /// Load ratio fN/(Gc²).
 const NL: f64 = 0.01;
-
-/// n/m of the grids for the aligned ratio r (see the module docs).
-pub fn elements_ratio(r: f64) -> f64 {
-    if r > 5.0 {
-        5.0 * (r / 5.0).sqrt()
-    } else if r < 0.2 {
-        1.0 / elements_ratio(1.0 / r)
-    } else {
-        r
-    }
-}
 
 /// One drawn case: (a₀/b₀, θ (rad), ν, ξ, η, φc).
 pub fn draw(state: &mut u64) -> (f64, f64, f64, f64, f64, f64) {

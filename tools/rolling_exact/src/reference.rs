@@ -25,6 +25,19 @@ pub fn skew(aob: f64, theta: f64) -> (f64, f64, f64) {
     (a, a0 * b0 / a, -big_b / big_a)
 }
 
+/// n/m of the grids for the aligned ratio r: square elements (n/m = r) while r ∈ [1/5, 5],
+/// beyond that n/m = 5·√(r/5) (1/r alike): elements elongated along the long axis, so that the
+/// short axis keeps more elements for the same total (used for the shapes beyond [1/5, 5]).
+pub fn elements_ratio(r: f64) -> f64 {
+    if r > 5.0 {
+        5.0 * (r / 5.0).sqrt()
+    } else if r < 0.2 {
+        1.0 / elements_ratio(1.0 / r)
+    } else {
+        r
+    }
+}
+
 /// One grid of the extrapolation.
 pub struct Level {
     /// Elements along the shorter semi-axis' direction (h ∝ 1/k).
