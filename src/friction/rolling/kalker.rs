@@ -186,7 +186,7 @@ fn hermite(rows: &[[f64; 9]; 10], col: usize, g: f64) -> f64 {
 }
 
 /// 1/C quadratic in ν through the columns ν = 0, 0.25, 0.5.
-fn in_nu(c: [f64; 3], nu: f64) -> f64 {
+pub(crate) fn in_nu(c: [f64; 3], nu: f64) -> f64 {
     let inv = (nu - 0.25) * (nu - 0.5) * 8.0 / c[0] - (nu - 0.5) * nu * 16.0 / c[1]
         + nu * (nu - 0.25) * 8.0 / c[2];
     1.0 / inv

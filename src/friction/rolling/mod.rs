@@ -68,6 +68,8 @@
 
 pub mod blend;
 pub mod contact;
+pub mod creep_matrix;
+mod creep_matrix_data;
 pub mod elastic;
 pub mod fastsim;
 pub mod kalker;
@@ -81,6 +83,7 @@ pub use blend::Blend;
 pub use contact::{
     Creep, FullSlip, Input, Linear, Patch, RollingContact, RollingLaw, RollingShape, Wrench,
 };
+pub use creep_matrix::CreepMatrix;
 pub use elastic::Elasticity;
 pub use fastsim::{Fastsim, FastsimGrid};
 pub use kalker::Kalker;

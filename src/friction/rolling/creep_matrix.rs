@@ -1,0 +1,240 @@
+//! Kalker's linear theory over the whole domain from the exact theory: the coefficients C₁₁,
+//! C₂₂, C₂₃, C₃₃ of a patch rolling along an axis for a/b from 1/20 to 20, and the full 3 × 3
+//! creep matrix of a patch rolling at any angle to its axes.
+//!
+//! # Formula
+//!
+//! Linear theory in the rolling frame (x along the rolling velocity; forces on body B, frame
+//! and signs of [`super`]): (F_x, F_y, M_z/c)/(Gc²) = −K·(ξ, η, cφ), c = √(ab). Along an axis
+//! K = [[C₁₁, 0, 0], [0, C₂₂, C₂₃], [0, −C₂₃, C₃₃]] ([`Kalker`]); rolled at an angle to the
+//! patch's axes every entry is coupled, with K₂₁ = K₁₂, K₃₁ = −K₁₃, K₃₂ = −K₂₃ (reciprocity of
+//! the exact theory, measured to ≤ 0.05 % by the reference) — so six numbers.
+//!
+//! - **Along an axis** ([`aligned`]): ln C at 17 values of a/b = 20^(i/8 − 1) (log-uniform over
+//!   [1/20, 20]) and ν = 0, ¼, ½ from the exact steady-rolling reference in full adhesion
+//!   (`tools/rolling_exact`, example `linear_table`, grid-extrapolated:
+//!   `tools/data/rolling_linear_aligned.csv`); cubic Hermite in ln(a/b) with finite-difference
+//!   slopes, `exp`, then 1/C quadratic in ν for C₁₁, C₂₂, C₂₃ (Kalker's form, as
+//!   [`Kalker::new`]) and C₃₃ itself quadratic in ν (at a/b = 20 it falls from 0.79 to 0.16
+//!   over ν ∈ [0, ½] nearly linearly; 1/C₃₃ is far from quadratic there). Outside
+//!   [1/20, 20]: the end value times [`Kalker::new`]'s ratio between a/b and the end
+//!   (continuous; Kalker's asymptotes carry the growth).
+//! - **At an angle** ([`CreepMatrix::new`]): the patch a ≥ b (library frame, x the major axis)
+//!   rolled along (cos α, sin α). With r = a/b and the aligned ellipse's ratio
+//!   q = a_r/b_r = 1/(cos²α/r + r sin²α) ([`super::aligned_ellipse`]), t = ½(1 − ln q/ln r) ∈ [0, 1]
+//!   (0: along the major axis, 1: along the minor one). The entries divided by the aligned
+//!   coefficients at q, ρ₁₁ = K₁₁/C₁₁, ρ₂₂ = K₂₂/C₂₂, ρ₃₃ = K₃₃/C₃₃, ρ₂₃ = K₂₃/C₂₃,
+//!   κ₁₂ = K₁₂/(√(C₁₁C₂₂) sinθ cosθ), κ₁₃ = K₁₃/(√(C₁₁C₃₃) sinθ cosθ) (θ the angle between
+//!   the rolling direction and the major axis, reduced to [0°, 90°]; the couplings vanish like
+//!   sin 2θ at the axes) are tabulated from the reference
+//!   (`tools/data/rolling_linear_skewed.csv`) at ln r = (i/6)·ln 20, i = 0 … 6, t = j/8, j = 0 … 8,
+//!   ν = 0, ¼, ½ (exactly 1 and 0 on the axes and for the circle); cubic Hermite in t, then in
+//!   ln r, quadratic in ν. The mirror image (cos α·sin α > 0) flips the signs of K₁₂, K₁₃.
+//!   So the matrix is exact (to the table) along both axes and the aligned-ellipse rule of
+//!   [`super::skew`] is what the ρ's correct: it has ρ = 1, κ = 0.
+//!
+//! Tables: `tools/fit_rolling_linear.py --write` (nothing fitted: the reference's values at the
+//! nodes); `--check` in CI.
+//!
+//! # Domain
+//!
+//! a/b > 0 (and a ≥ b > 0 for [`CreepMatrix::new`]), ν ∈ [0, 0.5], any direction (zero → along
+//! x). Measured over a/b ∈ [1/20, 20]; beyond, along an axis Kalker's asymptotic growth, at an
+//! angle the table's r = 20 (not measured). Total: finite for finite positive input.
+//!
+//! # Error
+//!
+//! Against the exact reference's held-out matrices (`tools/data/rolling_linear_check.csv`: 12
+//! aligned patches, a/b log-uniform over [1/20, 20], and 28 patches rolled at random angles, r
+//! log-uniform over [1, 20], ν uniform over [0, ½]; none a node of the tables; asserted in
+//! `host-tests/rolling_linear.rs`; coupling errors relative to √(K_ii K_jj)):
+//!
+//! | entries | r = max(a/b, b/a) ≤ 6.5 (23 patches) | r > 6.5 (17 patches) |
+//! |---|---|---|
+//! | C₁₁ / K₁₁, C₂₂ / K₂₂ | 0.36 %, 0.43 % | 0.56 %, 0.68 % |
+//! | C₂₃ / K₂₃ | 0.51 % | 2.1 % (a/b = 10.3 at 65°, ν = 0.49) |
+//! | C₃₃ / K₃₃ | 3.3 % (aligned a/b = 2.97), skewed 1.6 % | 4.7 % (aligned a/b = 7.4) |
+//! | K₁₂, K₁₃ | 0.30 %, 0.75 % | 0.31 %, 4.3 % (a/b = 10.3 at 65°, ν = 0.49) |
+//!
+//! The reference's own extrapolation estimate for C₃₃ is ≈ 1 % at a/b ≈ 3 and 1–7 % beyond
+//! a/b = 7 (C₃₃ is a small difference there, ≈ 0.5 against C₂₃²/C₂₂ ≈ 50), so the C₃₃ figures
+//! beyond a/b ≈ 2.5 are as much the reference's as the tables'. Along the narrow side (a/b from
+//! 1/20 to 1) every coefficient is within 0.3 % (C₃₃ 0.3 %). Compared with Table E3's
+//! interpolation ([`Kalker::new`], ν = 0.3): C₃₃ 17.73 / 8.89 / 6.39 / 0.421 here at
+//! a/b = 0.05 / 0.1 / 0.14 / 20 against 24.08 / 10.29 / 6.82 / 0.348 there; C₁₁, C₂₂, C₂₃
+//! within 1.5 %.
+//!
+//! # Cost
+//!
+//! Per contact, in `f64`: [`aligned`] 12 Hermite segments, 12 `exp`; [`CreepMatrix::new`] that
+//! plus 6 × 7 × 3 Hermite segments, one `ln`, two `sqrt`. Not for the hot path.
+
+use super::Kalker;
+use super::creep_matrix_data::{ALIGNED, SKEWED};
+use super::kalker::in_nu;
+use crate::Real;
+
+/// ln 20.
+const LN20: f64 = 2.995_732_273_553_991;
+
+/// Cubic Hermite through `y(i)`, i < n, at x0 + i·h, finite-difference slopes (one-sided at the
+/// ends), x clamped to the nodes' range. Total (`y` out of range: 0).
+fn hermite(n: usize, y: impl Fn(usize) -> f64, x0: f64, h: f64, x: f64) -> f64 {
+    let last = n.saturating_sub(1);
+    let t = super::within((x - x0) / h, 0.0, last as f64);
+    let i = (t as usize).min(n.saturating_sub(2));
+    let u = t - i as f64;
+    let slope = |k: usize| {
+        if k == 0 {
+            y(1) - y(0)
+        } else if k >= last {
+            y(last) - y(last - 1)
+        } else {
+            0.5 * (y(k + 1) - y(k - 1))
+        }
+    };
+    let (y0, y1, m0, m1) = (y(i), y(i + 1), slope(i), slope(i + 1));
+    let (u2, u3) = (u * u, u * u * u);
+    (2.0 * u3 - 3.0 * u2 + 1.0) * y0
+        + (u3 - 2.0 * u2 + u) * m0
+        + (-2.0 * u3 + 3.0 * u2) * y1
+        + (u3 - u2) * m1
+}
+
+/// Quadratic in ν through ν = 0, ¼, ½.
+fn quad_nu(c: [f64; 3], nu: f64) -> f64 {
+    (nu - 0.25) * (nu - 0.5) * 8.0 * c[0] - (nu - 0.5) * nu * 16.0 * c[1]
+        + nu * (nu - 0.25) * 8.0 * c[2]
+}
+
+/// (C₁₁, C₂₂, C₂₃, C₃₃) from the table at a/b ∈ [1/20, 20] (clamped).
+fn tabulated(a_over_b: f64, nu: f64) -> [f64; 4] {
+    let x = libm::log(a_over_b);
+    let n = ALIGNED.len();
+    [0, 1, 2, 3].map(|c| {
+        let col = |j: usize| {
+            let y = |i: usize| {
+                ALIGNED
+                    .get(i)
+                    .and_then(|r| r.get(c))
+                    .and_then(|r| r.get(j))
+                    .copied()
+                    .unwrap_or(0.0)
+            };
+            libm::exp(hermite(n, y, -LN20, LN20 / 8.0, x))
+        };
+        if c < 3 {
+            in_nu([col(0), col(1), col(2)], nu)
+        } else {
+            quad_nu([col(0), col(1), col(2)], nu)
+        }
+    })
+}
+
+/// (C₁₁, C₂₂, C₂₃, C₃₃) in `f64` for a/b > 0, ν ∈ [0, 0.5] (see the module docs).
+pub(crate) fn aligned_f64(a_over_b: f64, nu: f64) -> [f64; 4] {
+    let end = super::within(a_over_b, 1.0 / 20.0, 20.0);
+    let inside = tabulated(end, nu);
+    if end == a_over_b {
+        return inside;
+    }
+    // beyond the table: Kalker's asymptotic growth from the end value
+    let (here, there) = (
+        Kalker::<f64>::new(a_over_b, nu),
+        Kalker::<f64>::new(end, nu),
+    );
+    let ratio = [
+        here.c11 / there.c11,
+        here.c22 / there.c22,
+        here.c23 / there.c23,
+        here.c33 / there.c33,
+    ];
+    [0, 1, 2, 3].map(|k| inside[k] * ratio[k])
+}
+
+/// Kalker's coefficients of a patch rolling along an axis (a/b with a along the rolling
+/// direction), from the exact theory over a/b ∈ [1/20, 20] (see the [module docs](self)).
+/// Computed in `f64`. Not [`Kalker::new`] (Table E3, which the laws `blend` and `table` keep).
+pub fn aligned<T: Real>(a_over_b: T, nu: T) -> Kalker<T> {
+    let [c11, c22, c23, c33] = aligned_f64(a_over_b.to_f64(), nu.to_f64());
+    Kalker {
+        c11: T::from_f64(c11),
+        c22: T::from_f64(c22),
+        c23: T::from_f64(c23),
+        c33: T::from_f64(c33),
+    }
+}
+
+/// Kalker's linear creep matrix of a patch rolled at any angle to its axes (see the
+/// [module docs](self)): (F_x, F_y, M_z/c)/(Gc²) = −K·(ξ, η, cφ) in the rolling frame.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct CreepMatrix<T> {
+    /// K, rows (F_x, F_y, M_z/c), columns (ξ, η, cφ).
+    pub k: [[T; 3]; 3],
+}
+
+impl<T: Real> CreepMatrix<T> {
+    /// The patch with semi-axes `a_major` ≥ `b_minor` > 0 along the library frame's x and y,
+    /// rolled along (cx, sx) in that frame (normalised here; zero: along x), Poisson's ratio ν.
+    /// Computed in `f64`.
+    pub fn new(a_major: T, b_minor: T, cx: T, sx: T, nu: T) -> Self {
+        let (a, b) = (a_major.to_f64(), b_minor.to_f64());
+        let r = if b > 0.0 && a >= b { a / b } else { 1.0 };
+        let (cx, sx) = (cx.to_f64(), sx.to_f64());
+        let n2 = cx * cx + sx * sx;
+        let (c2, s2) = if n2 > 0.0 {
+            (cx * cx / n2, sx * sx / n2)
+        } else {
+            (1.0, 0.0)
+        };
+        let nu = nu.to_f64();
+        // the aligned ellipse's ratio along the rolling direction, and t
+        let q = 1.0 / (c2 / r + r * s2);
+        let [c11, c22, c23, c33] = aligned_f64(q, nu);
+        let x = libm::log(r);
+        let t = if x > 0.0 {
+            super::within(0.5 * (1.0 - libm::log(q) / x), 0.0, 1.0)
+        } else {
+            0.0
+        };
+        let (nx, nt) = (SKEWED.len(), SKEWED.first().map_or(0, |s| s.len()));
+        let entry = |e: usize| {
+            let at_x = |i: usize| {
+                let node = |j: usize, col: usize| {
+                    SKEWED
+                        .get(i)
+                        .and_then(|s| s.get(j))
+                        .and_then(|s| s.get(e))
+                        .and_then(|s| s.get(col))
+                        .copied()
+                        .unwrap_or(0.0)
+                };
+                let col = |col: usize| hermite(nt, |j| node(j, col), 0.0, 1.0 / 8.0, t);
+                quad_nu([col(0), col(1), col(2)], nu)
+            };
+            hermite(nx, at_x, 0.0, LN20 / 6.0, x)
+        };
+        // the mirror image (the major axis at −α from the rolling direction, in (90°, 180°))
+        // sinθ cosθ ≥ 0 of the reduced angle θ ∈ [0°, 90°] (θ = −α, or 180° + α mirrored)
+        let sc = if n2 > 0.0 {
+            libm::fabs(cx * sx) / n2
+        } else {
+            0.0
+        };
+        let sign = if cx * sx > 0.0 { -sc } else { sc };
+        let k11 = entry(0) * c11;
+        let k22 = entry(1) * c22;
+        let k33 = entry(2) * c33;
+        let k23 = entry(3) * c23;
+        let k12 = sign * entry(4) * libm::sqrt(c11 * c22);
+        let k13 = sign * entry(5) * libm::sqrt(c11 * c33);
+        let f = T::from_f64;
+        Self {
+            k: [
+                [f(k11), f(k12), f(k13)],
+                [f(k12), f(k22), f(k23)],
+                [f(-k13), f(-k23), f(k33)],
+            ],
+        }
+    }
+}
