@@ -80,7 +80,9 @@ impl Patch {
     /// (k elements along its shorter axis) sheared along x. `theta = 0` is [`Patch::new`].
     pub fn skewed(aob: f64, theta: f64, nu: f64, nl: f64, k: usize) -> Self {
         let (a, b, _) = skew(aob, theta);
-        Self::skewed_on(aob, theta, nu, nl, k, a / b)
+        // θ = 0: a/b itself (the aligned solver's element counts exactly)
+        let nm = if theta == 0.0 { aob } else { a / b };
+        Self::skewed_on(aob, theta, nu, nl, k, nm)
     }
 
     /// [`Patch::skewed`] with `nm` = n/m, the ratio of the elements per strip (along x) to the
