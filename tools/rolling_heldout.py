@@ -23,7 +23,9 @@ own b/a, ν, and the normalised magnitude q (linear force 3fN at q = 1). Cost: M
 instructions per call from bench-results/qemu.csv (stage `rolling`: the law alone; the per-step
 wrench along an axis, skewed, varying for `table`).
 
-    cargo build --release --bin contact_eval && python3 tools/rolling_heldout.py [--csv OUT] [--md OUT]
+    cargo build --release --bin contact_eval && python3 tools/rolling_heldout.py [--csv OUT] [--md OUT] [--check]
+
+(--check: fail if the committed outputs differ from what the laws give now.)
 
 Writes (defaults) tools/data/rolling_heldout_laws.csv (every law's output per point, ÷ fN,
 ÷ fNc, in the reference's rolling frame) and bench-results/rolling-heldout.md (the tables).
@@ -195,14 +197,17 @@ def main():
     for r, (aob, _, _) in zip(rows, dq):
         assert abs(r["aob"] / aob - 1.0) < 1e-5, (r["aob"], aob)  # the CSV and the draws agree
     got, norms = evaluate(rows)
+    check = "--check" in sys.argv
     csv_out = arg("--csv", root / "tools/data/rolling_heldout_laws.csv")
-    with open(csv_out, "w") as fh:
-        fh.write("# Every rolling law on the held-out set (tools/rolling_heldout.py; rows of rolling_ref_heldout.csv in order):\n")
-        fh.write("# F/(fN), Mz/(fNc) in the reference's rolling frame, through contact_eval wrench (full-slip = best).\n")
-        fh.write("index,d_xi,d_eta,d_phi,q," + ",".join(f"{l}_fx,{l}_fy,{l}_mz" for l in LAWS) + "\n")
-        for i, (r, (_, d, q)) in enumerate(zip(rows, dq)):
-            vals = [f"{v:.6e}" for l in LAWS for v in got[l][i]]
-            fh.write(f"{i},{d[0]:.6f},{d[1]:.6f},{d[2]:.6f},{q:.6e}," + ",".join(vals) + "\n")
+    lines = [  # the per-point CSV
+        "# Every rolling law on the held-out set (tools/rolling_heldout.py; rows of rolling_ref_heldout.csv in order):\n",
+        "# F/(fN), Mz/(fNc) in the reference's rolling frame, through contact_eval wrench (full-slip = best).\n",
+        "index,d_xi,d_eta,d_phi,q," + ",".join(f"{l}_fx,{l}_fy,{l}_mz" for l in LAWS) + "\n",
+    ]
+    for i, (r, (_, d, q)) in enumerate(zip(rows, dq)):
+        vals = [f"{v:.6e}" for l in LAWS for v in got[l][i]]
+        lines.append(f"{i},{d[0]:.6f},{d[1]:.6f},{d[2]:.6f},{q:.6e}," + ",".join(vals) + "\n")
+    csv_text = "".join(lines)
     errs = {l: [] for l in LAWS}
     for l in LAWS:
         for r, g in zip(rows, got[l]):
@@ -289,7 +294,14 @@ def main():
           f"{r['err'][0]:.0e} / {r['err'][1]:.0e} |")
     text = "\n".join(out) + "\n"
     md = arg("--md", root / "bench-results/rolling-heldout.md")
+    if check:
+        stale = [str(f) for f, t in ((md, text), (csv_out, csv_text)) if not f.exists() or f.read_text() != t]
+        if stale:
+            sys.exit(f"not what the laws give now: {stale} — python3 {sys.argv[0]}")
+        print("rolling-heldout: committed tables up to date")
+        return
     md.write_text(text)
+    csv_out.write_text(csv_text)
     print(text)
 
 
