@@ -143,8 +143,8 @@ law_probes! {
 mod api {
     use super::*;
     use contensou::friction::rolling::{
-        Blend, Elasticity, Fastsim, FastsimGrid, FullSlip, Linear as KalkerLinear, Patch,
-        RollingContact, RollingLaw, RollingSlip, Table, Wrench,
+        Blend, CreepMatrix, Elasticity, Fastsim, FastsimGrid, FullSlip, Linear as KalkerLinear,
+        Patch, RollingContact, RollingLaw, RollingSlip, Table, Wrench, creep_matrix,
     };
 
     /// One rolling wrench by law `L` from raw inputs (every constructor on the way).
@@ -196,6 +196,9 @@ mod api {
         }
         fn probe_rolling_linear<T>(r, g, nu, a, b, n, f, vx, vy, om, v) {
             rolling::<T, KalkerLinear>(r, g, nu, a, b, n, f, vx, vy, om, v)
+        }
+        fn probe_rolling_creep_matrix<T>(a, b, cx, sx, nu) {
+            (CreepMatrix::new(a, b, cx, sx, nu), creep_matrix::aligned(a, nu))
         }
         // elliptic
         fn probe_parameter_new<T>(m) { (Parameter::new(m), Parameter::<T>::min_complement()) }

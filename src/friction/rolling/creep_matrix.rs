@@ -38,9 +38,10 @@
 //!
 //! # Domain
 //!
-//! a/b > 0 (and a ≥ b > 0 for [`CreepMatrix::new`]), ν ∈ [0, 0.5], any direction (zero → along
-//! x). Measured over a/b ∈ [1/20, 20]; beyond, along an axis Kalker's asymptotic growth, at an
-//! angle the table's r = 20 (not measured). Total: finite for finite positive input.
+//! a/b ∈ [0.01, 100] (clamped to it), a ≥ b > 0 for [`CreepMatrix::new`] (otherwise the
+//! circle's), ν ∈ [0, 0.5] (clamped), any direction (zero → along x). Measured over
+//! a/b ∈ [1/20, 20]; beyond, along an axis Kalker's asymptotic growth, at an angle the table's
+//! r = 20 (not measured). Total: finite for finite input, no panic path.
 //!
 //! # Error
 //!
@@ -133,6 +134,11 @@ fn tabulated(a_over_b: f64, nu: f64) -> [f64; 4] {
 
 /// (C₁₁, C₂₂, C₂₃, C₃₃) in `f64` for a/b > 0, ν ∈ [0, 0.5] (see the module docs).
 pub(crate) fn aligned_f64(a_over_b: f64, nu: f64) -> [f64; 4] {
+    // the library's domain (as validated by `RollingContact::new`, `Elasticity::new`)
+    let (a_over_b, nu) = (
+        super::within(a_over_b, 0.01, 100.0),
+        super::within(nu, 0.0, 0.5),
+    );
     let end = super::within(a_over_b, 1.0 / 20.0, 20.0);
     let inside = tabulated(end, nu);
     if end == a_over_b {
@@ -143,13 +149,14 @@ pub(crate) fn aligned_f64(a_over_b: f64, nu: f64) -> [f64; 4] {
         Kalker::<f64>::new(a_over_b, nu),
         Kalker::<f64>::new(end, nu),
     );
-    let ratio = [
-        here.c11 / there.c11,
-        here.c22 / there.c22,
-        here.c23 / there.c23,
-        here.c33 / there.c33,
-    ];
-    [0, 1, 2, 3].map(|k| inside[k] * ratio[k])
+    // destructured, not indexed: no bounds check survives at opt-level "z" (tools/no-panic.sh)
+    let [c11, c22, c23, c33] = inside;
+    [
+        c11 * here.c11 / there.c11,
+        c22 * here.c22 / there.c22,
+        c23 * here.c23 / there.c23,
+        c33 * here.c33 / there.c33,
+    ]
 }
 
 /// Kalker's coefficients of a patch rolling along an axis (a/b with a along the rolling
@@ -187,7 +194,7 @@ impl<T: Real> CreepMatrix<T> {
         } else {
             (1.0, 0.0)
         };
-        let nu = nu.to_f64();
+        let nu = super::within(nu.to_f64(), 0.0, 0.5);
         // the aligned ellipse's ratio along the rolling direction, and t
         let q = 1.0 / (c2 / r + r * s2);
         let [c11, c22, c23, c33] = aligned_f64(q, nu);
