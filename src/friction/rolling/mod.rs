@@ -71,6 +71,7 @@ pub mod contact;
 pub mod elastic;
 pub mod fastsim;
 pub mod kalker;
+pub mod row;
 pub mod skew;
 pub mod slip;
 pub mod table;
