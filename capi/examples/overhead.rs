@@ -6,9 +6,13 @@
 use std::hint::black_box;
 use std::ptr::null_mut;
 
-use contensou::dynamic::{DynContact, Form, Law, Output, Spec, Step};
+use contensou::dynamic::{DynContact, Form, Law, Output, Step};
 use contensou::Real;
 use contensou_capi::*;
+
+#[path = "../tests/common/mod.rs"]
+mod common;
+use common::{c_step, spec_in, spec_of};
 
 /// Calls per path and configuration (tests/overhead.sh divides by it).
 pub const CALLS: usize = 1024;
@@ -40,22 +44,8 @@ fn steps<T: Real>() -> Vec<Step<T>> {
 
 macro_rules! run {
     ($T:ty, $storage:expr, $new:ident, $wrench:ident, $rust:ident, $law:expr, $form:expr) => {{
-        let spec = Spec::<$T> {
-            p: 10.0,
-            q: 50.0,
-            estar: 1.15e11,
-            cd: 0.1,
-            f: 0.1,
-            delta: 1e-4,
-        };
-        let c_spec = contensou_spec::<$T> {
-            p: 10.0,
-            q: 50.0,
-            estar: 1.15e11,
-            cd: 0.1,
-            f: 0.1,
-            delta: 1e-4,
-        };
+        let c_spec = spec_in(|x| x as $T);
+        let spec = spec_of(&c_spec);
         let rust = black_box(DynContact::new(&spec, $law.1, $form.1).unwrap());
         let mut storage = Box::new($storage);
         let s = unsafe {
@@ -69,16 +59,7 @@ macro_rules! run {
         };
         assert_eq!(s, contensou_status::Ok);
         let rs = steps::<$T>();
-        let cs: Vec<contensou_step<$T>> = rs
-            .iter()
-            .map(|s| contensou_step {
-                h: s.h,
-                hdot: s.hdot,
-                vx: s.vx,
-                vy: s.vy,
-                omega: s.omega,
-            })
-            .collect();
+        let cs: Vec<contensou_step<$T>> = rs.iter().map(c_step).collect();
         let mut w = contensou_wrench::default();
         let (mut c_sum, mut r_sum) = (0.0, 0.0);
         for (c, r) in cs.iter().zip(&rs) {

@@ -5,6 +5,9 @@ use core::ptr::{null, null_mut};
 
 use contensou_capi::*;
 
+mod common;
+use common::{spec_in, step_at};
+
 type S = contensou_status;
 
 const ROWS: usize = 1003;
@@ -40,14 +43,7 @@ macro_rules! precision {
         fn $name() {
             let cols: [Vec<$t>; 5] = columns().map(|c| c.iter().map(|&x| x as $t).collect());
             let [h, hdot, vx, vy, omega] = &cols;
-            let spec = contensou_spec::<$t> {
-                p: 10.0,
-                q: 50.0,
-                estar: 1.15e11,
-                cd: 0.1,
-                f: 0.1,
-                delta: 1e-4,
-            };
+            let spec = spec_in(|x| x as $t);
             for law in [
                 CONTENSOU_LAW_BEST,
                 CONTENSOU_LAW_SIMPLIFIED,
@@ -92,13 +88,7 @@ macro_rules! precision {
                     );
                     assert_eq!((row, column), (ROWS, CONTENSOU_COLUMN_NONE));
                     for i in 0..ROWS {
-                        let step = contensou_step {
-                            h: h[i],
-                            hdot: hdot[i],
-                            vx: vx[i],
-                            vy: vy[i],
-                            omega: omega[i],
-                        };
+                        let step = step_at([h, hdot, vx, vy, omega].map(|c| &c[..]), i);
                         let mut w = contensou_wrench::<$t>::default();
                         assert_eq!(unsafe { $one(&*storage, &step, &mut w, null_mut()) }, S::Ok);
                         let one = [w.n, w.fx, w.fy, w.tz, w.a, w.b, w.e2];

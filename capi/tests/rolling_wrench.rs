@@ -8,32 +8,13 @@ use core::ptr::{null, null_mut};
 use contensou::dynamic::{DynContact, Form, Law, RollingSpec, RollingStep, Spec, Step};
 use contensou_capi::*;
 
+mod common;
+use common::{spec_of, step_at, storage64 as storage, SPEC};
+
 type S = contensou_status;
 
-fn storage() -> Box<contensou_contact_f64> {
-    Box::new(contensou_contact_f64 {
-        opaque: [0; CONTENSOU_CONTACT_F64_SIZE / 8],
-    })
-}
-
-const SPEC: contensou_spec<f64> = contensou_spec {
-    p: 10.0,
-    q: 50.0,
-    estar: 1.15e11,
-    cd: 0.1,
-    f: 0.1,
-    delta: 1e-4,
-};
-
 fn spec() -> Spec<f64> {
-    Spec {
-        p: SPEC.p,
-        q: SPEC.q,
-        estar: SPEC.estar,
-        cd: SPEC.cd,
-        f: SPEC.f,
-        delta: SPEC.delta,
-    }
+    spec_of(&SPEC)
 }
 
 /// Through C: G, ν optional, the rolling step optional.
@@ -284,13 +265,7 @@ fn many_rolling_is_the_scalar_call_per_row() {
         };
         assert_eq!((s, row, column), (S::Ok, rows, CONTENSOU_COLUMN_NONE));
         for i in 0..rows {
-            let step = contensou_step {
-                h: h[i],
-                hdot: hdot[i],
-                vx: vx[i],
-                vy: vy[i],
-                omega: omega[i],
-            };
+            let step = step_at([&h[..], &hdot[..], &vx[..], &vy[..], &omega[..]], i);
             let r = contensou_rolling_step {
                 vrx: vrx[i],
                 vry: vry[i],

@@ -1,0 +1,99 @@
+//! Fixtures shared by the C API's Rust tests and `examples/overhead.rs`: zeroed storages, the
+//! reference contact of the contract, conversions between the C and the library types.
+#![allow(dead_code)]
+
+use core::ffi::{c_char, CStr};
+
+use contensou::dynamic::{Spec, Step};
+use contensou_capi::*;
+
+/// A static NUL-terminated string of the API as `&str`.
+pub fn text(p: *const c_char) -> &'static str {
+    unsafe { CStr::from_ptr(p) }.to_str().unwrap()
+}
+
+/// Zeroed storage of one `float` contact.
+pub fn storage32() -> Box<contensou_contact_f32> {
+    Box::new(contensou_contact_f32 {
+        opaque: [0; CONTENSOU_CONTACT_F32_SIZE / 8],
+    })
+}
+
+/// Zeroed storage of one `double` contact.
+pub fn storage64() -> Box<contensou_contact_f64> {
+    Box::new(contensou_contact_f64 {
+        opaque: [0; CONTENSOU_CONTACT_F64_SIZE / 8],
+    })
+}
+
+/// Zeroed storage of one `float` rolling contact.
+pub fn rolling32() -> Box<contensou_rolling_f32> {
+    Box::new(contensou_rolling_f32 {
+        opaque: [0; CONTENSOU_ROLLING_F32_SIZE / 8],
+    })
+}
+
+/// Zeroed storage of one `double` rolling contact.
+pub fn rolling64() -> Box<contensou_rolling_f64> {
+    Box::new(contensou_rolling_f64 {
+        opaque: [0; CONTENSOU_ROLLING_F64_SIZE / 8],
+    })
+}
+
+/// The reference contact: P = 10, Q = 50 (1/m), E* = 1.15e11 Pa, c_d = 0.1, f = 0.1,
+/// δ = 1e-4 m/s.
+pub const SPEC: contensou_spec<f64> = contensou_spec {
+    p: 10.0,
+    q: 50.0,
+    estar: 1.15e11,
+    cd: 0.1,
+    f: 0.1,
+    delta: 1e-4,
+};
+
+/// [`SPEC`] in another precision, each value converted by `to`.
+pub fn spec_in<T>(to: fn(f64) -> T) -> contensou_spec<T> {
+    contensou_spec {
+        p: to(SPEC.p),
+        q: to(SPEC.q),
+        estar: to(SPEC.estar),
+        cd: to(SPEC.cd),
+        f: to(SPEC.f),
+        delta: to(SPEC.delta),
+    }
+}
+
+/// The library's contact columns of a C spec.
+pub fn spec_of<T: Copy>(s: &contensou_spec<T>) -> Spec<T> {
+    Spec {
+        p: s.p,
+        q: s.q,
+        estar: s.estar,
+        cd: s.cd,
+        f: s.f,
+        delta: s.delta,
+    }
+}
+
+/// The C step of the library's step columns.
+pub fn c_step<T: Copy>(s: &Step<T>) -> contensou_step<T> {
+    contensou_step {
+        h: s.h,
+        hdot: s.hdot,
+        vx: s.vx,
+        vy: s.vy,
+        omega: s.omega,
+    }
+}
+
+/// Row `i` of the step columns `h, hdot, vx, vy, omega`.
+pub fn step_at<T: Copy>(columns: [&[T]; 5], i: usize) -> contensou_step<T> {
+    let [h, hdot, vx, vy, omega] = columns.map(|c| c[i]);
+    contensou_step {
+        h,
+        hdot,
+        vx,
+        vy,
+        omega,
+    }
+}
