@@ -166,22 +166,8 @@ pub(crate) unsafe fn rolling_wrench<T: RollingPrecision>(
         // SAFETY: caller's contract.
         let s = unsafe { read(state) }.map_err(bare)?;
         check(out).map_err(bare)?;
-        let state = RowState {
-            a: s.a,
-            b: s.b,
-            f: s.f,
-            n: s.n,
-            v: s.v,
-            xi: s.xi,
-            eta: s.eta,
-            phi: s.phi,
-        };
-        let w = slot.contact.wrench(&state).map_err(rejected)?;
-        let w = contensou_rolling_output {
-            fx: w.fx,
-            fy: w.fy,
-            mz: w.mz,
-        };
+        let w = slot.contact.wrench(&RowState::from(s)).map_err(rejected)?;
+        let w = contensou_rolling_output::from(w);
         // SAFETY: caller's contract.
         unsafe { write(out, w) }.map_err(bare)
     })();

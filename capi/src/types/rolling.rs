@@ -129,3 +129,28 @@ pub const CONTENSOU_ROLLING_COLUMN_PHI: contensou_rolling_column = 9;
 pub const CONTENSOU_ROLLING_COLUMN_A_OVER_B: contensou_rolling_column = 10;
 /// No column: success, or an error not tied to an input (a NULL pointer, …).
 pub const CONTENSOU_ROLLING_COLUMN_NONE: contensou_rolling_column = 11;
+
+impl<T> From<contensou_rolling_state<T>> for contensou::friction::rolling::row::RowState<T> {
+    fn from(s: contensou_rolling_state<T>) -> Self {
+        Self {
+            a: s.a,
+            b: s.b,
+            f: s.f,
+            n: s.n,
+            v: s.v,
+            xi: s.xi,
+            eta: s.eta,
+            phi: s.phi,
+        }
+    }
+}
+
+impl<T> From<contensou::friction::rolling::Wrench<T>> for contensou_rolling_output<T> {
+    fn from(w: contensou::friction::rolling::Wrench<T>) -> Self {
+        Self {
+            fx: w.fx,
+            fy: w.fy,
+            mz: w.mz,
+        }
+    }
+}

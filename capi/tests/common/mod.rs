@@ -65,25 +65,12 @@ pub fn spec_in<T>(to: fn(f64) -> T) -> contensou_spec<T> {
 
 /// The library's contact columns of a C spec.
 pub fn spec_of<T: Copy>(s: &contensou_spec<T>) -> Spec<T> {
-    Spec {
-        p: s.p,
-        q: s.q,
-        estar: s.estar,
-        cd: s.cd,
-        f: s.f,
-        delta: s.delta,
-    }
+    Spec::from(*s)
 }
 
 /// The C step of the library's step columns.
 pub fn c_step<T: Copy>(s: &Step<T>) -> contensou_step<T> {
-    contensou_step {
-        h: s.h,
-        hdot: s.hdot,
-        vx: s.vx,
-        vy: s.vy,
-        omega: s.omega,
-    }
+    contensou_step::from(*s)
 }
 
 /// Row `i` of the step columns `h, hdot, vx, vy, omega`.
