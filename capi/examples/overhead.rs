@@ -12,7 +12,7 @@ use contensou_capi::*;
 
 #[path = "../tests/common/mod.rs"]
 mod common;
-use common::{c_step, spec_in, spec_of};
+use common::{spec_in, spec_of};
 
 /// Calls per path and configuration (tests/overhead.sh divides by it).
 pub const CALLS: usize = 1024;
@@ -27,11 +27,11 @@ fn rust_step_f64(c: &DynContact<f64>, s: &Step<f64>) -> Output<f64> {
     c.wrench(s).unwrap_or_default()
 }
 
-fn steps<T: Real>() -> Vec<Step<T>> {
+fn steps<T: Real>() -> Vec<contensou_step<T>> {
     (0..CALLS)
         .map(|i| {
             let x = i as f64 / CALLS as f64;
-            Step {
+            contensou_step {
                 h: T::from_f64(2e-6 * x),
                 hdot: T::from_f64(0.01 * (x - 0.5)),
                 vx: T::from_f64(0.02 * (x - 0.3)),
@@ -58,8 +58,8 @@ macro_rules! run {
             )
         };
         assert_eq!(s, contensou_status::Ok);
-        let rs = steps::<$T>();
-        let cs: Vec<contensou_step<$T>> = rs.iter().map(c_step).collect();
+        let cs = steps::<$T>();
+        let rs: Vec<Step<$T>> = cs.iter().map(|&c| Step::from(c)).collect();
         let mut w = contensou_wrench::default();
         let (mut c_sum, mut r_sum) = (0.0, 0.0);
         for (c, r) in cs.iter().zip(&rs) {

@@ -304,18 +304,6 @@ impl<T> From<contensou_step<T>> for contensou::dynamic::Step<T> {
     }
 }
 
-impl<T> From<contensou::dynamic::Step<T>> for contensou_step<T> {
-    fn from(s: contensou::dynamic::Step<T>) -> Self {
-        Self {
-            h: s.h,
-            hdot: s.hdot,
-            vx: s.vx,
-            vy: s.vy,
-            omega: s.omega,
-        }
-    }
-}
-
 impl<T> From<contensou::dynamic::Output<T>> for contensou_wrench<T> {
     fn from(w: contensou::dynamic::Output<T>) -> Self {
         Self {

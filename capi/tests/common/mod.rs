@@ -4,7 +4,7 @@
 
 use core::ffi::{c_char, CStr};
 
-use contensou::dynamic::{Spec, Step};
+use contensou::dynamic::Spec;
 use contensou_capi::*;
 
 /// A static NUL-terminated string of the API as `&str`.
@@ -66,11 +66,6 @@ pub fn spec_in<T>(to: fn(f64) -> T) -> contensou_spec<T> {
 /// The library's contact columns of a C spec.
 pub fn spec_of<T: Copy>(s: &contensou_spec<T>) -> Spec<T> {
     Spec::from(*s)
-}
-
-/// The C step of the library's step columns.
-pub fn c_step<T: Copy>(s: &Step<T>) -> contensou_step<T> {
-    contensou_step::from(*s)
 }
 
 /// Row `i` of the step columns `h, hdot, vx, vy, omega`.
