@@ -16,7 +16,7 @@ use pyo3::types::PyDict;
 
 use crate::columns::{broadcast_shape, index_of};
 use crate::rows::Precision;
-use crate::{columns_of, convert_all, is_f32, named};
+use crate::{Either, columns_of, convert_all, each, is_f32, named};
 
 /// The input columns, as `contact_eval rolling` reads them.
 pub const INPUTS: [&str; 10] = COLUMNS;
@@ -151,12 +151,8 @@ pub struct RollingContact {
     built: BuiltAny,
 }
 
-/// The built contact in either precision (as `Contact`: the size difference is not worth a box).
-#[allow(clippy::large_enum_variant)]
-enum BuiltAny {
-    F32(RowContact<f32>),
-    F64(RowContact<f64>),
-}
+/// The built rolling contact in either precision.
+type BuiltAny = Either<RowContact<f32>, RowContact<f64>>;
 
 fn build<T: Precision>(ratio: f64, g: f64, nu: f64, law: RowLaw) -> PyResult<RowContact<T>> {
     let [ratio, g, nu] = [ratio, g, nu].map(T::from_f64);
@@ -179,9 +175,9 @@ impl RollingContact {
     fn new(a_over_b: f64, G: f64, nu: f64, law: &str, precision: &str) -> PyResult<Self> {
         let law = named("law", law, &LAWS, RowLaw::name)?;
         let built = if is_f32(precision)? {
-            BuiltAny::F32(build(a_over_b, G, nu, law)?)
+            Either::F32(build(a_over_b, G, nu, law)?)
         } else {
-            BuiltAny::F64(build(a_over_b, G, nu, law)?)
+            Either::F64(build(a_over_b, G, nu, law)?)
         };
         Ok(RollingContact { built })
     }
@@ -201,27 +197,18 @@ impl RollingContact {
         phi: &Bound<'py, PyAny>,
     ) -> PyResult<Bound<'py, PyDict>> {
         let values = [a, b, f, N, V, xi, eta, phi];
-        match &self.built {
-            BuiltAny::F32(c) => built_in(py, c, values),
-            BuiltAny::F64(c) => built_in(py, c, values),
-        }
+        each!(&self.built, c => built_in(py, c, values))
     }
 
     /// The rolling law's name.
     #[getter]
     fn law(&self) -> &'static str {
-        match &self.built {
-            BuiltAny::F32(c) => c.law().name(),
-            BuiltAny::F64(c) => c.law().name(),
-        }
+        each!(&self.built, c => c.law().name())
     }
 
     /// `"f32"` or `"f64"`.
     #[getter]
     fn precision(&self) -> &'static str {
-        match self.built {
-            BuiltAny::F32(_) => "f32",
-            BuiltAny::F64(_) => "f64",
-        }
+        self.built.precision()
     }
 }
