@@ -6,7 +6,7 @@ use core::ptr::{null, null_mut};
 use contensou_capi::*;
 
 mod common;
-use common::{spec_in, step_at};
+use common::{spec_in, step_at, step_columns, wrench_columns};
 
 type S = contensou_status;
 
@@ -61,25 +61,8 @@ macro_rules! precision {
                         S::Ok
                     );
                     let mut out: [Vec<$t>; 7] = core::array::from_fn(|_| vec![-7.0; ROWS]);
-                    let steps = contensou_step_columns {
-                        h: h.as_ptr(),
-                        hdot: hdot.as_ptr(),
-                        vx: vx.as_ptr(),
-                        vy: vy.as_ptr(),
-                        omega: omega.as_ptr(),
-                    };
-                    let ptrs = |o: &mut [Vec<$t>; 7]| {
-                        let [n, fx, fy, tz, a, b, e2] = o.each_mut().map(|c| c.as_mut_ptr());
-                        contensou_wrench_columns {
-                            n,
-                            fx,
-                            fy,
-                            tz,
-                            a,
-                            b,
-                            e2,
-                        }
-                    };
+                    let steps = step_columns([h, hdot, vx, vy, omega].map(|c| &c[..]));
+                    let ptrs = wrench_columns::<$t>;
                     let mut row = 0;
                     let cols_out = ptrs(&mut out);
                     assert_eq!(

@@ -9,7 +9,7 @@ use contensou::dynamic::{DynContact, Form, Law, RollingSpec, RollingStep, Spec, 
 use contensou_capi::*;
 
 mod common;
-use common::{spec_of, step_at, storage64 as storage, SPEC};
+use common::{spec_of, step_at, step_columns, storage64 as storage, wrench_columns, SPEC};
 
 type S = contensou_status;
 
@@ -191,19 +191,6 @@ fn rolling_errors_name_their_column() {
 }
 
 /// Output columns over seven vectors.
-fn columns_of(out: &mut [Vec<f64>; 7]) -> contensou_wrench_columns<f64> {
-    let [n, fx, fy, tz, a, b, e2] = out.each_mut().map(|c| c.as_mut_ptr());
-    contensou_wrench_columns {
-        n,
-        fx,
-        fy,
-        tz,
-        a,
-        b,
-        e2,
-    }
-}
-
 #[test]
 fn many_rolling_is_the_scalar_call_per_row() {
     let rows = 64;
@@ -239,14 +226,8 @@ fn many_rolling_is_the_scalar_call_per_row() {
         };
         assert_eq!(s, S::Ok);
         let mut out: [Vec<f64>; 7] = core::array::from_fn(|_| vec![0.0; rows]);
-        let cols = columns_of(&mut out);
-        let steps = contensou_step_columns {
-            h: h.as_ptr(),
-            hdot: hdot.as_ptr(),
-            vx: vx.as_ptr(),
-            vy: vy.as_ptr(),
-            omega: omega.as_ptr(),
-        };
+        let cols = wrench_columns(&mut out);
+        let steps = step_columns([&h, &hdot, &vx, &vy, &omega]);
         let rolling = contensou_rolling_step_columns {
             vrx: vrx.as_ptr(),
             vry: vry.as_ptr(),
@@ -286,7 +267,7 @@ fn many_rolling_is_the_scalar_call_per_row() {
         }
         // NULL rolling columns: exactly contensou_contact_wrench_many_f64 (V = 0).
         let mut plain: [Vec<f64>; 7] = core::array::from_fn(|_| vec![0.0; rows]);
-        let pcols = columns_of(&mut plain);
+        let pcols = wrench_columns(&mut plain);
         let s = unsafe {
             contensou_contact_wrench_many_f64(&*st, rows, &steps, &pcols, null_mut(), null_mut())
         };

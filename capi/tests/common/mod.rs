@@ -79,3 +79,29 @@ pub fn step_at<T: Copy>(columns: [&[T]; 5], i: usize) -> contensou_step<T> {
         omega,
     }
 }
+
+/// Step columns reading `h, hdot, vx, vy, omega`.
+pub fn step_columns<T>(c: [&[T]; 5]) -> contensou_step_columns<T> {
+    let [h, hdot, vx, vy, omega] = c.map(<[T]>::as_ptr);
+    contensou_step_columns {
+        h,
+        hdot,
+        vx,
+        vy,
+        omega,
+    }
+}
+
+/// Output columns writing the seven vectors of `out`.
+pub fn wrench_columns<T>(out: &mut [Vec<T>; 7]) -> contensou_wrench_columns<T> {
+    let [n, fx, fy, tz, a, b, e2] = out.each_mut().map(|c| c.as_mut_ptr());
+    contensou_wrench_columns {
+        n,
+        fx,
+        fy,
+        tz,
+        a,
+        b,
+        e2,
+    }
+}
