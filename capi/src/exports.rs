@@ -1,7 +1,7 @@
 //! Every exported C function. Each is a one-line call of its generic body in the private
-//! `shell` module, once per precision (`_f32`: `float`, `_f64`: `double`). The rolling ones
-//! are written once for both precisions by `twins!`: cbindgen reads the macro-expanded
-//! crate (`[parse.expand]` in cbindgen.toml, a nightly `rustc -Zunpretty=expanded`).
+//! `shell` module, once per precision (`_f32`: `float`, `_f64`: `double`), each pair written
+//! once by `twins!`: cbindgen reads the macro-expanded crate (`[parse.expand]` in
+//! cbindgen.toml, a nightly `rustc -Zunpretty=expanded`), so the header is as before.
 //!
 //! Pointers: every pointer parameter may be anything a C caller passes. NULL gives
 //! [`contensou_status::NullPointer`], a misaligned one [`contensou_status::Misaligned`];
@@ -24,6 +24,17 @@ macro_rules! twins {
         $(#[doc = $doc:literal])*
         fn $f32:ident, $f64:ident($($arg:ident: $t32:ty | $t64:ty),* $(,)?) -> $ret:ty $body:block
     ) => {
+        twins! {
+            $(#[doc = $doc])*
+            fn $f32, $f64($($arg: $t32 | $t64),*) -> $ret $body
+            twin safety: concat!(" As [`", stringify!($f32), "`].")
+        }
+    };
+    (
+        $(#[doc = $doc:literal])*
+        fn $f32:ident, $f64:ident($($arg:ident: $t32:ty | $t64:ty),* $(,)?) -> $ret:ty $body:block
+        twin safety: $safety:expr
+    ) => {
         $(#[doc = $doc])*
         #[no_mangle]
         pub unsafe extern "C" fn $f32($($arg: $t32),*) -> $ret $body
@@ -31,7 +42,7 @@ macro_rules! twins {
         #[doc = concat!(" [`", stringify!($f32), "`] in `double`.")]
         #[doc = ""]
         #[doc = " # Safety"]
-        #[doc = concat!(" As [`", stringify!($f32), "`].")]
+        #[doc = $safety]
         #[no_mangle]
         pub unsafe extern "C" fn $f64($($arg: $t64),*) -> $ret $body
     };
@@ -83,300 +94,175 @@ pub unsafe extern "C" fn contensou_form_from_name(
     unsafe { shell::from_name(name, form, Form::from_name, shell::form_code) }
 }
 
-/// Curvatures from z = p x'² + q y'² in any order: P = min, Q = max, `major_angle` 0 or π/2.
-///
-/// # Safety
-/// `out` is NULL or writable.
-#[no_mangle]
-pub unsafe extern "C" fn contensou_curvatures_new_f32(
-    p: f32,
-    q: f32,
-    out: *mut contensou_curvatures<f32>,
-) -> contensou_status {
-    unsafe { shell::curvatures(out, || Ok(Curvatures::new(p, q)?)) }
+twins! {
+    /// Curvatures from z = p x'² + q y'² in any order: P = min, Q = max, `major_angle` 0 or π/2.
+    ///
+    /// # Safety
+    /// `out` is NULL or writable.
+    fn contensou_curvatures_new_f32, contensou_curvatures_new_f64(
+        p: f32 | f64,
+        q: f32 | f64,
+        out: *mut contensou_curvatures<f32> | *mut contensou_curvatures<f64>,
+    ) -> contensou_status {
+        unsafe { shell::curvatures(out, || Ok(Curvatures::new(p, q)?)) }
+    }
+    twin safety: " `out` is NULL or writable."
 }
 
-/// [`contensou_curvatures_new_f32`] in `double`.
-///
-/// # Safety
-/// `out` is NULL or writable.
-#[no_mangle]
-pub unsafe extern "C" fn contensou_curvatures_new_f64(
-    p: f64,
-    q: f64,
-    out: *mut contensou_curvatures<f64>,
-) -> contensou_status {
-    unsafe { shell::curvatures(out, || Ok(Curvatures::new(p, q)?)) }
+twins! {
+    /// Sphere of radius `r` (m) on a plane: P = Q = 1/(2r).
+    ///
+    /// # Safety
+    /// `out` is NULL or writable.
+    fn contensou_curvatures_sphere_plane_f32, contensou_curvatures_sphere_plane_f64(
+        r: f32 | f64,
+        out: *mut contensou_curvatures<f32> | *mut contensou_curvatures<f64>,
+    ) -> contensou_status {
+        unsafe { shell::curvatures(out, || Ok(Curvatures::sphere_plane(r)?)) }
+    }
+    twin safety: " `out` is NULL or writable."
 }
 
-/// Sphere of radius `r` (m) on a plane: P = Q = 1/(2r).
-///
-/// # Safety
-/// `out` is NULL or writable.
-#[no_mangle]
-pub unsafe extern "C" fn contensou_curvatures_sphere_plane_f32(
-    r: f32,
-    out: *mut contensou_curvatures<f32>,
-) -> contensou_status {
-    unsafe { shell::curvatures(out, || Ok(Curvatures::sphere_plane(r)?)) }
+twins! {
+    /// Two spheres of signed radii (m; negative = concave cup): P = Q = ½(1/r_a + 1/r_b).
+    ///
+    /// # Safety
+    /// `out` is NULL or writable.
+    fn contensou_curvatures_sphere_sphere_f32, contensou_curvatures_sphere_sphere_f64(
+        r_a: f32 | f64,
+        r_b: f32 | f64,
+        out: *mut contensou_curvatures<f32> | *mut contensou_curvatures<f64>,
+    ) -> contensou_status {
+        unsafe { shell::curvatures(out, || Ok(Curvatures::sphere_sphere(r_a, r_b)?)) }
+    }
+    twin safety: " `out` is NULL or writable."
 }
 
-/// [`contensou_curvatures_sphere_plane_f32`] in `double`.
-///
-/// # Safety
-/// `out` is NULL or writable.
-#[no_mangle]
-pub unsafe extern "C" fn contensou_curvatures_sphere_plane_f64(
-    r: f64,
-    out: *mut contensou_curvatures<f64>,
-) -> contensou_status {
-    unsafe { shell::curvatures(out, || Ok(Curvatures::sphere_plane(r)?)) }
+twins! {
+    /// A ball of diameter D in a raceway groove of radius r_g, pitch diameter d_m, contact angle
+    /// α (rad), inner or outer race: P ≤ Q in contract order, and the major axis's angle from the
+    /// rolling direction (π/2 for a conforming groove: the ellipse is long across the groove).
+    ///
+    /// # Safety
+    /// `out` is NULL or writable.
+    fn contensou_curvatures_ball_race_f32, contensou_curvatures_ball_race_f64(
+        ball_diameter: f32 | f64,
+        groove_radius: f32 | f64,
+        pitch_diameter: f32 | f64,
+        contact_angle: f32 | f64,
+        race: contensou_race | contensou_race,
+        out: *mut contensou_curvatures<f32> | *mut contensou_curvatures<f64>,
+    ) -> contensou_status {
+        unsafe {
+            shell::curvatures(out, || {
+                let race = shell::race(race)?;
+                Ok(Curvatures::ball_race(
+                    ball_diameter,
+                    groove_radius,
+                    pitch_diameter,
+                    contact_angle,
+                    race,
+                )?)
+            })
+        }
+    }
+    twin safety: " `out` is NULL or writable."
 }
 
-/// Two spheres of signed radii (m; negative = concave cup): P = Q = ½(1/r_a + 1/r_b).
-///
-/// # Safety
-/// `out` is NULL or writable.
-#[no_mangle]
-pub unsafe extern "C" fn contensou_curvatures_sphere_sphere_f32(
-    r_a: f32,
-    r_b: f32,
-    out: *mut contensou_curvatures<f32>,
-) -> contensou_status {
-    unsafe { shell::curvatures(out, || Ok(Curvatures::sphere_sphere(r_a, r_b)?)) }
+twins! {
+    /// E* of two materials (Young's modulus E > 0 in Pa, Poisson's ratio ν ∈ (−1, 0.5]):
+    /// 1/E* = (1 − ν_a²)/E_a + (1 − ν_b²)/E_b.
+    ///
+    /// # Safety
+    /// `estar` is NULL or writable.
+    fn contensou_modulus_of_f32, contensou_modulus_of_f64(
+        young_a: f32 | f64,
+        poisson_a: f32 | f64,
+        young_b: f32 | f64,
+        poisson_b: f32 | f64,
+        estar: *mut f32 | *mut f64,
+    ) -> contensou_status {
+        unsafe { shell::modulus_of(young_a, poisson_a, young_b, poisson_b, estar) }
+    }
+    twin safety: " `estar` is NULL or writable."
 }
 
-/// [`contensou_curvatures_sphere_sphere_f32`] in `double`.
-///
-/// # Safety
-/// `out` is NULL or writable.
-#[no_mangle]
-pub unsafe extern "C" fn contensou_curvatures_sphere_sphere_f64(
-    r_a: f64,
-    r_b: f64,
-    out: *mut contensou_curvatures<f64>,
-) -> contensou_status {
-    unsafe { shell::curvatures(out, || Ok(Curvatures::sphere_sphere(r_a, r_b)?)) }
-}
-
-/// A ball of diameter D in a raceway groove of radius r_g, pitch diameter d_m, contact angle
-/// α (rad), inner or outer race: P ≤ Q in contract order, and the major axis's angle from the
-/// rolling direction (π/2 for a conforming groove: the ellipse is long across the groove).
-///
-/// # Safety
-/// `out` is NULL or writable.
-#[no_mangle]
-pub unsafe extern "C" fn contensou_curvatures_ball_race_f32(
-    ball_diameter: f32,
-    groove_radius: f32,
-    pitch_diameter: f32,
-    contact_angle: f32,
-    race: contensou_race,
-    out: *mut contensou_curvatures<f32>,
-) -> contensou_status {
-    unsafe {
-        shell::curvatures(out, || {
-            let race = shell::race(race)?;
-            Ok(Curvatures::ball_race(
-                ball_diameter,
-                groove_radius,
-                pitch_diameter,
-                contact_angle,
-                race,
-            )?)
-        })
+twins! {
+    /// Validates `spec` and builds a contact of that law and form into `storage` (the storage is
+    /// not read; on error it is left unchanged). The column of a rejected input goes to
+    /// `*column` (`CONTENSOU_COLUMN_NONE` on success or for errors of no column; `column` may be
+    /// NULL). Cost: `fixed` solves the eccentricity (and `best` fills its tables) here.
+    ///
+    /// # Safety
+    /// `storage` is NULL or writable; `spec` NULL or readable; `column` NULL or writable.
+    fn contensou_contact_new_f32, contensou_contact_new_f64(
+        storage: *mut contensou_contact_f32 | *mut contensou_contact_f64,
+        spec: *const contensou_spec<f32> | *const contensou_spec<f64>,
+        law: contensou_law | contensou_law,
+        form: contensou_form | contensou_form,
+        column: *mut contensou_column | *mut contensou_column,
+    ) -> contensou_status {
+        unsafe { shell::contact_new(storage, spec, law, form, column) }
     }
 }
 
-/// [`contensou_curvatures_ball_race_f32`] in `double`.
-///
-/// # Safety
-/// `out` is NULL or writable.
-#[no_mangle]
-pub unsafe extern "C" fn contensou_curvatures_ball_race_f64(
-    ball_diameter: f64,
-    groove_radius: f64,
-    pitch_diameter: f64,
-    contact_angle: f64,
-    race: contensou_race,
-    out: *mut contensou_curvatures<f64>,
-) -> contensou_status {
-    unsafe {
-        shell::curvatures(out, || {
-            let race = shell::race(race)?;
-            Ok(Curvatures::ball_race(
-                ball_diameter,
-                groove_radius,
-                pitch_diameter,
-                contact_angle,
-                race,
-            )?)
-        })
+twins! {
+    /// New curvatures P ≤ Q for a contact (validated as in construction; on error the contact is
+    /// unchanged). `varying` form: the per-step update (no solve); `fixed`: the contact is rebuilt
+    /// (construction cost).
+    ///
+    /// # Safety
+    /// `storage` is NULL or an initialised, writable contact; `column` NULL or writable.
+    fn contensou_contact_set_curvatures_f32, contensou_contact_set_curvatures_f64(
+        storage: *mut contensou_contact_f32 | *mut contensou_contact_f64,
+        p: f32 | f64,
+        q: f32 | f64,
+        column: *mut contensou_column | *mut contensou_column,
+    ) -> contensou_status {
+        unsafe { shell::contact_set_curvatures(storage, p, q, column) }
     }
 }
 
-/// E* of two materials (Young's modulus E > 0 in Pa, Poisson's ratio ν ∈ (−1, 0.5]):
-/// 1/E* = (1 − ν_a²)/E_a + (1 − ν_b²)/E_b.
-///
-/// # Safety
-/// `estar` is NULL or writable.
-#[no_mangle]
-pub unsafe extern "C" fn contensou_modulus_of_f32(
-    young_a: f32,
-    poisson_a: f32,
-    young_b: f32,
-    poisson_b: f32,
-    estar: *mut f32,
-) -> contensou_status {
-    unsafe { shell::modulus_of(young_a, poisson_a, young_b, poisson_b, estar) }
+twins! {
+    /// One step: validates `step` (finite values; the column of a NaN/±∞ goes to `*column`) and
+    /// writes the wrench into `*out`. Fixed cost; bit for bit the Rust contract's value.
+    ///
+    /// # Safety
+    /// `storage` is NULL or readable; `step` NULL or readable; `out`, `column` NULL or writable.
+    fn contensou_contact_wrench_f32, contensou_contact_wrench_f64(
+        storage: *const contensou_contact_f32 | *const contensou_contact_f64,
+        step: *const contensou_step<f32> | *const contensou_step<f64>,
+        out: *mut contensou_wrench<f32> | *mut contensou_wrench<f64>,
+        column: *mut contensou_column | *mut contensou_column,
+    ) -> contensou_status {
+        unsafe { shell::contact_wrench(storage, step, out, column) }
+    }
 }
 
-/// [`contensou_modulus_of_f32`] in `double`.
-///
-/// # Safety
-/// `estar` is NULL or writable.
-#[no_mangle]
-pub unsafe extern "C" fn contensou_modulus_of_f64(
-    young_a: f64,
-    poisson_a: f64,
-    young_b: f64,
-    poisson_b: f64,
-    estar: *mut f64,
-) -> contensou_status {
-    unsafe { shell::modulus_of(young_a, poisson_a, young_b, poisson_b, estar) }
-}
-
-/// Validates `spec` and builds a contact of that law and form into `storage` (the storage is
-/// not read; on error it is left unchanged). The column of a rejected input goes to
-/// `*column` (`CONTENSOU_COLUMN_NONE` on success or for errors of no column; `column` may be
-/// NULL). Cost: `fixed` solves the eccentricity (and `best` fills its tables) here.
-///
-/// # Safety
-/// `storage` is NULL or writable; `spec` NULL or readable; `column` NULL or writable.
-#[no_mangle]
-pub unsafe extern "C" fn contensou_contact_new_f32(
-    storage: *mut contensou_contact_f32,
-    spec: *const contensou_spec<f32>,
-    law: contensou_law,
-    form: contensou_form,
-    column: *mut contensou_column,
-) -> contensou_status {
-    unsafe { shell::contact_new(storage, spec, law, form, column) }
-}
-
-/// [`contensou_contact_new_f32`] in `double`.
-///
-/// # Safety
-/// As [`contensou_contact_new_f32`].
-#[no_mangle]
-pub unsafe extern "C" fn contensou_contact_new_f64(
-    storage: *mut contensou_contact_f64,
-    spec: *const contensou_spec<f64>,
-    law: contensou_law,
-    form: contensou_form,
-    column: *mut contensou_column,
-) -> contensou_status {
-    unsafe { shell::contact_new(storage, spec, law, form, column) }
-}
-
-/// New curvatures P ≤ Q for a contact (validated as in construction; on error the contact is
-/// unchanged). `varying` form: the per-step update (no solve); `fixed`: the contact is rebuilt
-/// (construction cost).
-///
-/// # Safety
-/// `storage` is NULL or an initialised, writable contact; `column` NULL or writable.
-#[no_mangle]
-pub unsafe extern "C" fn contensou_contact_set_curvatures_f32(
-    storage: *mut contensou_contact_f32,
-    p: f32,
-    q: f32,
-    column: *mut contensou_column,
-) -> contensou_status {
-    unsafe { shell::contact_set_curvatures(storage, p, q, column) }
-}
-
-/// [`contensou_contact_set_curvatures_f32`] in `double`.
-///
-/// # Safety
-/// As [`contensou_contact_set_curvatures_f32`].
-#[no_mangle]
-pub unsafe extern "C" fn contensou_contact_set_curvatures_f64(
-    storage: *mut contensou_contact_f64,
-    p: f64,
-    q: f64,
-    column: *mut contensou_column,
-) -> contensou_status {
-    unsafe { shell::contact_set_curvatures(storage, p, q, column) }
-}
-
-/// One step: validates `step` (finite values; the column of a NaN/±∞ goes to `*column`) and
-/// writes the wrench into `*out`. Fixed cost; bit for bit the Rust contract's value.
-///
-/// # Safety
-/// `storage` is NULL or readable; `step` NULL or readable; `out`, `column` NULL or writable.
-#[no_mangle]
-pub unsafe extern "C" fn contensou_contact_wrench_f32(
-    storage: *const contensou_contact_f32,
-    step: *const contensou_step<f32>,
-    out: *mut contensou_wrench<f32>,
-    column: *mut contensou_column,
-) -> contensou_status {
-    unsafe { shell::contact_wrench(storage, step, out, column) }
-}
-
-/// [`contensou_contact_wrench_f32`] in `double`.
-///
-/// # Safety
-/// As [`contensou_contact_wrench_f32`].
-#[no_mangle]
-pub unsafe extern "C" fn contensou_contact_wrench_f64(
-    storage: *const contensou_contact_f64,
-    step: *const contensou_step<f64>,
-    out: *mut contensou_wrench<f64>,
-    column: *mut contensou_column,
-) -> contensou_status {
-    unsafe { shell::contact_wrench(storage, step, out, column) }
-}
-
-/// Many steps of one contact over caller arrays (structure of arrays): row i of the seven
-/// output arrays is bit for bit what [`contensou_contact_wrench_f32`] gives for row i of the
-/// five step arrays, several rows per instruction (SIMD lanes: AVX2 or SSE2 on x86-64,
-/// detected at run time; one lane elsewhere). `rows` = 0 writes nothing and succeeds.
-///
-/// On a non-finite input the call stops at that row: rows before it are written, `*row` gets
-/// its index and `*column` its column (`CONTENSOU_COLUMN_H` … `_OMEGA`); on success `*row` =
-/// `rows`. `row` and `column` may be NULL. A NULL or misaligned array (for `rows` > 0) is
-/// refused before anything is written; so is a `rows` larger than any array can be
-/// (> PTRDIFF_MAX / sizeof(float): `NullPointer`).
-///
-/// # Safety
-/// `storage` is NULL or readable; `steps`, `out` NULL or readable, their arrays NULL or
-/// holding `rows` values (the output arrays writable, distinct, not overlapping the inputs);
-/// `row`, `column` NULL or writable.
-#[no_mangle]
-pub unsafe extern "C" fn contensou_contact_wrench_many_f32(
-    storage: *const contensou_contact_f32,
-    rows: usize,
-    steps: *const contensou_step_columns<f32>,
-    out: *const contensou_wrench_columns<f32>,
-    row: *mut usize,
-    column: *mut contensou_column,
-) -> contensou_status {
-    unsafe { shell::contact_wrench_many(storage, rows, steps, out, row, column) }
-}
-
-/// [`contensou_contact_wrench_many_f32`] in `double`.
-///
-/// # Safety
-/// As [`contensou_contact_wrench_many_f32`].
-#[no_mangle]
-pub unsafe extern "C" fn contensou_contact_wrench_many_f64(
-    storage: *const contensou_contact_f64,
-    rows: usize,
-    steps: *const contensou_step_columns<f64>,
-    out: *const contensou_wrench_columns<f64>,
-    row: *mut usize,
-    column: *mut contensou_column,
-) -> contensou_status {
-    unsafe { shell::contact_wrench_many(storage, rows, steps, out, row, column) }
+twins! {
+    /// Many steps of one contact over caller arrays (structure of arrays): row i of the seven
+    /// output arrays is bit for bit what [`contensou_contact_wrench_f32`] gives for row i of the
+    /// five step arrays, several rows per instruction (SIMD lanes: AVX2 or SSE2 on x86-64,
+    /// detected at run time; one lane elsewhere). `rows` = 0 writes nothing and succeeds.
+    ///
+    /// On a non-finite input the call stops at that row: rows before it are written, `*row` gets
+    /// its index and `*column` its column (`CONTENSOU_COLUMN_H` … `_OMEGA`); on success `*row` =
+    /// `rows`. `row` and `column` may be NULL. A NULL or misaligned array (for `rows` > 0) is
+    /// refused before anything is written; so is a `rows` larger than any array can be
+    /// (> PTRDIFF_MAX / sizeof(float): `NullPointer`).
+    ///
+    /// # Safety
+    /// `storage` is NULL or readable; `steps`, `out` NULL or readable, their arrays NULL or
+    /// holding `rows` values (the output arrays writable, distinct, not overlapping the inputs);
+    /// `row`, `column` NULL or writable.
+    fn contensou_contact_wrench_many_f32, contensou_contact_wrench_many_f64(
+        storage: *const contensou_contact_f32 | *const contensou_contact_f64,
+        rows: usize | usize,
+        steps: *const contensou_step_columns<f32> | *const contensou_step_columns<f64>,
+        out: *const contensou_wrench_columns<f32> | *const contensou_wrench_columns<f64>,
+        row: *mut usize | *mut usize,
+        column: *mut contensou_column | *mut contensou_column,
+    ) -> contensou_status {
+        unsafe { shell::contact_wrench_many(storage, rows, steps, out, row, column) }
+    }
 }
