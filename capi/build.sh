@@ -14,9 +14,11 @@ check=1
 if ((check)); then
     echo "capi: header is cbindgen's (cbindgen.toml)"
     generated="$(mktemp)"
-    cbindgen --quiet --config cbindgen.toml --output "$generated"
+    # nightly: cbindgen reads the macro-expanded crate (cbindgen.toml, [parse.expand])
+    rustup toolchain list | grep -q '^nightly' || rustup toolchain install nightly --profile minimal
+    RUSTUP_TOOLCHAIN=nightly cbindgen --quiet --config cbindgen.toml --output "$generated"
     if ! diff -u include/contensou.h "$generated"; then
-        echo "capi: include/contensou.h is stale: run \`cbindgen --config cbindgen.toml --output include/contensou.h\` in capi/" >&2
+        echo "capi: include/contensou.h is stale: run \`RUSTUP_TOOLCHAIN=nightly cbindgen --config cbindgen.toml --output include/contensou.h\` in capi/" >&2
         exit 1
     fi
     rm -f "$generated"

@@ -515,3 +515,72 @@ fn f32_follows_f64<L: RollingLaw>(tol: f64) {
     println!("{} f32 vs f64: {ef:.2e} fN, {em:.2e} fNc", L::NAME);
     assert!(ef <= tol && em <= tol, "{ef} {em}");
 }
+
+/// The rolling contract's row evaluator (`friction::rolling::row`, what `contact_eval rolling`,
+/// the C API and Python call): each single bad column is named by itself, a built contact
+/// gives the whole-row bits, and V = 0 reads as V → 0⁺ (the wrench at any V > 0 with the same
+/// creepages, up to the rounding of the creepage products).
+mod row {
+    use contensou::Error;
+    use contensou::friction::rolling::row::{Column, RowContact, RowLaw, RowState, Rows};
+
+    //                     a     b     G     nu    f    N    V     xi    eta    phi
+    const GOOD: [f64; 10] = [6e-3, 4e-3, 8e10, 0.28, 0.3, 8e4, 30.0, 1e-3, -2e-4, 1.0];
+
+    #[test]
+    fn a_single_bad_column_is_named() {
+        let cases: [(usize, f64, Column); 14] = [
+            (0, f64::NAN, Column::A),
+            (0, -1e-3, Column::A),
+            (1, 0.0, Column::B),
+            (2, -1.0, Column::G),
+            (2, f64::INFINITY, Column::G),
+            (3, 0.6, Column::Nu),
+            (4, -0.1, Column::F),
+            (5, f64::NAN, Column::N),
+            (6, f64::NEG_INFINITY, Column::V),
+            (7, f64::NAN, Column::Xi),
+            (8, 1e308, Column::Eta),  // η·V overflows
+            (9, 1e308, Column::Phi),  // φ·V overflows
+            (0, 1.0, Column::AOverB), // a/b = 250 outside [0.01, 100]
+            (1, 1.0, Column::AOverB), // a/b = 0.006
+        ];
+        for law in RowLaw::ALL {
+            let mut rows = Rows::<f64>::new(law);
+            for (k, x, column) in cases {
+                let mut r = GOOD;
+                r[k] = x;
+                let e = rows.eval(&r).unwrap_err();
+                assert_eq!(e.column, column, "{} row {r:?}: {e}", law.name());
+                if let Error::NonFinite(name) = e.error {
+                    assert!(name == column.name() || k >= 8, "{e}");
+                }
+            }
+            assert!(rows.eval(&GOOD).is_ok());
+        }
+    }
+
+    #[test]
+    fn a_built_contact_gives_the_row_bits_and_v_zero_is_the_limit() {
+        for law in RowLaw::ALL {
+            let mut rows = Rows::<f64>::new(law);
+            let c = RowContact::new(GOOD[0] / GOOD[1], GOOD[2], GOOD[3], law).unwrap();
+            for v in [30.0, 1e-3, 0.0, -2.0] {
+                let mut r = GOOD;
+                r[6] = v;
+                let whole = rows.eval(&r).unwrap();
+                let built = c.wrench(&RowState::of_row(&r)).unwrap();
+                assert_eq!(whole, built, "{} V = {v}", law.name());
+                if v == 0.0 {
+                    // the wrench at V = 0 is the one at any V > 0 with these creepages
+                    r[6] = 30.0;
+                    let at = rows.eval(&r).unwrap();
+                    let scale = 0.3 * 8e4;
+                    for (a, b) in [(whole.fx, at.fx), (whole.fy, at.fy), (whole.mz, at.mz)] {
+                        assert!((a - b).abs() <= 1e-12 * scale, "{} {a} {b}", law.name());
+                    }
+                }
+            }
+        }
+    }
+}

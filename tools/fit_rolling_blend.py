@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Fits the constants of the default rolling law `blend` (src/friction/rolling/blend.rs) to the
 exact steady-rolling reference tools/data/rolling_ref.csv, and prints the error per family and
-shape. The constants printed go into blend.rs by hand (ORDER, ALPHA, G, SIGMA, GAMMA).
+shape. The constants printed go into blend.rs by hand (ORDER, ALPHA, G) and fitted.rs (SIGMA, GAMMA).
 
 The law (q = κ(C11ξ, C22η, C23cφ): the linear forces, fN; W_fs the full-slip law):
   t = sqrt((q_x/α_ξ)² + (q_y/α_η)²), A = (1-t)^n, B = 1 - A(1 + n t) (t < 1; else 0, 1),

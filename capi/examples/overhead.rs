@@ -6,9 +6,13 @@
 use std::hint::black_box;
 use std::ptr::null_mut;
 
-use contensou::dynamic::{DynContact, Form, Law, Output, Spec, Step};
+use contensou::dynamic::{DynContact, Form, Law, Output, Step};
 use contensou::Real;
 use contensou_capi::*;
+
+#[path = "../tests/common/mod.rs"]
+mod common;
+use common::{spec_in, spec_of};
 
 /// Calls per path and configuration (tests/overhead.sh divides by it).
 pub const CALLS: usize = 1024;
@@ -23,11 +27,11 @@ fn rust_step_f64(c: &DynContact<f64>, s: &Step<f64>) -> Output<f64> {
     c.wrench(s).unwrap_or_default()
 }
 
-fn steps<T: Real>() -> Vec<Step<T>> {
+fn steps<T: Real>() -> Vec<contensou_step<T>> {
     (0..CALLS)
         .map(|i| {
             let x = i as f64 / CALLS as f64;
-            Step {
+            contensou_step {
                 h: T::from_f64(2e-6 * x),
                 hdot: T::from_f64(0.01 * (x - 0.5)),
                 vx: T::from_f64(0.02 * (x - 0.3)),
@@ -40,22 +44,8 @@ fn steps<T: Real>() -> Vec<Step<T>> {
 
 macro_rules! run {
     ($T:ty, $storage:expr, $new:ident, $wrench:ident, $rust:ident, $law:expr, $form:expr) => {{
-        let spec = Spec::<$T> {
-            p: 10.0,
-            q: 50.0,
-            estar: 1.15e11,
-            cd: 0.1,
-            f: 0.1,
-            delta: 1e-4,
-        };
-        let c_spec = contensou_spec::<$T> {
-            p: 10.0,
-            q: 50.0,
-            estar: 1.15e11,
-            cd: 0.1,
-            f: 0.1,
-            delta: 1e-4,
-        };
+        let c_spec = spec_in(|x| x as $T);
+        let spec = spec_of(&c_spec);
         let rust = black_box(DynContact::new(&spec, $law.1, $form.1).unwrap());
         let mut storage = Box::new($storage);
         let s = unsafe {
@@ -68,17 +58,8 @@ macro_rules! run {
             )
         };
         assert_eq!(s, contensou_status::Ok);
-        let rs = steps::<$T>();
-        let cs: Vec<contensou_step<$T>> = rs
-            .iter()
-            .map(|s| contensou_step {
-                h: s.h,
-                hdot: s.hdot,
-                vx: s.vx,
-                vy: s.vy,
-                omega: s.omega,
-            })
-            .collect();
+        let cs = steps::<$T>();
+        let rs: Vec<Step<$T>> = cs.iter().map(|&c| Step::from(c)).collect();
         let mut w = contensou_wrench::default();
         let (mut c_sum, mut r_sum) = (0.0, 0.0);
         for (c, r) in cs.iter().zip(&rs) {

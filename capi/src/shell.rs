@@ -213,14 +213,7 @@ pub(crate) unsafe fn contact_new_rolling<T: Precision>(
         };
         let law = law(law_value).map_err(bare)?;
         let form = form(form_value).map_err(bare)?;
-        let spec = Spec {
-            p: s.p,
-            q: s.q,
-            estar: s.estar,
-            cd: s.cd,
-            f: s.f,
-            delta: s.delta,
-        };
+        let spec = Spec::from(s);
         let contact = DynContact::new_rolling(&spec, &rolling, law, form).map_err(invalid)?;
         // SAFETY: checked non-NULL and aligned; the slot fits (types.rs).
         unsafe {
@@ -321,23 +314,7 @@ unsafe fn wrench_with<T: Precision>(
         // SAFETY: caller's contract.
         let s = unsafe { read(step) }.map_err(bare)?;
         check(out).map_err(bare)?;
-        let step = Step {
-            h: s.h,
-            hdot: s.hdot,
-            vx: s.vx,
-            vy: s.vy,
-            omega: s.omega,
-        };
-        let w = eval(&slot.contact, &step)?;
-        let w = contensou_wrench {
-            n: w.n,
-            fx: w.fx,
-            fy: w.fy,
-            tz: w.tz,
-            a: w.a,
-            b: w.b,
-            e2: w.e2,
-        };
+        let w = contensou_wrench::from(eval(&slot.contact, &Step::from(s))?);
         // SAFETY: caller's contract.
         unsafe { write(out, w) }.map_err(bare)
     })();

@@ -275,3 +275,45 @@ pub struct contensou_wrench_columns<T> {
     /// e² per row.
     pub e2: *mut T,
 }
+
+// The library's types of the C structs, field for field (the header keeps its own structs:
+// cbindgen reads this crate only).
+
+impl<T> From<contensou_spec<T>> for contensou::dynamic::Spec<T> {
+    fn from(s: contensou_spec<T>) -> Self {
+        Self {
+            p: s.p,
+            q: s.q,
+            estar: s.estar,
+            cd: s.cd,
+            f: s.f,
+            delta: s.delta,
+        }
+    }
+}
+
+impl<T> From<contensou_step<T>> for contensou::dynamic::Step<T> {
+    fn from(s: contensou_step<T>) -> Self {
+        Self {
+            h: s.h,
+            hdot: s.hdot,
+            vx: s.vx,
+            vy: s.vy,
+            omega: s.omega,
+        }
+    }
+}
+
+impl<T> From<contensou::dynamic::Output<T>> for contensou_wrench<T> {
+    fn from(w: contensou::dynamic::Output<T>) -> Self {
+        Self {
+            n: w.n,
+            fx: w.fx,
+            fy: w.fy,
+            tz: w.tz,
+            a: w.a,
+            b: w.b,
+            e2: w.e2,
+        }
+    }
+}

@@ -1,7 +1,6 @@
 //! The C API called from Rust as a C caller would: status codes (one per `contensou::Error`
 //! variant), NULL / misaligned / uninitialised pointers, invalid enum values, error columns,
 //! and the numbers (bit for bit those of `contensou::dynamic`).
-use core::ffi::CStr;
 use core::ptr::{null, null_mut};
 
 use contensou::dynamic::{DynContact, Form, Law, Spec, Step};
@@ -10,32 +9,11 @@ use contensou::normal::{Material, Modulus};
 use contensou::Error;
 use contensou_capi::*;
 
+mod common;
+use common::{spec_in, storage32, storage64, text, SPEC};
+
 type S = contensou_status;
 
-fn text(p: *const core::ffi::c_char) -> &'static str {
-    unsafe { CStr::from_ptr(p) }.to_str().unwrap()
-}
-
-fn storage32() -> Box<contensou_contact_f32> {
-    Box::new(contensou_contact_f32 {
-        opaque: [0; CONTENSOU_CONTACT_F32_SIZE / 8],
-    })
-}
-
-fn storage64() -> Box<contensou_contact_f64> {
-    Box::new(contensou_contact_f64 {
-        opaque: [0; CONTENSOU_CONTACT_F64_SIZE / 8],
-    })
-}
-
-const SPEC: contensou_spec<f64> = contensou_spec {
-    p: 10.0,
-    q: 50.0,
-    estar: 1.15e11,
-    cd: 0.1,
-    f: 0.1,
-    delta: 1e-4,
-};
 const STEP: contensou_step<f64> = contensou_step {
     h: 1e-6,
     hdot: 0.01,
@@ -212,14 +190,7 @@ fn bad_pointers_and_values_are_codes_and_write_nothing() {
         );
         // An f32 contact is not an f64 one (the tag differs).
         let mut c32 = storage32();
-        let spec32 = contensou_spec {
-            p: 10.0,
-            q: 50.0,
-            estar: 1.15e11,
-            cd: 0.1,
-            f: 0.1,
-            delta: 1e-4,
-        };
+        let spec32 = spec_in(|x| x as f32);
         assert_eq!(
             contensou_contact_new_f32(&mut *c32, &spec32, 0, 0, null_mut()),
             S::Ok

@@ -5,6 +5,9 @@ use core::ptr::{null, null_mut};
 
 use contensou_capi::*;
 
+mod common;
+use common::{spec_in, step_at, step_columns, wrench_columns};
+
 type S = contensou_status;
 
 const ROWS: usize = 1003;
@@ -40,14 +43,7 @@ macro_rules! precision {
         fn $name() {
             let cols: [Vec<$t>; 5] = columns().map(|c| c.iter().map(|&x| x as $t).collect());
             let [h, hdot, vx, vy, omega] = &cols;
-            let spec = contensou_spec::<$t> {
-                p: 10.0,
-                q: 50.0,
-                estar: 1.15e11,
-                cd: 0.1,
-                f: 0.1,
-                delta: 1e-4,
-            };
+            let spec = spec_in(|x| x as $t);
             for law in [
                 CONTENSOU_LAW_BEST,
                 CONTENSOU_LAW_SIMPLIFIED,
@@ -65,25 +61,8 @@ macro_rules! precision {
                         S::Ok
                     );
                     let mut out: [Vec<$t>; 7] = core::array::from_fn(|_| vec![-7.0; ROWS]);
-                    let steps = contensou_step_columns {
-                        h: h.as_ptr(),
-                        hdot: hdot.as_ptr(),
-                        vx: vx.as_ptr(),
-                        vy: vy.as_ptr(),
-                        omega: omega.as_ptr(),
-                    };
-                    let ptrs = |o: &mut [Vec<$t>; 7]| {
-                        let [n, fx, fy, tz, a, b, e2] = o.each_mut().map(|c| c.as_mut_ptr());
-                        contensou_wrench_columns {
-                            n,
-                            fx,
-                            fy,
-                            tz,
-                            a,
-                            b,
-                            e2,
-                        }
-                    };
+                    let steps = step_columns([h, hdot, vx, vy, omega].map(|c| &c[..]));
+                    let ptrs = wrench_columns::<$t>;
                     let mut row = 0;
                     let cols_out = ptrs(&mut out);
                     assert_eq!(
@@ -92,13 +71,7 @@ macro_rules! precision {
                     );
                     assert_eq!((row, column), (ROWS, CONTENSOU_COLUMN_NONE));
                     for i in 0..ROWS {
-                        let step = contensou_step {
-                            h: h[i],
-                            hdot: hdot[i],
-                            vx: vx[i],
-                            vy: vy[i],
-                            omega: omega[i],
-                        };
+                        let step = step_at([h, hdot, vx, vy, omega].map(|c| &c[..]), i);
                         let mut w = contensou_wrench::<$t>::default();
                         assert_eq!(unsafe { $one(&*storage, &step, &mut w, null_mut()) }, S::Ok);
                         let one = [w.n, w.fx, w.fy, w.tz, w.a, w.b, w.e2];

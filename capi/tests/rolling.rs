@@ -12,23 +12,10 @@ use contensou::friction::rolling::{
 use contensou::Real;
 use contensou_capi::*;
 
+mod common;
+use common::{rolling32 as storage32, rolling64 as storage64, text};
+
 type S = contensou_status;
-
-fn text(p: *const core::ffi::c_char) -> &'static str {
-    unsafe { CStr::from_ptr(p) }.to_str().unwrap()
-}
-
-fn storage32() -> Box<contensou_rolling_f32> {
-    Box::new(contensou_rolling_f32 {
-        opaque: [0; CONTENSOU_ROLLING_F32_SIZE / 8],
-    })
-}
-
-fn storage64() -> Box<contensou_rolling_f64> {
-    Box::new(contensou_rolling_f64 {
-        opaque: [0; CONTENSOU_ROLLING_F64_SIZE / 8],
-    })
-}
 
 const STATE: contensou_rolling_state<f64> = contensou_rolling_state {
     a: 6e-3,

@@ -8,32 +8,13 @@ use core::ptr::{null, null_mut};
 use contensou::dynamic::{DynContact, Form, Law, RollingSpec, RollingStep, Spec, Step};
 use contensou_capi::*;
 
+mod common;
+use common::{spec_of, step_at, step_columns, storage64 as storage, wrench_columns, SPEC};
+
 type S = contensou_status;
 
-fn storage() -> Box<contensou_contact_f64> {
-    Box::new(contensou_contact_f64 {
-        opaque: [0; CONTENSOU_CONTACT_F64_SIZE / 8],
-    })
-}
-
-const SPEC: contensou_spec<f64> = contensou_spec {
-    p: 10.0,
-    q: 50.0,
-    estar: 1.15e11,
-    cd: 0.1,
-    f: 0.1,
-    delta: 1e-4,
-};
-
 fn spec() -> Spec<f64> {
-    Spec {
-        p: SPEC.p,
-        q: SPEC.q,
-        estar: SPEC.estar,
-        cd: SPEC.cd,
-        f: SPEC.f,
-        delta: SPEC.delta,
-    }
+    spec_of(&SPEC)
 }
 
 /// Through C: G, ν optional, the rolling step optional.
@@ -210,19 +191,6 @@ fn rolling_errors_name_their_column() {
 }
 
 /// Output columns over seven vectors.
-fn columns_of(out: &mut [Vec<f64>; 7]) -> contensou_wrench_columns<f64> {
-    let [n, fx, fy, tz, a, b, e2] = out.each_mut().map(|c| c.as_mut_ptr());
-    contensou_wrench_columns {
-        n,
-        fx,
-        fy,
-        tz,
-        a,
-        b,
-        e2,
-    }
-}
-
 #[test]
 fn many_rolling_is_the_scalar_call_per_row() {
     let rows = 64;
@@ -258,14 +226,8 @@ fn many_rolling_is_the_scalar_call_per_row() {
         };
         assert_eq!(s, S::Ok);
         let mut out: [Vec<f64>; 7] = core::array::from_fn(|_| vec![0.0; rows]);
-        let cols = columns_of(&mut out);
-        let steps = contensou_step_columns {
-            h: h.as_ptr(),
-            hdot: hdot.as_ptr(),
-            vx: vx.as_ptr(),
-            vy: vy.as_ptr(),
-            omega: omega.as_ptr(),
-        };
+        let cols = wrench_columns(&mut out);
+        let steps = step_columns([&h, &hdot, &vx, &vy, &omega]);
         let rolling = contensou_rolling_step_columns {
             vrx: vrx.as_ptr(),
             vry: vry.as_ptr(),
@@ -284,13 +246,7 @@ fn many_rolling_is_the_scalar_call_per_row() {
         };
         assert_eq!((s, row, column), (S::Ok, rows, CONTENSOU_COLUMN_NONE));
         for i in 0..rows {
-            let step = contensou_step {
-                h: h[i],
-                hdot: hdot[i],
-                vx: vx[i],
-                vy: vy[i],
-                omega: omega[i],
-            };
+            let step = step_at([&h[..], &hdot[..], &vx[..], &vy[..], &omega[..]], i);
             let r = contensou_rolling_step {
                 vrx: vrx[i],
                 vry: vry[i],
@@ -311,7 +267,7 @@ fn many_rolling_is_the_scalar_call_per_row() {
         }
         // NULL rolling columns: exactly contensou_contact_wrench_many_f64 (V = 0).
         let mut plain: [Vec<f64>; 7] = core::array::from_fn(|_| vec![0.0; rows]);
-        let pcols = columns_of(&mut plain);
+        let pcols = wrench_columns(&mut plain);
         let s = unsafe {
             contensou_contact_wrench_many_f64(&*st, rows, &steps, &pcols, null_mut(), null_mut())
         };

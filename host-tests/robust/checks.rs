@@ -611,16 +611,7 @@ fn wrench_ok<T: Real, B: core::fmt::Debug>(
 }
 
 fn contact_law<L: Law, T: Fz>(inp: &mut Input<'_>, c: &Curvatures<T>, e: Modulus<T>, boxed: bool) {
-    let (f, delta, h, hdot, vx, vy, om, cd): (T, T, T, T, T, T, T, T) = (
-        inp.val(),
-        inp.val(),
-        inp.val(),
-        inp.val(),
-        inp.val(),
-        inp.val(),
-        inp.val(),
-        inp.val(),
-    );
+    let [f, delta, h, hdot, vx, vy, om, cd]: [T; 8] = core::array::from_fn(|_| inp.val());
     let (Ok(fr), Ok(slip), Ok(hc)) = (
         Friction::<T, L>::with_law(f, delta),
         Slip::new(vx, vy, om),
@@ -932,16 +923,7 @@ fn rolling_contact_law<L: rolling::RollingLaw, T: Fz>(
     el: rolling::Elasticity<T>,
     boxed: bool,
 ) {
-    let (f, h, hdot, vx, vy, om, vrx, vry): (T, T, T, T, T, T, T, T) = (
-        inp.val(),
-        inp.val(),
-        inp.val(),
-        inp.val(),
-        inp.val(),
-        inp.val(),
-        inp.val(),
-        inp.val(),
-    );
+    let [f, h, hdot, vx, vy, om, vrx, vry]: [T; 8] = core::array::from_fn(|_| inp.val());
     let v = rolling::RollingVelocity::new(vrx, vry);
     match (vrx.is_finite(), vry.is_finite(), &v) {
         (true, true, Ok(_)) => {}

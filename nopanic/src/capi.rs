@@ -14,6 +14,44 @@ fn ptr<P>(p: P) -> P {
     black_box(p)
 }
 
+/// A step of black-boxed values.
+#[inline(always)]
+fn step<T>(v: fn(f64) -> T) -> contensou_step<T> {
+    contensou_step {
+        h: v(1e-6),
+        hdot: v(0.0),
+        vx: v(0.01),
+        vy: v(0.0),
+        omega: v(50.0),
+    }
+}
+
+/// Step columns all reading `x`, output columns writing `o` (black-boxed pointers).
+#[inline(always)]
+fn columns<T>(
+    x: &[T; 9],
+    o: &mut [[T; 9]; 7],
+) -> (contensou_step_columns<T>, contensou_wrench_columns<T>) {
+    let steps = contensou_step_columns {
+        h: ptr(x.as_ptr()),
+        hdot: ptr(x.as_ptr()),
+        vx: ptr(x.as_ptr()),
+        vy: ptr(x.as_ptr()),
+        omega: ptr(x.as_ptr()),
+    };
+    let [n, fx, fy, tz, a, b, e2] = o.each_mut().map(|c| ptr(c.as_mut_ptr()));
+    let out = contensou_wrench_columns {
+        n,
+        fx,
+        fy,
+        tz,
+        a,
+        b,
+        e2,
+    };
+    (steps, out)
+}
+
 /// One module of probes per precision (the exported names differ only by their suffix).
 macro_rules! precision_probes {
     ($m:ident: $T:ty, $storage:ident, $words:expr,
@@ -67,13 +105,7 @@ macro_rules! precision_probes {
             #[inline(never)]
             fn probe_capi_contact_wrench() {
                 let s = storage();
-                let step = contensou_step::<$T> {
-                    h: v(1e-6),
-                    hdot: v(0.0),
-                    vx: v(0.01),
-                    vy: v(0.0),
-                    omega: v(50.0),
-                };
+                let step = step::<$T>(v);
                 let mut w = contensou_wrench::<$T>::default();
                 let mut col = black_box(0);
                 let r = unsafe { $wrench(ptr(&s), ptr(&step), ptr(&mut w), ptr(&mut col)) };
@@ -85,23 +117,7 @@ macro_rules! precision_probes {
                 let s = storage();
                 let x = [v(1e-6); 9];
                 let mut o: [[$T; 9]; 7] = [[v(0.0); 9]; 7];
-                let steps = contensou_step_columns::<$T> {
-                    h: ptr(x.as_ptr()),
-                    hdot: ptr(x.as_ptr()),
-                    vx: ptr(x.as_ptr()),
-                    vy: ptr(x.as_ptr()),
-                    omega: ptr(x.as_ptr()),
-                };
-                let [n, fx, fy, tz, a, b, e2] = o.each_mut().map(|c| ptr(c.as_mut_ptr()));
-                let out = contensou_wrench_columns::<$T> {
-                    n,
-                    fx,
-                    fy,
-                    tz,
-                    a,
-                    b,
-                    e2,
-                };
+                let (steps, out) = columns(&x, &mut o);
                 let (mut row, mut col) = (black_box(0), black_box(0));
                 let r = unsafe {
                     $many(
@@ -205,13 +221,7 @@ macro_rules! rolling_probes {
                 let s = $storage {
                     opaque: black_box([0; $words]),
                 };
-                let step = contensou_step::<$T> {
-                    h: v(1e-6),
-                    hdot: v(0.0),
-                    vx: v(0.01),
-                    vy: v(0.0),
-                    omega: v(50.0),
-                };
+                let step = step::<$T>(v);
                 let roll = contensou_rolling_step::<$T> {
                     vrx: v(1.0),
                     vry: v(0.1),
@@ -231,26 +241,10 @@ macro_rules! rolling_probes {
                 };
                 let x = [v(1e-6); 9];
                 let mut o: [[$T; 9]; 7] = [[v(0.0); 9]; 7];
-                let steps = contensou_step_columns::<$T> {
-                    h: ptr(x.as_ptr()),
-                    hdot: ptr(x.as_ptr()),
-                    vx: ptr(x.as_ptr()),
-                    vy: ptr(x.as_ptr()),
-                    omega: ptr(x.as_ptr()),
-                };
+                let (steps, out) = columns(&x, &mut o);
                 let roll = contensou_rolling_step_columns::<$T> {
                     vrx: ptr(x.as_ptr()),
                     vry: ptr(x.as_ptr()),
-                };
-                let [n, fx, fy, tz, a, b, e2] = o.each_mut().map(|c| ptr(c.as_mut_ptr()));
-                let out = contensou_wrench_columns::<$T> {
-                    n,
-                    fx,
-                    fy,
-                    tz,
-                    a,
-                    b,
-                    e2,
                 };
                 let (mut row, mut col) = (black_box(0), black_box(0));
                 let r = unsafe {
@@ -274,7 +268,14 @@ macro_rules! rolling_probes {
                 };
                 let mut col = black_box(0);
                 let r = unsafe {
-                    $rnew(ptr(&mut s), v(1.5), v(8e10), v(0.28), black_box(5), ptr(&mut col))
+                    $rnew(
+                        ptr(&mut s),
+                        v(1.5),
+                        v(8e10),
+                        v(0.28),
+                        black_box(5),
+                        ptr(&mut col),
+                    )
                 };
                 black_box((r, &s, col));
             }

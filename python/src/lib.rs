@@ -190,14 +190,37 @@ fn wrench<'py>(
     }
 }
 
-/// A built contact in either precision (one per `Contact` object: the size difference is
-/// not worth a box).
-#[derive(Clone, Copy)]
+/// A value in either precision: a built contact (one per `Contact` or `RollingContact`
+/// object; the size difference is not worth a box).
 #[allow(clippy::large_enum_variant)]
-enum Built {
-    F32(DynContact<f32>),
-    F64(DynContact<f64>),
+enum Either<A, B> {
+    F32(A),
+    F64(B),
 }
+
+impl<A, B> Either<A, B> {
+    /// `"f32"` or `"f64"`.
+    fn precision(&self) -> &'static str {
+        match self {
+            Either::F32(_) => "f32",
+            Either::F64(_) => "f64",
+        }
+    }
+}
+
+/// `$body` with `$c` bound to the value of an [`Either`], whichever its precision.
+macro_rules! each {
+    ($e:expr, $c:ident => $body:expr) => {
+        match $e {
+            $crate::Either::F32($c) => $body,
+            $crate::Either::F64($c) => $body,
+        }
+    };
+}
+pub(crate) use each;
+
+/// A built contact of the contract in either precision.
+type Built = Either<DynContact<f32>, DynContact<f64>>;
 
 /// A scalar argument of the chosen precision (numpy's conversion, then one value).
 fn scalar<T: Precision>(name: &'static str, value: &Bound<'_, PyAny>) -> PyResult<T> {
@@ -308,9 +331,9 @@ impl Contact {
         let (law, form) = (law_of(law)?, form_of(form)?);
         let values = [P, Q, estar, cd, f, delta];
         let built = if is_f32(precision)? {
-            Built::F32(build(values, [G, nu], law, form)?)
+            Either::F32(build(values, [G, nu], law, form)?)
         } else {
-            Built::F64(build(values, [G, nu], law, form)?)
+            Either::F64(build(values, [G, nu], law, form)?)
         };
         Ok(Contact { built })
     }
@@ -332,10 +355,7 @@ impl Contact {
         vry: Option<&Bound<'py, PyAny>>,
     ) -> PyResult<Bound<'py, PyDict>> {
         let values = [h, hdot, vx, vy, omega];
-        match &self.built {
-            Built::F32(c) => steps_in(py, c, values, [vrx, vry]),
-            Built::F64(c) => steps_in(py, c, values, [vrx, vry]),
-        }
+        each!(&self.built, c => steps_in(py, c, values, [vrx, vry]))
     }
 
     /// One scalar step for tight Python loops (a physics engine's callback): Python floats in,
@@ -383,10 +403,7 @@ impl Contact {
             }
         }
         let x = [h, hdot, vx, vy, omega, vrx, vry];
-        let [n, fx, fy, tz, a, b, e2] = match &self.built {
-            Built::F32(c) => one(c, x)?,
-            Built::F64(c) => one(c, x)?,
-        };
+        let [n, fx, fy, tz, a, b, e2] = each!(&self.built, c => one(c, x)?);
         Ok((n, fx, fy, tz, a, b, e2))
     }
 
@@ -405,44 +422,32 @@ impl Contact {
                 PyValueError::new_err(format!("{} = {value}: {}", e.column, e.error.as_str()))
             })
         }
-        match &mut self.built {
-            Built::F32(c) => set(c, P, Q),
-            Built::F64(c) => set(c, P, Q),
-        }
+        each!(&mut self.built, c => set(c, P, Q))
     }
 
     /// The friction law's name.
     #[getter]
     fn law(&self) -> &'static str {
-        match &self.built {
-            Built::F32(c) => c.law().name(),
-            Built::F64(c) => c.law().name(),
-        }
+        each!(&self.built, c => c.law().name())
     }
 
     /// `"fixed"` or `"varying"`.
     #[getter]
     fn form(&self) -> &'static str {
-        match &self.built {
-            Built::F32(c) => c.form().name(),
-            Built::F64(c) => c.form().name(),
-        }
+        each!(&self.built, c => c.form().name())
     }
 
     /// `"f32"` or `"f64"`.
     #[getter]
     fn precision(&self) -> &'static str {
-        match &self.built {
-            Built::F32(_) => "f32",
-            Built::F64(_) => "f64",
-        }
+        self.built.precision()
     }
 
     /// The contact columns as a dict `{P, Q, estar, cd, f, delta}` (Python floats).
     #[getter]
     fn spec<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
         let s: Spec<f64> = match &self.built {
-            Built::F32(c) => {
+            Either::F32(c) => {
                 let s = c.spec();
                 Spec {
                     p: s.p.into(),
@@ -453,7 +458,7 @@ impl Contact {
                     delta: s.delta.into(),
                 }
             }
-            Built::F64(c) => *c.spec(),
+            Either::F64(c) => *c.spec(),
         };
         let dict = PyDict::new(py);
         for (name, value) in INPUTS.iter().zip([s.p, s.q, s.estar, s.cd, s.f, s.delta]) {

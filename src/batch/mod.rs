@@ -74,6 +74,7 @@
 //! ```
 
 mod best;
+mod dyn_contact;
 mod lanes;
 mod laws;
 mod normal;

@@ -1,14 +1,11 @@
 //! The generic bodies of the rolling evaluator's functions (`contensou_rolling_*`): the
-//! columns of `contact_eval rolling` through [`RollingContact::wrench`], so a row gives that
-//! command's bits. No formula here.
+//! columns of `contact_eval rolling` through the library's row evaluator
+//! ([`contensou::friction::rolling::row`]: the same validation, the same column named in an
+//! error, the same bits). No formula here.
 
 use core::ffi::CStr;
 
-use contensou::friction::rolling::{
-    Blend, Elasticity, Fastsim, FastsimGrid, FullSlip, Linear, Patch, RollingContact, RollingLaw,
-    RollingSlip, Table,
-};
-use contensou::{Error, Real};
+use contensou::friction::rolling::row::{Rejected, RowContact, RowLaw, RowState};
 
 use super::{check, read, write, Precision};
 use crate::cstr::c_str;
@@ -33,25 +30,26 @@ impl RollingPrecision for f64 {
     const ROLLING_TAG: u32 = u32::from_le_bytes(*b"rf64");
 }
 
-/// The rolling laws, by `contensou_law` value, with the names of `contact_eval rolling --law`.
-pub(crate) const ROLLING_LAWS: [(contensou_law, &str); 6] = [
-    (CONTENSOU_LAW_TABLE, Table::NAME),
-    (CONTENSOU_LAW_BLEND, Blend::NAME),
-    (CONTENSOU_LAW_FASTSIM, Fastsim::NAME),
-    (CONTENSOU_LAW_FASTSIM_16, "fastsim-16"),
-    (CONTENSOU_LAW_FULL_SLIP, FullSlip::NAME),
-    (CONTENSOU_LAW_LINEAR, Linear::NAME),
+/// The rolling laws, by `contensou_law` value.
+const ROLLING_LAWS: [(contensou_law, RowLaw); 6] = [
+    (CONTENSOU_LAW_TABLE, RowLaw::Table),
+    (CONTENSOU_LAW_BLEND, RowLaw::Blend),
+    (CONTENSOU_LAW_FASTSIM, RowLaw::Fastsim),
+    (CONTENSOU_LAW_FASTSIM_16, RowLaw::Fastsim16),
+    (CONTENSOU_LAW_FULL_SLIP, RowLaw::FullSlip),
+    (CONTENSOU_LAW_LINEAR, RowLaw::Linear),
 ];
 
-/// The value of a rolling law's name.
+/// The value of a rolling law's name (`contact_eval rolling --law`).
 pub(crate) fn rolling_law_of(name: &str) -> Option<contensou_law> {
+    let law = RowLaw::from_name(name)?;
     ROLLING_LAWS
         .iter()
-        .find(|(_, n)| *n == name)
+        .find(|(_, l)| *l == law)
         .map(|(code, _)| *code)
 }
 
-/// NUL-terminated column names, in `contensou_rolling_column` order.
+/// NUL-terminated column names, in `contensou_rolling_column` order (the values of `contensou::friction::rolling::row::Column`).
 const COLUMN_NAMES: [&CStr; 11] = [
     c_str!("a"),
     c_str!("b"),
@@ -80,16 +78,9 @@ fn bare(s: S) -> Failure {
     (s, CONTENSOU_ROLLING_COLUMN_NONE)
 }
 
-/// The column a library error names (`Error::NonFinite("a")` → `a`), else `fallback`.
-fn named(e: Error, fallback: contensou_rolling_column) -> Failure {
-    let column = match e {
-        Error::NonFinite(name) => COLUMN_NAMES
-            .iter()
-            .position(|c| c.to_bytes() == name.as_bytes())
-            .map_or(fallback, |k| k as contensou_rolling_column),
-        _ => fallback,
-    };
-    (e.into(), column)
+/// The status and column of a refused input.
+fn rejected<T>(r: Rejected<T>) -> Failure {
+    (r.error.into(), r.column as contensou_rolling_column)
 }
 
 /// Stores the column of an error (or `NONE`) if `column` is usable.
@@ -122,24 +113,15 @@ pub(crate) unsafe fn rolling_new<T: RollingPrecision>(
 ) -> S {
     let r = (|| {
         check(storage).map_err(bare)?;
-        if !ROLLING_LAWS.iter().any(|(code, _)| *code == law) {
-            return Err(bare(S::InvalidLaw));
-        }
-        let el = Elasticity::new(g, nu).map_err(|e| {
-            let culprit = if g > T::ZERO {
-                CONTENSOU_ROLLING_COLUMN_NU
-            } else {
-                CONTENSOU_ROLLING_COLUMN_G
-            };
-            named(e, culprit)
-        })?;
-        let contact = RollingContact::new(a_over_b, el)
-            .map_err(|e| (e.into(), CONTENSOU_ROLLING_COLUMN_A_OVER_B))?;
+        let (_, law) = ROLLING_LAWS
+            .iter()
+            .find(|(code, _)| *code == law)
+            .ok_or(bare(S::InvalidLaw))?;
+        let contact = RowContact::new(a_over_b, g, nu, *law).map_err(rejected)?;
         // SAFETY: checked non-NULL and aligned; the slot fits (types/rolling.rs).
         unsafe {
             storage.cast::<RollingSlot<T>>().write(RollingSlot {
                 tag: T::ROLLING_TAG,
-                law,
                 contact,
             })
         };
@@ -168,73 +150,6 @@ unsafe fn rolling_slot<'a, T: RollingPrecision>(
     Ok(unsafe { &*slot })
 }
 
-/// The first of a, b (≤ 0) or f (< 0) that `Patch::new` refuses (as `contact_eval rolling`).
-fn patch_culprit<T: Real>(s: &contensou_rolling_state<T>) -> contensou_rolling_column {
-    if s.a <= T::ZERO {
-        CONTENSOU_ROLLING_COLUMN_A
-    } else if s.b <= T::ZERO {
-        CONTENSOU_ROLLING_COLUMN_B
-    } else {
-        CONTENSOU_ROLLING_COLUMN_F
-    }
-}
-
-/// The slip of `contact_eval rolling`: the creepages at V, V = 0 read as the limit V → 0⁺
-/// (the wrench depends on V only through its sign).
-fn slip<T: Real>(s: &contensou_rolling_state<T>) -> Result<RollingSlip<T>, Failure> {
-    let columns = [
-        (s.v, CONTENSOU_ROLLING_COLUMN_V),
-        (s.xi, CONTENSOU_ROLLING_COLUMN_XI),
-        (s.eta, CONTENSOU_ROLLING_COLUMN_ETA),
-        (s.phi, CONTENSOU_ROLLING_COLUMN_PHI),
-    ];
-    for (x, column) in columns {
-        if !x.is_finite() {
-            return Err((S::NonFinite, column));
-        }
-    }
-    let v = if s.v == T::ZERO { T::ONE } else { s.v };
-    RollingSlip::from_creepages(s.xi, s.eta, s.phi, v).map_err(|e| {
-        // finite creepages whose product with V overflows
-        let column = match e {
-            Error::NonFinite("v_y") => CONTENSOU_ROLLING_COLUMN_ETA,
-            Error::NonFinite("omega") => CONTENSOU_ROLLING_COLUMN_PHI,
-            _ => CONTENSOU_ROLLING_COLUMN_XI,
-        };
-        (e.into(), column)
-    })
-}
-
-/// The wrench of `contact` by the law `code` (one of [`ROLLING_LAWS`], checked at
-/// construction).
-fn wrench_by<T: Real>(
-    contact: &RollingContact<T>,
-    code: contensou_law,
-    patch: &Patch<T>,
-    slip: &RollingSlip<T>,
-) -> contensou_rolling_output<T> {
-    fn by<T: Real, L: RollingLaw>(
-        c: &RollingContact<T>,
-        p: &Patch<T>,
-        s: &RollingSlip<T>,
-    ) -> contensou_rolling_output<T> {
-        let w = c.wrench::<L>(p, s);
-        contensou_rolling_output {
-            fx: w.fx,
-            fy: w.fy,
-            mz: w.mz,
-        }
-    }
-    match code {
-        CONTENSOU_LAW_BLEND => by::<T, Blend>(contact, patch, slip),
-        CONTENSOU_LAW_FASTSIM => by::<T, Fastsim>(contact, patch, slip),
-        CONTENSOU_LAW_FASTSIM_16 => by::<T, FastsimGrid<16, 16>>(contact, patch, slip),
-        CONTENSOU_LAW_FULL_SLIP => by::<T, FullSlip>(contact, patch, slip),
-        CONTENSOU_LAW_LINEAR => by::<T, Linear>(contact, patch, slip),
-        _ => by::<T, Table>(contact, patch, slip),
-    }
-}
-
 /// `contensou_rolling_wrench_*`.
 ///
 /// # Safety
@@ -251,9 +166,8 @@ pub(crate) unsafe fn rolling_wrench<T: RollingPrecision>(
         // SAFETY: caller's contract.
         let s = unsafe { read(state) }.map_err(bare)?;
         check(out).map_err(bare)?;
-        let patch = Patch::new(s.a, s.b, s.n, s.f).map_err(|e| named(e, patch_culprit(&s)))?;
-        let slip = slip(&s)?;
-        let w = wrench_by(&slot.contact, slot.law, &patch, &slip);
+        let w = slot.contact.wrench(&RowState::from(s)).map_err(rejected)?;
+        let w = contensou_rolling_output::from(w);
         // SAFETY: caller's contract.
         unsafe { write(out, w) }.map_err(bare)
     })();

@@ -1,9 +1,7 @@
 //! The C types of the rolling evaluator (`contensou_rolling_*`, issue 20): Kalker's rolling
 //! contact ([`contensou::friction::rolling`]) with the columns of `contact_eval rolling`.
 
-use contensou::friction::rolling::RollingContact;
-
-use super::contensou_law;
+use contensou::friction::rolling::row::{Column, RowContact};
 
 /// The per-call inputs of a rolling contact: the columns `a,b,f,N,V,xi,eta,phi` of
 /// `contact_eval rolling` (its `G, nu` and the shape a/b are the contact's).
@@ -70,12 +68,11 @@ pub struct contensou_rolling_f64 {
     pub opaque: [u64; 1024],
 }
 
-/// What a rolling storage holds: a tag only the constructor writes, the law, the contact.
+/// What a rolling storage holds: a tag only the constructor writes, the contact and its law.
 #[repr(C)]
 pub(crate) struct RollingSlot<T: contensou::Real> {
     pub(crate) tag: u32,
-    pub(crate) law: contensou_law,
-    pub(crate) contact: RollingContact<T>,
+    pub(crate) contact: RowContact<T>,
 }
 
 // The slot fits in the storage, on every target this crate is built for.
@@ -88,6 +85,21 @@ const _: () = {
     assert!(align_of::<contensou_rolling_f32>() == super::CONTENSOU_CONTACT_ALIGN);
     assert!(align_of::<contensou_rolling_f64>() == super::CONTENSOU_CONTACT_ALIGN);
     assert!(align_of::<RollingSlot<f64>>() <= super::CONTENSOU_CONTACT_ALIGN);
+};
+
+// The column codes are the library's `Column` values.
+const _: () = {
+    assert!(CONTENSOU_ROLLING_COLUMN_A == Column::A as u32);
+    assert!(CONTENSOU_ROLLING_COLUMN_B == Column::B as u32);
+    assert!(CONTENSOU_ROLLING_COLUMN_G == Column::G as u32);
+    assert!(CONTENSOU_ROLLING_COLUMN_NU == Column::Nu as u32);
+    assert!(CONTENSOU_ROLLING_COLUMN_F == Column::F as u32);
+    assert!(CONTENSOU_ROLLING_COLUMN_N == Column::N as u32);
+    assert!(CONTENSOU_ROLLING_COLUMN_V == Column::V as u32);
+    assert!(CONTENSOU_ROLLING_COLUMN_XI == Column::Xi as u32);
+    assert!(CONTENSOU_ROLLING_COLUMN_ETA == Column::Eta as u32);
+    assert!(CONTENSOU_ROLLING_COLUMN_PHI == Column::Phi as u32);
+    assert!(CONTENSOU_ROLLING_COLUMN_A_OVER_B == Column::AOverB as u32);
 };
 
 /// A column of `contact_eval rolling` (`a,b,G,nu,f,N,V,xi,eta,phi`), the shape a/b, or
@@ -117,3 +129,28 @@ pub const CONTENSOU_ROLLING_COLUMN_PHI: contensou_rolling_column = 9;
 pub const CONTENSOU_ROLLING_COLUMN_A_OVER_B: contensou_rolling_column = 10;
 /// No column: success, or an error not tied to an input (a NULL pointer, …).
 pub const CONTENSOU_ROLLING_COLUMN_NONE: contensou_rolling_column = 11;
+
+impl<T> From<contensou_rolling_state<T>> for contensou::friction::rolling::row::RowState<T> {
+    fn from(s: contensou_rolling_state<T>) -> Self {
+        Self {
+            a: s.a,
+            b: s.b,
+            f: s.f,
+            n: s.n,
+            v: s.v,
+            xi: s.xi,
+            eta: s.eta,
+            phi: s.phi,
+        }
+    }
+}
+
+impl<T> From<contensou::friction::rolling::Wrench<T>> for contensou_rolling_output<T> {
+    fn from(w: contensou::friction::rolling::Wrench<T>) -> Self {
+        Self {
+            fx: w.fx,
+            fy: w.fy,
+            mz: w.mz,
+        }
+    }
+}

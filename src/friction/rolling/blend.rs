@@ -1,4 +1,4 @@
-//! `blend`: a rolling law (the base of the default, [`super::Table`]) — Kalker's linear theory and the exact full-slip law joined
+//! `blend`: a rolling law (the base of the default, `table`) — Kalker's linear theory and the exact full-slip law joined
 //! channel by channel, exact at both limits by construction, with saturation shapes fitted to
 //! the exact steady-rolling reference.
 //!
@@ -64,12 +64,9 @@ use super::contact::{Creep, Input, RollingLaw};
 use crate::Real;
 
 /// Kalker's linear theory and the exact full slip joined channel by channel (see the
-/// [module docs](self)); the base of the default law [`super::Table`].
+/// [module docs](self)); the base of the default law `table`.
 #[derive(Clone, Copy, Debug, Default)]
 pub struct Blend;
-
-/// The shapes of the fit (a/b).
-const SHAPES: [f64; 5] = [0.2, 0.5, 1.0, 2.0, 5.0];
 
 impl Blend {
     /// n: the order of the polynomial saturation (A = (1 − t)ⁿ, B = 1 − A(1 + nt)).
@@ -79,9 +76,9 @@ impl Blend {
     /// g: the weight of the translational forces in the spin force's decay variable s.
     pub const G: f64 = 0.3931;
     /// σ at a/b = 0.2, 0.5, 1, 2, 5: the spin force's decay scale.
-    pub const SIGMA: [f64; 5] = [6.965, 4.392, 3.517, 2.626, 2.18];
+    pub const SIGMA: [f64; 5] = super::fitted::SIGMA;
     /// γ at a/b = 0.2, 0.5, 1, 2, 5: how much of the saturated spin force turns into moment.
-    pub const GAMMA: [f64; 5] = [98.74, 0.3724, 0.0001841, 5.05e-5, 0.1578];
+    pub const GAMMA: [f64; 5] = super::fitted::GAMMA;
     /// Measured max error against the exact steady-rolling reference over its creep-curve
     /// families (pure ξ, η, φ, combined, full slip; a/b ∈ {0.2, 0.5, 1, 2, 5}): (|ΔF| in fN,
     /// |ΔM_z| in fNc), asserted by `host-tests/rolling_ref.rs` (measured 0.101, 0.162). Misses
@@ -91,17 +88,7 @@ impl Blend {
     /// (σ, γ) for a/b: piecewise linear in ln(a/b) between the fitted shapes, the end values
     /// outside [0.2, 5] (built once per contact, f64).
     pub fn shape<T: Real>(a_over_b: T) -> (T, T) {
-        let x = libm::log(super::within(a_over_b.to_f64(), 0.2, 5.0));
-        let mut i = 0;
-        while i < 3 && x > libm::log(SHAPES.get(i + 1).copied().unwrap_or(5.0)) {
-            i += 1;
-        }
-        // `get`: no bounds-check panic path (i ≤ 3 by the loop)
-        let at = |v: &[f64; 5], k: usize| v.get(k).copied().unwrap_or(1.0);
-        let (x0, x1) = (libm::log(at(&SHAPES, i)), libm::log(at(&SHAPES, i + 1)));
-        let u = super::within((x - x0) / (x1 - x0), 0.0, 1.0);
-        let lerp = |v: [f64; 5]| T::from_f64(at(&v, i) + u * (at(&v, i + 1) - at(&v, i)));
-        (lerp(Self::SIGMA), lerp(Self::GAMMA))
+        super::fitted::blend_at(a_over_b)
     }
 }
 
@@ -114,7 +101,7 @@ impl RollingLaw for Blend {
     }
 }
 
-/// The law's body, inlined into each caller (`blend` itself and [`super::Table`], which adds
+/// The law's body, inlined into each caller (`blend` itself and `table`, which adds
 /// its residual to it): one outlined copy would cost both a call.
 #[inline(always)]
 pub(crate) fn creep<T: Real>(i: &Input<'_, T>) -> Creep<T> {

@@ -106,10 +106,10 @@ pub struct RollingShape<T> {
     /// √(a/b)
     pub(crate) rho: T,
     pub(crate) kalker: Kalker<T>,
-    /// `blend`'s per-shape constants (σ, γ) ([`super::Blend::shape`]).
+    /// `blend`'s per-shape constants (σ, γ) (`Blend::shape`).
     pub(crate) blend: (T, T),
-    /// The default law's residual tables for this shape ([`super::table::Tables`]).
-    pub(crate) table: super::table::Tables<T>,
+    /// The default law's residual tables for this shape (`table::Tables`).
+    pub(crate) table: super::residual::Tables<T>,
 }
 
 impl<T: Real> RollingShape<T> {
@@ -126,8 +126,8 @@ impl<T: Real> RollingShape<T> {
         Self {
             rho: r.sqrt(),
             kalker: Kalker::new(r, nu),
-            blend: super::Blend::shape(r),
-            table: super::table::Tables::new(r),
+            blend: super::fitted::blend_at(r),
+            table: super::residual::Tables::new(r),
         }
     }
 

@@ -241,42 +241,8 @@ impl<T: Real> ShapePath<T> {
         RollingShape {
             rho: (T::HALF * x).exp(),
             kalker,
-            blend: blend_shape(x),
-            table: super::table::Tables::at_ln(x),
+            blend: super::fitted::blend_at_ln(x),
+            table: super::residual::Tables::at_ln(x),
         }
     }
-}
-
-/// ln of the fitted shapes of `blend` and `table` (a/b = 0.2, 0.5, 1, 2, 5).
-const LN_FITTED: [f64; 5] = [
-    -1.609_437_912_434_100_3,
-    -core::f64::consts::LN_2,
-    0.0,
-    core::f64::consts::LN_2,
-    1.609_437_912_434_100_3,
-];
-
-/// Where x = ln(a/b) falls among the fitted shapes: the interval i (0 … 3) and the fraction
-/// u ∈ [0, 1] (the end shapes outside), in the working precision.
-pub(crate) fn between_fitted<T: Real>(x: T) -> (usize, T) {
-    let node = |k: usize| T::from_f64(LN_FITTED.get(k).copied().unwrap_or(0.0));
-    let x = x.max(node(0)).min(node(4));
-    let mut i = 0;
-    while i < 3 && x > node(i + 1) {
-        i += 1;
-    }
-    (
-        i,
-        ((x - node(i)) / (node(i + 1) - node(i)))
-            .max(T::ZERO)
-            .min(T::ONE),
-    )
-}
-
-/// [`super::Blend::shape`] at x = ln(a/b) in the working precision.
-fn blend_shape<T: Real>(x: T) -> (T, T) {
-    let (i, u) = between_fitted(x);
-    let at = |v: &[f64; 5], k: usize| T::from_f64(v.get(k).copied().unwrap_or(1.0));
-    let lerp = |v: &[f64; 5]| at(v, i) + u * (at(v, i + 1) - at(v, i));
-    (lerp(&super::Blend::SIGMA), lerp(&super::Blend::GAMMA))
 }

@@ -1,0 +1,107 @@
+//! Fixtures shared by the C API's Rust tests and `examples/overhead.rs`: zeroed storages, the
+//! reference contact of the contract, conversions between the C and the library types.
+#![allow(dead_code)]
+
+use core::ffi::{c_char, CStr};
+
+use contensou::dynamic::Spec;
+use contensou_capi::*;
+
+/// A static NUL-terminated string of the API as `&str`.
+pub fn text(p: *const c_char) -> &'static str {
+    unsafe { CStr::from_ptr(p) }.to_str().unwrap()
+}
+
+/// Zeroed storage of one `float` contact.
+pub fn storage32() -> Box<contensou_contact_f32> {
+    Box::new(contensou_contact_f32 {
+        opaque: [0; CONTENSOU_CONTACT_F32_SIZE / 8],
+    })
+}
+
+/// Zeroed storage of one `double` contact.
+pub fn storage64() -> Box<contensou_contact_f64> {
+    Box::new(contensou_contact_f64 {
+        opaque: [0; CONTENSOU_CONTACT_F64_SIZE / 8],
+    })
+}
+
+/// Zeroed storage of one `float` rolling contact.
+pub fn rolling32() -> Box<contensou_rolling_f32> {
+    Box::new(contensou_rolling_f32 {
+        opaque: [0; CONTENSOU_ROLLING_F32_SIZE / 8],
+    })
+}
+
+/// Zeroed storage of one `double` rolling contact.
+pub fn rolling64() -> Box<contensou_rolling_f64> {
+    Box::new(contensou_rolling_f64 {
+        opaque: [0; CONTENSOU_ROLLING_F64_SIZE / 8],
+    })
+}
+
+/// The reference contact: P = 10, Q = 50 (1/m), E* = 1.15e11 Pa, c_d = 0.1, f = 0.1,
+/// δ = 1e-4 m/s.
+pub const SPEC: contensou_spec<f64> = contensou_spec {
+    p: 10.0,
+    q: 50.0,
+    estar: 1.15e11,
+    cd: 0.1,
+    f: 0.1,
+    delta: 1e-4,
+};
+
+/// [`SPEC`] in another precision, each value converted by `to`.
+pub fn spec_in<T>(to: fn(f64) -> T) -> contensou_spec<T> {
+    contensou_spec {
+        p: to(SPEC.p),
+        q: to(SPEC.q),
+        estar: to(SPEC.estar),
+        cd: to(SPEC.cd),
+        f: to(SPEC.f),
+        delta: to(SPEC.delta),
+    }
+}
+
+/// The library's contact columns of a C spec.
+pub fn spec_of<T: Copy>(s: &contensou_spec<T>) -> Spec<T> {
+    Spec::from(*s)
+}
+
+/// Row `i` of the step columns `h, hdot, vx, vy, omega`.
+pub fn step_at<T: Copy>(columns: [&[T]; 5], i: usize) -> contensou_step<T> {
+    let [h, hdot, vx, vy, omega] = columns.map(|c| c[i]);
+    contensou_step {
+        h,
+        hdot,
+        vx,
+        vy,
+        omega,
+    }
+}
+
+/// Step columns reading `h, hdot, vx, vy, omega`.
+pub fn step_columns<T>(c: [&[T]; 5]) -> contensou_step_columns<T> {
+    let [h, hdot, vx, vy, omega] = c.map(<[T]>::as_ptr);
+    contensou_step_columns {
+        h,
+        hdot,
+        vx,
+        vy,
+        omega,
+    }
+}
+
+/// Output columns writing the seven vectors of `out`.
+pub fn wrench_columns<T>(out: &mut [Vec<T>; 7]) -> contensou_wrench_columns<T> {
+    let [n, fx, fy, tz, a, b, e2] = out.each_mut().map(|c| c.as_mut_ptr());
+    contensou_wrench_columns {
+        n,
+        fx,
+        fy,
+        tz,
+        a,
+        b,
+        e2,
+    }
+}

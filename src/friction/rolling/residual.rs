@@ -1,0 +1,234 @@
+//! The residual tables of the default rolling law (`Table`) for one contact shape:
+//! the curves of the generated data (`table_data`) of the two fitted shapes around a/b, mixed
+//! on each look-up. Data for `RollingShape`, read by the law; see the law's module
+//! docs for the formula, the error and the cost.
+
+use super::table_data::{COARSE, Data, FINE, KNEE_START, KNEE_WIDTH, SHAPES as DATA};
+use crate::Real;
+
+/// One residual curve of one contact: ln m of the first node, 1/Δ(ln m) (coarse spacing),
+/// m₀, m_N, and the residual at the nodes, `C` channels (F_x; F_y, M_z; or all three), read
+/// from the generated data of the two fitted shapes around a/b and mixed at the weight `u` on
+/// each look-up (nothing copied: a curve is a few numbers and two references into flash).
+/// With `N` = 29 + 3 · 8 (the curves with φ) the 8 coarse intervals of the knee window hold
+/// three more nodes each.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Curve<T, const N: usize, const C: usize> {
+    x0: T,
+    inv_dx: T,
+    inv_m0: T,
+    m_last: T,
+    lo: &'static [[f32; N]; C],
+    hi: &'static [[f32; N]; C],
+    u: T,
+}
+
+/// Where ln m falls on a curve: node index and fraction, or a tail factor.
+#[derive(Clone, Copy)]
+enum At<T> {
+    Below(T),
+    Between(usize, T),
+    Above(T),
+}
+
+impl<T: Real, const N: usize, const C: usize> Curve<T, N, C> {
+    /// The curve for a/b between the shapes `lo` and `hi` at the weight `u` ∈ [0, 1]: ln m₀ and
+    /// Δ(ln m) linear in `u` (rounded to `T`), two `exp`.
+    #[inline]
+    fn between(lo: &'static Data<N, C>, hi: &'static Data<N, C>, u: T) -> Self {
+        let lerp = |p: T, q: T| p + u * (q - p);
+        let x0 = lerp(T::from_f64(lo.0), T::from_f64(hi.0));
+        let dx = lerp(T::from_f64(lo.1), T::from_f64(hi.1));
+        Self {
+            x0,
+            inv_dx: T::ONE / dx,
+            inv_m0: (-x0).exp(),
+            m_last: (x0 + T::from_usize(COARSE - 1) * dx).exp(),
+            lo: &lo.2,
+            hi: &hi.2,
+            u,
+        }
+    }
+
+    /// The same nodes in ln m (so one [`Self::at`] serves both).
+    fn same_grid(&self, other: &Self) -> bool {
+        self.x0 == other.x0 && self.inv_dx == other.inv_dx
+    }
+
+    #[inline(always)]
+    fn at(&self, lnm: T, m: T, inv_m: T) -> At<T> {
+        let u = (lnm - self.x0) * self.inv_dx;
+        if u <= T::ZERO {
+            At::Below((m * self.inv_m0).sq())
+        } else if u >= T::from_usize(COARSE - 1) {
+            At::Above((self.m_last * inv_m).sq())
+        } else {
+            // the knee window: four node intervals per coarse one
+            let g = if N > COARSE {
+                let k = (u - T::from_usize(KNEE_START))
+                    .max(T::ZERO)
+                    .min(T::from_usize(KNEE_WIDTH));
+                u + T::from_f64(3.0) * k
+            } else {
+                u
+            };
+            let i = g.trunc_usize().min(N - 2);
+            At::Between(i, g - T::from_usize(i))
+        }
+    }
+
+    /// The residual (F_x, F_y, M_z) at ln m (channels the curve lacks: 0; two channels are
+    /// F_y, M_z, one is F_x).
+    #[inline(always)]
+    pub(super) fn eval(&self, lnm: T, m: T, inv_m: T) -> [T; 3] {
+        self.value(self.at(lnm, m, inv_m))
+    }
+
+    /// [`Self::eval`] at a place found by [`Self::at`] (on this curve or one on the same grid).
+    #[inline(always)]
+    fn value(&self, at: At<T>) -> [T; 3] {
+        let mut out = [T::ZERO; 3];
+        let first = if C == 2 { 1 } else { 0 };
+        let rows = self.lo.iter().zip(self.hi.iter());
+        for (o, (a, b)) in out.iter_mut().skip(first).zip(rows) {
+            let node = |k: usize| {
+                let p = T::from_f32(a.get(k).copied().unwrap_or(0.0));
+                let q = T::from_f32(b.get(k).copied().unwrap_or(0.0));
+                p + self.u * (q - p)
+            };
+            *o = match at {
+                At::Below(f) => node(0) * f,
+                At::Above(f) => node(N - 1) * f,
+                At::Between(i, t) => node(i) + t * (node(i + 1) - node(i)),
+            };
+        }
+        out
+    }
+}
+
+/// The residual curves of one contact shape: ξ; the η–φ plane at u = 0 (η), 1 (η with φ, same
+/// sign), 1½, 2 (φ), 2½, 3 (η with φ, opposite signs), 3½; the ring (ξ at 45° to the plane) at
+/// u = 0 (ξ with η), 1, 2, 3.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Tables<T> {
+    pub(super) xi: Curve<T, COARSE, 1>,
+    eta: Curve<T, COARSE, 2>,
+    xieta: Curve<T, COARSE, 3>,
+    plane: [Curve<T, FINE, 2>; 6],
+    ring: [Curve<T, FINE, 3>; 3],
+    /// plane[k] and plane[k + 1] (ring[k], ring[k + 1]) share their grid: one look-up for both.
+    plane_shared: [bool; 5],
+    ring_shared: [bool; 2],
+}
+
+impl<T: Real> Tables<T> {
+    /// For a/b: the generated tables linear in ln(a/b) between the fitted shapes, the end
+    /// shapes outside [0.2, 5] ([`Self::at_ln`] at x = ln(a/b)).
+    pub fn new(a_over_b: T) -> Self {
+        Self::at_ln(T::from_f64(libm::log(super::within(
+            a_over_b.to_f64(),
+            0.2,
+            5.0,
+        ))))
+    }
+
+    /// The plane's nodes `j` and `j + 1` mixed at `t` ∈ [0, 1). (`ring_mix` has the same shape:
+    /// one generic function over both measured 863 against 787 M4F instructions per call, with
+    /// the nodes copied per contact.)
+    #[inline(always)]
+    pub(super) fn plane_mix(&self, j: usize, t: T, lnm: T, m: T, inv_m: T) -> [T; 3] {
+        if t > T::ZERO
+            && j >= 1
+            && self.plane_shared.get(j - 1) == Some(&true)
+            && let (Some(a), Some(b)) = (self.plane.get(j - 1), self.plane.get(j))
+        {
+            let at = a.at(lnm, m, inv_m);
+            return lerp(a.value(at), b.value(at), t);
+        }
+        let a = self.plane(j, lnm, m, inv_m);
+        if t > T::ZERO {
+            lerp(a, self.plane(j + 1, lnm, m, inv_m), t)
+        } else {
+            a
+        }
+    }
+
+    /// The ring's nodes `j` and `j + 1` mixed at `t` ∈ [0, 1).
+    #[inline(always)]
+    pub(super) fn ring_mix(&self, j: usize, t: T, lnm: T, m: T, inv_m: T) -> [T; 3] {
+        if t > T::ZERO
+            && j >= 1
+            && self.ring_shared.get(j - 1) == Some(&true)
+            && let (Some(a), Some(b)) = (self.ring.get(j - 1), self.ring.get(j))
+        {
+            let at = a.at(lnm, m, inv_m);
+            return lerp(a.value(at), b.value(at), t);
+        }
+        let a = self.ring(j, lnm, m, inv_m);
+        if t > T::ZERO {
+            lerp(a, self.ring(j + 1, lnm, m, inv_m), t)
+        } else {
+            a
+        }
+    }
+
+    /// The η–φ plane at node `j` ∈ 0..=7 (u = 0, 1, 1½, … 3½, 4; 7: η mirrored).
+    #[inline(always)]
+    fn plane(&self, j: usize, lnm: T, m: T, inv_m: T) -> [T; 3] {
+        match j {
+            0 => self.eta.eval(lnm, m, inv_m),
+            7 => mirror(self.eta.eval(lnm, m, inv_m)),
+            _ => self.plane[(j - 1).min(5)].eval(lnm, m, inv_m),
+        }
+    }
+
+    /// The ring at node `j` ∈ 0..=4 of u (4: ξ with η mirrored).
+    #[inline(always)]
+    fn ring(&self, j: usize, lnm: T, m: T, inv_m: T) -> [T; 3] {
+        match j {
+            0 => self.xieta.eval(lnm, m, inv_m),
+            4 => mirror(self.xieta.eval(lnm, m, inv_m)),
+            _ => self.ring[(j - 1).min(2)].eval(lnm, m, inv_m),
+        }
+    }
+}
+
+/// The y-reflection: (F_x, −F_y, −M_z).
+#[inline(always)]
+fn mirror<T: Real>(w: [T; 3]) -> [T; 3] {
+    [w[0], -w[1], -w[2]]
+}
+
+/// a + t(b − a), channel by channel.
+#[inline(always)]
+pub(super) fn lerp<T: Real>(a: [T; 3], b: [T; 3], t: T) -> [T; 3] {
+    [
+        a[0] + t * (b[0] - a[0]),
+        a[1] + t * (b[1] - a[1]),
+        a[2] + t * (b[2] - a[2]),
+    ]
+}
+
+impl<T: Real> Tables<T> {
+    /// The tables for a/b = e^x (a contact's, or a per-call shape's: `crate::contact::Rolling`
+    /// with a skewed rolling velocity or a varying contact): the fitted shapes around x and
+    /// the weight between them (linear in ln(a/b), the end shapes outside [0.2, 5]); per curve
+    /// two `exp` (24 in all), no node copied.
+    pub fn at_ln(x: T) -> Self {
+        let (i, u) = super::fitted::between(x);
+        let (lo, hi) = (&DATA[i.min(3)], &DATA[i.min(3) + 1]);
+        let plane: [Curve<T, FINE, 2>; 6] =
+            core::array::from_fn(|k| Curve::between(&lo.plane[k], &hi.plane[k], u));
+        let ring: [Curve<T, FINE, 3>; 3] =
+            core::array::from_fn(|k| Curve::between(&lo.ring[k], &hi.ring[k], u));
+        Self {
+            xi: Curve::between(&lo.xi, &hi.xi, u),
+            eta: Curve::between(&lo.eta, &hi.eta, u),
+            xieta: Curve::between(&lo.xieta, &hi.xieta, u),
+            plane_shared: core::array::from_fn(|k| plane[k].same_grid(&plane[k + 1])),
+            ring_shared: core::array::from_fn(|k| ring[k].same_grid(&ring[k + 1])),
+            plane,
+            ring,
+        }
+    }
+}
