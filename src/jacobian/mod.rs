@@ -12,9 +12,23 @@
 //! A rolling contact also takes the rolling velocity V; it is an input of the step, held
 //! fixed here (no derivative with respect to V).
 
-use crate::friction::rolling::RollingVelocity;
-use crate::friction::Slip;
+mod contact;
+pub mod dual;
+mod dynamic;
+mod lift;
+mod rolling;
+
+pub use contact::At;
+pub use dual::Dual;
+pub use lift::{LinearDamping, LinearLaw, LinearNormal};
+
+/// The dual number of the Jacobian: a value and its derivatives with respect to the five
+/// per-step inputs (h, ḣ, v_Px, v_Py, ω), in that order ([`input`]).
+pub type D5<T> = Dual<T, 5>;
+
 use crate::Real;
+use crate::friction::Slip;
+use crate::friction::rolling::RollingVelocity;
 
 /// Column indices of [`Jacobian::d`]: the per-step inputs q = (h, ḣ, v_Px, v_Py, ω).
 pub mod input {
