@@ -44,6 +44,50 @@ pub(crate) fn pack<T: Real>(w: [D5<T>; 4]) -> Jacobian<T> {
     }
 }
 
+/// At exact rest (v_P = 0, ω = 0) the dual pass gives a zero slip block (the slip state is
+/// all zero there, its derivatives too). For a law with a ramp below δ > 0 ([`LinearLaw::RAMP`])
+/// the slip columns are replaced by the slopes along each axis, w(η·eⱼ)/η with η = δ/4
+/// inside the ramp (ω: η/a), where the law is homogeneous of degree one: the derivative itself
+/// for `coulomb` and `simplified`; for `best`, whose ramp is not differentiable at rest (its
+/// slope depends on the direction), the slope along each axis, which is also what central
+/// differences along that axis give (F is odd). Three plain wrench calls, at rest only.
+#[cold]
+#[inline(never)]
+fn rest_columns<T: Real>(
+    jac: &mut Jacobian<T>,
+    a: T,
+    delta: T,
+    wrench: impl Fn(Slip<T>) -> [T; 4],
+) {
+    let eta = T::from_f64(0.25) * delta;
+    let steps = [
+        (eta, T::ZERO, T::ZERO),
+        (T::ZERO, eta, T::ZERO),
+        (T::ZERO, T::ZERO, eta / a),
+    ];
+    for (k, (vx, vy, w)) in steps.into_iter().enumerate() {
+        let e = vx + vy + w;
+        let col = wrench(Slip::or_rest(vx, vy, w));
+        // N does not depend on the slip; the friction rows take the slope
+        for (row, &x) in jac.d.iter_mut().zip(col.iter()).skip(1) {
+            if let Some(d) = row.get_mut(input::VX + k) {
+                *d = x / e;
+            }
+        }
+    }
+}
+
+/// Whether [`rest_columns`] applies: exact rest, a ramp law, δ > 0, a > 0 (in contact).
+#[inline(always)]
+fn at_rest<T: Real, L: LinearLaw>(s: &State<T>, a: T, delta: T) -> bool {
+    L::RAMP
+        && s.slip.vx() == T::ZERO
+        && s.slip.vy() == T::ZERO
+        && s.slip.omega() == T::ZERO
+        && delta > T::ZERO
+        && a > T::ZERO
+}
+
 /// The wrench from a dual patch and a friction call (the same steps as the plain wrench).
 #[inline(always)]
 fn wrench_dual<T: Real, L: FrictionLaw>(
@@ -81,7 +125,13 @@ where
             .friction()
             .map(Dual::constant)
             .tangential_with(core, clamp, patch.a, patch.n, q.slip);
-        wrench_dual::<T, L>(&patch, t)
+        let mut jac = wrench_dual::<T, L>(&patch, t);
+        let delta = self.friction().delta();
+        if at_rest::<T, L>(s, patch.a.v, delta) {
+            let w = |slip| self.wrench4(&State { slip, ..*s });
+            rest_columns(&mut jac, patch.a.v, delta, w);
+        }
+        jac
     }
 }
 
@@ -138,6 +188,12 @@ where
             patch.n,
             q.slip,
         );
-        wrench_dual::<T, L>(&patch, t)
+        let mut jac = wrench_dual::<T, L>(&patch, t);
+        let delta = friction.delta();
+        if at_rest::<T, L>(s, patch.a.v, delta) {
+            let w = |slip| self.wrench4(&State { slip, ..*s });
+            rest_columns(&mut jac, patch.a.v, delta, w);
+        }
+        jac
     }
 }

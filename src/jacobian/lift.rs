@@ -34,6 +34,11 @@ pub trait LinearDamping<T: Real>: Damping<T> {
 /// Every law of the crate except the reference [`Exact`](crate::friction::Exact), which
 /// computes in `f64` internally (a round trip that drops derivatives).
 pub trait LinearLaw: FrictionLaw {
+    /// Whether the law is a ramp below δ at rest (homogeneous of degree one there: `best`,
+    /// `simplified`, `coulomb`), so that its slope at exact rest along each axis is
+    /// F(η·e)/η for any η inside the ramp; `false` for the laws that ignore δ (`pade`,
+    /// `ellipsoid`: Coulomb's jump at rest, no slope).
+    const RAMP: bool;
     /// [`FrictionLaw::traction_prepared`] on a dual slip state, with the same value bit for bit.
     fn traction_dual<T: Real>(
         p: &Self::Prepared<T>,
@@ -106,6 +111,7 @@ impl<T: Real> LinearDamping<T> for CompressionDamping<T> {
 }
 
 impl LinearLaw for Best {
+    const RAMP: bool = true;
     /// [`crate::friction::BestContact`]'s core with only the piece in use lifted.
     #[inline(always)]
     fn traction_dual<T: Real>(
@@ -118,9 +124,10 @@ impl LinearLaw for Best {
 
 /// The laws whose per-contact form is the [`Constants`]: the core on the lifted constants.
 macro_rules! by_constants {
-    ($($law:ty),* $(,)?) => {
+    ($($law:ty: $ramp:expr),* $(,)?) => {
         $(
             impl LinearLaw for $law {
+                const RAMP: bool = $ramp;
                 #[inline(always)]
                 fn traction_dual<T: Real>(
                     p: &Constants<T>,
@@ -132,13 +139,13 @@ macro_rules! by_constants {
         )*
     };
 }
-by_constants!(Simplified, Pade, Ellipsoid, Coulomb, BestSeries);
+by_constants!(Simplified: true, Pade: false, Ellipsoid: false, Coulomb: true, BestSeries: true);
 #[cfg(feature = "micromath")]
 by_constants!(
-    crate::friction::SimplifiedMicromath,
-    crate::friction::CoulombMicromath,
-    crate::friction::EllipsoidMicromath,
-    crate::friction::BestMicromath,
+    crate::friction::SimplifiedMicromath: true,
+    crate::friction::CoulombMicromath: true,
+    crate::friction::EllipsoidMicromath: false,
+    crate::friction::BestMicromath: true,
 );
 
 /// The per-contact core on dual numbers (for [`crate::friction::Friction`]'s wrapper).
