@@ -80,6 +80,50 @@ pub struct State<T> {
     pub rolling: RollingVelocity<T>,
 }
 
+/// The contract's output columns of the Jacobian (`contact_eval jacobian`, in
+/// [`Jacobian::to_array`] order): the wrench, then ∂wᵢ/∂qⱼ row by row.
+pub const OUTPUTS: [&str; 24] = [
+    "N",
+    "Fx",
+    "Fy",
+    "Tz",
+    "dN_dh",
+    "dN_dhdot",
+    "dN_dvx",
+    "dN_dvy",
+    "dN_domega",
+    "dFx_dh",
+    "dFx_dhdot",
+    "dFx_dvx",
+    "dFx_dvy",
+    "dFx_domega",
+    "dFy_dh",
+    "dFy_dhdot",
+    "dFy_dvx",
+    "dFy_dvy",
+    "dFy_domega",
+    "dTz_dh",
+    "dTz_dhdot",
+    "dTz_dvx",
+    "dTz_dvy",
+    "dTz_domega",
+];
+
+impl<T: Copy> Jacobian<T> {
+    /// The values in [`OUTPUTS`] order: (N, F_x, F_y, T_z), then `d` row by row.
+    pub fn to_array(&self) -> [T; 24] {
+        let [n, fx, fy, tz] = self.value;
+        let mut out = [n; 24];
+        for (o, &x) in out.iter_mut().skip(4).zip(self.d.iter().flatten()) {
+            *o = x;
+        }
+        out[1] = fx;
+        out[2] = fy;
+        out[3] = tz;
+        out
+    }
+}
+
 /// A contact that can give its wrench and the wrench's Jacobian at a per-step state.
 pub trait Linearize<T: Real> {
     /// The wrench (N, F_x, F_y, T_z) alone.
