@@ -533,3 +533,85 @@ fn f32_jacobian_follows_f64() {
     }
     assert!(worst.iter().all(|&e| e < 5e-5), "{worst:?}");
 }
+
+/// Extreme inputs (zeros of both signs, the smallest normal and subnormal numbers, the largest
+/// finite ones) for every law and form: wherever the wrench is finite, so is every derivative
+/// (an overflowed one saturates at ±MAX, 0·∞ is 0). `dense` takes every combination.
+fn extremes<T: contensou::Real>(dense: bool) -> usize {
+    let x = T::from_f64;
+    let all = [
+        0.0, -0.0, 1e-38, 1e-45, 1e-20, 1e-6, 1.0, 1e6, 1e20, 3e38, -1e-30, -1.0,
+    ];
+    let vals: Vec<T> = if dense {
+        all.to_vec()
+    } else {
+        vec![0.0, 1e-38, 1.0, 3e38]
+    }
+    .into_iter()
+    .map(x)
+    .collect();
+    let mut n = 0;
+    for law in Law::ALL {
+        for form in Form::ALL {
+            for (p, ratio) in [(1e-3, 1.0), (10.0, 1e-4), (1e6, 0.5)] {
+                let frictions: &[(f64, f64)] = if dense {
+                    &[(0.0, 0.0), (0.3, 1e-20), (0.3, 1e-4), (1e10, 1e10)]
+                } else {
+                    &[(0.0, 0.0), (0.3, 1e-20)]
+                };
+                for &(f, delta) in frictions {
+                    let sp = Spec {
+                        p: x(p),
+                        q: x(p / ratio),
+                        estar: x(1e11),
+                        cd: x(0.5),
+                        f: x(f),
+                        delta: x(delta),
+                    };
+                    let dc =
+                        DynContact::new_rolling(&sp, &RollingSpec::default(), law, form).unwrap();
+                    for &h in &vals {
+                        for &v in &vals {
+                            for &w in &vals {
+                                let st = Step {
+                                    h,
+                                    hdot: v,
+                                    vx: v,
+                                    vy: -v * T::HALF,
+                                    omega: w,
+                                };
+                                let rs = RollingStep {
+                                    vrx: w,
+                                    vry: T::ZERO,
+                                };
+                                let j = dc.jacobian_rolling(&st, &rs).unwrap();
+                                if j.value.iter().all(|v| v.is_finite()) {
+                                    assert!(
+                                        j.d.iter().flatten().all(|d| d.is_finite()),
+                                        "{law:?} {form:?} {sp:?} {st:?} {rs:?}: {j:?}"
+                                    );
+                                    n += 1;
+                                }
+                            }
+                        }
+                    }
+                }
+            }
+        }
+    }
+    n
+}
+
+#[test]
+fn derivatives_are_finite_at_extreme_inputs() {
+    assert!(extremes::<f32>(false) > 500);
+    assert!(extremes::<f64>(false) > 500);
+}
+
+/// Every combination of the extreme values (release: `--include-ignored`).
+#[test]
+#[ignore = "release-only: ≈ 2.5e5 Jacobians per precision"]
+fn derivatives_are_finite_at_every_extreme_input() {
+    assert!(extremes::<f32>(true) > 100_000);
+    assert!(extremes::<f64>(true) > 100_000);
+}

@@ -35,12 +35,27 @@ impl<T: Real> Inputs<T> {
     }
 }
 
-/// Values and derivatives of (N, F_x, F_y, T_z).
+/// Values and derivatives of (N, F_x, F_y, T_z), the derivatives made finite: one that
+/// overflowed saturates at ±`T::MAX`, a NaN (zero times an overflowed intermediate derivative:
+/// out of contact, f = 0, a slip speed near the float's smallest normal) is 0.
 #[inline(always)]
 pub(crate) fn pack<T: Real>(w: [D5<T>; 4]) -> Jacobian<T> {
     Jacobian {
         value: w.map(|x| x.v),
-        d: w.map(|x| x.d),
+        d: w.map(|x| x.d.map(finite)),
+    }
+}
+
+/// ±∞ → ±`T::MAX`, NaN → 0, anything else unchanged.
+#[inline(always)]
+#[allow(clippy::eq_op)] // `x != x`: the NaN test
+fn finite<T: Real>(x: T) -> T {
+    if x.is_finite() {
+        x
+    } else if x != x {
+        T::ZERO
+    } else {
+        T::MAX.copysign(x)
     }
 }
 
@@ -71,7 +86,7 @@ fn rest_columns<T: Real>(
         // N does not depend on the slip; the friction rows take the slope
         for (row, &x) in jac.d.iter_mut().zip(col.iter()).skip(1) {
             if let Some(d) = row.get_mut(input::VX + k) {
-                *d = x / e;
+                *d = finite(x / e);
             }
         }
     }

@@ -82,7 +82,10 @@
 //!
 //! # Domain and kinks
 //!
-//! Every input the wrench takes; total (finite derivatives for finite inputs). Where the
+//! Every input the wrench takes; total: wherever the wrench is finite, so is every derivative
+//! (a derivative past the float's range saturates at ±`T::MAX`, and zero times an overflowed
+//! intermediate — out of contact, f = 0, a slip speed near the smallest normal float — is 0;
+//! asserted on every combination of extreme inputs, `host-tests/jacobian.rs`). Where the
 //! wrench is not differentiable, the derivative is a one-sided one, by rule:
 //!
 //! | where | derivative returned |
