@@ -40,9 +40,24 @@ impl<T: Real> Inputs<T> {
 /// out of contact, f = 0, a slip speed near the float's smallest normal) is 0.
 #[inline(always)]
 pub(crate) fn pack<T: Real>(w: [D5<T>; 4]) -> Jacobian<T> {
-    Jacobian {
+    let mut jac = Jacobian {
         value: w.map(|x| x.v),
-        d: w.map(|x| x.d.map(finite)),
+        d: w.map(|x| x.d),
+    };
+    // one test on the sum (finite exactly when every term is, unless finite terms overflow
+    // it, which only sends them through `finite` unchanged)
+    if !jac.d.iter().flatten().fold(T::ZERO, |acc, &x| acc + x).is_finite() {
+        saturate(&mut jac);
+    }
+    jac
+}
+
+/// Every derivative through [`finite`] (off the common path).
+#[cold]
+#[inline(never)]
+fn saturate<T: Real>(jac: &mut Jacobian<T>) {
+    for x in jac.d.iter_mut().flatten() {
+        *x = finite(*x);
     }
 }
 
