@@ -139,10 +139,11 @@
 //! 64-slip mixed set; a loaded shared machine): `f32` `best` fixed 267 ns (wrench 59 ns:
 //! 4.5×), varying 673 ns (204: 3.3×); `simplified` fixed 220 ns (26: 8.4×), varying 250 ns
 //! (105: 2.4×); `f64` `best` fixed 324 ns (73: 4.4×). Cortex-M4F (`f32`, QEMU, stage
-//! `jacobian` of `bench-results/qemu.csv`, same scene and slips): **1,512** instructions per
-//! call with per-contact tables (`jacobian,fixed-best`; the wrench alone 184: 8.2×; ≈2,741
-//! cycles by `bench-results/cycles.csv`), **3,166** with the shape by table each step
-//! (`jacobian,table_each_step-best`; the wrench 521: 6.1×). The ratio is the dual numbers'
+//! `jacobian` of `bench-results/qemu.csv`, same scene and slips): **1,542** instructions per
+//! call with per-contact tables (`jacobian,fixed-best`; the wrench alone 184: 8.4×; ≈2,777
+//! cycles by `bench-results/cycles.csv`), **3,217** with the shape by table each step
+//! (`jacobian,table_each_step-best`; the wrench 521: 6.2×), the finiteness guard included
+//! (one test on the derivatives' sum). The ratio is the dual numbers'
 //! (each product carries five derivatives on a scalar FPU) — the price of one code path for
 //! every law, bit-identical values and no per-law derivation; an analytic Jacobian of `best`
 //! alone would be the route to ≈2×.
