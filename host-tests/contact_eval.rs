@@ -4,8 +4,7 @@
 
 mod contract;
 
-use std::io::Write;
-use std::process::{Command, Output, Stdio};
+use std::process::Output;
 
 use contensou::Real;
 use contensou::dynamic::{Form, INPUTS, Law, OUTPUTS, Spec, Step};
@@ -14,16 +13,7 @@ use contract::{bits, generic, specs, steps};
 
 /// Runs `contact_eval args…` with `input` on stdin.
 fn run(args: &[&str], input: &str) -> Output {
-    let mut child = Command::new(env!("CARGO_BIN_EXE_contact_eval"))
-        .args(args)
-        .stdin(Stdio::piped())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .expect("contact_eval runs");
-    // A usage error exits before reading stdin: a broken pipe is part of that outcome.
-    let _ = child.stdin.take().unwrap().write_all(input.as_bytes());
-    child.wait_with_output().unwrap()
+    contract::run_contact_eval(args, input)
 }
 
 fn row<T: Real>(spec: &Spec<T>, s: &Step<T>) -> [T; 11] {
@@ -186,7 +176,7 @@ fn usage_errors_name_the_value_and_exit_2() {
         ),
         (
             &["nope"],
-            "subcommand = nope: unknown (one of wrench, elliptic, eccentricity, hertz, friction, rolling)",
+            "subcommand = nope: unknown (one of wrench, elliptic, eccentricity, hertz, friction, rolling, jacobian)",
         ),
     ] {
         let out = run(args, &header);

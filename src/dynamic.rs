@@ -218,6 +218,20 @@ pub struct Step<T> {
     pub omega: T,
 }
 
+impl<T: Real> Step<T> {
+    /// `h, hdot` and the slip, each finite (any NaN or ±∞ is [`Error::NonFinite`] naming the
+    /// column).
+    #[inline]
+    pub(crate) fn validated(&self) -> Result<(T, T, Slip<T>), Invalid> {
+        let h = at("h", finite(self.h, "h"))?;
+        let hdot = at("hdot", finite(self.hdot, "hdot"))?;
+        let vx = at("vx", finite(self.vx, "vx"))?;
+        let vy = at("vy", finite(self.vy, "vy"))?;
+        let omega = at("omega", finite(self.omega, "omega"))?;
+        Ok((h, hdot, at("vx", Slip::new(vx, vy, omega))?))
+    }
+}
+
 /// The optional contact columns `G, nu` of the rolling laws (`None`: absent, the default).
 ///
 /// - `G` (Pa), the pair's combined shear modulus: default E*·(1 − ν) (quasi-identical
@@ -352,7 +366,7 @@ impl fmt::Display for Invalid {
 impl core::error::Error for Invalid {}
 
 /// Tags an error with the column it came from.
-fn at<V>(column: &'static str, r: Result<V, Error>) -> Result<V, Invalid> {
+pub(crate) fn at<V>(column: &'static str, r: Result<V, Error>) -> Result<V, Invalid> {
     r.map_err(|error| Invalid { column, error })
 }
 
@@ -572,12 +586,7 @@ impl<T: Real> DynContact<T> {
         step: &Step<T>,
         rolling: &RollingStep<T>,
     ) -> Result<Output<T>, Invalid> {
-        let h = at("h", finite(step.h, "h"))?;
-        let hdot = at("hdot", finite(step.hdot, "hdot"))?;
-        let vx = at("vx", finite(step.vx, "vx"))?;
-        let vy = at("vy", finite(step.vy, "vy"))?;
-        let omega = at("omega", finite(step.omega, "omega"))?;
-        let slip = at("vx", Slip::new(vx, vy, omega))?;
+        let (h, hdot, slip) = step.validated()?;
         let c = &self.curvatures;
         Ok(match &self.contact {
             ByLaw::Best(x) => x.wrench(c, h, hdot, slip),

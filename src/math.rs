@@ -122,7 +122,8 @@ fn on_f32<T: Real>(
     f: impl FnOnce(micromath::F32) -> micromath::F32,
     fallback: fn(T) -> T,
 ) -> T {
-    if T::MANTISSA_DIGITS == f32::MANTISSA_DIGITS {
+    // A dual number takes the fallback (libm), whose derivative the round trip would drop.
+    if T::MANTISSA_DIGITS == f32::MANTISSA_DIGITS && !T::DERIVATIVES {
         T::from_f64(f64::from(f(micromath::F32(x.to_f64() as f32)).0))
     } else {
         fallback(x)

@@ -256,6 +256,16 @@ impl<T: Real> HuntCrossley<T> {
     }
 }
 
+impl<T: Copy> HuntCrossley<T> {
+    /// The coefficient through `f` (the dual form of the Jacobian).
+    #[inline(always)]
+    pub(crate) fn map<U>(&self, f: impl Fn(T) -> U) -> HuntCrossley<U> {
+        HuntCrossley {
+            three_halves_cd: f(self.three_halves_cd),
+        }
+    }
+}
+
 impl<T: Real> Damping<T> for HuntCrossley<T> {
     #[inline(always)]
     fn force(&self, elastic: T, _h: T, hdot: T) -> T {
@@ -285,6 +295,14 @@ impl<T: Real> CompressionDamping<T> {
     #[inline(always)]
     pub(crate) fn coefficient(&self) -> T {
         self.d
+    }
+}
+
+impl<T: Copy> CompressionDamping<T> {
+    /// The coefficient through `f` (the dual form of the Jacobian).
+    #[inline(always)]
+    pub(crate) fn map<U>(&self, f: impl Fn(T) -> U) -> CompressionDamping<U> {
+        CompressionDamping { d: f(self.d) }
     }
 }
 
@@ -365,6 +383,21 @@ pub struct Hertz<T> {
     p0_coef: T,
     e2: T,
     m1: T,
+}
+
+impl<T: Copy> Hertz<T> {
+    /// Every constant through `f` (the dual form of the Jacobian: constants lifted).
+    #[inline(always)]
+    pub(crate) fn map<U>(&self, f: impl Fn(T) -> U) -> Hertz<U> {
+        Hertz {
+            a_coef: f(self.a_coef),
+            b_coef: f(self.b_coef),
+            k_h: f(self.k_h),
+            p0_coef: f(self.p0_coef),
+            e2: f(self.e2),
+            m1: f(self.m1),
+        }
+    }
 }
 
 impl<T: Real> Hertz<T> {
@@ -477,7 +510,7 @@ impl<T: Real> Hertz<T> {
 #[cfg(feature = "micromath")]
 #[cfg_attr(docsrs, doc(cfg(feature = "micromath")))]
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct HertzMicromath<T>(Hertz<T>);
+pub struct HertzMicromath<T>(pub(crate) Hertz<T>);
 
 #[cfg(feature = "micromath")]
 #[cfg_attr(docsrs, doc(cfg(feature = "micromath")))]
@@ -538,7 +571,7 @@ impl<T: Real> NormalLaw<T> for HertzMicromath<T> {
 /// geometry (unchanged behaviour) and stays finite, with the error above. For elongated
 /// contacts use [`Fitted`] (≤ 1.3e-5 over g ∈ [1e-4, 1], same per-step cost).
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Volumetric<T>(Hertz<T>);
+pub struct Volumetric<T>(pub(crate) Hertz<T>);
 
 impl<T: Real> Volumetric<T> {
     /// Smallest g = P/Q accepted by [`Volumetric::checked`]: the force error stays within
@@ -601,7 +634,7 @@ impl<T: Real> NormalLaw<T> for Volumetric<T> {
 /// cheap enough per step when the geometry changes: [`Fitted::clamped`] + `patch` = 134 M4F
 /// instructions (f32), 6,995 (f64). Per step: as [`Hertz::patch`].
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Fitted<T>(Hertz<T>);
+pub struct Fitted<T>(pub(crate) Hertz<T>);
 
 impl<T: Real> Fitted<T> {
     /// From validated curvatures. Errors: [`Error::CurvatureRatioOutOfRange`] if P/Q < 1e-4.

@@ -22,15 +22,16 @@ use core::fmt::{Debug, Display};
 use core::ops::{Add, AddAssign, Div, DivAssign, Mul, MulAssign, Neg, Sub, SubAssign};
 use core::str::FromStr;
 
-mod sealed {
+pub(crate) mod sealed {
     pub trait Sealed {}
     impl Sealed for f32 {}
     impl Sealed for f64 {}
 }
 
-/// A floating-point scalar: `f32` or `f64`.
+/// A floating-point scalar: `f32` or `f64` (and, inside the crate, the forward-mode
+/// [`Dual`](crate::jacobian::Dual) numbers over them that differentiate the wrench).
 ///
-/// Sealed: the crate's accuracy statements are measured for these two types only.
+/// Sealed: the crate's accuracy statements are measured for these types only.
 pub trait Real:
     sealed::Sealed
     + Copy
@@ -56,12 +57,21 @@ pub trait Real:
 {
     /// `"f32"` or `"f64"`, for reports and benchmark labels.
     const NAME: &'static str;
-    /// Of a generated table kept in both precisions, the one in `Self`'s: `single` for `f32`,
-    /// `double` for `f64`. Resolved at compile time; no per-call conversion, no fallback.
+    /// `true` for the forward-mode [`Dual`](crate::jacobian::Dual) numbers, whose
+    /// derivatives a round trip through `f64` or a bit-level shortcut would drop.
+    const DERIVATIVES: bool = false;
+    /// The underlying precision: `f32` or `f64` itself (a dual number's: that of its value).
+    type Base: Real;
+    /// Of a generated table kept in both precisions, the one in `Self::Base`'s: `single` for
+    /// `f32`, `double` for `f64`. Resolved at compile time; no per-call conversion, no
+    /// fallback. Read an entry with [`Real::from_base`] (the identity for `f32` and `f64`).
     fn of_precision<'a, const W: usize, const C: usize>(
         single: &'a [[f32; W]; C],
         double: &'a [[f64; W]; C],
-    ) -> &'a [[Self; W]; C];
+    ) -> &'a [[Self::Base; W]; C];
+    /// A value of the underlying precision as `Self` (the identity for `f32` and `f64`; a
+    /// constant for a dual number).
+    fn from_base(x: Self::Base) -> Self;
     /// Significand bits including the implicit one: 24 or 53. Use it to pick fixed iteration
     /// counts per precision (`if T::MANTISSA_DIGITS > 24 { .. }` folds at compile time).
     const MANTISSA_DIGITS: u32;
@@ -154,6 +164,7 @@ macro_rules! impl_real {
      $cos:ident, $sincos:ident, $atan2:ident, $cbrt:ident, $hypot:ident, $floor:ident) => {
         impl Real for $t {
             const NAME: &'static str = $name;
+            type Base = $t;
             const MANTISSA_DIGITS: u32 = $t::MANTISSA_DIGITS;
             const ZERO: Self = 0.0;
             const ONE: Self = 1.0;
@@ -172,6 +183,10 @@ macro_rules! impl_real {
                 double: &'a [[f64; W]; C],
             ) -> &'a [[Self; W]; C] {
                 (single, double).$own
+            }
+            #[inline(always)]
+            fn from_base(x: Self) -> Self {
+                x
             }
             #[inline(always)]
             fn from_f64(x: f64) -> Self {

@@ -443,13 +443,13 @@ impl Table {
 
 /// The coefficient table in `T`'s own precision (no per-call conversion).
 #[inline(always)]
-fn coefficients<T: Real>() -> &'static [[T; table_data::WIDTH]; table_data::CELLS] {
+fn coefficients<T: Real>() -> &'static [[T::Base; table_data::WIDTH]; table_data::CELLS] {
     T::of_precision(&table_data::TABLE_F32, &table_data::TABLE_F64)
 }
 
 /// Horner on the coefficients `row[offset..offset + DEGREE + 1]`, constant term first.
 #[inline(always)]
-fn horner<T: Real>(row: &[T; table_data::WIDTH], offset: usize, u: T) -> T {
+fn horner<T: Real>(row: &[T::Base; table_data::WIDTH], offset: usize, u: T) -> T {
     let mut acc = T::ZERO;
     for (k, &c) in row
         .iter()
@@ -458,6 +458,7 @@ fn horner<T: Real>(row: &[T; table_data::WIDTH], offset: usize, u: T) -> T {
         .rev()
         .enumerate()
     {
+        let c = T::from_base(c);
         acc = if k == 0 { c } else { acc * u + c };
     }
     acc
@@ -477,9 +478,9 @@ impl Eccentricity for Table {
         let u = s - T::from_usize(i);
         let row = &table[i];
         let n = table_data::DEGREE + 1;
-        let r1 = horner(row, 0, u);
-        let b = horner(row, n, u);
-        let d = horner(row, 2 * n, u);
+        let r1 = horner::<T>(row, 0, u);
+        let b = horner::<T>(row, n, u);
+        let d = horner::<T>(row, 2 * n, u);
         Shape {
             c: (T::ONE - g) * r1,
             m1: g * b / d,

@@ -32,6 +32,7 @@ stages! {
     bench_frame,
     bench_scene,
     bench_rolling,
+    bench_jacobian,
 }
 
 #[entry]

@@ -121,3 +121,20 @@ pub fn generic<T: Real>(law: Law, spec: &Spec<T>, form: Form, s: &Step<T>) -> [T
         Law::Fastsim16 => generic_rolling_of::<T, FastsimGrid<16, 16>>(spec, form, s),
     }
 }
+
+/// Runs the built `contact_eval args…` with `input` on stdin (for the tests of the binary).
+#[allow(dead_code)] // not every test of the contract runs the binary
+pub fn run_contact_eval(args: &[&str], input: &str) -> std::process::Output {
+    use std::io::Write;
+    use std::process::{Command, Stdio};
+    let mut child = Command::new(env!("CARGO_BIN_EXE_contact_eval"))
+        .args(args)
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("contact_eval runs");
+    // A usage error exits before reading stdin: a broken pipe is part of that outcome.
+    let _ = child.stdin.take().unwrap().write_all(input.as_bytes());
+    child.wait_with_output().unwrap()
+}

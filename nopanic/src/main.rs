@@ -241,6 +241,35 @@ mod api {
             Ratio::new(g).map(|g| (HamrockDowson::shape(g), HamrockDowson::solve(g)))
         }
         fn probe_shape_table<T>(g) { shape::Table::shape(Ratio::clamped(g)) }
+        // the wrench's Jacobian (contensou::jacobian): the contract (every law and form, the
+        // rolling columns) and the generic contacts' Linearize
+        fn probe_jacobian_dynamic<T>(p, q, e, cd, f, delta, h, hdot, vx, vy, om, vrx, vry) {
+            use contensou::dynamic::{DynContact, Form, Law, RollingSpec, RollingStep, Spec, Step};
+            let spec = Spec { p, q, estar: e, cd, f, delta };
+            let step = Step { h, hdot, vx, vy, omega: om };
+            for law in Law::ALL {
+                for form in Form::ALL {
+                    let Ok(c) = DynContact::new_rolling(&spec, &RollingSpec::default(), black_box(law), black_box(form))
+                    else { continue };
+                    black_box(c.jacobian_rolling(&step, &RollingStep { vrx, vry })).ok();
+                }
+            }
+        }
+        fn probe_jacobian_contact<T>(p, q, e, f, delta, h, hdot, vx, vy, om, d) {
+            use contensou::friction::rolling::RollingVelocity;
+            use contensou::jacobian::{Linearize, State};
+            let (Ok(c), Ok(e), Ok(fr), Ok(s), Ok(cdamp)) = (
+                Curvatures::new(p, q),
+                Modulus::new(e),
+                Friction::<T, Best>::with_law(f, delta),
+                Slip::new(vx, vy, om),
+                CompressionDamping::new(d),
+            ) else { return };
+            let state = State { h, hdot, slip: s, rolling: RollingVelocity::ZERO };
+            let Ok(contact) = Contact::hertz::<Newton>(&c, e, cdamp, fr) else { return };
+            let varying = VaryingContact::new(e, cdamp, fr);
+            (contact.linearize(&state), varying.at(&c).linearize(&state))
+        }
         // normal
         fn probe_material_modulus<T>(e1, n1, e2, n2, es) {
             let m = (Material::new(e1, n1), Material::new(e2, n2));

@@ -120,8 +120,8 @@ pub trait RollingBase<T: Real> {
 /// between them for a skewed rolling velocity.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct FixedShapes<T> {
-    axes: [RollingShape<T>; 2],
-    path: ShapePath<T>,
+    pub(crate) axes: [RollingShape<T>; 2],
+    pub(crate) path: ShapePath<T>,
 }
 
 impl<T: Real, N, D> RollingBase<T> for Contact<T, N, D, Best> {
@@ -161,9 +161,9 @@ impl<T: Real, D> RollingBase<T> for VaryingContact<T, D, Best> {
 /// friction [`Best`]), the pair's [`Elasticity`] and the rolling law `L` (see the
 /// [module docs](self)).
 pub struct Rolling<T: Real, C: RollingBase<T>, L> {
-    contact: C,
-    elasticity: Elasticity<T>,
-    cache: C::Cache,
+    pub(crate) contact: C,
+    pub(crate) elasticity: Elasticity<T>,
+    pub(crate) cache: C::Cache,
     law: PhantomData<L>,
 }
 
@@ -226,7 +226,7 @@ impl<T: Real, C: RollingBase<T>, L: RollingLaw> Rolling<T, C, L> {
 
 /// The rolling frame of a rolling velocity: (cos θ, sin θ) of V and |V|; V = 0: θ = 0.
 #[inline(always)]
-fn direction<T: Real>(v: RollingVelocity<T>) -> (T, T, T) {
+pub(crate) fn direction<T: Real>(v: RollingVelocity<T>) -> (T, T, T) {
     let m = v.vx.abs().max(v.vy.abs());
     if m <= T::ZERO {
         return (T::ONE, T::ZERO, T::ZERO);
@@ -238,7 +238,7 @@ fn direction<T: Real>(v: RollingVelocity<T>) -> (T, T, T) {
 
 /// Where the creep shape of a step comes from.
 #[derive(Clone, Copy)]
-enum Shapes<'a, T> {
+pub(crate) enum Shapes<'a, T> {
     /// Cached and exact (rolling along an axis, or a circle).
     One(&'a RollingShape<T>),
     /// The aligned ellipse's shape from the contact's path ([`ShapePath::shape`]), per call.
@@ -248,7 +248,7 @@ enum Shapes<'a, T> {
 }
 
 /// What one step needs besides the creep shape: the patch, f, E*-free parts.
-struct Step<T> {
+pub(crate) struct Step<T> {
     patch: Patch<T>,
     /// fN (N), 0 without contact
     fn_: T,
@@ -338,7 +338,7 @@ impl<T: Real, D: Damping<T>, L: RollingLaw> Rolling<T, VaryingContact<T, D, Best
 
 impl<T: Real> Step<T> {
     #[inline(always)]
-    fn of(patch: Patch<T>, f: T) -> Self {
+    pub(crate) fn of(patch: Patch<T>, f: T) -> Self {
         let fn_ = if patch.n > T::ZERO && patch.a > T::ZERO && patch.b > T::ZERO {
             f * patch.n
         } else {
@@ -351,7 +351,7 @@ impl<T: Real> Step<T> {
 /// The tangential part (see the module docs): the rolling frame, the creep shape (cached or
 /// built), the full slip on the real patch, the law, back to the contact frame.
 #[inline(always)]
-fn tangential<T: Real, L: RollingLaw>(
+pub(crate) fn tangential<T: Real, L: RollingLaw>(
     step: &Step<T>,
     shapes: Shapes<'_, T>,
     elasticity: Elasticity<T>,

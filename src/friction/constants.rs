@@ -34,6 +34,23 @@ pub struct Constants<T> {
     inv_5c: T,
 }
 
+impl<T: Copy> Constants<T> {
+    /// Every field through `f` (the dual form of the Jacobian: constants lifted).
+    #[inline(always)]
+    pub(crate) fn map<U>(&self, f: impl Fn(T) -> U) -> Constants<U> {
+        Constants {
+            m: f(self.m),
+            m1: f(self.m1),
+            a: f(self.a),
+            b: f(self.b),
+            c: f(self.c),
+            inv_a: f(self.inv_a),
+            inv_b: f(self.inv_b),
+            inv_5c: f(self.inv_5c),
+        }
+    }
+}
+
 impl<T: Real> Constants<T> {
     /// From a validated parameter m = e², computing K, E, B, D with method `M`.
     #[inline]

@@ -159,6 +159,18 @@ impl<T: Real> Friction<T> {
     }
 }
 
+impl<T: Copy, L> Friction<T, L> {
+    /// f and δ through `g` (the dual form of the Jacobian).
+    #[inline(always)]
+    pub(crate) fn map<U>(&self, g: impl Fn(T) -> U) -> Friction<U, L> {
+        Friction {
+            f: g(self.f),
+            delta: g(self.delta),
+            law: PhantomData,
+        }
+    }
+}
+
 impl<T: Real, L: FrictionLaw> Friction<T, L> {
     /// The law `L` (named by a turbofish, `Friction::<f64, Simplified>::with_law(0.3, 1e-4)`,
     /// or inferred from where the value goes) from the friction coefficient `f` ≥ 0 and the

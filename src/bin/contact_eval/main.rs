@@ -24,6 +24,7 @@ mod csv;
 mod elliptic;
 mod friction;
 mod hertz;
+mod jacobian;
 mod rolling;
 mod wrench;
 
@@ -130,7 +131,7 @@ struct Subcommand {
     run: fn(Args) -> Result<ExitCode, String>,
 }
 
-const SUBCOMMANDS: [Subcommand; 6] = [
+const SUBCOMMANDS: [Subcommand; 7] = [
     Subcommand {
         name: "wrench",
         columns: "P,Q,estar,cd,f,delta,h,hdot,vx,vy,omega -> N,Fx,Fy,Tz,a,b,e2",
@@ -166,6 +167,12 @@ const SUBCOMMANDS: [Subcommand; 6] = [
         columns: "a,b,G,nu,f,N,V,xi,eta,phi -> Fx,Fy,Mz",
         help: rolling::help,
         run: rolling::run,
+    },
+    Subcommand {
+        name: "jacobian",
+        columns: "P,Q,estar,cd,f,delta,h,hdot,vx,vy,omega -> N,Fx,Fy,Tz,dN_dh,...,dTz_domega",
+        help: jacobian::help,
+        run: jacobian::run,
     },
 ];
 

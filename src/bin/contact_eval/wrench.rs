@@ -54,16 +54,34 @@ const COLUMNS: &str =
 
 /// The help text.
 pub fn help() -> String {
+    format!("{COLUMNS}{}", help_options())
+}
+
+/// The `--law` and `--form` lists (shared with the subcommands of the same contract).
+pub fn help_options() -> String {
     let laws = list("--law", Law::ALL.iter().map(|&l| (l.name(), about_law(l))));
     let forms = list(
         "--form",
         Form::ALL.iter().map(|&f| (f.name(), about_form(f))),
     );
-    format!("{COLUMNS}{laws}{forms}")
+    format!("{laws}{forms}")
 }
 
 /// Run the subcommand, or say why the options are wrong.
-pub fn run(mut args: Args) -> Result<ExitCode, String> {
+pub fn run(args: Args) -> Result<ExitCode, String> {
+    let (law, form, precision) = options(args)?;
+    Ok(match precision {
+        Precision::F32 => rows::<f32>(&OUTPUTS, &|c, rs, s, rv| {
+            dynamic::wrench_rolling(c, rs, law, form, s, rv).map(|o| o.to_array().to_vec())
+        }),
+        Precision::F64 => rows::<f64>(&OUTPUTS, &|c, rs, s, rv| {
+            dynamic::wrench_rolling(c, rs, law, form, s, rv).map(|o| o.to_array().to_vec())
+        }),
+    })
+}
+
+/// The options of the contract's subcommands: `--law`, `--form` and the precision.
+pub fn options(mut args: Args) -> Result<(Law, Form, Precision), String> {
     let law = by_name("--law", args.take(&["--law"]), &Law::ALL, |l| l.name())?;
     let form = by_name("--form", args.take(&["--form"]), &Form::ALL, |f| f.name())?;
     let (law, form) = (
@@ -72,14 +90,18 @@ pub fn run(mut args: Args) -> Result<ExitCode, String> {
     );
     let precision = args.precision;
     args.finish()?;
-    Ok(match precision {
-        Precision::F32 => rows::<f32>(law, form),
-        Precision::F64 => rows::<f64>(law, form),
-    })
+    Ok((law, form, precision))
 }
 
-fn rows<T: Real + LowerExp>(law: Law, form: Form) -> ExitCode {
-    run_csv_optional::<T>(&INPUTS, &ROLLING_INPUTS, &OUTPUTS, &mut |r, o| {
+/// One row's evaluation: the contact and rolling columns, the step and rolling-step columns →
+/// the output columns, or the rejected column.
+pub type Eval<'a, T> =
+    dyn Fn(&Spec<T>, &RollingSpec<T>, &Step<T>, &RollingStep<T>) -> Result<Vec<T>, Invalid> + 'a;
+
+/// The contract's rows (the 11 columns, the optional rolling ones) through `eval`; a rejected
+/// column is reported with its value.
+pub fn rows<T: Real + LowerExp>(outputs: &[&str], eval: &Eval<'_, T>) -> ExitCode {
+    run_csv_optional::<T>(&INPUTS, &ROLLING_INPUTS, outputs, &mut |r, o| {
         let spec = Spec {
             p: r[0],
             q: r[1],
@@ -104,8 +126,8 @@ fn rows<T: Real + LowerExp>(law: Law, form: Form) -> ExitCode {
             vrx: get(2).unwrap_or(T::ZERO),
             vry: get(3).unwrap_or(T::ZERO),
         };
-        match dynamic::wrench_rolling(&spec, &rolling_spec, law, form, &step, &rolling_step) {
-            Ok(out) => Ok(out.to_array().to_vec()),
+        match eval(&spec, &rolling_spec, &step, &rolling_step) {
+            Ok(out) => Ok(out),
             Err(Invalid { column, error }) => {
                 let value = INPUTS
                     .iter()

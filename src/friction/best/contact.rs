@@ -6,6 +6,7 @@ use super::series::{M1_THIN, Series};
 use super::{Branch, assemble, bounded, confocal, inside};
 use crate::Real;
 use crate::friction::{Constants, SlipState, Traction, larger};
+use crate::jacobian::Dual;
 use crate::math::Libm;
 
 /// Number of cubic pieces in z of [`BestContact`]: 8 for e² ≤ 0.99, 12 for the thinner
@@ -128,6 +129,27 @@ impl<T: Real> BestContact<T> {
         let r = zn - T::from_usize(i);
         let piece = &self.pieces[i];
         let co = piece.map(|p| p[0] + r * (p[1] + r * (p[2] + r * p[3])));
+        (bounded(assemble(c, sn, tau, &co)), Branch::Outside)
+    }
+
+    /// [`BestContact::traction`] on a dual slip state: the same operations, the constants
+    /// lifted where they are read (the quartic's twelve, and only the piece in use, not the
+    /// tables), so that the value is the plain call's bit for bit.
+    #[inline(always)]
+    pub(crate) fn traction_dual<const K: usize>(
+        &self,
+        s: &SlipState<Dual<T, K>>,
+    ) -> (Traction<Dual<T, K>>, Branch) {
+        let lift = Dual::<T, K>::constant;
+        if let Some(r) = inside(&self.quartic.map(lift), s) {
+            return r;
+        }
+        let (c, sn, tau, one_minus) = confocal(lift(self.m), lift(self.g1), s.x(), s.y(), s.w());
+        let zn = larger(one_minus, Dual::ZERO).sqrt() * lift(self.nt);
+        let i = zn.trunc_usize().min(PIECES - 1);
+        let r = zn - Dual::from_usize(i);
+        let piece = &self.pieces[i];
+        let co = piece.map(|p| lift(p[0]) + r * (lift(p[1]) + r * (lift(p[2]) + r * lift(p[3]))));
         (bounded(assemble(c, sn, tau, &co)), Branch::Outside)
     }
 }

@@ -38,6 +38,27 @@ pub(crate) const C40_SERIES: [f64; 8] = [
     -0.0013461845311320366,
 ];
 
+impl<T: Copy> Quartic<T> {
+    /// Every constant through `f` (the dual form of the Jacobian).
+    #[inline(always)]
+    pub(crate) fn map<U>(&self, f: impl Fn(T) -> U) -> Quartic<U> {
+        Quartic {
+            a: f(self.a),
+            b: f(self.b),
+            c: f(self.c),
+            k22: f(self.k22),
+            k40: f(self.k40),
+            k40m: f(self.k40m),
+            hb: f(self.hb),
+            ha: f(self.ha),
+            t40: f(self.t40),
+            t22: f(self.t22),
+            t40m: f(self.t40m),
+            m1: f(self.m1),
+        }
+    }
+}
+
 impl<T: Real> Quartic<T> {
     #[inline(always)]
     pub(crate) fn new(k: &Constants<T>) -> Self {

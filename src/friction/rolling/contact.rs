@@ -112,6 +112,18 @@ pub struct RollingShape<T> {
     pub(crate) table: super::residual::Tables<T>,
 }
 
+impl<T: Copy> RollingShape<T> {
+    /// Every `T` field through `f` (the dual form of the Jacobian).
+    pub(crate) fn map<U>(&self, f: impl Fn(T) -> U + Copy) -> RollingShape<U> {
+        RollingShape {
+            rho: f(self.rho),
+            kalker: self.kalker.map(f),
+            blend: (f(self.blend.0), f(self.blend.1)),
+            table: self.table.map(f),
+        }
+    }
+}
+
 impl<T: Real> RollingShape<T> {
     /// For a/b (a along the rolling direction), clamped to [0.01, 100] (NaN: 1), and ν ∈
     /// [0, 0.5] (an [`Elasticity`]'s). Total.

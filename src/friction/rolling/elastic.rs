@@ -33,6 +33,16 @@ pub struct Elasticity<T> {
     nu: T,
 }
 
+impl<T: Copy> Elasticity<T> {
+    /// G and ν through `f` (the dual form of the Jacobian).
+    pub(crate) fn map<U>(&self, f: impl Fn(T) -> U) -> Elasticity<U> {
+        Elasticity {
+            g: f(self.g),
+            nu: f(self.nu),
+        }
+    }
+}
+
 impl<T: Real> Elasticity<T> {
     /// Quasi-identical bodies: G (Pa) > 0, ν ∈ [0, 0.5].
     pub fn new(g: T, nu: T) -> Result<Self, Error> {

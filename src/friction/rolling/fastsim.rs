@@ -147,20 +147,20 @@ impl<const NX: usize, const NY: usize> RollingLaw for FastsimGrid<NX, NY> {
         let inv_v = T::ONE / v.max(T::MIN_POSITIVE);
         let (mut fx, mut fy, mut mz) = (T::ZERO, T::ZERO, T::ZERO);
         for j in 0..NY {
-            let (yy, sj) = (cy[j], sy[j]);
+            let (yy, sj) = (T::from_base(cy[j]), T::from_base(sy[j]));
             let (dx0, dy0) = (ax0 - ax1 * yy, ay0);
             let (ex0, ey0) = (bx0 - bx1 * yy, by0);
             let (mut px, mut py) = (T::ZERO, T::ZERO);
             let (mut sfx, mut sfy, mut smz) = (T::ZERO, T::ZERO, T::ZERO);
             let mut xprev = sj;
             for kk in 1..NX {
-                let x = sj * cx[kk];
+                let x = sj * T::from_base(cx[kk]);
                 let dxx = xprev - x;
                 let xm = T::HALF * (xprev + x);
                 xprev = x;
                 let qx = v * px - dxx * dx0;
                 let qy = v * py - dxx * (dy0 + ay1 * xm);
-                let g = sj * sx[kk];
+                let g = sj * T::from_base(sx[kk]);
                 let bound = v * g;
                 let q2 = qx * qx + qy * qy;
                 if q2 <= bound * bound {
@@ -176,7 +176,7 @@ impl<const NX: usize, const NY: usize> RollingLaw for FastsimGrid<NX, NY> {
                     px = ddx * s;
                     py = ddy * s;
                 }
-                let wk = sx[kk];
+                let wk = T::from_base(sx[kk]);
                 sfx += wk * px;
                 sfy += wk * py;
                 smz += wk * (rho * x * py - irho * yy * px);

@@ -254,6 +254,18 @@ pub(crate) fn coefficients_f64(a_over_b: f64, nu: f64) -> [f64; 3] {
     out
 }
 
+impl<T: Copy> Kalker<T> {
+    /// Every coefficient through `f` (the dual form of the Jacobian).
+    pub(crate) fn map<U>(&self, f: impl Fn(T) -> U) -> Kalker<U> {
+        Kalker {
+            c11: f(self.c11),
+            c22: f(self.c22),
+            c23: f(self.c23),
+            c33: f(self.c33),
+        }
+    }
+}
+
 impl<T: Real> Kalker<T> {
     /// The coefficients for a/b (a along the rolling direction) and ν, both already
     /// validated (a/b ∈ [0.01, 100], ν ∈ [0, 0.5]); computed in `f64`.

@@ -31,6 +31,21 @@ enum At<T> {
     Above(T),
 }
 
+impl<T: Copy, const N: usize, const C: usize> Curve<T, N, C> {
+    /// Every `T` field through `f` (the dual form of the Jacobian).
+    pub(crate) fn map<U>(&self, f: impl Fn(T) -> U) -> Curve<U, N, C> {
+        Curve {
+            x0: f(self.x0),
+            inv_dx: f(self.inv_dx),
+            inv_m0: f(self.inv_m0),
+            m_last: f(self.m_last),
+            lo: self.lo,
+            hi: self.hi,
+            u: f(self.u),
+        }
+    }
+}
+
 impl<T: Real, const N: usize, const C: usize> Curve<T, N, C> {
     /// The curve for a/b between the shapes `lo` and `hi` at the weight `u` ∈ [0, 1]: ln m₀ and
     /// Δ(ln m) linear in `u` (rounded to `T`), two `exp`.
@@ -119,6 +134,21 @@ pub struct Tables<T> {
     /// plane[k] and plane[k + 1] (ring[k], ring[k + 1]) share their grid: one look-up for both.
     plane_shared: [bool; 5],
     ring_shared: [bool; 2],
+}
+
+impl<T: Copy> Tables<T> {
+    /// Every `T` field through `f` (the dual form of the Jacobian).
+    pub(crate) fn map<U>(&self, f: impl Fn(T) -> U + Copy) -> Tables<U> {
+        Tables {
+            xi: self.xi.map(f),
+            eta: self.eta.map(f),
+            xieta: self.xieta.map(f),
+            plane: self.plane.map(|c| c.map(f)),
+            ring: self.ring.map(|c| c.map(f)),
+            plane_shared: self.plane_shared,
+            ring_shared: self.ring_shared,
+        }
+    }
 }
 
 impl<T: Real> Tables<T> {

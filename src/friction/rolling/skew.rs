@@ -101,6 +101,17 @@ pub struct ShapePath<T> {
     kinks: u32,
 }
 
+impl<T: Copy> ShapePath<T> {
+    /// Every `T` field through `f` (the dual form of the Jacobian).
+    pub(crate) fn map<U>(&self, f: impl Fn(T) -> U + Copy) -> ShapePath<U> {
+        ShapePath {
+            x: self.x.map(f),
+            kalker: self.kalker.map(|k| k.map(f)),
+            kinks: self.kinks,
+        }
+    }
+}
+
 impl<T: Real> ShapePath<T> {
     /// For aligned ratios in [e^{lo}, e^{hi}] and ν ∈ [0, 0.5] (an [`super::Elasticity`]'s).
     pub fn new(lo: T, hi: T, nu: T) -> Self {

@@ -1,0 +1,72 @@
+//! criterion: the wrench's Jacobian ([`Linearize::linearize`]) against the plain wrench on the
+//! wrench benches' scene and mixed slip set (benches/wrench_set.rs), fixed and varying
+//! geometry, `best` and `simplified`, f32 and f64: the cost ratio of the dual-number form.
+use std::hint::black_box;
+use std::time::Duration;
+
+use contensou::Real;
+use contensou::contact::{Contact, VaryingContact};
+use contensou::friction::rolling::RollingVelocity;
+use contensou::friction::{Best, Friction, FrictionLaw, Simplified, Slip};
+use contensou::geometry::{Curvatures, Race};
+use contensou::jacobian::{LinearLaw, Linearize, State};
+use contensou::normal::{Hertz, Modulus, Undamped};
+use contensou::shape::Newton;
+use criterion::{Criterion, criterion_group, criterion_main};
+
+include!("friction_set.rs");
+include!("wrench_set.rs");
+
+fn jacobian<T: Real, L: LinearLaw>(c: &mut Criterion) {
+    let (curv, contact, varying, h, slips) = wrench_scene::<T, L>();
+    let states = slips.map(|slip| State {
+        h,
+        hdot: T::ZERO,
+        slip,
+        rolling: RollingVelocity::ZERO,
+    });
+    let at = varying.at(&curv);
+    let mut i = 0;
+    let name = |what: &str, form: &str| format!("jacobian/{what}/{form}/{}/{}", L::NAME, T::NAME);
+    c.bench_function(&name("wrench", "fixed"), |b| {
+        b.iter(|| {
+            i = (i + 1) % SET;
+            black_box(contact.wrench4(black_box(&states[i])))
+        })
+    });
+    c.bench_function(&name("linearize", "fixed"), |b| {
+        b.iter(|| {
+            i = (i + 1) % SET;
+            black_box(contact.linearize(black_box(&states[i])))
+        })
+    });
+    c.bench_function(&name("wrench", "table_each_step"), |b| {
+        b.iter(|| {
+            i = (i + 1) % SET;
+            black_box(at.wrench4(black_box(&states[i])))
+        })
+    });
+    c.bench_function(&name("linearize", "table_each_step"), |b| {
+        b.iter(|| {
+            i = (i + 1) % SET;
+            black_box(at.linearize(black_box(&states[i])))
+        })
+    });
+}
+
+fn benches(c: &mut Criterion) {
+    jacobian::<f32, Best>(c);
+    jacobian::<f32, Simplified>(c);
+    jacobian::<f64, Best>(c);
+    jacobian::<f64, Simplified>(c);
+}
+
+criterion_group! {
+    name = group;
+    config = Criterion::default()
+        .warm_up_time(Duration::from_millis(300))
+        .measurement_time(Duration::from_secs(1))
+        .sample_size(30);
+    targets = benches
+}
+criterion_main!(group);

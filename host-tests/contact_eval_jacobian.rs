@@ -1,0 +1,125 @@
+//! `contact_eval jacobian` (the built binary): bit for bit [`DynContact::jacobian_rolling`] for
+//! every law × form × precision (with and without the rolling columns), its N,Fx,Fy,Tz those
+//! of `wrench`; bad rows refused as `wrench` refuses them.
+
+mod contract;
+
+use contensou::Real;
+use contensou::dynamic::{DynContact, Form, INPUTS, Law, RollingSpec, RollingStep};
+use contensou::jacobian::OUTPUTS;
+
+use contract::{bits, generic, run_contact_eval as run, specs, steps};
+
+fn matches_the_library<T: Real>(precision: &str) {
+    let x = T::from_f64;
+    let velocity = RollingStep {
+        vrx: x(1.5),
+        vry: x(-0.4),
+    };
+    let mut input = format!("{},vrx,vry\n", INPUTS.join(","));
+    let mut rows = Vec::new();
+    for spec in specs::<T>() {
+        for s in steps::<T>() {
+            let r = [
+                spec.p,
+                spec.q,
+                spec.estar,
+                spec.cd,
+                spec.f,
+                spec.delta,
+                s.h,
+                s.hdot,
+                s.vx,
+                s.vy,
+                s.omega,
+                velocity.vrx,
+                velocity.vry,
+            ];
+            let text: Vec<String> = r.iter().map(|v| v.to_string()).collect();
+            input += &(text.join(",") + "\n");
+            rows.push((spec, s));
+        }
+    }
+    for law in Law::ALL {
+        for form in Form::ALL {
+            let args = [
+                "jacobian",
+                "--law",
+                law.name(),
+                "--form",
+                form.name(),
+                "--precision",
+                precision,
+            ];
+            let out = run(&args, &input);
+            assert!(
+                out.status.success(),
+                "{args:?}: {}",
+                String::from_utf8_lossy(&out.stderr)
+            );
+            let stdout = String::from_utf8(out.stdout).unwrap();
+            let mut lines = stdout.lines();
+            assert_eq!(
+                lines.next().unwrap(),
+                format!("{},vrx,vry,{}", INPUTS.join(","), OUTPUTS.join(","))
+            );
+            let mut n = 0;
+            for (line, (spec, s)) in lines.zip(&rows) {
+                let got: Vec<T> = line.split(',').map(|f| f.parse().ok().unwrap()).collect();
+                assert_eq!(got.len(), 13 + 24, "{line}");
+                let dc = DynContact::new_rolling(spec, &RollingSpec::default(), law, form).unwrap();
+                let want = dc.jacobian_rolling(s, &velocity).unwrap().to_array();
+                let wrench = dc.wrench_rolling(s, &velocity).unwrap().to_array();
+                let raw = |v: &[T]| v.iter().map(|x| x.to_f64().to_bits()).collect::<Vec<_>>();
+                assert_eq!(raw(&got[13..]), raw(&want), "{args:?}: {line}");
+                assert_eq!(raw(&got[13..17]), raw(&wrench[..4]), "{args:?}: {line}");
+                if Law::SLIDING.contains(&law) {
+                    // the rolling columns are not read: the generic contact's wrench
+                    let g = bits(generic(law, spec, form, s));
+                    assert_eq!(raw(&got[13..17]), g[..4].to_vec(), "{args:?}: {line}");
+                }
+                n += 1;
+            }
+            assert_eq!(n, rows.len());
+        }
+    }
+}
+
+#[test]
+fn jacobian_is_bit_identical_to_the_library() {
+    matches_the_library::<f64>("f64");
+    matches_the_library::<f32>("f32");
+}
+
+#[test]
+fn jacobian_refuses_bad_rows_as_wrench_does() {
+    let good = "10,400,1.15e11,0.3,0.2,1e-4,2e-6,0.01,-3e-3,2e-3,25";
+    for (bad, message) in [
+        (
+            "10,400,1.15e11,0.3,0.2,1e-4,NaN,0.01,-3e-3,2e-3,25",
+            "h = NaN: not a number (NaN)",
+        ),
+        (
+            "500,400,1.15e11,0.3,0.2,1e-4,2e-6,0.01,-3e-3,2e-3,25",
+            "P = 500: curvatures must satisfy P <= Q (x is the major axis)",
+        ),
+        (
+            "10,400,1.15e11,0.3,-0.2,1e-4,2e-6,0.01,-3e-3,2e-3,25",
+            "f = -0.2: friction coefficient is negative",
+        ),
+    ] {
+        let input = format!("{}\n{good}\n{bad}\n", INPUTS.join(","));
+        for sub in ["jacobian", "wrench"] {
+            let out = run(&[sub], &input);
+            assert_eq!(out.status.code(), Some(1), "{sub} {bad}");
+            assert_eq!(
+                String::from_utf8_lossy(&out.stderr),
+                format!("contact_eval: row 2: {message}\n"),
+                "{sub} {bad}"
+            );
+        }
+    }
+    let out = run(&["jacobian", "--help"], "");
+    assert!(out.status.success());
+    assert!(String::from_utf8_lossy(&out.stdout).contains("dTz_domega"));
+}
