@@ -1,0 +1,159 @@
+//! The projections after the linear solve: the friction pair into the law's full-slip limit
+//! set, and the power checks (force and drilling torque separately).
+//!
+//! # The limit set
+//!
+//! At normal force N the friction pair p = (F_x, F_y, T_z) of every law here lies in the
+//! convex set C(N) whose boundary is the law's **full-slip** value: for a slip direction
+//! s = (v_x, v_y, ω), p_fs(s) = lim_{λ→∞} w(λs). For the Contensou laws p_fs(s) is the point
+//! of C extreme in the direction −s (maximal dissipation), so C = {p : −p·s ≤ −p_fs(s)·s ∀s}.
+//! The projection tests the one supporting plane whose contact point has (nearly) p's
+//! direction: with F_max = |F_fs| of a pure translation along p's force, T_max = |T_fs| of a
+//! pure spin of p's sign and R̄ = T_max/F_max, the ellipsoidal dual s* = −(F_x, F_y, T_z/R̄²)
+//! (exact for [`crate::friction::Ellipsoid`], close for the others); p is accepted when
+//! −p·s* ≤ (1 + [`LIMIT_TOLERANCE`])·(−p_fs(s*)·s*), else replaced by p_fs(s*) (a value of the
+//! law itself, so inside C exactly). The full slip is evaluated at the linearisation's gap,
+//! scaled by N̄/N_l (the limit set is proportional to N at a fixed patch), at
+//! [`FULL_SLIP_SPEED`] (and [`FULL_SLIP_SPIN`] for pure spin). Cost: three wrench calls.
+
+use crate::Real;
+use crate::friction::Slip;
+use crate::jacobian::{Linearize, State};
+
+/// The slip speed (m/s) at which a friction pair is taken as full slip (must exceed the law's
+/// regularisation δ and, for a rolling law, its saturation creep speed, by far): 1e3 m/s.
+pub const FULL_SLIP_SPEED: f64 = 1e3;
+
+/// The spin (rad/s) of the pure-spin full-slip evaluation: 1e9 rad/s (a·ω ≥ 1e3 m/s for a
+/// patch of a ≥ 1 µm).
+pub const FULL_SLIP_SPIN: f64 = 1e9;
+
+/// The relative tolerance of the limit-set test: a friction pair within 1e-3 of the supporting
+/// plane is kept as it is (the laws' own maximal-dissipation defect; `best` is exact-grade).
+pub const LIMIT_TOLERANCE: f64 = 1e-3;
+
+fn full_slip<T: Real>(c: &dyn Linearize<T>, l: &State<T>, vx: T, vy: T, w: T) -> [T; 4] {
+    c.wrench4(&State {
+        slip: Slip::or_rest(vx, vy, w),
+        ..*l
+    })
+}
+
+/// Moves the friction pair of `w` (solved N̄ = w[0] > 0) into the limit set at N̄ (module
+/// docs). `l` is the linearisation state, `n_l` > 0 its normal force. Returns whether anything
+/// changed.
+pub(crate) fn into_limit_set<T: Real>(
+    c: &dyn Linearize<T>,
+    l: &State<T>,
+    n_l: T,
+    w: &mut [T; 4],
+) -> bool {
+    let [n, fx, fy, tz] = *w;
+    let had = fx != T::ZERO || fy != T::ZERO || tz != T::ZERO;
+    if !had {
+        return false;
+    }
+    if !(n > T::ZERO) || !(n_l > T::ZERO) {
+        w[1] = T::ZERO;
+        w[2] = T::ZERO;
+        w[3] = T::ZERO;
+        return true;
+    }
+    let sigma = n / n_l;
+    let vfs = T::from_f64(FULL_SLIP_SPEED);
+    let wfs = T::from_f64(FULL_SLIP_SPIN);
+    let fmag = fx.hypot(fy);
+    let (ex, ey) = if fmag > T::ZERO {
+        (fx / fmag, fy / fmag)
+    } else {
+        (T::ONE, T::ZERO)
+    };
+    let tr = full_slip(c, l, -ex * vfs, -ey * vfs, T::ZERO);
+    let f_max = sigma * tr[1].hypot(tr[2]);
+    let sign = if tz > T::ZERO { T::ONE } else { -T::ONE };
+    let sp = full_slip(c, l, T::ZERO, T::ZERO, -sign * wfs);
+    let t_max = sigma * sp[3].abs();
+    let f_ok = f_max > T::ZERO && f_max.is_finite();
+    let t_ok = t_max > T::ZERO && t_max.is_finite();
+    let (mut fx, mut fy, mut tz) = (fx, fy, tz);
+    let mut changed = false;
+    if !f_ok && fmag > T::ZERO {
+        fx = T::ZERO;
+        fy = T::ZERO;
+        changed = true;
+    }
+    if !t_ok && tz != T::ZERO {
+        tz = T::ZERO;
+        changed = true;
+    }
+    // The dual slip direction s* and the full-slip point p_b there.
+    let (sx, sy, sw, pb) = match (f_ok, t_ok) {
+        (false, false) => {
+            w[1] = T::ZERO;
+            w[2] = T::ZERO;
+            w[3] = T::ZERO;
+            return true;
+        }
+        (true, false) => {
+            let (sx, sy) = (-fx, -fy);
+            let m = sx.abs().max(sy.abs());
+            if !(m > T::ZERO) {
+                w[1] = fx;
+                w[2] = fy;
+                w[3] = tz;
+                return changed;
+            }
+            let k = vfs / m;
+            (sx, sy, T::ZERO, full_slip(c, l, sx * k, sy * k, T::ZERO))
+        }
+        (false, true) => {
+            if tz == T::ZERO {
+                w[1] = fx;
+                w[2] = fy;
+                w[3] = tz;
+                return changed;
+            }
+            (T::ZERO, T::ZERO, -tz, sp)
+        }
+        (true, true) => {
+            let rbar = t_max / f_max;
+            let sw = -tz / (rbar * rbar);
+            let (sx, sy) = (-fx, -fy);
+            let m = sx.abs().max(sy.abs()).max(rbar * sw.abs());
+            if !(m > T::ZERO) || !m.is_finite() {
+                w[1] = fx;
+                w[2] = fy;
+                w[3] = tz;
+                return changed;
+            }
+            let k = vfs / m;
+            (sx, sy, sw, full_slip(c, l, sx * k, sy * k, sw * k))
+        }
+    };
+    let (bx, by, bt) = (sigma * pb[1], sigma * pb[2], sigma * pb[3]);
+    // −p·s* (> 0) against −p_b·s* (the support value D(s*)).
+    let dp = -(fx * sx + fy * sy + tz * sw);
+    let db = -(bx * sx + by * sy + bt * sw);
+    if dp > db * (T::ONE + T::from_f64(LIMIT_TOLERANCE)) {
+        let (bx, by, bt) = if t_ok {
+            (bx, by, bt)
+        } else {
+            (bx, by, T::ZERO)
+        };
+        let (bx, by) = if f_ok { (bx, by) } else { (T::ZERO, T::ZERO) };
+        if (bx + by + bt).is_finite() {
+            fx = bx;
+            fy = by;
+            tz = bt;
+        } else {
+            fx = T::ZERO;
+            fy = T::ZERO;
+            tz = T::ZERO;
+        }
+        changed = true;
+    }
+    w[1] = fx;
+    w[2] = fy;
+    w[3] = tz;
+    changed
+}
