@@ -7,6 +7,8 @@
 //! The contacts are linearised by central differences of the wrench itself
 //! ([`contensou::step::Numeric`]): an independent reference for the derivatives.
 
+#![allow(clippy::needless_range_loop)] // small dense matrices by index
+
 use contensou::Error;
 use contensou::contact::Contact;
 use contensou::frame::{Frame, MajorAxis};
@@ -418,4 +420,328 @@ fn a_resting_ball_settles_at_large_steps() {
         assert!((n - M * G).abs() < 1e-6 * M * G, "{dt}: N {n} vs {}", M * G);
         assert!(s.hdot.abs() < 1e-9);
     }
+}
+
+/// Sticking: a ball on a plane pushed along x by a tangential acceleration of half what
+/// friction can hold (u_free,x = v + a_t·Δt), at steps from 0.1 ms to 20 ms (the friction
+/// ramp's explicit limit is ≈ 20 µs here): the end slip stays below δ at every step, never
+/// changes sign, and the friction force holds the push on average.
+#[test]
+fn sticking_keeps_the_end_slip_below_delta_at_any_step() {
+    let delta = 1e-4;
+    for law in 0..2 {
+        let lin_best = numeric(contact::<Best>(delta), 1e-7);
+        let lin_coul = numeric(contact::<Coulomb>(delta), 1e-7);
+        let lin: &dyn Linearize<f64> = if law == 0 { &lin_best } else { &lin_coul };
+        let w = w_ball();
+        let wm = InverseMass::single(w).unwrap();
+        // the push, as a slip acceleration: half of f·N·W_xx at N = mg
+        let a_t = 0.5 * F * M * G * w[1][1];
+        for dt in [1e-4, 1e-3, 5e-3, 2e-2] {
+            let tstep = TimeStep::new(dt).unwrap();
+            let mut s = state(h_static(), 0.0, 0.0, 0.0, 0.0);
+            let mut worst = 0.0_f64;
+            let mut impulse = 0.0;
+            let steps = (0.2 / dt) as usize;
+            for _ in 0..steps {
+                let u = [
+                    -s.hdot - G * dt,
+                    s.slip.vx() + a_t * dt,
+                    s.slip.vy(),
+                    s.slip.omega(),
+                ];
+                let free = Free::predicted(tstep, &s, u).unwrap();
+                let o = step_wrenches([lin], tstep, &wm, &[s], &[free])[0];
+                assert!(o.u_end[1] >= 0.0, "law {law} dt {dt}: slip flipped: {o:?}");
+                worst = worst.max(o.u_end[1]);
+                impulse += o.wrench[1] * dt;
+                s = state(o.h_end, -o.u_end[0], o.u_end[1], o.u_end[2], o.u_end[3]);
+            }
+            assert!(worst < delta, "law {law} dt {dt}: end slip {worst} ≥ δ");
+            // friction's mean force balances the push (within the slip's own growth)
+            let mean = -impulse / (steps as f64 * dt) * w[1][1];
+            assert!(
+                (mean - a_t).abs() < 0.02 * a_t,
+                "law {law} dt {dt}: {mean} vs {a_t}"
+            );
+        }
+    }
+}
+
+/// Slip reversal: a ball sliding at 1 cm/s (100 δ) that friction stops within one 5 ms step
+/// (f·g·W_xx·m·Δt ≈ 1.7 cm/s): the step detects the reversal, the end slip is below δ and keeps
+/// its sign; the force is the one that stops the slip, −v/(Δt·W_xx), not the full fN
+/// (which would drive the slip to −0.7 cm/s and back every step). The same for the spin
+/// (δ = 1e-9 so that the spin is in full slip: aω ≫ δ).
+#[test]
+fn a_slip_that_would_reverse_within_the_step_is_stopped() {
+    let dt = 5e-3;
+    let tstep = TimeStep::new(dt).unwrap();
+    let w = w_ball();
+    let wm = InverseMass::single(w).unwrap();
+    let delta = 1e-4;
+    let lin = numeric(contact::<Best>(delta), 1e-7);
+    let mut s = state(h_static(), 0.0, 0.01, 0.0, 0.0);
+    for k in 0..50 {
+        let free = under_gravity(dt, &s);
+        let o = step_wrench(&lin, tstep, &wm, &s, &free);
+        if k == 0 {
+            assert!(o.flags.reversed_slip || o.flags.force_scaled, "{o:?}");
+            let stop = -0.01 / (dt * w[1][1]);
+            assert!(
+                (o.wrench[1] - stop).abs() < 0.01 * stop.abs(),
+                "{o:?} vs {stop}"
+            );
+        }
+        assert!(o.u_end[1] >= 0.0 && o.u_end[1] < delta, "step {k}: {o:?}");
+        s = state(o.h_end, -o.u_end[0], o.u_end[1], o.u_end[2], o.u_end[3]);
+    }
+    // Spin: full slip down to 1e-9 m/s.
+    let lin = numeric(contact::<Best>(1e-9), 1e-10);
+    let hs = h_static();
+    let a = (R * hs).sqrt();
+    let om = 1e-3; // a·ω ≈ 2.8e-8 m/s ≫ δ; the torque (≈ 2e-3 rad/s per step) stops it
+    let mut s = state(hs, 0.0, 0.0, 0.0, om);
+    for k in 0..20 {
+        let free = under_gravity(dt, &s);
+        let o = step_wrench(&lin, tstep, &wm, &s, &free);
+        if k == 0 {
+            assert!(o.flags.reversed_spin || o.flags.torque_scaled, "{o:?}");
+        }
+        assert!(
+            o.u_end[3] >= 0.0 && a * o.u_end[3] < 1e-9,
+            "step {k}: {o:?}"
+        );
+        s = state(o.h_end, -o.u_end[0], o.u_end[1], o.u_end[2], o.u_end[3]);
+    }
+}
+
+/// xorshift64*: a fixed, reproducible stream in [0, 1).
+struct Rng(u64);
+impl Rng {
+    fn next(&mut self) -> f64 {
+        self.0 ^= self.0 >> 12;
+        self.0 ^= self.0 << 25;
+        self.0 ^= self.0 >> 27;
+        (self.0.wrapping_mul(0x2545_F491_4F6C_DD1D) >> 11) as f64 / (1u64 << 53) as f64
+    }
+    fn range(&mut self, lo: f64, hi: f64) -> f64 {
+        lo + (hi - lo) * self.next()
+    }
+    fn log(&mut self, lo: f64, hi: f64) -> f64 {
+        10f64.powf(self.range(lo, hi))
+    }
+    fn sign(&mut self) -> f64 {
+        if self.next() < 0.5 { -1.0 } else { 1.0 }
+    }
+}
+
+/// Worst figures of a random run: friction power over its rounding scale (force, torque), the
+/// largest excess over the limit set's supporting planes, the smallest N.
+#[derive(Debug, Default)]
+struct Worst {
+    force_power: f64,
+    torque_power: f64,
+    limit: f64,
+    reversals: usize,
+    limited: usize,
+    scaled: usize,
+}
+
+/// Random states, steps and bodies for friction law `L` (module docs of src/step/): every
+/// result finite, N ≥ 0, F·v⁺ ≤ 0 and T_z·ω⁺ ≤ 0 (up to rounding: 1e-12 of |F|·(|v_free| +
+/// |Δv|)) with u⁺ = u_free + Δt·W·w̄ computed here, and the friction pair inside the law's
+/// full-slip limit set at N̄: −p·s ≤ (1 + tol)·D(s) over 26 support directions s, D(s) the
+/// law's full-slip dissipation at the patch of N̄.
+fn random_run<L: FrictionLaw>(n: usize, seed: u64) -> Worst {
+    let mut rng = Rng(seed);
+    let k = k_hertz();
+    let hs = h_static();
+    let mut worst = Worst::default();
+    for case in 0..n {
+        let f = rng.range(0.05, 0.8);
+        let delta = rng.log(-6.0, -2.0);
+        let c = Contact::circular(
+            &Curvatures::sphere_plane(R).unwrap(),
+            Modulus::new(ESTAR).unwrap(),
+            Undamped,
+            Friction::<f64, L>::with_law(f, delta).unwrap(),
+        )
+        .unwrap();
+        let wrench = move |s: &State<f64>| {
+            let w = c.wrench(s.h, s.hdot, s.slip);
+            [w.n, w.fx, w.fy, w.tz]
+        };
+        let dv = 1e-3 * delta;
+        let lin = Numeric::new(wrench, [1e-5 * hs, 1e-6, dv, dv, dv / 1e-4]);
+        // A random body: mass, an inertia of the ball's order with random axes, the centre
+        // above the contact point with a random offset.
+        let m = rng.log(-3.0, 0.0);
+        let mut a = [[0.0; 3]; 3];
+        for r in a.iter_mut() {
+            for e in r.iter_mut() {
+                *e = rng.range(-1.0, 1.0);
+            }
+        }
+        let mut inertia = [[0.0; 3]; 3];
+        for r in 0..3 {
+            for cc in 0..3 {
+                let mut s = if r == cc { 0.2 } else { 0.0 };
+                for q in 0..3 {
+                    s += 0.3 * a[r][q] * a[cc][q];
+                }
+                inertia[r][cc] = m * R * R * s;
+            }
+        }
+        let centre = [
+            rng.range(-1.0, 1.0) * R,
+            rng.range(-1.0, 1.0) * R,
+            rng.range(0.5, 1.5) * R,
+        ];
+        let body = Body::new(m, inertia, centre).unwrap();
+        let phi = rng.range(0.0, 6.3);
+        let frame = Frame::new(
+            [0.0, 0.0, 1.0],
+            [phi.cos(), phi.sin(), 0.0],
+            MajorAxis::from_cos_sin(1.0, 0.0),
+        );
+        let cp = ContactPoint {
+            a: None,
+            b: Some(0),
+            point: [0.0; 3],
+            frame,
+        };
+        let wm = InverseMass::<f64, 1>::from_bodies(&[body], &[cp]).unwrap();
+        let dt = rng.log(-5.0, -2.0);
+        let tstep = TimeStep::new(dt).unwrap();
+        let h = if rng.next() < 0.1 {
+            -hs * rng.next()
+        } else {
+            hs * rng.log(-1.0, 1.0)
+        };
+        let speed = rng.log(-7.0, 0.0);
+        let dir = rng.range(0.0, 6.3);
+        let om = rng.sign() * rng.log(-3.0, 3.0);
+        let s = state(
+            h,
+            rng.range(-1e-2, 1e-2),
+            speed * dir.cos(),
+            speed * dir.sin(),
+            om,
+        );
+        let u = [
+            -s.hdot - G * dt * rng.range(0.0, 2.0),
+            s.slip.vx() + rng.range(-1.0, 1.0) * speed,
+            s.slip.vy() + rng.range(-1.0, 1.0) * speed,
+            s.slip.omega() * rng.range(0.0, 2.0),
+        ];
+        let free = Free::predicted(tstep, &s, u).unwrap();
+        let o = step_wrench(&lin, tstep, &wm, &s, &free);
+        let w = o.wrench;
+        assert!(w.iter().all(|x| x.is_finite()), "case {case}: {o:?}");
+        assert!(w[0] >= 0.0, "case {case}: {o:?}");
+        // u⁺ here, from W and the wrench.
+        let mut up = u;
+        for r in 0..4 {
+            for cc in 0..4 {
+                up[r] += dt * wm.get(r, cc) * w[cc];
+            }
+        }
+        let fmag = w[1].hypot(w[2]);
+        let fp = w[1] * up[1] + w[2] * up[2];
+        let fscale = fmag * (u[1].hypot(u[2]) + (up[1] - u[1]).hypot(up[2] - u[2]));
+        if fp > 0.0 {
+            worst.force_power = worst.force_power.max(fp / fscale);
+            assert!(fp <= 1e-12 * fscale, "case {case}: F·v⁺ = {fp:e}: {o:?}");
+        }
+        let tp = w[3] * up[3];
+        let tscale = w[3].abs() * (u[3].abs() + (up[3] - u[3]).abs());
+        if tp > 0.0 {
+            worst.torque_power = worst.torque_power.max(tp / tscale);
+            assert!(tp <= 1e-12 * tscale, "case {case}: T·ω⁺ = {tp:e}: {o:?}");
+        }
+        worst.reversals += (o.flags.reversed_slip || o.flags.reversed_spin) as usize;
+        worst.limited += o.flags.limited as usize;
+        worst.scaled += (o.flags.force_scaled || o.flags.torque_scaled) as usize;
+        if w[0] > 0.0 && (fmag > 0.0 || w[3] != 0.0) {
+            // The limit set at N̄: the patch of h = (N̄/k)^{2/3}, full slip at 1e4 m/s.
+            let hn = (w[0] / k).powf(2.0 / 3.0);
+            let a_n = (R * hn).sqrt();
+            let mut dirs: Vec<[f64; 3]> = vec![
+                [1.0, 0.0, 0.0],
+                [-1.0, 0.0, 0.0],
+                [0.0, 1.0, 0.0],
+                [0.0, -1.0, 0.0],
+                [0.0, 0.0, 1.0],
+                [0.0, 0.0, -1.0],
+                // the pair's own ellipsoidal dual direction
+                [-w[1], -w[2], -w[3] / (0.589 * a_n)],
+            ];
+            for _ in 0..19 {
+                dirs.push([
+                    rng.range(-1.0, 1.0),
+                    rng.range(-1.0, 1.0),
+                    rng.range(-1.0, 1.0),
+                ]);
+            }
+            for d in dirs {
+                let m_ = d[0].abs().max(d[1].abs()).max(d[2].abs());
+                if m_ == 0.0 {
+                    continue;
+                }
+                // s = (v_x, v_y, a·ω) direction → slip (v_x, v_y, ω)
+                let sc = 1e4 / m_;
+                let sl = Slip::new(d[0] * sc, d[1] * sc, d[2] * sc / a_n).unwrap();
+                let pf = c.wrench(hn, 0.0, sl);
+                let scale = w[0] / pf.n;
+                let s3 = [d[0], d[1], d[2] / a_n];
+                let dsup = -(pf.fx * s3[0] + pf.fy * s3[1] + pf.tz * s3[2]) * scale;
+                let dp = -(w[1] * s3[0] + w[2] * s3[1] + w[3] * s3[2]);
+                let excess = (dp - dsup) / dsup.abs().max(1e-300);
+                worst.limit = worst.limit.max(excess);
+            }
+        }
+    }
+    worst
+}
+
+/// Limit-set bound per law: 2e-3 relative for the laws whose full-slip value is the support
+/// point of their own limit set (maximal dissipation: `best`, `coulomb`, `ellipsoid`); the
+/// measured excess for `simplified` (4.4e-2 on 300 states), whose full-slip values are not (the
+/// supporting plane at the ellipsoidal dual then does not bound the set); `pade` is checked for
+/// passivity only (its full-slip values are far from support points: 0.47 by this measure).
+const LIMIT_BOUND: [(&str, f64); 5] = [
+    ("best", 2e-3),
+    ("coulomb", 2e-3),
+    ("ellipsoid", 2e-3),
+    ("simplified", 0.1),
+    ("pade", f64::INFINITY),
+];
+
+fn run_all(n: usize, seed: u64) {
+    use contensou::friction::{Ellipsoid, Pade, Simplified};
+    let runs = [
+        random_run::<Best>(n, seed),
+        random_run::<Coulomb>(n, seed + 1),
+        random_run::<Ellipsoid>(n, seed + 2),
+        random_run::<Simplified>(n, seed + 3),
+        random_run::<Pade>(n, seed + 4),
+    ];
+    for ((name, bound), wst) in LIMIT_BOUND.iter().zip(runs) {
+        eprintln!("{name}: {wst:?}");
+        assert!(wst.limit < *bound, "{name}: {wst:?}");
+    }
+}
+
+#[test]
+fn passive_and_inside_the_limit_set_on_random_states() {
+    run_all(300, 1);
+}
+
+/// The release run on 1e5 random states per law (`cargo test --release --test step_wrench --
+/// --include-ignored`).
+#[test]
+#[ignore]
+fn passive_and_inside_the_limit_set_on_1e5_random_states() {
+    run_all(100_000, 11);
 }

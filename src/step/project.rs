@@ -12,9 +12,11 @@
 //! pure spin of p's sign and R̄ = T_max/F_max, the ellipsoidal dual s* = −(F_x, F_y, T_z/R̄²)
 //! (exact for [`crate::friction::Ellipsoid`], close for the others); p is accepted when
 //! −p·s* ≤ (1 + [`LIMIT_TOLERANCE`])·(−p_fs(s*)·s*), else replaced by p_fs(s*) (a value of the
-//! law itself, so inside C exactly). The full slip is evaluated at the linearisation's gap,
-//! scaled by N̄/N_l (the limit set is proportional to N at a fixed patch), at
-//! [`FULL_SLIP_SPEED`] (and [`FULL_SLIP_SPIN`] for pure spin). Cost: three wrench calls.
+//! law itself, so inside C exactly). The full slip is evaluated at the patch of N̄ (the gap
+//! where the law's N equals N̄, by [`PATCH_STEPS`] regula-falsi steps from the
+//! linearisation's gap; the remaining mismatch scaled out by N̄/N, the limit set being
+//! proportional to N at a fixed patch), at [`FULL_SLIP_SPEED`] (and [`FULL_SLIP_SPIN`] for
+//! pure spin). Cost: three wrench calls plus the patch's.
 
 use crate::Real;
 use crate::friction::Slip;
@@ -39,6 +41,56 @@ fn full_slip<T: Real>(c: &dyn Linearize<T>, l: &State<T>, vx: T, vy: T, w: T) ->
     })
 }
 
+/// Regula-falsi steps of [`patch_of`].
+pub const PATCH_STEPS: usize = 4;
+
+/// The approach h at which the law's normal force is `n` (ḣ and the rest of `l` held), from
+/// the linearisation's (h_ℓ, N_ℓ): the root lies between h_ℓ and h_ℓ·n/N_ℓ for every normal
+/// law with N(0) = 0 and N(h)/h non-decreasing (Hertz h^{3/2}, every law here), so
+/// [`PATCH_STEPS`] regula-falsi steps on that bracket (one wrench call each). Returns the state
+/// there and its normal force (the end with the smaller residual).
+fn patch_of<T: Real>(c: &dyn Linearize<T>, l: &State<T>, n_l: T, n: T) -> (State<T>, T) {
+    let at = |h: T| {
+        let s = State { h, ..*l };
+        let v = c.wrench4(&s)[0];
+        (s, if v.is_finite() { v } else { T::ZERO })
+    };
+    let h2 = l.h * (n / n_l);
+    let (mut a, mut b) = if h2 < l.h { (h2, l.h) } else { (l.h, h2) };
+    if !(a < b) || !b.is_finite() {
+        return (*l, n_l);
+    }
+    let (mut sa, mut na) = at(a);
+    let (mut sb, mut nb) = if h2 < l.h { (*l, n_l) } else { at(b) };
+    for _ in 0..PATCH_STEPS {
+        let (fa, fb) = (na - n, nb - n);
+        if !(fb > fa) {
+            break;
+        }
+        let x = a - fa * (b - a) / (fb - fa);
+        if !(x > a && x < b) {
+            break;
+        }
+        let (sx, nx) = at(x);
+        if nx < n {
+            a = x;
+            sa = sx;
+            na = nx;
+        } else {
+            b = x;
+            sb = sx;
+            nb = nx;
+        }
+    }
+    if (nb - n).abs() < (n - na).abs() && nb > T::ZERO {
+        (sb, nb)
+    } else if na > T::ZERO {
+        (sa, na)
+    } else {
+        (sb, nb)
+    }
+}
+
 /// Moves the friction pair of `w` (solved N̄ = w[0] > 0) into the limit set at N̄ (module
 /// docs). `l` is the linearisation state, `n_l` > 0 its normal force. Returns whether anything
 /// changed.
@@ -59,7 +111,16 @@ pub(crate) fn into_limit_set<T: Real>(
         w[3] = T::ZERO;
         return true;
     }
-    let sigma = n / n_l;
+    // The patch of N̄: the limit set's size (fN, fNa) at the gap where the law gives N̄.
+    let (ls, n_at) = patch_of(c, l, n_l, n);
+    let l = &ls;
+    if !(n_at > T::ZERO) {
+        w[1] = T::ZERO;
+        w[2] = T::ZERO;
+        w[3] = T::ZERO;
+        return true;
+    }
+    let sigma = n / n_at;
     let vfs = T::from_f64(FULL_SLIP_SPEED);
     let wfs = T::from_f64(FULL_SLIP_SPIN);
     let fmag = fx.hypot(fy);
