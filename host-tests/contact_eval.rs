@@ -186,7 +186,7 @@ fn usage_errors_name_the_value_and_exit_2() {
         ),
         (
             &["nope"],
-            "subcommand = nope: unknown (one of wrench, elliptic, eccentricity, hertz, friction, rolling)",
+            "subcommand = nope: unknown (one of wrench, elliptic, eccentricity, hertz, friction, rolling, step)",
         ),
     ] {
         let out = run(args, &header);

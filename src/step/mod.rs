@@ -115,6 +115,7 @@
 #![allow(clippy::needless_range_loop, clippy::neg_cmp_op_on_partial_ord)]
 
 pub mod bodies;
+pub mod contract;
 pub mod inverse_mass;
 pub mod numeric;
 pub mod project;

@@ -29,7 +29,8 @@ impl<T: Real, F: Fn(&State<T>) -> [T; 4]> Numeric<F, T> {
     }
 }
 
-fn shifted<T: Real>(s: &State<T>, j: usize, by: T) -> State<T> {
+/// The state with input j (h, ḣ, v_x, v_y, ω) shifted by `by`.
+pub(crate) fn shifted<T: Real>(s: &State<T>, j: usize, by: T) -> State<T> {
     let mut t = *s;
     let (vx, vy, om) = (s.slip.vx(), s.slip.vy(), s.slip.omega());
     match j {

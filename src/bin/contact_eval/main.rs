@@ -25,6 +25,7 @@ mod elliptic;
 mod friction;
 mod hertz;
 mod rolling;
+mod step;
 mod wrench;
 
 use std::process::ExitCode;
@@ -130,7 +131,7 @@ struct Subcommand {
     run: fn(Args) -> Result<ExitCode, String>,
 }
 
-const SUBCOMMANDS: [Subcommand; 6] = [
+const SUBCOMMANDS: [Subcommand; 7] = [
     Subcommand {
         name: "wrench",
         columns: "P,Q,estar,cd,f,delta,h,hdot,vx,vy,omega -> N,Fx,Fy,Tz,a,b,e2",
@@ -166,6 +167,12 @@ const SUBCOMMANDS: [Subcommand; 6] = [
         columns: "a,b,G,nu,f,N,V,xi,eta,phi -> Fx,Fy,Mz",
         help: rolling::help,
         run: rolling::run,
+    },
+    Subcommand {
+        name: "step",
+        columns: "P,Q,estar,cd,f,delta,h,hdot,vx,vy,omega,dt,w_nn,w_nx,w_ny,w_nw,w_xx,w_xy,w_xw,w_yy,w_yw,w_ww -> N,Fx,Fy,Tz",
+        help: step::help,
+        run: step::run,
     },
 ];
 
