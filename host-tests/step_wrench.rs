@@ -751,3 +751,64 @@ fn passive_and_inside_the_limit_set_on_random_states() {
 fn passive_and_inside_the_limit_set_on_1e5_random_states() {
     run_all(100_000, 11);
 }
+
+/// The plain path's limits (src/step/stable.rs), measured by integrating: RK4 on the ball's
+/// Hertz normal mode (small oscillation about the static approach) decays at 0.97 of
+/// `stable_normal_step` and grows at 1.03; forward Euler on the creep of a rolling contact
+/// (`table`, small creepage) decays at 0.9 of `stable_creep_step` and grows at 1.1.
+#[test]
+fn plain_step_limits_for_the_normal_mode_and_the_creep() {
+    use contensou::contact::Rolling;
+    use contensou::friction::Explicit;
+    use contensou::friction::rolling::{Elasticity, RollingVelocity, Table};
+    let c = contact::<Best>(1e-4);
+    let n0 = M * G;
+    let h_star = c.stable_normal_step(M, n0, Explicit::Rk4);
+    assert_eq!(c.stable_normal_step(M, n0, Explicit::Euler), 0.0);
+    let hs = h_static();
+    // ω by hand: k_n = (3/2)·k·h^{1/2}
+    let w = (1.5 * k_hertz() * hs.sqrt() / M).sqrt();
+    assert!((h_star * w - 8f64.sqrt()).abs() < 1e-9, "{h_star} {w}");
+    let rk4_amplitude = |dt: f64| {
+        // x = h − h_s, ẍ = g − N(h)/m
+        let acc = |x: f64| G - c.wrench(hs + x, 0.0, Slip::default()).n / M;
+        let (mut x, mut v) = (1e-4 * hs, 0.0);
+        for _ in 0..4000 {
+            let (k1x, k1v) = (v, acc(x));
+            let (k2x, k2v) = (v + 0.5 * dt * k1v, acc(x + 0.5 * dt * k1x));
+            let (k3x, k3v) = (v + 0.5 * dt * k2v, acc(x + 0.5 * dt * k2x));
+            let (k4x, k4v) = (v + dt * k3v, acc(x + dt * k3x));
+            x += dt / 6.0 * (k1x + 2.0 * k2x + 2.0 * k3x + k4x);
+            v += dt / 6.0 * (k1v + 2.0 * k2v + 2.0 * k3v + k4v);
+        }
+        (x * x + (v / w) * (v / w)).sqrt() / (1e-4 * hs)
+    };
+    assert!(rk4_amplitude(0.97 * h_star) < 1.0);
+    assert!(rk4_amplitude(1.03 * h_star) > 2.0);
+
+    let base = contact::<Best>(0.0);
+    let rolling = Rolling::<_, _, Table>::new(base, Elasticity::new(8e10, 0.3).unwrap()).unwrap();
+    let v = RollingVelocity::new(1.0, 0.0).unwrap();
+    let m_t = 2.0 * M / 7.0;
+    let h_creep = rolling.stable_creep_step(m_t, n0, v, Explicit::Euler);
+    let euler_growth = |dt: f64| {
+        let mut x = 1e-7;
+        for _ in 0..200 {
+            let f = rolling
+                .wrench(hs, 0.0, Slip::new(x, 0.0, 0.0).unwrap(), v)
+                .fx;
+            x += dt * f / m_t;
+        }
+        x.abs() / 1e-7
+    };
+    assert!(
+        euler_growth(0.9 * h_creep) < 1.0,
+        "{}",
+        euler_growth(0.9 * h_creep)
+    );
+    assert!(
+        euler_growth(1.1 * h_creep) > 10.0,
+        "{}",
+        euler_growth(1.1 * h_creep)
+    );
+}
