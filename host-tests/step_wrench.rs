@@ -28,11 +28,15 @@ const F: f64 = 0.1;
 const G: f64 = 9.81;
 
 fn contact<L: FrictionLaw>(delta: f64) -> Contact<f64, Hertz<f64>, Undamped, L> {
+    contact_f(F, delta)
+}
+
+fn contact_f<L: FrictionLaw>(f: f64, delta: f64) -> Contact<f64, Hertz<f64>, Undamped, L> {
     Contact::circular(
         &Curvatures::sphere_plane(R).unwrap(),
         Modulus::new(ESTAR).unwrap(),
         Undamped,
-        Friction::<f64, L>::with_law(F, delta).unwrap(),
+        Friction::<f64, L>::with_law(f, delta).unwrap(),
     )
     .unwrap()
 }
@@ -561,19 +565,8 @@ fn random_run<L: FrictionLaw>(n: usize, seed: u64) -> Worst {
     for case in 0..n {
         let f = rng.range(0.05, 0.8);
         let delta = rng.log(-6.0, -2.0);
-        let c = Contact::circular(
-            &Curvatures::sphere_plane(R).unwrap(),
-            Modulus::new(ESTAR).unwrap(),
-            Undamped,
-            Friction::<f64, L>::with_law(f, delta).unwrap(),
-        )
-        .unwrap();
-        let wrench = move |s: &State<f64>| {
-            let w = c.wrench(s.h, s.hdot, s.slip);
-            [w.n, w.fx, w.fy, w.tz]
-        };
-        let dv = 1e-3 * delta;
-        let lin = Numeric::new(wrench, [1e-5 * hs, 1e-6, dv, dv, dv / 1e-4]);
+        let c = contact_f::<L>(f, delta);
+        let lin = numeric(c, 1e-3 * delta);
         // A random body: mass, an inertia of the ball's order with random axes, the centre
         // above the contact point with a random offset.
         let m = rng.log(-3.0, 0.0);
@@ -881,19 +874,7 @@ fn random_pairs(n: usize, seed: u64) -> usize {
     let mut dropped = 0;
     for case in 0..n {
         let delta = rng.log(-6.0, -2.0);
-        let c = Contact::circular(
-            &Curvatures::sphere_plane(R).unwrap(),
-            Modulus::new(ESTAR).unwrap(),
-            Undamped,
-            Friction::<f64, Best>::with_law(rng.range(0.05, 0.8), delta).unwrap(),
-        )
-        .unwrap();
-        let wrench = move |s: &State<f64>| {
-            let w = c.wrench(s.h, s.hdot, s.slip);
-            [w.n, w.fx, w.fy, w.tz]
-        };
-        let dv = 1e-3 * delta;
-        let lin = Numeric::new(wrench, [1e-5 * hs, 1e-6, dv, dv, dv / 1e-4]);
+        let lin = numeric(contact_f::<Best>(rng.range(0.05, 0.8), delta), 1e-3 * delta);
         let m = rng.log(-3.0, 0.0);
         let i = m * R * R * rng.range(0.1, 4.0);
         let ident = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
