@@ -18,6 +18,64 @@
 //!
 //! `contact` is anything implementing [`Linearize`] (the library's contacts; [`Numeric`] for a
 //! wrench given as a function). Every call is total: validated inputs in, finite wrench out.
+//! Also: [`stable`] (the plain path's step limits, what this path tolerates), [`contract`]
+//! (`contact_eval step`'s row), [`project`] (the limit set).
+//!
+//! # Example: a ball on a plane at 1 ms
+//!
+//! A 20 mm steel ball resting on a steel plane, pushed along x with half the force friction can
+//! hold, stepped at 1 ms (the Hertz normal mode's explicit limit is 0.2 ms, the friction ramp's
+//! ≈ 20 µs): semi-implicit Euler, the contact's wrench from [`step_wrench`].
+//!
+//! ```
+//! use contensou::contact::Contact;
+//! use contensou::frame::{Frame, MajorAxis};
+//! use contensou::friction::{Friction, Slip};
+//! use contensou::geometry::Curvatures;
+//! use contensou::jacobian::State;
+//! use contensou::normal::{Modulus, Undamped};
+//! use contensou::step::{step_wrench, Body, ContactPoint, Free, InverseMass, Numeric, TimeStep};
+//!
+//! let (r, m, g) = (10e-3, 32.67e-3, 9.81);
+//! let contact = Contact::circular(
+//!     &Curvatures::sphere_plane(r)?,
+//!     Modulus::new(1.15e11)?,
+//!     Undamped,
+//!     Friction::<f64>::new(0.1, 1e-4)?,
+//! )?;
+//! // The contact's derivatives: here by central differences of its wrench (a contact of the
+//! // library can be passed directly once it implements `Linearize`).
+//! let lin = Numeric::new(
+//!     |s: &State<f64>| {
+//!         let w = contact.wrench(s.h, s.hdot, s.slip);
+//!         [w.n, w.fx, w.fy, w.tz]
+//!     },
+//!     [1e-12, 1e-6, 1e-7, 1e-7, 1e-3],
+//! );
+//! // W at the contact point: the ball (centre above it) on the fixed plane.
+//! let i = 0.4 * m * r * r;
+//! let ball = Body::new(m, [[i, 0.0, 0.0], [0.0, i, 0.0], [0.0, 0.0, i]], [0.0, 0.0, r])?;
+//! let frame = Frame::new([0.0, 0.0, 1.0], [1.0, 0.0, 0.0], MajorAxis::from_cos_sin(1.0, 0.0));
+//! let point = ContactPoint { a: None, b: Some(0), point: [0.0; 3], frame };
+//! let w = InverseMass::<f64, 1>::from_bodies(&[ball], &[point])?;
+//!
+//! let dt = TimeStep::new(1e-3)?;
+//! let push = 0.5 * 0.1 * g; // tangential acceleration of the centre (m/s²)
+//! let mut s = State { h: 7.6e-8, ..State::default() }; // resting, approach ≈ static
+//! for _ in 0..200 {
+//!     // The free end-of-step velocity (v_n = −ḣ): gravity and the push, without the contact.
+//!     // (The push acts at the centre: the contact point's slip gains push·Δt.)
+//!     let u = [-s.hdot - g * dt.get(), s.slip.vx() + push * dt.get(), 0.0, 0.0];
+//!     let free = Free::predicted(dt, &s, u)?;
+//!     let o = step_wrench(&lin, dt, &w, &s, &free);
+//!     // Apply o.wrench (contact frame, on the ball) over the whole step; here the contact
+//!     // velocity after the step is o.u_end and the approach o.h_end.
+//!     s = State { h: o.h_end, hdot: -o.u_end[0], slip: Slip::new(o.u_end[1], 0.0, 0.0)?, ..s };
+//!     assert!(o.u_end[1] >= 0.0 && o.u_end[1] < 1e-4); // sticks: slip below δ
+//! }
+//! assert!((-s.hdot).abs() < 1e-9); // at rest along the normal
+//! # Ok::<(), contensou::Error>(())
+//! ```
 //!
 //! # Conventions
 //!
@@ -97,7 +155,8 @@
 //!
 //! # Cost
 //!
-//! Per contact: [`PREDICTOR_STEPS`] + 1 + 3 [`Linearize::wrench4`] (predictor, limit set),
+//! Per contact: at most [`PREDICTOR_STEPS`] + 2 [`Linearize::wrench4`] (the normal predictor),
+//! [`project::PATCH_STEPS`] + 2 + 4 (the limit set: its patch, its full-slip points),
 //! [`LINEARISATIONS`] [`Linearize::linearize`] (one more per reversal), a 4 × 4 (or 4K × 4K)
 //! elimination with partial pivoting per solve (at most LINEARISATIONS·2·(K + 1) solves, one
 //! per linearisation in the common case). Fixed: no loop runs on a tolerance.
