@@ -51,7 +51,7 @@ impl<T: Real> Body<T> {
     /// Mass (kg), inertia tensor about the centre in **world** axes (kg·m², symmetric positive
     /// definite), centre of mass (world, m). Errors: [`Error::NonFinite`] (`"mass"`,
     /// `"inertia"`, `"centre"`), [`Error::MassNotPositive`], [`Error::InertiaNotPositiveDefinite`]
-    /// (not symmetric to 64 ε relative to its largest diagonal entry, or a Cholesky pivot ≤ 0).
+    /// (not symmetric to 64 ε relative to its largest diagonal entry, or a leading minor ≤ 0).
     pub fn new(mass: T, inertia: [[T; 3]; 3], centre: Vector<T>) -> Result<Self, Error> {
         let inv_mass = inverse_mass(mass)?;
         for r in inertia {
@@ -146,59 +146,36 @@ fn inverse_mass<T: Real>(mass: T) -> Result<T, Error> {
     }
 }
 
-/// The inverse of a symmetric positive definite 3 × 3 (Cholesky), else
-/// [`Error::InertiaNotPositiveDefinite`].
+/// The inverse of a symmetric positive definite 3 × 3 (Sylvester's criterion on the leading
+/// minors, then the adjugate over the determinant), else [`Error::InertiaNotPositiveDefinite`].
 fn inverse_spd<T: Real>(a: [[T; 3]; 3]) -> Result<[[T; 3]; 3], Error> {
-    let scale = a[0][0].abs().max(a[1][1].abs()).max(a[2][2].abs());
+    let [[a00, a01, a02], [a10, a11, a12], [a20, a21, a22]] = a;
+    let scale = a00.abs().max(a11.abs()).max(a22.abs());
     let tol = T::EPSILON * T::from_f64(64.0) * scale;
-    for r in 0..3 {
-        for c in (r + 1)..3 {
-            if (a[r][c] - a[c][r]).abs() > tol {
-                return Err(Error::InertiaNotPositiveDefinite);
-            }
-        }
+    if (a01 - a10).abs() > tol || (a02 - a20).abs() > tol || (a12 - a21).abs() > tol {
+        return Err(Error::InertiaNotPositiveDefinite);
     }
-    // Cholesky A = L·Lᵀ.
-    let mut l = [[T::ZERO; 3]; 3];
-    for j in 0..3 {
-        let mut d = a[j][j];
-        for k in 0..j {
-            d -= l[j][k] * l[j][k];
-        }
-        if !(d > T::ZERO) {
-            return Err(Error::InertiaNotPositiveDefinite);
-        }
-        let dj = d.sqrt();
-        l[j][j] = dj;
-        for i in (j + 1)..3 {
-            let mut v = (a[i][j] + a[j][i]) * T::HALF;
-            for k in 0..j {
-                v -= l[i][k] * l[j][k];
-            }
-            l[i][j] = v / dj;
-        }
+    let (b01, b02, b12) = (
+        (a01 + a10) * T::HALF,
+        (a02 + a20) * T::HALF,
+        (a12 + a21) * T::HALF,
+    );
+    // cofactors of the symmetric matrix
+    let c00 = a11 * a22 - b12 * b12;
+    let c01 = b02 * b12 - b01 * a22;
+    let c02 = b01 * b12 - a11 * b02;
+    let c11 = a00 * a22 - b02 * b02;
+    let c12 = b01 * b02 - a00 * b12;
+    let c22 = a00 * a11 - b01 * b01;
+    let det = a00 * c00 + b01 * c01 + b02 * c02;
+    if !(a00 > T::ZERO && c22 > T::ZERO && det > T::ZERO) {
+        return Err(Error::InertiaNotPositiveDefinite);
     }
-    // A⁻¹ = L⁻ᵀ·L⁻¹: columns of L⁻¹ by forward substitution.
-    let mut li = [[T::ZERO; 3]; 3];
-    for c in 0..3 {
-        for r in c..3 {
-            let mut s = if r == c { T::ONE } else { T::ZERO };
-            for k in c..r {
-                s -= l[r][k] * li[k][c];
-            }
-            li[r][c] = s / l[r][r];
-        }
-    }
-    let mut inv = [[T::ZERO; 3]; 3];
-    for (r, row) in inv.iter_mut().enumerate() {
-        for (c, e) in row.iter_mut().enumerate() {
-            let mut s = T::ZERO;
-            for k in 0..3 {
-                s += li[k][r] * li[k][c];
-            }
-            *e = s;
-        }
-    }
+    let inv = [
+        [c00 / det, c01 / det, c02 / det],
+        [c01 / det, c11 / det, c12 / det],
+        [c02 / det, c12 / det, c22 / det],
+    ];
     if inv.iter().flatten().all(|v| v.is_finite()) {
         Ok(inv)
     } else {
@@ -266,23 +243,23 @@ impl<T: Real, const K: usize> InverseMass<T, K> {
                     T::ZERO
                 }
             };
-            for i in 0..K {
-                let si = role(&contacts[i]);
+            for (ci, row) in contacts.iter().zip(blocks.iter_mut()) {
+                let si = role(ci);
                 if si == T::ZERO {
                     continue;
                 }
-                let (li, ai) = rows(&contacts[i].frame, sub(contacts[i].point, body.centre));
-                for j in 0..K {
-                    let sj = role(&contacts[j]);
+                let (li, ai) = rows(&ci.frame, sub(ci.point, body.centre));
+                for (cj, block) in contacts.iter().zip(row.iter_mut()) {
+                    let sj = role(cj);
                     if sj == T::ZERO {
                         continue;
                     }
-                    let (lj, aj) = rows(&contacts[j].frame, sub(contacts[j].point, body.centre));
-                    for a in 0..4 {
-                        for b in 0..4 {
-                            let lin = body.inv_mass * dot(li[a], lj[b]);
-                            let ang = dot(ai[a], mat_vec(&body.inv_inertia, aj[b]));
-                            blocks[i][j][a][b] += si * sj * (lin + ang);
+                    let (lj, aj) = rows(&cj.frame, sub(cj.point, body.centre));
+                    for ((la, aa), brow) in li.iter().zip(&ai).zip(block.iter_mut()) {
+                        for ((lb, ab), e) in lj.iter().zip(&aj).zip(brow.iter_mut()) {
+                            let lin = body.inv_mass * dot(*la, *lb);
+                            let ang = dot(*aa, mat_vec(&body.inv_inertia, *ab));
+                            *e += si * sj * (lin + ang);
                         }
                     }
                 }

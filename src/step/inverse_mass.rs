@@ -132,10 +132,14 @@ impl<T: Real, const K: usize> InverseMass<T, K> {
         Ok(sym)
     }
 
-    /// Block W_ij (contact i's velocity from contact j's wrench).
+    /// Block W_ij (contact i's velocity from contact j's wrench); zero out of range.
     #[inline(always)]
-    pub fn block(&self, i: usize, j: usize) -> &[[T; 4]; 4] {
-        &self.blocks[i][j]
+    pub fn block(&self, i: usize, j: usize) -> [[T; 4]; 4] {
+        self.blocks
+            .get(i)
+            .and_then(|row| row.get(j))
+            .copied()
+            .unwrap_or([[T::ZERO; 4]; 4])
     }
 
     /// All blocks.

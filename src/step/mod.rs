@@ -606,9 +606,9 @@ fn active_set_solve<T: Real, const K: usize>(
                 let row = 4 * i + a;
                 if active[i] {
                     for j in 0..K {
+                        let wij = w.block(i, j);
                         for b in 0..4 {
                             // (G_i·W_ij)[a][b]
-                            let wij = w.block(i, j);
                             let mut gw = T::ZERO;
                             for c in 0..4 {
                                 gw += g[i][a][c] * wij[c][b];
@@ -683,9 +683,13 @@ fn rescale<T: Real, const K: usize>(
     u_end: &mut [[T; 4]; K],
 ) {
     let mut delta = [[T::ZERO; 4]; K];
-    for c in part.range() {
-        delta[i][c] = wbar[i][c] * (by - T::ONE);
-        wbar[i][c] *= by;
+    if let (Some(d), Some(wi)) = (delta.get_mut(i), wbar.get_mut(i)) {
+        for c in part.range() {
+            if let (Some(dc), Some(wc)) = (d.get_mut(c), wi.get_mut(c)) {
+                *dc = *wc * (by - T::ONE);
+                *wc *= by;
+            }
+        }
     }
     for j in 0..K {
         for a in 0..4 {
@@ -703,13 +707,18 @@ fn power<T: Real, const K: usize>(
     wbar: &[[T; 4]; K],
     u_end: &[[T; 4]; K],
 ) -> (T, T) {
+    let (Some(wi), Some(ui)) = (wbar.get(i), u_end.get(i)) else {
+        return (T::ZERO, T::ZERO);
+    };
+    let b = w.block(i, i);
+    let at = |x: &[T; 4], k: usize| x.get(k).copied().unwrap_or(T::ZERO);
     let mut p = T::ZERO;
     let mut slope = T::ZERO;
-    let b = w.block(i, i);
     for a in part.range() {
-        p += wbar[i][a] * u_end[i][a];
+        p += at(wi, a) * at(ui, a);
+        let row = b.get(a).copied().unwrap_or([T::ZERO; 4]);
         for c in part.range() {
-            slope += wbar[i][a] * b[a][c] * wbar[i][c];
+            slope += at(wi, a) * at(&row, c) * at(wi, c);
         }
     }
     (p, dt * slope)
