@@ -274,14 +274,7 @@ macro_rules! rolling_probes {
                 };
                 let mut col = black_box(0);
                 let r = unsafe {
-                    $rnew(
-                        ptr(&mut s),
-                        v(1.5),
-                        v(8e10),
-                        v(0.28),
-                        black_box(5),
-                        ptr(&mut col),
-                    )
+                    $rnew(ptr(&mut s), v(1.5), v(8e10), v(0.28), black_box(5), ptr(&mut col))
                 };
                 black_box((r, &s, col));
             }
