@@ -63,17 +63,7 @@ pub fn help() -> String {
 }
 
 /// Run the subcommand, or say why the options are wrong.
-pub fn run(args: Args) -> Result<ExitCode, String> {
-    run_rows(args, rows::<f32>, rows::<f64>)
-}
-
-/// `--law`, `--form` (defaults: `best`, `fixed`) and `--precision`, then the rows in that
-/// precision (shared with `step`).
-pub fn run_rows(
-    mut args: Args,
-    f32_rows: fn(Law, Form) -> ExitCode,
-    f64_rows: fn(Law, Form) -> ExitCode,
-) -> Result<ExitCode, String> {
+pub fn run(mut args: Args) -> Result<ExitCode, String> {
     let law = by_name("--law", args.take(&["--law"]), &Law::ALL, |l| l.name())?;
     let form = by_name("--form", args.take(&["--form"]), &Form::ALL, |f| f.name())?;
     let (law, form) = (
@@ -83,76 +73,54 @@ pub fn run_rows(
     let precision = args.precision;
     args.finish()?;
     Ok(match precision {
-        Precision::F32 => f32_rows(law, form),
-        Precision::F64 => f64_rows(law, form),
+        Precision::F32 => rows::<f32>(law, form),
+        Precision::F64 => rows::<f64>(law, form),
     })
 }
 
-/// The contract's columns of a row: the contact (`r[0..6]`), the step (`r[6..11]`), and the
-/// optional rolling columns `G, nu, vrx, vry` (`o[0..4]`; absent: the defaults).
-pub fn parts<T: Real>(
-    r: &[T],
-    o: &[Option<T>],
-) -> (Spec<T>, Step<T>, RollingSpec<T>, RollingStep<T>) {
-    let get = |i: usize| o.get(i).copied().flatten();
-    (
-        Spec {
+fn rows<T: Real + LowerExp>(law: Law, form: Form) -> ExitCode {
+    run_csv_optional::<T>(&INPUTS, &ROLLING_INPUTS, &OUTPUTS, &mut |r, o| {
+        let spec = Spec {
             p: r[0],
             q: r[1],
             estar: r[2],
             cd: r[3],
             f: r[4],
             delta: r[5],
-        },
-        Step {
+        };
+        let step = Step {
             h: r[6],
             hdot: r[7],
             vx: r[8],
             vy: r[9],
             omega: r[10],
-        },
-        RollingSpec {
+        };
+        let get = |i: usize| o.get(i).copied().flatten();
+        let rolling_spec = RollingSpec {
             g: get(0),
             nu: get(1),
-        },
-        RollingStep {
+        };
+        let rolling_step = RollingStep {
             vrx: get(2).unwrap_or(T::ZERO),
             vry: get(3).unwrap_or(T::ZERO),
-        },
-    )
-}
-
-/// `column = value: reason` for a rejected row, the value looked up among the row's `inputs`
-/// (`r`) and `optional` columns (`o`).
-pub fn refusal<T: Real + LowerExp>(
-    e: Invalid,
-    inputs: &[&str],
-    r: &[T],
-    optional: &[&str],
-    o: &[Option<T>],
-) -> String {
-    let Invalid { column, error } = e;
-    let value = inputs
-        .iter()
-        .position(|&c| c == column)
-        .map(|i| r[i])
-        .or_else(|| {
-            o.get(optional.iter().position(|&c| c == column)?)
-                .copied()
-                .flatten()
-        });
-    message(
-        column,
-        value.map_or_else(|| "?".into(), shortest),
-        error.as_str(),
-    )
-}
-
-fn rows<T: Real + LowerExp>(law: Law, form: Form) -> ExitCode {
-    run_csv_optional::<T>(&INPUTS, &ROLLING_INPUTS, &OUTPUTS, &mut |r, o| {
-        let (spec, step, rolling_spec, rolling_step) = parts(r, o);
-        dynamic::wrench_rolling(&spec, &rolling_spec, law, form, &step, &rolling_step)
-            .map(|out| out.to_array().to_vec())
-            .map_err(|e| refusal(e, &INPUTS, r, &ROLLING_INPUTS, o))
+        };
+        match dynamic::wrench_rolling(&spec, &rolling_spec, law, form, &step, &rolling_step) {
+            Ok(out) => Ok(out.to_array().to_vec()),
+            Err(Invalid { column, error }) => {
+                let value = INPUTS
+                    .iter()
+                    .position(|&c| c == column)
+                    .map(|i| r[i])
+                    .or_else(|| {
+                        let i = ROLLING_INPUTS.iter().position(|&c| c == column)?;
+                        get(i)
+                    });
+                Err(message(
+                    column,
+                    value.map_or_else(|| "?".into(), shortest),
+                    error.as_str(),
+                ))
+            }
+        }
     })
 }
