@@ -144,7 +144,9 @@
 //!    full-slip limit set at the solved N̄ ([`project`]'s supporting-plane test).
 //! 4. **Power.** With u⁺ recomputed, friction must inject no energy over the step, checked for
 //!    the force and the drilling torque **separately** (the linear solve can return a drilling
-//!    torque of the wrong sign; a combined check would then zero all friction): if
+//!    torque of the wrong sign; a combined check would then zero all friction) — for a rolling
+//!    contact (V ≠ 0) only once their sum injects, since a creep law couples spin to lateral
+//!    force and lateral creep to torque (each part alone may do positive work, the sum not): if
 //!    F·v⁺ > 0 the force is scaled by α ∈ [0, 1) so that F·v⁺ = 0 (F·v⁺ is affine in α with
 //!    slope Δt·Fᵀ·W_tt·F ≥ 0: the force that just stops the slip along itself — Kikuuwe's
 //!    implicit dry friction), then the same for T_z·ω⁺, contact after contact, u⁺ updated after
@@ -394,10 +396,19 @@ pub fn step_wrenches<T: Real, const K: usize>(
         }
     }
 
-    // Step 4: power, force and torque separately.
+    // Step 4: power, force and torque separately — for a rolling contact (V ≠ 0) only once
+    // their sum injects (its creep law couples the spin to the lateral force and the lateral
+    // creep to the torque: each part alone may do positive work while the sum is passive).
     let mut u_end = end_velocity(dt_, w, free, &wbar);
+    let coupled: [bool; K] = core::array::from_fn(|i| {
+        let v = states[i].rolling;
+        v.vx() != T::ZERO || v.vy() != T::ZERO
+    });
+    let gate = |i: usize, wbar: &[[T; 4]; K], u_end: &[[T; 4]; K]| {
+        !coupled[i] || injects_total(dt_, w, free, i, wbar, u_end)
+    };
     for i in 0..K {
-        if active[i] {
+        if active[i] && gate(i, &wbar, &u_end) {
             if scale_part(dt_, w, i, Part::Force, &mut wbar, &mut u_end) {
                 flags[i].force_scaled = true;
             }
@@ -409,6 +420,9 @@ pub fn step_wrenches<T: Real, const K: usize>(
     for _ in 0..(2 * K + 1) {
         let mut clean = true;
         for i in 0..K {
+            if !gate(i, &wbar, &u_end) {
+                continue;
+            }
             for part in [Part::Force, Part::Torque] {
                 if injects(dt_, w, free, i, part, &wbar, &u_end) {
                     clean = false;
@@ -750,6 +764,43 @@ fn scale_part<T: Real, const K: usize>(
     true
 }
 
+/// Whether contact i's friction (force and torque together) injects power beyond rounding.
+fn injects_total<T: Real, const K: usize>(
+    dt: T,
+    w: &InverseMass<T, K>,
+    free: &[Free<T>; K],
+    i: usize,
+    wbar: &[[T; 4]; K],
+    u_end: &[[T; 4]; K],
+) -> bool {
+    let (pf, _) = power(dt, w, i, Part::Force, wbar, u_end);
+    let (pt, _) = power(dt, w, i, Part::Torque, wbar, u_end);
+    let scale = power_scale(free, i, Part::Force, wbar, u_end)
+        + power_scale(free, i, Part::Torque, wbar, u_end);
+    pf + pt > T::EPSILON * T::from_f64(64.0) * scale
+}
+
+/// |w_part|·(|u_free| + |u⁺ − u_free|) over the part's components: the rounding scale of its
+/// power.
+fn power_scale<T: Real, const K: usize>(
+    free: &[Free<T>; K],
+    i: usize,
+    part: Part,
+    wbar: &[[T; 4]; K],
+    u_end: &[[T; 4]; K],
+) -> T {
+    let (Some(fi), Some(wi), Some(ui)) = (free.get(i), wbar.get(i), u_end.get(i)) else {
+        return T::ZERO;
+    };
+    let at = |x: &[T; 4], k: usize| x.get(k).copied().unwrap_or(T::ZERO);
+    let mut scale = T::ZERO;
+    for a in part.range() {
+        let du = (at(ui, a) - at(&fi.u, a)).abs();
+        scale += at(wi, a).abs() * (at(&fi.u, a).abs() + du);
+    }
+    scale
+}
+
 /// Whether contact i's `part` injects power beyond rounding: p > 64 ε·|w_part|·(|u_free| +
 /// Δt·|W·w̄|) over the part's components.
 fn injects<T: Real, const K: usize>(
@@ -762,10 +813,5 @@ fn injects<T: Real, const K: usize>(
     u_end: &[[T; 4]; K],
 ) -> bool {
     let (p, _) = power(dt, w, i, part, wbar, u_end);
-    let mut scale = T::ZERO;
-    for a in part.range() {
-        let du = (u_end[i][a] - free[i].u[a]).abs();
-        scale += wbar[i][a].abs() * (free[i].u[a].abs() + du);
-    }
-    p > T::EPSILON * T::from_f64(64.0) * scale
+    p > T::EPSILON * T::from_f64(64.0) * power_scale(free, i, part, wbar, u_end)
 }
