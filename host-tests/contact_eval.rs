@@ -176,7 +176,7 @@ fn usage_errors_name_the_value_and_exit_2() {
         ),
         (
             &["nope"],
-            "subcommand = nope: unknown (one of wrench, elliptic, eccentricity, hertz, friction, rolling, jacobian)",
+            "subcommand = nope: unknown (one of wrench, elliptic, eccentricity, hertz, friction, rolling, jacobian, step)",
         ),
     ] {
         let out = run(args, &header);

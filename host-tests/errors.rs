@@ -1,5 +1,6 @@
-//! The README's "Errors" table (issue 8): it lists every `Error` variant of src/error.rs, and
-//! each variant is produced by the inputs the table names, in `f32` and `f64`.
+//! The README's "Errors" table (issue 8) and the time-stepping guide chapter's: together they
+//! list every `Error` variant of src/error.rs, and each variant is produced by the inputs the
+//! table names, in `f32` and `f64` (the step-aware wrench's in host-tests/step_wrench.rs).
 
 use contensou::batch::{BatchReal, Steps, Wrenches};
 use contensou::elliptic::Parameter;
@@ -28,10 +29,9 @@ fn declared() -> Vec<String> {
         .collect()
 }
 
-/// Variant names in the first column of the README's Errors table.
-fn documented() -> Vec<String> {
-    let readme = include_str!("../README.md");
-    let section = readme
+/// Variant names in the first column of an "## Errors" table of a markdown file.
+fn table(text: &str) -> Vec<String> {
+    let section = text
         .split("## Errors")
         .nth(1)
         .unwrap()
@@ -45,11 +45,22 @@ fn documented() -> Vec<String> {
         .collect()
 }
 
+/// Variant names in the Errors tables: the README's, then the time-stepping guide chapter's
+/// (the step-aware wrench's validation errors).
+fn documented() -> Vec<String> {
+    let mut names = table(include_str!("../README.md"));
+    names.extend(table(include_str!("../docs/guide/src/time-stepping.md")));
+    names
+}
+
 #[test]
 fn readme_table_lists_every_variant() {
     let (d, r) = (declared(), documented());
-    assert_eq!(d.len(), 15, "variants parsed from src/error.rs: {d:?}");
-    assert_eq!(d, r, "src/error.rs vs README Errors table");
+    assert_eq!(d.len(), 21, "variants parsed from src/error.rs: {d:?}");
+    assert_eq!(
+        d, r,
+        "src/error.rs vs the README's and the time-stepping chapter's Errors tables"
+    );
 }
 
 fn nonfinite<V: std::fmt::Debug>(r: Result<V, Error>, name: &'static str) {
@@ -356,6 +367,12 @@ fn messages_are_nonempty_and_name_the_input() {
         Error::RollingPoissonRatioOutOfRange,
         Error::RollingAspectOutOfRange,
         Error::ColumnLengthMismatch,
+        Error::StepNotPositive,
+        Error::InverseMassNotSymmetric,
+        Error::InverseMassNotPositiveSemidefinite,
+        Error::MassNotPositive,
+        Error::InertiaNotPositiveDefinite,
+        Error::BodyIndexInvalid,
     ] {
         assert!(!v.as_str().is_empty() && v.to_string() == v.as_str());
     }

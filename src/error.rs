@@ -51,6 +51,24 @@ pub enum Error {
     /// The columns of a batch call ([`crate::batch`]) have different lengths: the error names
     /// the first column whose length differs from `h`'s.
     ColumnLengthMismatch,
+    /// A time step Δt ([`crate::step::TimeStep`]) is ≤ 0 (NaN or ±∞ is
+    /// [`Error::NonFinite`] `"dt"`).
+    StepNotPositive,
+    /// An inverse-mass matrix W ([`crate::step::InverseMass`]) is not symmetric within the
+    /// stated tolerance: |W_ij − W_ji| > [`crate::step::SYMMETRY_TOLERANCE`]·ε·√(W_ii·W_jj), or
+    /// W_ij ≠ 0 in the row of a zero diagonal entry.
+    InverseMassNotSymmetric,
+    /// An inverse-mass matrix W ([`crate::step::InverseMass`]) is not positive semidefinite
+    /// within the stated tolerance (a negative diagonal entry, or an LDLᵀ pivot of the
+    /// diagonally scaled matrix below −[`crate::step::PSD_TOLERANCE`]·ε).
+    InverseMassNotPositiveSemidefinite,
+    /// A body's mass ([`crate::step::Body`]) is ≤ 0.
+    MassNotPositive,
+    /// A body's inertia tensor ([`crate::step::Body`]) is not symmetric positive definite.
+    InertiaNotPositiveDefinite,
+    /// A contact of [`crate::step::InverseMass::from_bodies`] names a body index beyond the
+    /// bodies given, or the same body as both A and B.
+    BodyIndexInvalid,
 }
 
 impl Error {
@@ -84,6 +102,20 @@ impl Error {
                 "semi-axis ratio a/b of a rolling contact outside [0.01, 100]"
             }
             Error::ColumnLengthMismatch => "batch columns have different lengths",
+            Error::StepNotPositive => "time step dt must be > 0 (s)",
+            Error::InverseMassNotSymmetric => {
+                "inverse-mass matrix W is not symmetric within the stated tolerance"
+            }
+            Error::InverseMassNotPositiveSemidefinite => {
+                "inverse-mass matrix W is not positive semidefinite within the stated tolerance"
+            }
+            Error::MassNotPositive => "body mass must be > 0 (kg)",
+            Error::InertiaNotPositiveDefinite => {
+                "inertia tensor must be symmetric positive definite (kg m^2)"
+            }
+            Error::BodyIndexInvalid => {
+                "contact names a body index out of range, or the same body as A and B"
+            }
         }
     }
 }

@@ -67,6 +67,7 @@ pub mod real;
 pub mod scenes;
 pub mod select;
 pub mod shape;
+pub mod step;
 
 pub use error::Error;
 pub use real::Real;

@@ -147,6 +147,26 @@ mod api {
         Patch, RollingContact, RollingLaw, RollingSlip, Table, Wrench, creep_matrix,
     };
 
+    /// A contact for the step-aware wrench's probe: its wrench, and a Jacobian whose entries
+    /// are black-boxed inputs (the step must hold for any finite Jacobian).
+    struct StepContact<T: Real> {
+        contact: Contact<T, Hertz<T>, Undamped, Coulomb>,
+        d: [T; 5],
+    }
+
+    impl<T: Real> contensou::jacobian::Linearize<T> for StepContact<T> {
+        fn wrench4(&self, s: &contensou::jacobian::State<T>) -> [T; 4] {
+            let w = self.contact.wrench(s.h, s.hdot, s.slip);
+            [w.n, w.fx, w.fy, w.tz]
+        }
+        fn linearize(&self, s: &contensou::jacobian::State<T>) -> contensou::jacobian::Jacobian<T> {
+            contensou::jacobian::Jacobian {
+                value: self.wrench4(s),
+                d: black_box([self.d; 4]),
+            }
+        }
+    }
+
     /// One rolling wrench by law `L` from raw inputs (every constructor on the way).
     #[allow(clippy::too_many_arguments)]
     #[inline(always)]
@@ -345,6 +365,46 @@ mod api {
             let (Ok(p), Ok(be)) = (Parameter::from_complement(m1), Friction::<T, Best>::with_law(f, delta))
             else { return };
             be.stable_step(&Constants::from_parameter(p), mass, n, Explicit::Rk4)
+        }
+        // the step-aware wrench (contensou::step)
+        fn probe_step_time_step<T>(dt) { contensou::step::TimeStep::new(dt) }
+        fn probe_step_inverse_mass<T>(a, b, c, d, e, f, g, h, i, j) {
+            contensou::step::InverseMass::from_upper([a, b, c, d, e, f, g, h, i, j])
+        }
+        fn probe_step_bodies<T>(m, i, cx, cz, px, py, nx, nz) {
+            use contensou::frame::{Frame, MajorAxis};
+            use contensou::step::{Body, ContactPoint, InverseMass};
+            let Ok(body) = Body::new(m, [[i, cx, px], [cx, i, py], [px, py, i]], [cx, px, cz]) else { return };
+            let frame = Frame::new([nx, py, nz], [nz, px, nx], MajorAxis::from_cos_sin(cx, cz));
+            let cp = ContactPoint { a: None, b: Some(0), point: [px, py, px], frame };
+            InverseMass::<T, 1>::from_bodies(&[body], &[cp])
+        }
+        fn probe_step_wrench<T>(p, e, f, delta, h, hdot, vx, vy, om, dt, wn, wt, ww, un) {
+            use contensou::jacobian::State;
+            use contensou::step::{step_wrench, Free, InverseMass, TimeStep};
+            let (Ok(c), Ok(e), Ok(fr), Ok(s), Ok(dt)) = (
+                Curvatures::new(p, p),
+                Modulus::new(e),
+                Friction::<T, Coulomb>::with_law(f, delta),
+                Slip::new(vx, vy, om),
+                TimeStep::new(dt),
+            ) else { return };
+            let Ok(contact) = Contact::circular(&c, e, Undamped, fr) else { return };
+            // any Jacobian: the derivatives are black-boxed inputs
+            let lin = StepContact { contact, d: [h, hdot, vx, vy, om] };
+            let z = T::ZERO;
+            let st = State { h, hdot, slip: s, ..State::default() };
+            let (Ok(w1), Ok(free)) = (
+                InverseMass::single([[wn, z, z, z], [z, wt, z, z], [z, z, wt, z], [z, z, z, ww]]),
+                Free::predicted(dt, &st, [un, vx, vy, om]),
+            ) else { return };
+            (step_wrench(&lin, dt, &w1, &st, &free), Free::coasting(dt, &st))
+        }
+        fn probe_step_stable<T>(p, e, mass, n) {
+            let (Ok(c), Ok(e), Ok(fr)) = (Curvatures::new(p, p), Modulus::new(e), Friction::<T, Coulomb>::with_law(n, mass))
+            else { return };
+            let Ok(contact) = Contact::circular(&c, e, Undamped, fr) else { return };
+            (contact.stable_normal_step(mass, n, Explicit::Rk4), contensou::step::stable::normal_period(contact.normal(), mass, n))
         }
         fn probe_stable_spin_step<T>(m1, f, delta, a, inertia, n) {
             let (Ok(p), Ok(be), Ok(si), Ok(co)) = (

@@ -304,6 +304,17 @@ impl<T: Real, N: NormalLaw<T>, D: Damping<T>, L: FrictionLaw> Contact<T, N, D, L
         self.friction.stable_step(&self.constants, mass, n, scheme)
     }
 
+    /// The largest stable step of an explicit `scheme` for the contact's **normal mode**: an
+    /// effective mass `mass` (kg, along the normal: 1/W_nn) resting at load `n` (N) oscillates
+    /// at ω = √(k_n/m), k_n = dN/dh; the step is 2√2/ω for RK4, 0 for forward Euler (it grows
+    /// every undamped oscillation; semi-implicit Euler: 2/ω). See
+    /// [`crate::step::stable::normal_step`]; host/construction use (a `cbrt`). The smallest of
+    /// this, [`Contact::stable_step`] and [`Contact::stable_spin_step`] bounds the plain path;
+    /// the step-aware path ([`crate::step`]) has none of these limits.
+    pub fn stable_normal_step(&self, mass: T, n: T, scheme: Explicit) -> T {
+        crate::step::stable::normal_step(&self.normal, mass, n, scheme)
+    }
+
     /// The largest stable step of an explicit `scheme` for the spin about the normal, for an
     /// effective moment of inertia `inertia` (kg·m², about the normal) at major semi-axis `a`
     /// (m) and normal force `n` (N): [`Friction::stable_spin_step`] with this contact's shape,

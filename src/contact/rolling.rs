@@ -101,7 +101,7 @@ use crate::friction::rolling::{
     Creep, Elasticity, Input, RollingLaw, RollingShape, RollingSlip, RollingVelocity, ShapePath,
     aligned_ellipse,
 };
-use crate::friction::{Best, Constants, FrictionLaw, Slip, SlipState};
+use crate::friction::{Best, Constants, Explicit, FrictionLaw, Slip, SlipState};
 use crate::geometry::Curvatures;
 use crate::normal::{Damping, Hertz, NormalLaw, Patch};
 use crate::shape::{self, Eccentricity, Ratio};
@@ -255,6 +255,23 @@ pub(crate) struct Step<T> {
 }
 
 impl<T: Real, N: NormalLaw<T>, D: Damping<T>, L: RollingLaw> Rolling<T, Contact<T, N, D, Best>, L> {
+    /// The largest stable step of an explicit `scheme` for the **creep** at load `n` (N) and
+    /// rolling velocity `v`, for an effective tangential mass `mass` (kg, 1/W_xx): Kalker's
+    /// linear creep is a damper of rate G·c²·C/(|V|·m) (C = max(C₁₁, C₂₂) of the aligned
+    /// ellipse along V); see [`crate::step::stable::creep_step`]. Host/construction use. The
+    /// plain path must also respect [`Contact::stable_normal_step`]; the step-aware path
+    /// ([`crate::step`]) has neither limit.
+    pub fn stable_creep_step(&self, mass: T, n: T, v: RollingVelocity<T>, scheme: Explicit) -> T {
+        let c = &self.contact;
+        let patch = c.normal.patch(c.normal.approach(n));
+        let (cx, sx, speed) = direction(v);
+        let (a, b) = (patch.a, patch.b);
+        // the aligned ellipse: a_r = ab/√(b²c² + a²s²) along V, b_r = ab/a_r across
+        let a_r = a * b / (b * b * cx * cx + a * a * sx * sx).sqrt();
+        let b_r = if a_r > T::ZERO { a * b / a_r } else { T::ZERO };
+        crate::step::stable::creep_step(&self.elasticity, a_r, b_r, speed, mass, scheme)
+    }
+
     /// One step: approach h (m), its rate ḣ (m/s, > 0 compression), the slip of B relative to
     /// A and the rolling velocity, both in the contact frame → the wrench on B from A (contact
     /// frame, x the major axis). Total.

@@ -26,6 +26,7 @@ mod friction;
 mod hertz;
 mod jacobian;
 mod rolling;
+mod step;
 mod wrench;
 
 use std::process::ExitCode;
@@ -131,7 +132,7 @@ struct Subcommand {
     run: fn(Args) -> Result<ExitCode, String>,
 }
 
-const SUBCOMMANDS: [Subcommand; 7] = [
+const SUBCOMMANDS: [Subcommand; 8] = [
     Subcommand {
         name: "wrench",
         columns: "P,Q,estar,cd,f,delta,h,hdot,vx,vy,omega -> N,Fx,Fy,Tz,a,b,e2",
@@ -173,6 +174,12 @@ const SUBCOMMANDS: [Subcommand; 7] = [
         columns: "P,Q,estar,cd,f,delta,h,hdot,vx,vy,omega -> N,Fx,Fy,Tz,dN_dh,...,dTz_domega",
         help: jacobian::help,
         run: jacobian::run,
+    },
+    Subcommand {
+        name: "step",
+        columns: "P,Q,estar,cd,f,delta,h,hdot,vx,vy,omega,dt,w_nn,w_nx,w_ny,w_nw,w_xx,w_xy,w_xw,w_yy,w_yw,w_ww -> N,Fx,Fy,Tz",
+        help: step::help,
+        run: step::run,
     },
 ];
 
