@@ -12,9 +12,9 @@
 //! A rolling contact also takes the rolling velocity V; it is an input of the step, held
 //! fixed here (no derivative with respect to V).
 
-use crate::friction::rolling::RollingVelocity;
-use crate::friction::Slip;
 use crate::Real;
+use crate::friction::Slip;
+use crate::friction::rolling::RollingVelocity;
 
 /// Column indices of [`Jacobian::d`]: the per-step inputs q = (h, ḣ, v_Px, v_Py, ω).
 pub mod input {

@@ -56,6 +56,9 @@
 use super::event::{Crossing, Direction};
 use super::integrate::Ode;
 use super::rigid::{Quat, Vec3, euler_rate};
+use super::step_aware::{
+    Candidate, InvInertia, Site, StepContact, Warm, rigid_w, rotate_by, solve,
+};
 use crate::contact::Rolling;
 use crate::contact::VaryingContact;
 use crate::contact::Wrench;
@@ -63,6 +66,7 @@ use crate::frame::{ContactFrame, Frame, Load, MajorAxis, point_velocity};
 use crate::friction::rolling::{Elasticity, RollingLaw, RollingVelocity};
 use crate::friction::{Best, Friction, FrictionLaw, Slip};
 use crate::geometry::Curvatures;
+use crate::jacobian::State as StepState;
 use crate::normal::{Hertz, HuntCrossley, Modulus, NormalLaw};
 use crate::shape::Newton;
 use crate::{Error, Real};
@@ -626,6 +630,88 @@ impl<T: Real, L: FloorLaw<T>> Rattleback<T, L> {
             },
             h: contact.h,
         }
+    }
+}
+
+impl<T: Real, L: FloorLaw<T>> Rattleback<T, L> {
+    /// One large step of `dt` from `y` ([`super::step_aware`]): kick–drift with the floor
+    /// contact's step-aware wrench. The free motion: Ġ_free = Ġ − g·Δt·ẑ and the torque-free
+    /// rotation at constant angular momentum L (world) by the midpoint rule (ω at the attitude
+    /// turned by half a step); the contact's geometry, frame, rolling velocity and gap are
+    /// those of that predicted pose. Then Ġ⁺ = Ġ_free + Δt·F/m, L⁺ = L + Δt·τ, G⁺ = G + Δt·Ġ⁺,
+    /// and the attitude turned by the midpoint rule with L⁺. `warm` carries the wrench.
+    pub fn step_aware(&self, y: &State<T>, dt: T, warm: &mut Warm<T>) -> State<T> {
+        let (r, v, q, omega) = split(y);
+        let q = q.normalized();
+        let inv = Vec3::new(
+            T::ONE / self.inertia.x,
+            T::ONE / self.inertia.y,
+            T::ONE / self.inertia.z,
+        );
+        let l = q.rotate(self.inertia.mul_elem(omega));
+        let turn = |l: Vec3<T>| {
+            let half = rotate_by(q, InvInertia::new(q, inv).apply(l), T::HALF * dt);
+            rotate_by(q, InvInertia::new(half, inv).apply(l), dt)
+        };
+        let v_free = v - Vec3::unit_z() * (self.gravity * dt);
+        let q_free = turn(l);
+        let r_pred = r + v_free * dt;
+        let iw = InvInertia::new(q_free, inv);
+        let w_free = iw.apply(l);
+        let (g, support) = self.geometry_at(r_pred, q_free);
+        let z = [T::ZERO, T::ZERO, T::ONE];
+        let frame = Frame::new(z, [T::ONE, T::ZERO, T::ZERO], MajorAxis::of(&g.curvatures));
+        let site = Site {
+            arm: g.arm,
+            axes: [frame.x().into(), frame.y().into(), Vec3::unit_z()],
+        };
+        let omega_free = q_free.rotate_inv(w_free);
+        let [vx, vy, _] = frame.to_contact(
+            self.kinematics_at(v_free, q_free, omega_free, &g, &support)
+                .rolling
+                .into(),
+        );
+        let cand = [Candidate {
+            h_pred: g.h,
+            u_free: site.velocity(v_free, w_free),
+            rolling: RollingVelocity::new(vx, vy).unwrap_or_default(),
+        }];
+        let wm = rigid_w(T::ONE / self.mass, &iw, &[site]);
+        let floor = FloorStep::<T, L> {
+            contact: &self.contact,
+            curvatures: &g.curvatures,
+        };
+        let sol = solve(dt, &wm, &[&floor], &cand, warm);
+        let (f, t) = site.load(&sol.w[0]);
+        let v1 = v_free + f * (dt / self.mass);
+        let l1 = l + t * dt;
+        let r1 = r + v1 * dt;
+        let q1 = turn(l1);
+        let w1 = q1.rotate_inv(l1).mul_elem(inv);
+        pack(r1, v1, q1, w1)
+    }
+}
+
+/// The floor contact at one step's curvatures, as the step sees it.
+struct FloorStep<'a, T: Real, L: FloorLaw<T>> {
+    contact: &'a L::Contact,
+    curvatures: &'a Curvatures<T>,
+}
+
+impl<T: Real, L: FloorLaw<T>> StepContact<T> for FloorStep<'_, T, L> {
+    fn wrench4(&self, s: &StepState<T>) -> [T; 4] {
+        if s.h <= T::ZERO {
+            return [T::ZERO; 4];
+        }
+        let step = Step {
+            curvatures: self.curvatures,
+            h: s.h,
+            hdot: s.hdot,
+            slip: s.slip,
+            rolling: [s.rolling.vx(), s.rolling.vy()],
+        };
+        let w = L::wrench(self.contact, &step);
+        [w.n, w.fx, w.fy, w.tz]
     }
 }
 

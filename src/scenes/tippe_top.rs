@@ -34,6 +34,7 @@
 use super::event::{Crossing, Direction};
 use super::integrate::Ode;
 use super::rigid::{Quat, Vec3, euler_rate_inv};
+use super::step_aware::{Candidate, InvInertia, Site, Warm, rigid_w, solve, symmetric_free};
 use crate::contact::Contact;
 use crate::frame::{ContactFrame, WorldAxes, point_velocity};
 use crate::friction::{Friction, FrictionLaw};
@@ -302,6 +303,67 @@ impl<T: Real, L: FrictionLaw> TippeTop<T, L> {
             spin: omega.z,
             height: r.z,
         }
+    }
+}
+
+impl<T: Real, L: FrictionLaw> TippeTop<T, L> {
+    /// One large step of `dt` from `y` ([`super::step_aware`]): a kick–drift step whose
+    /// rotation is the exact torque-free motion of the symmetric top
+    /// ([`symmetric_free`]), gravity in the free velocity, both spheres' gaps predicted from
+    /// the free motion and their wrenches solved together (W with its cross blocks, an active
+    /// set). `warm` carries the wrenches from step to step (zeros at the start).
+    ///
+    /// The free motion: Ġ_free = Ġ − g·Δt·ẑ, the attitude turned torque-free over Δt with the
+    /// angular momentum L = R I ω; the contacts are evaluated at that predicted pose. Then
+    /// Ġ⁺ = Ġ_free + Δt·ΣF/m, L⁺ = L + Δt·Στ, G⁺ = G + Δt·Ġ⁺, and the attitude is turned
+    /// torque-free over Δt with L⁺ (ω⁺ = I⁻¹ Rᵀ L⁺).
+    pub fn step_aware(&self, y: &State<T>, dt: T, warm: &mut Warm<T>) -> State<T> {
+        let (r, v, q, omega) = split(y);
+        let q = q.normalized();
+        let l = q.rotate(self.inertia.mul_elem(omega));
+        let (i_eq, i_polar) = (self.inertia.x, self.inertia.z);
+        let v_free = v - Vec3::unit_z() * (self.gravity * dt);
+        let q_free = symmetric_free(q, l, i_eq, i_polar, dt);
+        let r_pred = r + v_free * dt;
+        let iw = InvInertia::new(q_free, self.inv_inertia);
+        let w_free = iw.apply(l);
+        let site = |s: &Sphere<T, L>| {
+            let c = r_pred + q_free.rotate(Vec3::new(T::ZERO, T::ZERO, s.offset));
+            let site = Site {
+                arm: Vec3::new(c.x - r_pred.x, c.y - r_pred.y, -r_pred.z),
+                axes: [
+                    Vec3::new(T::ONE, T::ZERO, T::ZERO),
+                    Vec3::new(T::ZERO, T::ONE, T::ZERO),
+                    Vec3::unit_z(),
+                ],
+            };
+            let cand = Candidate {
+                h_pred: s.radius - c.z,
+                u_free: site.velocity(v_free, w_free),
+                rolling: Default::default(),
+            };
+            (site, cand)
+        };
+        let (sb, cb) = site(&self.big);
+        let (ss, cs) = site(&self.small);
+        let wm = rigid_w(self.inv_mass, &iw, &[sb, ss]);
+        let sol = solve(
+            dt,
+            &wm,
+            &[&self.big.contact, &self.small.contact],
+            &[cb, cs],
+            warm,
+        );
+        let (fb, tb) = sb.load(&sol.w[0]);
+        let (fs, ts) = ss.load(&sol.w[1]);
+        let v1 = v_free + (fb + fs) * (dt * self.inv_mass);
+        let l1 = l + (tb + ts) * dt;
+        let r1 = r + v1 * dt;
+        let q1 = symmetric_free(q, l1, i_eq, i_polar, dt);
+        let w1 = q1.rotate_inv(l1).mul_elem(self.inv_inertia);
+        [
+            r1.x, r1.y, r1.z, v1.x, v1.y, v1.z, q1.w, q1.x, q1.y, q1.z, w1.x, w1.y, w1.z,
+        ]
     }
 }
 
