@@ -54,7 +54,7 @@ use crate::Real;
 use crate::contact::Contact;
 use crate::friction::rolling::RollingVelocity;
 use crate::friction::{FrictionLaw, Slip};
-use crate::jacobian::{Jacobian, State, input, output};
+use crate::jacobian::{Jacobian, State, input};
 use crate::normal::{Damping, NormalLaw};
 
 use super::rigid::{Quat, Vec3};
@@ -251,6 +251,18 @@ pub fn rigid_w<T: Real, const K: usize>(
     inv_inertia: &InvInertia<T>,
     sites: &[Site<T>; K],
 ) -> InverseMass<T> {
+    rigid_w_split(inv_mass, inv_inertia, sites, T::ONE)
+}
+
+/// [`rigid_w`] with the rotational part (through I⁻¹) weighted by `rot`: ½ gives the gap
+/// response G of an integrator that turns the body with the new angular velocity over half the
+/// step ([`Coupling::gap`]).
+pub fn rigid_w_split<T: Real, const K: usize>(
+    inv_mass: T,
+    inv_inertia: &InvInertia<T>,
+    sites: &[Site<T>; K],
+    rot: T,
+) -> InverseMass<T> {
     const { assert!(K <= MAX_CONTACTS) };
     let mut w = [[T::ZERO; DIM]; DIM];
     for (k, sk) in sites.iter().enumerate() {
@@ -260,7 +272,8 @@ pub fn rigid_w<T: Real, const K: usize>(
             for a in 0..4 {
                 let ia = inv_inertia.apply(rk[a].1);
                 for b in 0..4 {
-                    w[4 * k + a][4 * j + b] = inv_mass * rk[a].0.dot(rj[b].0) + ia.dot(rj[b].1);
+                    w[4 * k + a][4 * j + b] =
+                        inv_mass * rk[a].0.dot(rj[b].0) + rot * ia.dot(rj[b].1);
                 }
             }
         }
@@ -268,12 +281,46 @@ pub fn rigid_w<T: Real, const K: usize>(
     w
 }
 
+/// How the step couples the contacts to the body (see [`solve_with`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Coupling<'a, T> {
+    /// W: an impulse Δt·w̄ changes the end velocities by Δt·W·w̄.
+    pub w: &'a InverseMass<T>,
+    /// The gap's response: an impulse Δt·w̄ changes the end approaches by −Δt²·(G·w̄)ₙ (the
+    /// normal rows are read). W itself when the pose moves with the end velocity over the
+    /// whole step; an integrator that turns the body with the new angular velocity over half
+    /// a step only (Strang splitting) halves the rotational part.
+    pub gap: &'a InverseMass<T>,
+    /// θ: the friction (slip and spin) is evaluated at u_θ = u_free + θ·Δt·W·w̄ — 1: backward
+    /// Euler (L-stable: damps a stiff friction mode); ½: the trapezoidal rule (second order,
+    /// used while the slip keeps its direction: a contact whose slip or spin would reverse
+    /// within the step switches to θ = 1 for that step).
+    pub theta: T,
+}
+
 /// The step-aware wrench of K ≤ [`MAX_CONTACTS`] contacts sharing one inverse mass `w`, over
-/// the step `dt` (see the [module docs](self)). `warm` is the previous step's wrench (zero at
-/// the start), the first iterate.
+/// the step `dt` (see the [module docs](self)): backward Euler (θ = 1, G = W). `warm` carries
+/// the previous step's solution (the first iterate and linearisation point) and receives this
+/// one's.
 pub fn solve<T: Real, C: StepContact<T>, const K: usize>(
     dt: T,
     w: &InverseMass<T>,
+    contacts: &[&C; K],
+    cand: &[Candidate<T>; K],
+    warm: &mut Warm<T>,
+) -> Solution<T> {
+    let c = Coupling {
+        w,
+        gap: w,
+        theta: T::ONE,
+    };
+    solve_with(dt, &c, contacts, cand, warm)
+}
+
+/// [`solve`] with a [`Coupling`]: the gap's own response matrix and the friction's θ.
+pub fn solve_with<T: Real, C: StepContact<T>, const K: usize>(
+    dt: T,
+    cp: &Coupling<'_, T>,
     contacts: &[&C; K],
     cand: &[Candidate<T>; K],
     warm: &mut Warm<T>,
@@ -285,6 +332,7 @@ pub fn solve<T: Real, C: StepContact<T>, const K: usize>(
     // root is near it; the predicted h_pred can be far deeper — the free fall over the step —
     // and Newton from there on N ∝ h^{3/2} needs many iterations), then the iterate's own.
     let mut h_lin = [T::ZERO; MAX_CONTACTS];
+    let mut theta = [cp.theta; MAX_CONTACTS];
     for k in 0..K {
         wbar[k] = warm.w[k];
         if !(wbar[k][0] > T::ZERO) || !wbar[k].iter().all(|x| x.is_finite()) {
@@ -297,8 +345,9 @@ pub fn solve<T: Real, C: StepContact<T>, const K: usize>(
         };
     }
     for it in 0..ITERATIONS {
-        let (u, h) = end_state(dt, w, cand, &wbar);
+        let (u, h) = end_state(dt, cp, cand, &wbar);
         let mut a = [[[T::ZERO; 4]; 4]; MAX_CONTACTS];
+        let mut kh = [[T::ZERO; 4]; MAX_CONTACTS];
         let mut b = [[T::ZERO; 4]; MAX_CONTACTS];
         for k in 0..K {
             // After the first iteration: the iterate's approach if the contact is closed there;
@@ -310,12 +359,24 @@ pub fn solve<T: Real, C: StepContact<T>, const K: usize>(
             if !(h_lin[k] > T::ZERO) {
                 continue;
             }
-            let mut ul = u[k];
             let free = cand[k].u_free;
-            if ul[1] * free[1] + ul[2] * free[2] < T::ZERO {
+            // Slip reversal: at the end velocity, against the free slip → θ = 1 and linearise
+            // the friction at rest.
+            let reversed = u[k][1] * free[1] + u[k][2] * free[2] < T::ZERO;
+            let spun = u[k][3] * free[3] < T::ZERO;
+            if reversed || spun {
+                theta[k] = T::ONE;
+            }
+            let th = theta[k];
+            let mut ul = [T::ZERO; 4];
+            for c in 0..4 {
+                let t = if c == 0 { T::ONE } else { th };
+                ul[c] = free[c] + t * (u[k][c] - free[c]);
+            }
+            if reversed {
                 (ul[1], ul[2]) = (T::ZERO, T::ZERO);
             }
-            if ul[3] * free[3] < T::ZERO {
+            if spun {
                 ul[3] = T::ZERO;
             }
             let s = State {
@@ -325,25 +386,26 @@ pub fn solve<T: Real, C: StepContact<T>, const K: usize>(
                 rolling: cand[k].rolling,
             };
             let jac = contacts[k].linearize(&s);
-            // D over u = (v_n, v_x, v_y, ω): ∂/∂v_n = −∂/∂ḣ.
+            // D over u = (v_n, v_x, v_y, ω): ∂/∂v_n = −∂/∂ḣ; the friction columns take θ.
             for i in 0..4 {
                 let row = jac.d[i];
-                let kk = row[input::H];
                 let d = [
                     -row[input::HDOT],
                     row[input::VX],
                     row[input::VY],
                     row[input::OMEGA],
                 ];
-                a[k][i] = [d[0] - dt * kk, d[1], d[2], d[3]];
-                let mut bi = jac.value[i] + kk * (cand[k].h_pred - h_lin[k]);
+                kh[k][i] = row[input::H];
+                a[k][i] = [d[0], th * d[1], th * d[2], th * d[3]];
+                let mut bi = jac.value[i] + kh[k][i] * (cand[k].h_pred - h_lin[k]);
                 for c in 0..4 {
                     bi += d[c] * (free[c] - ul[c]);
                 }
                 b[k][i] = bi;
             }
         }
-        // Active set: drop a contact whose N comes out negative, solve again.
+        // (I − Δt·A·W + Δt²·K·G_n) w̄ = b; a contact whose N comes out negative is dropped
+        // and the system solved again.
         let mut active = [true; MAX_CONTACTS];
         let mut x = [T::ZERO; DIM];
         for _ in 0..=K {
@@ -360,9 +422,10 @@ pub fn solve<T: Real, C: StepContact<T>, const K: usize>(
                     for col in 0..n {
                         let mut s = T::ZERO;
                         for c in 0..4 {
-                            s += a[k][i][c] * w[4 * k + c][col];
+                            s += a[k][i][c] * cp.w[4 * k + c][col];
                         }
                         m[row][col] -= dt * s;
+                        m[row][col] += dt * dt * kh[k][i] * cp.gap[4 * k][col];
                     }
                 }
             }
@@ -385,7 +448,7 @@ pub fn solve<T: Real, C: StepContact<T>, const K: usize>(
         }
     }
     // Projection: N ≥ 0, friction into the law's limit ellipse, then passivity.
-    let (_, h) = end_state(dt, w, cand, &wbar);
+    let (_, h) = end_state(dt, cp, cand, &wbar);
     for k in 0..K {
         let wk = &mut wbar[k];
         if !(wk[0] > T::ZERO) || !wk.iter().all(|x| x.is_finite()) {
@@ -407,7 +470,7 @@ pub fn solve<T: Real, C: StepContact<T>, const K: usize>(
             wk[3] *= s;
         }
     }
-    let (u, h) = end_state(dt, w, cand, &wbar);
+    let (u, _) = end_state(dt, cp, cand, &wbar);
     for k in 0..K {
         let wk = &mut wbar[k];
         if wk[1] * u[k][1] + wk[2] * u[k][2] > T::ZERO {
@@ -417,50 +480,36 @@ pub fn solve<T: Real, C: StepContact<T>, const K: usize>(
             wk[3] = T::ZERO;
         }
     }
-    let _ = output::N;
-    let mut out = Solution {
-        w: wbar,
-        u: [[T::ZERO; 4]; MAX_CONTACTS],
-        h,
-    };
-    let (u, h) = end_state(dt, w, cand, &wbar);
-    out.u = u;
-    out.h = h;
+    let (u, h) = end_state(dt, cp, cand, &wbar);
     warm.w = wbar;
     warm.h = h;
-    out
+    Solution { w: wbar, u, h }
 }
 
-/// What a step hands the next: the wrenches (the first iterate) and the end approaches (the
-/// first linearisation point). [`Warm::default`] at the start.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct Warm<T> {
-    /// The last step's wrench per contact.
-    pub w: [[T; 4]; MAX_CONTACTS],
-    /// The last step's end approach per contact (m).
-    pub h: [T; MAX_CONTACTS],
-}
-
-/// u⁺ = u_free + Δt·W·w̄ and h⁺ = h_pred − Δt·(u⁺_n − u_free,n) per contact.
+/// u⁺ = u_free + Δt·W·w̄ and h⁺ = h_pred − Δt²·(G·w̄)ₙ per contact.
 fn end_state<T: Real, const K: usize>(
     dt: T,
-    w: &InverseMass<T>,
+    cp: &Coupling<'_, T>,
     cand: &[Candidate<T>; K],
     wbar: &[[T; 4]; MAX_CONTACTS],
 ) -> ([[T; 4]; MAX_CONTACTS], [T; MAX_CONTACTS]) {
     let mut u = [[T::ZERO; 4]; MAX_CONTACTS];
     let mut h = [T::ZERO; MAX_CONTACTS];
     for k in 0..K {
+        let mut g = T::ZERO;
         for a in 0..4 {
             let mut s = T::ZERO;
             for j in 0..K {
                 for b in 0..4 {
-                    s += w[4 * k + a][4 * j + b] * wbar[j][b];
+                    s += cp.w[4 * k + a][4 * j + b] * wbar[j][b];
+                    if a == 0 {
+                        g += cp.gap[4 * k][4 * j + b] * wbar[j][b];
+                    }
                 }
             }
             u[k][a] = cand[k].u_free[a] + dt * s;
         }
-        h[k] = cand[k].h_pred - dt * (u[k][0] - cand[k].u_free[0]);
+        h[k] = cand[k].h_pred - dt * dt * g;
     }
     (u, h)
 }
@@ -507,6 +556,16 @@ fn gauss<T: Real>(mut m: [[T; DIM]; DIM], mut r: [T; DIM], n: usize) -> [T; DIM]
         };
     }
     x
+}
+
+/// What a step hands the next: the wrenches (the first iterate) and the end approaches (the
+/// first linearisation point). [`Warm::default`] at the start.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Warm<T> {
+    /// The last step's wrench per contact.
+    pub w: [[T; 4]; MAX_CONTACTS],
+    /// The last step's end approach per contact (m).
+    pub h: [T; MAX_CONTACTS],
 }
 
 /// The exact torque-free rotation of a symmetric body (I₁ = I₂ = `i_eq`, I₃ = `i_polar` about
