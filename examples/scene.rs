@@ -333,6 +333,7 @@ fn rattle<L: FloorLaw<f64>>(a: &Args, rb: &Rattleback<f64, L>) -> Report {
             ("stall", st),
             ("peak_reversed", Some(peak)),
             ("spin_end", Some(rb.spin(&y))),
+            ("energy_end", Some(rb.probe(&y).energy)),
         ],
     }
 }

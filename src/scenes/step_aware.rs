@@ -263,11 +263,26 @@ pub fn rigid_w_split<T: Real, const K: usize>(
     sites: &[Site<T>; K],
     rot: T,
 ) -> InverseMass<T> {
+    rigid_w_between(inv_mass, inv_inertia, sites, sites, rot)
+}
+
+/// W_kj = J_k M⁻¹ J_jᵀ with the velocity rows J_k of the sites `seen` (where the end velocity
+/// is read: the contact point at the end of the step) and the impulse columns J_j of the sites
+/// `pushed` (where the impulse acts: mid-step), the rotational part weighted by `rot`. Not
+/// symmetric when the sites differ: the contact point of a rolling body runs over its surface
+/// within the step, and the slip the next step starts from is read at the end point.
+pub fn rigid_w_between<T: Real, const K: usize>(
+    inv_mass: T,
+    inv_inertia: &InvInertia<T>,
+    seen: &[Site<T>; K],
+    pushed: &[Site<T>; K],
+    rot: T,
+) -> InverseMass<T> {
     const { assert!(K <= MAX_CONTACTS) };
     let mut w = [[T::ZERO; DIM]; DIM];
-    for (k, sk) in sites.iter().enumerate() {
+    for (k, sk) in seen.iter().enumerate() {
         let rk = sk.rows();
-        for (j, sj) in sites.iter().enumerate() {
+        for (j, sj) in pushed.iter().enumerate() {
             let rj = sj.rows();
             for a in 0..4 {
                 let ia = inv_inertia.apply(rk[a].1);
