@@ -25,8 +25,9 @@ for law in ["best", "coulomb", "table"]:
     for spin in [-2, 2]:
         PLAN.append(("rattleback", law, spin, 3.0, ref, rk,
                      [5e-5, 1e-4, 2e-4, 5e-4, 1e-3, 2e-3], []))
-PLAN.append(("bearing", "best", None, 0.02, 5e-7, [1e-6, 2e-6, 5e-6], [], []))
-PLAN.append(("bearing", "table", None, 0.02, 1e-7, [2.5e-7, 1e-6], [], []))
+PLAN.append(("bearing", "best", None, 0.02, 5e-7, [1e-6, 2e-6, 5e-6], [2e-5], []))
+PLAN.append(("bearing", "table", None, 0.02, 1e-7, [2.5e-7, 1e-6],
+             [2e-6, 5e-6, 2e-5, 5e-5, 1e-4], []))
 
 EVENTS = {
     "tippe-top": ["half", "touch"],

@@ -488,11 +488,17 @@ pub fn solve_with<T: Real, C: StepContact<T>, const K: usize>(
     let (u, _) = end_state(dt, cp, cand, &wbar);
     for k in 0..K {
         let wk = &mut wbar[k];
-        if wk[1] * u[k][1] + wk[2] * u[k][2] > T::ZERO {
-            (wk[1], wk[2]) = (T::ZERO, T::ZERO);
-        }
-        if wk[3] * u[k][3] > T::ZERO {
-            wk[3] = T::ZERO;
+        let force = wk[1] * u[k][1] + wk[2] * u[k][2];
+        let torque = wk[3] * u[k][3];
+        // A rolling law's force and spin moment are passive together, not each (Kalker's
+        // spin–lateral coupling): only a positive total zeroes the part that injects.
+        if force + torque > T::ZERO {
+            if force > T::ZERO {
+                (wk[1], wk[2]) = (T::ZERO, T::ZERO);
+            }
+            if torque > T::ZERO {
+                wk[3] = T::ZERO;
+            }
         }
     }
     let (u, h) = end_state(dt, cp, cand, &wbar);
