@@ -73,9 +73,11 @@ def main():
     md = ["# Step sweep: plain RK4 against the step-aware integrator",
           "",
           "Regenerate: `tools/step-sweep.sh` (this file and step-sweep.csv). Deviations are "
-          "relative to the fine-step RK4 row (ref) of the same scene, law and spin; an outcome "
-          "in bold differs from it. CPU: the runner's thread CPU time per simulated second on "
-          "the 2-core sweep machine (10 ms resolution).",
+          "value / reference − 1 against the fine-step RK4 row (ref) of the same scene, law and "
+          "spin (for the bearing's `cage` = ω/ω_c − 1: the deviation of the cage speed "
+          "itself); an outcome in bold differs from the reference. Units: s (events), rad/s "
+          "(peak_reversed), rad/s² (spin_rate), N·m (ring torque, spin moments). CPU: the "
+          "runner's thread CPU time per simulated second on the shared 2-core sweep machine.",
           ""]
     groups = {}
     for r in rows:
@@ -100,13 +102,16 @@ def main():
                 elif r["reference"] or rv is None or rv == 0:
                     cells.append(f"{v:.5g}" + (" **(ref: none)**" if rv is None
                                                and not r["reference"] else ""))
+                elif e == "cage":
+                    # The cage speed ratio ω/ω_c = 1 + cage: its own relative deviation.
+                    cells.append(f"{v:.5g} (speed {100 * ((1 + v) / (1 + rv) - 1):+.2f} %)")
                 else:
-                    cells.append(f"{v:.5g} ({100 * (v - rv) / abs(rv):+.2f} %)")
+                    cells.append(f"{v:.5g} ({100 * (v / rv - 1):+.2f} %)")
             stable = "yes" if r["stable"] else f"**no**: {r['reason']}"
             rise = "" if r["energy_max_rise"] is None else f"{r['energy_max_rise']:.1e}"
             md.append(f"| {r['integrator']}{' (ref)' if r['reference'] else ''} | "
                       f"{r['dt'] * 1e3:g} ms | {stable} | " + " | ".join(cells)
-                      + f" | {rise} | {r['cpu_s'] / r['end']:.2f} |")
+                      + f" | {rise} | {r['cpu_s'] / r['end']:.3g} |")
         md.append("")
     with open("bench-results/step-sweep.md", "w") as f:
         f.write("\n".join(md))
