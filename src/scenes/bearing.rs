@@ -44,12 +44,14 @@
 //!   and angular velocity (9; a sphere's attitude does not enter).
 
 use super::integrate::Ode;
-use super::rigid::Vec3;
+use super::rigid::{Quat, Vec3};
+use super::step_aware::{Candidate, InvInertia, Site, StepContact, Warm, rigid_w, solve};
 #[cfg(doc)]
 use crate::contact::Contact;
 use crate::frame::{ContactFrame, Frame, MajorAxis, point_velocity};
 use crate::friction::rolling::RollingVelocity;
 use crate::geometry::{Curvatures, Race};
+use crate::jacobian::State as StepState;
 use crate::select::StepRolling;
 use crate::{Error, Real};
 
@@ -195,6 +197,51 @@ pub trait RaceLaw<T: Real>: StepRolling<T> {}
 impl<T: Real, C: StepRolling<T>> RaceLaw<T> for C {}
 
 impl<T: Real, C: RaceLaw<T>> Raceway<T, C> {
+    /// For the ball centre at `rel` from the ring's centre: its cylindrical radius ρ, the
+    /// radial unit vector e_ρ (not finite when ρ = 0), the vector g from the groove centre
+    /// circle to the ball centre in the meridian plane and its length d.
+    #[inline(always)]
+    fn torus(&self, rel: Vec3<T>) -> (T, Vec3<T>, Vec3<T>, T) {
+        let rho = (rel.x * rel.x + rel.y * rel.y).sqrt();
+        let e_rho = Vec3::new(rel.x / rho, rel.y / rho, T::ZERO);
+        let g = e_rho * (rho - self.centre_radius) + Vec3::new(T::ZERO, T::ZERO, rel.z);
+        (rho, e_rho, g, g.norm())
+    }
+
+    /// The contact frame and the velocities at P from the torus data of [`Raceway::torus`]
+    /// (d > 0), the ring's velocity and spin, the ball's velocity and angular velocity.
+    #[inline(always)]
+    fn kin(
+        &self,
+        (rel, rho, e_rho, g, d): (Vec3<T>, T, Vec3<T>, Vec3<T>, T),
+        (vr, wr): (Vec3<T>, T),
+        (v, w): (Vec3<T>, Vec3<T>),
+        rb: T,
+    ) -> Kin<T> {
+        let u = g * (T::ONE / d);
+        let z = -u;
+        let e_theta = Vec3::new(-e_rho.y, e_rho.x, T::ZERO);
+        let frame = Frame::new(z.into(), e_theta.into(), self.axis);
+        let arm = u * rb;
+        let ring_w = Vec3::new(T::ZERO, T::ZERO, wr);
+        let ball_p: Vec3<T> = point_velocity(v.into(), w.into(), arm.into()).into();
+        let ring_p: Vec3<T> = point_velocity(vr.into(), ring_w.into(), (rel + arm).into()).into();
+        // Rolling velocity (module docs): v_P = v + r_b u̇ with the torus' u̇.
+        let rdot = v - vr;
+        let g_dot = rdot - e_theta * (self.centre_radius / rho * e_theta.dot(rdot));
+        let u_dot = (g_dot - u * u.dot(rdot)) * (T::ONE / d);
+        let v_contact = v + u_dot * rb;
+        Kin {
+            z,
+            frame,
+            arm,
+            ring_w,
+            ball_p,
+            ring_p,
+            rolling_world: v_contact - (ball_p + ring_p) * T::HALF,
+        }
+    }
+
     /// The contact of a ball (centre `p`, velocity `v`, angular velocity `w`, radius `rb`)
     /// with this race on a ring at `c` moving with `vr`, spinning at `wr` about z.
     #[inline]
@@ -210,13 +257,10 @@ impl<T: Real, C: RaceLaw<T>> Raceway<T, C> {
         rb: T,
     ) -> RaceContact<T> {
         let rel = p - c;
-        let rho = (rel.x * rel.x + rel.y * rel.y).sqrt();
+        let (rho, e_rho, g, d) = self.torus(rel);
         if rho <= T::ZERO {
             return RaceContact::default();
         }
-        let e_rho = Vec3::new(rel.x / rho, rel.y / rho, T::ZERO);
-        let g = e_rho * (rho - self.centre_radius) + Vec3::new(T::ZERO, T::ZERO, rel.z);
-        let d = g.norm();
         let h = d + rb - self.groove;
         if h <= T::ZERO || d <= T::ZERO {
             return RaceContact {
@@ -224,23 +268,18 @@ impl<T: Real, C: RaceLaw<T>> Raceway<T, C> {
                 ..RaceContact::default()
             };
         }
-        let u = g * (T::ONE / d);
-        let z = -u;
-        let e_theta = Vec3::new(-e_rho.y, e_rho.x, T::ZERO);
-        let frame = Frame::new(z.into(), e_theta.into(), self.axis);
-        let arm = u * rb;
-        let ring_w = Vec3::new(T::ZERO, T::ZERO, wr);
-        let ball_p: Vec3<T> = point_velocity(v.into(), w.into(), arm.into()).into();
-        let ring_p: Vec3<T> = point_velocity(vr.into(), ring_w.into(), (rel + arm).into()).into();
+        let Kin {
+            z,
+            frame,
+            arm,
+            ring_w,
+            ball_p,
+            ring_p,
+            rolling_world,
+        } = self.kin((rel, rho, e_rho, g, d), (vr, wr), (v, w), rb);
         let vp = (ball_p - ring_p).into();
         let w_rel = w - ring_w;
         let slip = frame.slip(vp, w_rel.into()).unwrap_or_default();
-        // Rolling velocity (module docs): v_P = v + r_b u̇ with the torus' u̇.
-        let rdot = v - vr;
-        let g_dot = rdot - e_theta * (self.centre_radius / rho * e_theta.dot(rdot));
-        let u_dot = (g_dot - u * u.dot(rdot)) * (T::ONE / d);
-        let v_contact = v + u_dot * rb;
-        let rolling_world = v_contact - (ball_p + ring_p) * T::HALF;
         let [vrx, vry, _] = frame.to_contact(rolling_world.into());
         // A non-finite V (never from a finite state) falls back to full slip.
         let rolling = RollingVelocity::new(vrx, vry).unwrap_or(RollingVelocity::ZERO);
@@ -265,6 +304,105 @@ impl<T: Real, C: RaceLaw<T>> Raceway<T, C> {
             force,
             torque: load.torque.into(),
         }
+    }
+}
+
+/// A ball–race contact's frame and velocities ([`Raceway::kin`]).
+struct Kin<T: Real> {
+    /// The normal, from the ring into the ball.
+    z: Vec3<T>,
+    frame: Frame<T>,
+    /// Ball centre → P.
+    arm: Vec3<T>,
+    /// The ring's angular velocity (about z).
+    ring_w: Vec3<T>,
+    /// The ball's and the ring's material velocities at P.
+    ball_p: Vec3<T>,
+    ring_p: Vec3<T>,
+    /// The rolling velocity V = v_P − ½(u_A + u_B) (world).
+    rolling_world: Vec3<T>,
+}
+
+/// One race contact as the large step sees it: its geometry at the mid-step pose.
+struct RaceStep<T> {
+    site: Site<T>,
+    cand: Candidate<T>,
+}
+
+impl<T: Real, C: RaceLaw<T>> Raceway<T, C> {
+    /// The contact of a ball at `p` (mid-step) with this race on a ring at `c` (mid-step)
+    /// moving with `vr`, spinning at `wr`; the gap predicted at the free end pose (`p_end`,
+    /// `c_end`); u_free from the ball's velocity `v`, `w` (no contact). None when the gap is
+    /// open at both.
+    fn step_site(
+        &self,
+        (c, vr, wr): (Vec3<T>, Vec3<T>, T),
+        (p, v, w): (Vec3<T>, Vec3<T>, Vec3<T>),
+        rb: T,
+        (p_end, c_end): (Vec3<T>, Vec3<T>),
+    ) -> Option<RaceStep<T>> {
+        let rel = p - c;
+        let (rho, e_rho, g, d) = self.torus(rel);
+        let h_end = self.torus(p_end - c_end).3 + rb - self.groove;
+        if !(rho > T::ZERO && d > T::ZERO && h_end.is_finite()) {
+            return None;
+        }
+        let Kin {
+            z,
+            frame,
+            arm,
+            ring_p,
+            rolling_world,
+            ..
+        } = self.kin((rel, rho, e_rho, g, d), (vr, wr), (v, w), rb);
+        let [vrx, vry, _] = frame.to_contact(rolling_world.into());
+        let site = Site {
+            arm,
+            axes: [frame.x().into(), frame.y().into(), z],
+        };
+        let ball_u = site.velocity(v, w);
+        let ring_u = [
+            z.dot(ring_p),
+            Vec3::from(frame.x()).dot(ring_p),
+            Vec3::from(frame.y()).dot(ring_p),
+            z.z * wr,
+        ];
+        Some(RaceStep {
+            site,
+            cand: Candidate {
+                h_pred: h_end,
+                u_free: [0, 1, 2, 3].map(|i| ball_u[i] - ring_u[i]),
+                rolling: RollingVelocity::new(vrx, vry).unwrap_or(RollingVelocity::ZERO),
+            },
+        })
+    }
+}
+
+/// What a large step applied ([`Bearing::step_aware`]).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct StepLoads<T> {
+    /// The friction torque on the inner ring about the bearing axis (N·m, as
+    /// [`Bearing::inner_ring_torque`]).
+    pub ring_torque: T,
+    /// Σ over balls of |T_z| at the inner and the outer race (N·m).
+    pub spin_moment: [T; 2],
+}
+
+/// A race contact at fixed curvatures, as the step sees it.
+struct RaceContactStep<'a, T, C> {
+    contact: &'a C,
+    curvatures: &'a Curvatures<T>,
+}
+
+impl<T: Real, C: RaceLaw<T>> StepContact<T> for RaceContactStep<'_, T, C> {
+    fn wrench4(&self, s: &StepState<T>) -> [T; 4] {
+        if s.h <= T::ZERO {
+            return [T::ZERO; 4];
+        }
+        let w = self
+            .contact
+            .step_rolling(self.curvatures, s.h, s.hdot, s.slip, s.rolling);
+        [w.n, w.fx, w.fy, w.tz]
     }
 }
 
@@ -369,6 +507,103 @@ impl<T: Real, C: RaceLaw<T>> Bearing<T, C> {
             self.outer
                 .eval(Vec3::zero(), Vec3::zero(), T::ZERO, p, v, w, rb),
         )
+    }
+}
+
+impl<T: Real, C: RaceLaw<T>> Bearing<T, C> {
+    /// One large step of `dt` from (`t`, `y`) ([`super::step_aware`]): each ball's two race
+    /// contacts solved together (W of the ball, a sphere, over both contacts; an active set),
+    /// with the ring's motion over the step taken as it was (its velocity at the start); the
+    /// geometry at mid-step (the ball moved by half a step with its velocity plus the last
+    /// step's impulse), each gap predicted at the free end pose, backward Euler (θ = 1: the
+    /// creep law is a stiff damper). Then each ball's kick–drift, and the ring's with the balls'
+    /// reactions of this step and the load: Ṙ⁺ = Ṙ + Δt(F + load(t + Δt))/M, R⁺ = R + Δt·Ṙ⁺.
+    /// `warm` carries each ball's solution ([`Warm::default`] at the start). Also returns
+    /// the step's [`StepLoads`] (from the wrenches applied over the step: re-evaluating the
+    /// plain wrench at the new state would not give them — a creep force is stiff in the slip).
+    pub fn step_aware(
+        &self,
+        t: T,
+        y: &State<T>,
+        dt: T,
+        warm: &mut [Warm<T>; BALLS],
+    ) -> (State<T>, StepLoads<T>) {
+        let mut loads = StepLoads::default();
+        let g = &self.geometry;
+        let (c, vr) = ring(y);
+        let rb = g.ball_diameter * T::HALF;
+        let inv_m = T::ONE / g.ball_mass;
+        let inv_i = T::ONE / self.ball_inertia;
+        let iw = InvInertia::new(Quat::identity(), Vec3::new(inv_i, inv_i, inv_i));
+        let half = T::HALF * dt;
+        let (c_mid, c_end) = (c + vr * half, c + vr * dt);
+        let mut out = *y;
+        let mut ring_force = Vec3::zero();
+        for (k, (b, ob)) in y[6..]
+            .chunks_exact(9)
+            .zip(out[6..].chunks_exact_mut(9))
+            .enumerate()
+        {
+            let (p, v, w) = ball(b);
+            let wk = &mut warm[k];
+            let (wi, wo) = (wk.w[0], wk.w[1]);
+            let warm_force = |ws: [T; 4], s: Option<&RaceStep<T>>| {
+                s.map_or(Vec3::zero(), |s| s.site.load(&ws).0)
+            };
+            // The last step's impulse predicts the mid-step position.
+            let at = |p_mid: Vec3<T>| {
+                (
+                    self.inner.step_site(
+                        (c_mid, vr, g.omega_inner),
+                        (p_mid, v, w),
+                        rb,
+                        (p + v * dt, c_end),
+                    ),
+                    self.outer.step_site(
+                        (Vec3::zero(), Vec3::zero(), T::ZERO),
+                        (p_mid, v, w),
+                        rb,
+                        (p + v * dt, Vec3::zero()),
+                    ),
+                )
+            };
+            let (si, so) = at(p + v * half);
+            let f_warm = warm_force(wi, si.as_ref()) + warm_force(wo, so.as_ref());
+            let (si, so) = at(p + (v + f_warm * (dt * inv_m) * T::HALF) * half);
+            let (Some(si), Some(so)) = (si, so) else {
+                // A degenerate geometry (never from a finite state): free flight.
+                let p1 = p + v * dt;
+                ob[..3].copy_from_slice(&[p1.x, p1.y, p1.z]);
+                continue;
+            };
+            let wm = rigid_w(inv_m, &iw, &[si.site, so.site]);
+            let inner = RaceContactStep {
+                contact: &self.inner.contact,
+                curvatures: &self.inner.curvatures,
+            };
+            let outer = RaceContactStep {
+                contact: &self.outer.contact,
+                curvatures: &self.outer.curvatures,
+            };
+            let sol = solve(dt, &wm, &[&inner, &outer], &[si.cand, so.cand], wk);
+            let (fi, ti) = si.site.load(&sol.w[0]);
+            let (fo, to) = so.site.load(&sol.w[1]);
+            let rel_p = p + (v + f_warm * (dt * inv_m) * T::HALF) * half - c_mid + si.site.arm;
+            loads.ring_torque -= rel_p.cross(fi).z + si.site.axes[2].z * sol.w[0][3];
+            loads.spin_moment[0] += sol.w[0][3].abs();
+            loads.spin_moment[1] += sol.w[1][3].abs();
+            ring_force = ring_force - fi;
+            let v1 = v + (fi + fo) * (dt * inv_m);
+            let w1 = w + (ti + to) * (dt * inv_i);
+            let p1 = p + v1 * dt;
+            ob.copy_from_slice(&[p1.x, p1.y, p1.z, v1.x, v1.y, v1.z, w1.x, w1.y, w1.z]);
+        }
+        let ramp = ((t + dt) / g.ramp).clamp_to(T::ZERO, T::ONE);
+        let load = Vec3::new(T::ZERO, -g.radial_load, g.axial_load) * ramp;
+        let vr1 = vr + (ring_force + load) * (dt / g.ring_mass);
+        let c1 = c + vr1 * dt;
+        out[..6].copy_from_slice(&[c1.x, c1.y, c1.z, vr1.x, vr1.y, vr1.z]);
+        (out, loads)
     }
 }
 

@@ -56,6 +56,10 @@
 use super::event::{Crossing, Direction};
 use super::integrate::Ode;
 use super::rigid::{Quat, Vec3, euler_rate};
+use super::step_aware::{
+    Candidate, Coupling, InvInertia, Site, StepContact, Warm, rigid_w, rigid_w_split, rotate_by,
+    solve_with,
+};
 use crate::contact::Rolling;
 use crate::contact::VaryingContact;
 use crate::contact::Wrench;
@@ -63,6 +67,7 @@ use crate::frame::{ContactFrame, Frame, Load, MajorAxis, point_velocity};
 use crate::friction::rolling::{Elasticity, RollingLaw, RollingVelocity};
 use crate::friction::{Best, Friction, FrictionLaw, Slip};
 use crate::geometry::Curvatures;
+use crate::jacobian::State as StepState;
 use crate::normal::{Hertz, HuntCrossley, Modulus, NormalLaw};
 use crate::shape::Newton;
 use crate::{Error, Real};
@@ -626,6 +631,108 @@ impl<T: Real, L: FloorLaw<T>> Rattleback<T, L> {
             },
             h: contact.h,
         }
+    }
+}
+
+impl<T: Real, L: FloorLaw<T>> Rattleback<T, L> {
+    /// One large step of `dt` from `y` ([`super::step_aware`]), built as the tippe top's
+    /// ([`super::tippe_top::TippeTop::step_aware`]): a Strang splitting of the rotation around
+    /// the contact impulse — the torque-free rotation at constant angular momentum L (world)
+    /// by the midpoint rule (ω at the attitude turned by half the sub-step) over Δt/2, the
+    /// impulse, Δt/2 with L⁺ — the contact's geometry, frame, curvatures and rolling velocity
+    /// at the mid-step pose, its gap predicted at the free end pose with the response G (the
+    /// rotational part halved), the friction by the trapezoidal rule while the slip keeps its
+    /// direction. `warm` carries the solution ([`Warm::default`] at the start).
+    pub fn step_aware(&self, y: &State<T>, dt: T, warm: &mut Warm<T>) -> State<T> {
+        let (r, v, q, omega) = split(y);
+        let q = q.normalized();
+        let inv = Vec3::new(
+            T::ONE / self.inertia.x,
+            T::ONE / self.inertia.y,
+            T::ONE / self.inertia.z,
+        );
+        let l = q.rotate(self.inertia.mul_elem(omega));
+        let half = T::HALF * dt;
+        // Torque-free over `tau` from `q0` with L = `l`: the midpoint rule.
+        let turn = |q0: Quat<T>, l: Vec3<T>, tau: T| {
+            let mid = rotate_by(q0, InvInertia::new(q0, inv).apply(l), T::HALF * tau);
+            rotate_by(q0, InvInertia::new(mid, inv).apply(l), tau)
+        };
+        let z = [T::ZERO, T::ZERO, T::ONE];
+        let site_of = |g: &Geometry<T>| {
+            let frame = Frame::new(z, [T::ONE, T::ZERO, T::ZERO], MajorAxis::of(&g.curvatures));
+            (
+                Site {
+                    arm: g.arm,
+                    axes: [frame.x().into(), frame.y().into(), Vec3::unit_z()],
+                },
+                frame,
+            )
+        };
+        let v_free = v - Vec3::unit_z() * (self.gravity * dt);
+        // The last step's impulse predicts G at mid-step.
+        let (s0, _) = site_of(&self.geometry_at(r, q).0);
+        let (f0, _) = s0.load(&warm.w[0]);
+        let v_pred = v_free + f0 * (dt / self.mass);
+        let r_mid = r + (v + v_pred) * (T::HALF * half);
+        let q_mid = turn(q, l, half);
+        let iw = InvInertia::new(q_mid, inv);
+        let w_free = iw.apply(l);
+        let (g, support) = self.geometry_at(r_mid, q_mid);
+        let (site, frame) = site_of(&g);
+        let h_pred = self.geometry_at(r + v_free * dt, turn(q_mid, l, half)).0.h;
+        let [vx, vy, _] = frame.to_contact(
+            self.kinematics_at(v_free, q_mid, q_mid.rotate_inv(w_free), &g, &support)
+                .rolling
+                .into(),
+        );
+        let cand = [Candidate {
+            h_pred,
+            u_free: site.velocity(v_free, w_free),
+            rolling: RollingVelocity::new(vx, vy).unwrap_or_default(),
+        }];
+        let wm = rigid_w(T::ONE / self.mass, &iw, &[site]);
+        let wg = rigid_w_split(T::ONE / self.mass, &iw, &[site], T::HALF);
+        let coupling = Coupling {
+            w: &wm,
+            gap: &wg,
+            theta: T::HALF,
+        };
+        let floor = FloorStep::<T, L> {
+            contact: &self.contact,
+            curvatures: &g.curvatures,
+        };
+        let sol = solve_with(dt, &coupling, &[&floor], &cand, warm);
+        let (f, t) = site.load(&sol.w[0]);
+        let v1 = v_free + f * (dt / self.mass);
+        let l1 = l + t * dt;
+        let r1 = r + v1 * dt;
+        let q1 = turn(q_mid, l1, half);
+        let w1 = q1.rotate_inv(l1).mul_elem(inv);
+        pack(r1, v1, q1, w1)
+    }
+}
+
+/// The floor contact at one step's curvatures, as the step sees it.
+struct FloorStep<'a, T: Real, L: FloorLaw<T>> {
+    contact: &'a L::Contact,
+    curvatures: &'a Curvatures<T>,
+}
+
+impl<T: Real, L: FloorLaw<T>> StepContact<T> for FloorStep<'_, T, L> {
+    fn wrench4(&self, s: &StepState<T>) -> [T; 4] {
+        if s.h <= T::ZERO {
+            return [T::ZERO; 4];
+        }
+        let step = Step {
+            curvatures: self.curvatures,
+            h: s.h,
+            hdot: s.hdot,
+            slip: s.slip,
+            rolling: [s.rolling.vx(), s.rolling.vy()],
+        };
+        let w = L::wrench(self.contact, &step);
+        [w.n, w.fx, w.fy, w.tz]
     }
 }
 

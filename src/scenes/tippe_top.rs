@@ -34,6 +34,9 @@
 use super::event::{Crossing, Direction};
 use super::integrate::Ode;
 use super::rigid::{Quat, Vec3, euler_rate_inv};
+use super::step_aware::{
+    Candidate, Coupling, InvInertia, Site, Warm, rigid_w, rigid_w_split, solve_with, symmetric_free,
+};
 use crate::contact::Contact;
 use crate::frame::{ContactFrame, WorldAxes, point_velocity};
 use crate::friction::{Friction, FrictionLaw};
@@ -302,6 +305,91 @@ impl<T: Real, L: FrictionLaw> TippeTop<T, L> {
             spin: omega.z,
             height: r.z,
         }
+    }
+}
+
+impl<T: Real, L: FrictionLaw> TippeTop<T, L> {
+    /// One large step of `dt` from `y` ([`super::step_aware`]), second order in the slip's
+    /// phase: a Strang splitting of the rotation around the contact impulse, with the
+    /// rotation's free parts exact.
+    ///
+    /// 1. Free motion: Ġ_free = Ġ − g·Δt·ẑ; the attitude turned torque-free over Δt/2 with the
+    ///    angular momentum L = R I ω ([`symmetric_free`]: the exact motion of the symmetric
+    ///    top) — the pose the contacts' geometry (arms, frame, W) is taken at, with G at
+    ///    G + ½Δt·(Ġ + Ġ_pred)/2 (Ġ_pred: the free velocity plus the last step's impulse).
+    /// 2. Both spheres solved together ([`solve_with`]: W with its cross blocks, an active set);
+    ///    each gap predicted at the free end pose (G + Δt·Ġ_free, attitude turned over Δt),
+    ///    its response to the impulse through G = W with the rotational part halved (the body
+    ///    turns with the new ω over the second half only); friction by the trapezoidal rule
+    ///    (θ = ½) while the slip keeps its direction, backward Euler where it would reverse.
+    /// 3. Ġ⁺ = Ġ_free + Δt·ΣF/m, L⁺ = L + Δt·Στ, G⁺ = G + Δt·Ġ⁺ (vertically the end velocity:
+    ///    the stiff normal), the attitude turned torque-free over the second Δt/2 with L⁺,
+    ///    ω⁺ = I⁻¹ Rᵀ L⁺.
+    ///
+    /// `warm` carries the solution from step to step ([`Warm::default`] at the start).
+    pub fn step_aware(&self, y: &State<T>, dt: T, warm: &mut Warm<T>) -> State<T> {
+        let (r, v, q, omega) = split(y);
+        let q = q.normalized();
+        let l = q.rotate(self.inertia.mul_elem(omega));
+        let (i_eq, i_polar) = (self.inertia.x, self.inertia.z);
+        let half = T::HALF * dt;
+        let v_free = v - Vec3::unit_z() * (self.gravity * dt);
+        let sites = |r: Vec3<T>, q: Quat<T>| {
+            [&self.big, &self.small].map(|s| {
+                let c = r + q.rotate(Vec3::new(T::ZERO, T::ZERO, s.offset));
+                let site = Site {
+                    arm: Vec3::new(c.x - r.x, c.y - r.y, -r.z),
+                    axes: [
+                        Vec3::new(T::ONE, T::ZERO, T::ZERO),
+                        Vec3::new(T::ZERO, T::ONE, T::ZERO),
+                        Vec3::unit_z(),
+                    ],
+                };
+                (site, s.radius - c.z)
+            })
+        };
+        // The last step's impulse predicts where G is at mid-step (the free fall alone, g·Δt²,
+        // would sink it by 10 µm at 1 ms: a wrong arm for the slip).
+        let [(s0b, _), (s0s, _)] = sites(r, q);
+        let (fb, _) = s0b.load(&warm.w[0]);
+        let (fs, _) = s0s.load(&warm.w[1]);
+        let v_pred = v_free + (fb + fs) * (dt * self.inv_mass);
+        let r_mid = r + (v + v_pred) * (T::HALF * half);
+        let q_mid = symmetric_free(q, l, i_eq, i_polar, half);
+        let iw = InvInertia::new(q_mid, self.inv_inertia);
+        let w_free = iw.apply(l);
+        let [(sb, _), (ss, _)] = sites(r_mid, q_mid);
+        let q_end = symmetric_free(q_mid, l, i_eq, i_polar, half);
+        let [(_, hb), (_, hs)] = sites(r + v_free * dt, q_end);
+        let cand = |site: &Site<T>, h: T| Candidate {
+            h_pred: h,
+            u_free: site.velocity(v_free, w_free),
+            rolling: Default::default(),
+        };
+        let wm = rigid_w(self.inv_mass, &iw, &[sb, ss]);
+        let wg = rigid_w_split(self.inv_mass, &iw, &[sb, ss], T::HALF);
+        let coupling = Coupling {
+            w: &wm,
+            gap: &wg,
+            theta: T::HALF,
+        };
+        let sol = solve_with(
+            dt,
+            &coupling,
+            &[&self.big.contact, &self.small.contact],
+            &[cand(&sb, hb), cand(&ss, hs)],
+            warm,
+        );
+        let (fb, tb) = sb.load(&sol.w[0]);
+        let (fs, ts) = ss.load(&sol.w[1]);
+        let v1 = v_free + (fb + fs) * (dt * self.inv_mass);
+        let l1 = l + (tb + ts) * dt;
+        let r1 = r + v1 * dt;
+        let q1 = symmetric_free(q_mid, l1, i_eq, i_polar, half);
+        let w1 = q1.rotate_inv(l1).mul_elem(self.inv_inertia);
+        [
+            r1.x, r1.y, r1.z, v1.x, v1.y, v1.z, q1.w, q1.x, q1.y, q1.z, w1.x, w1.y, w1.z,
+        ]
     }
 }
 

@@ -1,0 +1,285 @@
+//! The scenes at large steps (feature `scenes`): the step-aware integrators of
+//! `contensou::scenes::{ball, tippe_top, rattleback}` against independent references — the
+//! ball's analytic pure-rolling time (2/7)v₀/(f g) and spin decay (3π/16)fNa/I, the fine-step
+//! RK4 figures of the tippe top (h = 10 µs) and the rattleback (h = 0.1 ms; README and
+//! bench-results/step-sweep.md) — and the failure of plain RK4 at those steps that the
+//! `scene` runner reports. Run in release in CI (a few seconds).
+
+use contensou::friction::rolling::Table;
+use contensou::friction::{Best, Coulomb, Friction, FrictionLaw};
+use contensou::scenes::ball::{Ball, BallEvents};
+use contensou::scenes::integrate::rk4_step;
+use contensou::scenes::rattleback::{Creeping, FloorLaw, Params, Rattleback, SpinEvents};
+use contensou::scenes::step_aware::Warm;
+use contensou::scenes::tippe_top::{Params as TopParams, TippeTop};
+
+/// The tippe top's fine-step RK4 times (f64, h = 10 µs, `best`, δ = 1e-4 m/s): θ = π/2 and
+/// the small sphere's touch-down.
+const TOP_HALF: f64 = 1.11369;
+const TOP_TOUCH: f64 = 1.74371;
+/// The rattleback's fine-step RK4 stalls (h = 0.1 ms, `best`, δ = 1 mm/s): ω₀ = −2, +2 rad/s.
+const RB_STALL: [f64; 2] = [0.84317, 1.21030];
+
+/// Runs `step` from `y` to `end`; calls `see(t, y)` after each step; asserts the state stays
+/// finite and the energy `energy(y)` never rises above its running minimum by more than
+/// `rise` × |E₀|.
+fn run<const N: usize>(
+    y: &mut [f64; N],
+    dt: f64,
+    end: f64,
+    rise: f64,
+    mut step: impl FnMut(&[f64; N]) -> [f64; N],
+    energy: impl Fn(&[f64; N]) -> f64,
+    mut see: impl FnMut(f64, &[f64; N]),
+) {
+    let e0 = energy(y);
+    let mut min = e0;
+    for i in 0..(end / dt).round() as usize {
+        *y = step(y);
+        let t = (i + 1) as f64 * dt;
+        assert!(y.iter().all(|v| v.is_finite()), "non-finite at t = {t}");
+        let e = energy(y);
+        assert!(
+            e - min <= rise * e0.abs(),
+            "t = {t}: energy rose {:e} of E₀",
+            (e - min) / e0.abs()
+        );
+        min = min.min(e);
+        see(t, y);
+    }
+}
+
+fn ball_at(dt: f64) -> (f64, f64, f64, f64) {
+    let b = Ball::<f64, Best>::new(0.1, 1e-4).unwrap();
+    let mut y = b.initial_state();
+    let mut ev = BallEvents::default();
+    ev.update(&b, 0.0, &y);
+    let mut warm = b.initial_warm();
+    run(
+        &mut y,
+        dt,
+        0.9,
+        0.0,
+        |y| b.step_aware(y, dt, &mut warm),
+        |y| b.energy(y),
+        |t, y| ev.update(&b, t, y),
+    );
+    let an = b.analytic();
+    (
+        ev.roll().unwrap(),
+        an.t_roll,
+        ev.spin_rate().unwrap(),
+        an.spin_rate,
+    )
+}
+
+#[test]
+fn ball_rolls_and_spins_down_as_the_analytic_solution_at_2_and_5_ms() {
+    // Measured: 2 ms +0.28 % / 0.000 %, 5 ms −0.05 % / 0.000 %; energy never rises.
+    for dt in [2e-3, 5e-3] {
+        let (roll, roll_a, rate, rate_a) = ball_at(dt);
+        assert!(
+            (roll / roll_a - 1.0).abs() < 0.01,
+            "{dt}: roll {roll} vs {roll_a}"
+        );
+        assert!(
+            (rate / rate_a - 1.0).abs() < 0.02,
+            "{dt}: spin {rate} vs {rate_a}"
+        );
+    }
+}
+
+/// (first θ = π/2, first touch-down, θ at `end`) of the step-aware top at `dt`.
+fn top_at(dt: f64, end: f64) -> (Option<f64>, Option<f64>, f64) {
+    let top = TippeTop::new(
+        &TopParams::paper(),
+        Friction::<f64, Best>::with_law(0.3, 1e-4).unwrap(),
+    )
+    .unwrap();
+    let mut y = top.initial_state(0.1, 180.0);
+    let mut warm = Warm::default();
+    let (mut half, mut touch) = (None, None);
+    let mut before = (0.0, top.cos_tilt(&y), -top.penetrations(&y)[1]);
+    run(
+        &mut y,
+        dt,
+        end,
+        0.0,
+        |y| top.step_aware(y, dt, &mut warm),
+        |y| top.probe(y).energy,
+        |t, y| {
+            let (c, g) = (top.cos_tilt(y), -top.penetrations(y)[1]);
+            let cross = |g0: f64, g1: f64| before.0 + dt * g0 / (g0 - g1);
+            if half.is_none() && before.1 > 0.0 && c <= 0.0 {
+                half = Some(cross(before.1, c));
+            }
+            if touch.is_none() && before.2 > 0.0 && g <= 0.0 {
+                touch = Some(cross(before.2, g));
+            }
+            before = (t, c, g);
+        },
+    );
+    (half, touch, top.probe(&y).theta)
+}
+
+#[test]
+fn tippe_top_inverts_on_time_at_large_steps() {
+    // Measured against RK4 h = 10 µs: θ = π/2 +0.06 % at 0.5 ms, +0.10 % at 1 ms, +0.26 % at
+    // 2 ms; touch-down +2.6 ms at 0.5 ms (one nutation cycle ≈ 50 ms); energy never rises.
+    let (half, touch, _) = top_at(5e-4, 1.8);
+    assert!((half.unwrap() / TOP_HALF - 1.0).abs() < 0.005, "{half:?}");
+    assert!((touch.unwrap() - TOP_TOUCH).abs() < 0.025, "{touch:?}");
+    let (half, _, _) = top_at(1e-3, 1.2);
+    assert!((half.unwrap() / TOP_HALF - 1.0).abs() < 0.005, "{half:?}");
+    // At 2 ms it inverts and ends on its stem (θ* = 2.448 rad: both spheres can touch).
+    let (half, touch, theta) = top_at(2e-3, 3.0);
+    assert!((half.unwrap() / TOP_HALF - 1.0).abs() < 0.01, "{half:?}");
+    assert!(touch.is_some() && theta > 2.7, "{touch:?} {theta}");
+}
+
+#[test]
+fn plain_rk4_fails_where_the_step_aware_top_holds() {
+    // RK4 at 0.3 ms: the energy grows (×5 of E₀ before 1 s) — what the runner reports as
+    // `stable: false`.
+    let top = TippeTop::new(
+        &TopParams::paper(),
+        Friction::<f64, Best>::with_law(0.3, 1e-4).unwrap(),
+    )
+    .unwrap();
+    let mut y = top.initial_state(0.1, 180.0);
+    let e0 = top.probe(&y).energy;
+    let mut peak: f64 = 0.0;
+    let dt = 3e-4;
+    for i in 0..(1.2 / dt) as usize {
+        y = rk4_step(&top, i as f64 * dt, &y, dt);
+        peak = peak.max(top.probe(&y).energy);
+    }
+    assert!(
+        peak > 1.1 * e0,
+        "RK4 at 0.3 ms kept the energy: {peak} vs {e0}"
+    );
+}
+
+/// Stall time (−2 or +2 rad/s) and energy check of the step-aware rattleback at `dt`.
+fn rattle<L: FloorLaw<f64>>(
+    rb: &Rattleback<f64, L>,
+    dt: f64,
+    spin: f64,
+    end: f64,
+) -> SpinEvents<f64> {
+    let mut y = rb.initial_state(0.5f64.to_radians(), spin);
+    let mut events = SpinEvents::new(rb, 0.0, &y, spin, 0.1);
+    let mut warm = Warm::default();
+    // The step-aware runs lose energy monotonically to 1e-5 of E₀ (measured ≤ 1.8e-5 at 2 ms).
+    run(
+        &mut y,
+        dt,
+        end,
+        5e-5,
+        |y| rb.step_aware(y, dt, &mut warm),
+        |y| rb.probe(y).energy,
+        |t, y| events.update(rb, t, y),
+    );
+    events
+}
+
+fn sliding<L: FrictionLaw>() -> Rattleback<f64, L> {
+    Rattleback::new(
+        &Params::kane_levinson(),
+        Friction::<f64, L>::with_law(0.3, 1e-3).unwrap(),
+    )
+    .unwrap()
+}
+
+#[test]
+fn rattleback_best_stalls_on_time_at_large_steps() {
+    // Measured against RK4 0.1 ms: −2 rad/s +2.41 % at 0.1 ms, +0.74 % at 1 ms; +2 rad/s
+    // −0.06 % at 0.1 ms, −4.2 % at 1 ms.
+    let rb = sliding::<Best>();
+    for (k, spin) in [-2.0, 2.0].into_iter().enumerate() {
+        for (dt, tol) in [(1e-4, 0.03), (1e-3, 0.10)] {
+            let e = rattle(&rb, dt, spin, 1.5);
+            let stall = e.stall().expect("stall");
+            assert!(e.reversal().is_none());
+            assert!(
+                (stall / RB_STALL[k] - 1.0).abs() < tol,
+                "ω₀ = {spin}, h = {dt}: stall {stall} vs {}",
+                RB_STALL[k]
+            );
+        }
+    }
+}
+
+#[test]
+fn rattleback_step_aware_is_stable_at_2_ms() {
+    // Finite, energy never rising (beyond 5e-5 of E₀), for a sliding law and the creep law.
+    rattle(&sliding::<Best>(), 2e-3, -2.0, 3.0);
+    rattle(&sliding::<Coulomb>(), 2e-3, -2.0, 3.0);
+    let p = Params::kane_levinson();
+    let f = Friction::<f64, Best>::with_law(0.3, 1e-3).unwrap();
+    let rb = Rattleback::<f64, Creeping<Table>>::rolling(&p, f, p.elasticity().unwrap()).unwrap();
+    rattle(&rb, 2e-3, -2.0, 3.0);
+    rattle(&rb, 2e-3, 2.0, 3.0);
+}
+
+#[test]
+fn bearing_creep_at_20_us_matches_the_fine_step_figures() {
+    use contensou::geometry::Race;
+    use contensou::normal::{HuntCrossley, Modulus};
+    use contensou::scenes::bearing::{BALLS, Bearing, Geometry};
+    use contensou::select::{Elliptic, ExactGrade, Fixed, Rolls, Scene, Select};
+    // README (RK4 h = 0.1 µs, means over 15–20 ms): ring torque −14.8 N·mm, Σ|T_z| 82.6 /
+    // 83.2 N·mm, cage speed +0.769 % over ω_c. Measured at 20 µs: −15.2 (+2.4 %), 84.0 / 84.2
+    // (+1.8 / +1.1 %), cage +0.518 % (the cage speed 0.25 % slower).
+    let g = Geometry::<f64>::bearing_209();
+    let (estar, damping) = (
+        Modulus::new(1.142857e11).unwrap(),
+        HuntCrossley::new(0.3).unwrap(),
+    );
+    type RollingRace = Scene<Elliptic, Fixed, Rolls, ExactGrade, f64>;
+    let race = |r| {
+        RollingRace::build(
+            &g.curvatures(r).unwrap(),
+            estar,
+            damping,
+            Friction::new(0.07, 0.05).unwrap(),
+        )
+        .unwrap()
+    };
+    let b = Bearing::new(&g, race(Race::Inner), race(Race::Outer)).unwrap();
+    let dt = 2e-5;
+    let mut y = b.initial_state();
+    let mut warm = [Warm::default(); BALLS];
+    let (mut n, mut ring, mut sm, mut cage) = (0.0, 0.0, [0.0; 2], 0.0);
+    for i in 0..1000 {
+        let (y1, l) = b.step_aware(i as f64 * dt, &y, dt, &mut warm);
+        y = y1;
+        assert!(y.iter().all(|v| v.is_finite()));
+        if i >= 750 {
+            n += 1.0;
+            ring += l.ring_torque;
+            sm[0] += l.spin_moment[0];
+            sm[1] += l.spin_moment[1];
+            let orbit: f64 = (0..BALLS)
+                .map(|k| {
+                    let s = &y[6 + 9 * k..6 + 9 * k + 6];
+                    (s[0] * s[4] - s[1] * s[3]) / (s[0] * s[0] + s[1] * s[1])
+                })
+                .sum();
+            cage += orbit / BALLS as f64 / g.cage_speed();
+        }
+    }
+    let (ring, sm, cage) = (ring / n * 1e3, [sm[0] / n * 1e3, sm[1] / n * 1e3], cage / n);
+    assert!((ring / -14.8 - 1.0).abs() < 0.05, "ring torque {ring} N·mm");
+    assert!(
+        (sm[0] / 82.6 - 1.0).abs() < 0.03,
+        "inner spin moment {}",
+        sm[0]
+    );
+    assert!(
+        (sm[1] / 83.2 - 1.0).abs() < 0.03,
+        "outer spin moment {}",
+        sm[1]
+    );
+    assert!((cage / 1.00769 - 1.0).abs() < 0.005, "cage {cage}");
+}

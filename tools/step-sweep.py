@@ -1,0 +1,121 @@
+#!/usr/bin/env python3
+"""Step sweep of the scenes: plain RK4 against the step-aware integrator (examples/scene.rs).
+
+Run by tools/step-sweep.sh (which builds the runner first). Writes bench-results/step-sweep.csv
+(one row per run: the runner's JSON flattened) and bench-results/step-sweep.md (per scene, law
+and spin: outcome, event times and their deviation from the fine-step RK4 reference row,
+energy rise, CPU seconds per simulated second).
+"""
+import csv
+import json
+import subprocess
+import sys
+
+RUNNER = "target/release/examples/scene"
+
+# (scene, law, spin, end, reference RK4 step, [RK4 steps], [step-aware steps], extra args)
+PLAN = [
+    ("ball", "best", None, 0.9, 2e-5, [1e-4, 2e-4, 1e-3], [1e-4, 1e-3, 2e-3, 5e-3, 1e-2], []),
+    ("tippe-top", "best", None, 2.5, 1e-5, [1e-4, 2e-4, 3e-4, 1e-3],
+     [1e-4, 5e-4, 1e-3, 1.5e-3, 2e-3], []),
+]
+for law in ["best", "coulomb", "table"]:
+    # The creep law's reference at 50 µs: at 0.1 ms RK4 does not follow its stall (README).
+    ref, rk = (5e-5, [1e-4, 2e-4, 5e-4, 1e-3]) if law == "table" else (1e-4, [2e-4, 5e-4, 1e-3])
+    for spin in [-2, 2]:
+        PLAN.append(("rattleback", law, spin, 3.0, ref, rk,
+                     [5e-5, 1e-4, 2e-4, 5e-4, 1e-3, 2e-3], []))
+PLAN.append(("bearing", "best", None, 0.02, 5e-7, [1e-6, 2e-6, 5e-6], [2e-5], []))
+PLAN.append(("bearing", "table", None, 0.02, 1e-7, [2.5e-7, 1e-6],
+             [2e-6, 5e-6, 2e-5, 5e-5, 1e-4], []))
+
+EVENTS = {
+    "tippe-top": ["half", "touch"],
+    "ball": ["roll", "spin_rate"],
+    "rattleback": ["reversal", "stall", "peak_reversed"],
+    "bearing": ["ring_torque", "spin_moment_inner", "spin_moment_outer", "cage"],
+}
+ALL_EVENTS = [e for v in EVENTS.values() for e in v]
+
+
+def run(scene, law, spin, end, dt, integrator, extra):
+    cmd = [RUNNER, scene, "--law", law, "--dt", repr(dt), "--integrator", integrator,
+           "--end", repr(end)] + extra
+    if spin is not None:
+        cmd += ["--spin", str(spin)]
+    out = subprocess.run(cmd, capture_output=True, text=True, check=True).stdout
+    return json.loads(out)
+
+
+def main():
+    rows = []
+    for scene, law, spin, end, ref, rk, sa, extra in PLAN:
+        for integ, steps in [("rk4", [ref] + rk), ("step-aware", sa)]:
+            for dt in steps:
+                r = run(scene, law, spin, end, dt, integ, extra)
+                r["spin"] = spin
+                r["reference"] = integ == "rk4" and dt == ref
+                rows.append(r)
+                print(scene, law, spin, integ, dt, r["stable"], r["events"], file=sys.stderr)
+    with open("bench-results/step-sweep.csv", "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(["scene", "law", "spin", "integrator", "dt", "end", "reference", "stable",
+                    "energy_max_rise"] + ALL_EVENTS + ["cpu_s", "cpu_per_sim_s", "reason"])
+        for r in rows:
+            ev = r["events"] or {}
+            w.writerow([r["scene"], r["law"], "" if r["spin"] is None else r["spin"],
+                        r["integrator"], r["dt"], r["end"], int(r["reference"]),
+                        int(r["stable"]),
+                        "" if r["energy_max_rise"] is None else f"{r['energy_max_rise']:.3e}"]
+                       + ["" if ev.get(e) is None else f"{ev[e]:.6g}" for e in ALL_EVENTS]
+                       + [f"{r['cpu_s']:.3f}", f"{r['cpu_s'] / r['end']:.3f}",
+                          r["reason"] or ""])
+    md = ["# Step sweep: plain RK4 against the step-aware integrator",
+          "",
+          "Regenerate: `tools/step-sweep.sh` (this file and step-sweep.csv). Deviations are "
+          "value / reference − 1 against the fine-step RK4 row (ref) of the same scene, law and "
+          "spin (for the bearing's `cage` = ω/ω_c − 1: the deviation of the cage speed "
+          "itself); an outcome in bold differs from the reference. Units: s (events), rad/s "
+          "(peak_reversed), rad/s² (spin_rate), N·m (ring torque, spin moments). CPU: the "
+          "runner's thread CPU time per simulated second on the shared 2-core sweep machine.",
+          ""]
+    groups = {}
+    for r in rows:
+        groups.setdefault((r["scene"], r["law"], r["spin"]), []).append(r)
+    for (scene, law, spin), rs in groups.items():
+        ref = next(r for r in rs if r["reference"])
+        evs = EVENTS[scene]
+        title = f"## {scene}, `{law}`" + ("" if spin is None else f", spin {spin:+d} rad/s")
+        md += [title, "",
+               "| integrator | step | stable | " + " | ".join(evs)
+               + " | energy rise | CPU s / sim s |",
+               "|---|---|---|" + "---|" * len(evs) + "---|---|"]
+        for r in rs:
+            cells = []
+            for e in evs:
+                v = (r["events"] or {}).get(e)
+                rv = (ref["events"] or {}).get(e)
+                if not r["stable"]:
+                    cells.append("—")
+                elif v is None:
+                    cells.append("**none**" if rv is not None else "none")
+                elif r["reference"] or rv is None or rv == 0:
+                    cells.append(f"{v:.5g}" + (" **(ref: none)**" if rv is None
+                                               and not r["reference"] else ""))
+                elif e == "cage":
+                    # The cage speed ratio ω/ω_c = 1 + cage: its own relative deviation.
+                    cells.append(f"{v:.5g} (speed {100 * ((1 + v) / (1 + rv) - 1):+.2f} %)")
+                else:
+                    cells.append(f"{v:.5g} ({100 * (v / rv - 1):+.2f} %)")
+            stable = "yes" if r["stable"] else f"**no**: {r['reason']}"
+            rise = "" if r["energy_max_rise"] is None else f"{r['energy_max_rise']:.1e}"
+            md.append(f"| {r['integrator']}{' (ref)' if r['reference'] else ''} | "
+                      f"{r['dt'] * 1e3:g} ms | {stable} | " + " | ".join(cells)
+                      + f" | {rise} | {r['cpu_s'] / r['end']:.3g} |")
+        md.append("")
+    with open("bench-results/step-sweep.md", "w") as f:
+        f.write("\n".join(md))
+
+
+if __name__ == "__main__":
+    main()
