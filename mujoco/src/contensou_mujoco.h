@@ -35,6 +35,9 @@ typedef struct {
   contensou_spec_f64 spec; /* estar, cd, f, delta (P, Q per pair) */
   contensou_law law;
   int form;
+  int rolling;         /* a rolling law (table, blend, fastsim, fastsim-16): G, ν and V are used */
+  int has_g, has_nu;   /* G, ν given (or from the materials); else the library's defaults */
+  double shear, poisson; /* G (Pa), ν of the pair (rolling laws) */
 } config;
 
 /* The geometry of one pair at this state: approach h, patch centre, contact frame (n from A
@@ -44,6 +47,12 @@ typedef struct {
   double point[3];
   double n[3], x[3], y[3];
   double p, q;
+  /* For the velocity of the geometric contact point (contact_point_velocity): sphere–plane:
+   * B's sphere centre; ellipsoid–plane: the support point x* (world), u = −n and x* in the geom
+   * frame, 1/s; sphere–sphere: the centres and s/|c_b − c_a| (P = c_a + s n). */
+  double centre[3];
+  double u[3], xl[3], inv_s;
+  double centre_a[3], ratio;
 } geometry;
 
 /*------------------------------------------------------------------------ small vector maths */
@@ -76,6 +85,11 @@ int read_config(const mjModel* m, int instance, config* c);
 /* The plugin bodies' geoms and their pairs are computable and not also native; else −1 + warning. */
 int check_geoms(const mjModel* m, int instance, const pair* pairs, int npair);
 const char* geom_name(const mjModel* m, int g);
+/* A rolling law (table, blend, fastsim, fastsim-16)? */
+int is_rolling(contensou_law law);
+/* A contact of c's law (and, for a rolling law, its G, ν) on spec (P, Q set) in form. */
+contensou_status new_contact(contensou_contact_f64* storage, const config* c, const contensou_spec_f64* spec,
+                             contensou_form form, contensou_column* column);
 
 /* pairs.c */
 /* The pairs of instance in their fixed order (written to out unless NULL); their count. */
@@ -84,5 +98,11 @@ int enumerate_pairs(const mjModel* m, int instance, pair* out);
 void ellipsoid_rest(const mjModel* m, int g, double* p, double* q);
 /* The geometry of pair k at the state of d; 0 if they touch (h > 0), −1 if apart (g->h set). */
 int pair_geometry(const mjModel* m, const mjData* d, const pair* k, geometry* g);
+/* The velocity (world) of the geometric contact point P of pair k at geometry g: how P moves
+ * as the bodies move (not a material velocity). vb, wb: B's origin velocity and ω; va, wa: A's
+ * (NULL: A at rest). Only its tangential part is meaningful (the normal part is not computed). */
+void contact_point_velocity(const mjModel* m, const mjData* d, const pair* k, const geometry* g,
+                            const double vb[3], const double wb[3], const double* va, const double* wa,
+                            double out[3]);
 
 #endif /* CONTENSOU_MUJOCO_H */

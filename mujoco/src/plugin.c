@@ -29,8 +29,12 @@
  *
  * Configuration (<config key="…" value="…"/>): estar (Pa) or young1, poisson1, young2,
  * poisson2; f; cd (s/m, default 0); delta (m/s, default 1e-4); law (best|simplified|pade|
- * ellipsoid|coulomb, default best); form (auto|fixed|varying, default auto: fixed for spheres
- * and capsules, varying for ellipsoids). A bad value, an unsupported geom, or a plugin geom that
+ * ellipsoid|coulomb, default best, or a rolling law rolling (= table)|table|blend|fastsim|
+ * fastsim-16); G (Pa), nu (rolling laws only; else from the materials by Kalker's rule, else
+ * the library's defaults); form (auto|fixed|varying, default auto: fixed for spheres
+ * and capsules, varying for ellipsoids). With a rolling law each pair also gets Kalker's
+ * rolling velocity V = v_P − ½(u_A + u_B) (v_P: the geometric contact point's velocity,
+ * contact_point_velocity in pairs.c; u: the material velocities at P). A bad value, an unsupported geom, or a plugin geom that
  * MuJoCo would also collide with a plane (contype/conaffinity) refuses the model at load:
  * init() warns with the attribute and the value and returns −1, which the compiler turns into
  * the load error.
@@ -43,8 +47,8 @@
 
 #include "contensou_mujoco.h"
 
-static const char* const ATTRIBUTES[] = {"estar", "young1", "poisson1", "young2", "poisson2",
-                                         "cd",    "f",      "delta",    "law",    "form"};
+static const char* const ATTRIBUTES[] = {"estar", "young1", "poisson1", "young2", "poisson2", "cd", "f",
+                                         "delta", "law",    "form",     "G",      "nu"};
 #define NATTRIBUTE ((int)(sizeof(ATTRIBUTES) / sizeof(ATTRIBUTES[0])))
 
 /* A body's velocity this step: ω (world) and the velocity of its origin xpos (world). */
@@ -57,6 +61,7 @@ typedef struct {
 } body_state;
 
 typedef struct {
+  int rolling; /* a rolling law: the rolling velocity is computed and passed */
   int npair;
   pair* pairs;
   double* out;       /* NOUT per pair */
@@ -91,6 +96,7 @@ static int init(const mjModel* m, mjData* d, int instance) {
     free_instance(x);
     return -1;
   }
+  x->rolling = c.rolling;
   enumerate_pairs(m, instance, x->pairs);
   if (check_geoms(m, instance, x->pairs, x->npair)) {
     free_instance(x);
@@ -126,8 +132,7 @@ static int init(const mjModel* m, mjData* d, int instance) {
     spec.q = k0.q;
     contensou_column column = CONTENSOU_COLUMN_NONE;
     if (s == CONTENSOU_STATUS_OK) {
-      s = contensou_contact_new_f64(&p->contact, &spec, c.law,
-                                    varying ? CONTENSOU_FORM_VARYING : CONTENSOU_FORM_FIXED, &column);
+      s = new_contact(&p->contact, &c, &spec, varying ? CONTENSOU_FORM_VARYING : CONTENSOU_FORM_FIXED, &column);
     }
     if (s != CONTENSOU_STATUS_OK) {
       mju_warning(PLUGIN_NAME ": geom '%s' (size %g) against '%s': curvatures P = %g, Q = %g: %s",
@@ -198,6 +203,8 @@ static void body_velocity(const mjModel* m, const mjData* d, int b, body_state* 
   }
 }
 
+static const double ZERO3[3] = {0.0, 0.0, 0.0};
+
 static void passive(const mjModel* m, mjData* d, instance_data* x) {
   for (int i = 0; i < x->nbody; i++) {
     body_state* s = &x->state[i];
@@ -241,7 +248,27 @@ static void passive(const mjModel* m, mjData* d, instance_data* x) {
     }
     contensou_step_f64 step = {g.h, -dot3(vrel, g.n), dot3(vrel, g.x), dot3(vrel, g.y), dot3(wrel, g.n)};
     contensou_wrench_f64 w;
-    if (contensou_contact_wrench_f64(&p->contact, &step, &w, NULL) != CONTENSOU_STATUS_OK) {
+    contensou_status status;
+    if (x->rolling) {
+      /* Kalker's rolling velocity V = v_P − ½(u_A + u_B): the velocity of the geometric contact
+       * point over each surface, averaged (u the material velocities at P), in (x, y). */
+      double vp[3], usum[3];
+      contact_point_velocity(m, d, p, &g, sb ? sb->v : ZERO3, sb ? sb->w : ZERO3, sa ? sa->v : NULL,
+                             sa ? sa->w : NULL, vp);
+      for (int i = 0; i < 3; i++) usum[i] = vrel[i];
+      if (sa) {
+        double ua[3];
+        point_velocity(sa->v, sa->w, arm_a, ua);
+        for (int i = 0; i < 3; i++) usum[i] = vrel[i] + 2.0 * ua[i]; /* (u_B − u_A) + 2u_A */
+      }
+      double v[3];
+      for (int i = 0; i < 3; i++) v[i] = vp[i] - 0.5 * usum[i];
+      contensou_rolling_step_f64 roll = {dot3(v, g.x), dot3(v, g.y)};
+      status = contensou_contact_wrench_rolling_f64(&p->contact, &step, &roll, &w, NULL);
+    } else {
+      status = contensou_contact_wrench_f64(&p->contact, &step, &w, NULL);
+    }
+    if (status != CONTENSOU_STATUS_OK) {
       continue; /* a non-finite state: no load (MuJoCo's own checks then reset the state) */
     }
     out[OUT_N] = w.n;

@@ -96,6 +96,55 @@ def test_ball_equals_the_python_callback():
     assert worst <= 1e-12
 
 
+# Steel on steel (E = 210 GPa, ν = 0.3): G = E/(2(1 + ν)), the rolling laws' elasticity of the
+# ball and the tippe top in the rolling tests below.
+STEEL_G, STEEL_NU = 210e9 / 2.6, 0.3
+
+
+def with_rolling_law(path, law="table", shear=STEEL_G, nu=STEEL_NU):
+    """The model file at `path` with the plugin's law replaced by the rolling law `law` and
+    the elasticity G, ν added (δ is not read by the rolling laws)."""
+    text = Path(path).read_text()
+    assert 'key="law" value="best"' in text
+    text = text.replace('<config key="law" value="best"/>',
+                        f'<config key="law" value="{law}"/><config key="G" value="{shear!r}"/>'
+                        f'<config key="nu" value="{nu!r}"/>')
+    return mujoco.MjModel.from_xml_string(text)
+
+
+@pytest.mark.parametrize("law", ["table", "blend"])
+def test_ball_with_a_rolling_law_equals_the_python_callback(law):
+    """The rolling velocity V = v_P − ½u_P of a sphere on the floor (v_P the centre's
+    velocity): the plugin against the callback (floor_contact.py, Contact(..., law, G, nu).step
+    with vrx, vry), bit for bit over the sliding start."""
+    import mujoco_ball as ball
+    from floor_contact import SphereFloor
+
+    pm = with_rolling_law(run_models.MODELS / "ball.xml", law)
+    cm = ball.model(dt=pm.opt.timestep, native=False)
+    floor = SphereFloor(cm, "ball", ["ball"], ball.ESTAR, ball.CD, ball.F, ball.DELTA, law=law, G=STEEL_G,
+                        nu=STEEL_NU)
+    worst, identical = lockstep(pm, cm, floor, 3000)
+    print(f"ball, {law}, Euler, 3000 steps: max relative difference {worst:.3g}, bit for bit: {identical}")
+    assert worst <= 1e-12
+
+
+def test_tippe_top_with_the_rolling_law_equals_the_python_callback():
+    """Two spheres off the centre of mass (v_P = the material velocity of each sphere's centre):
+    law = "rolling" (the default rolling law, table) against the callback's table."""
+    import mujoco_tippe_top as top
+    from floor_contact import SphereFloor
+
+    pm = with_rolling_law(run_models.MODELS / "tippe_top.xml", "rolling")
+    cm = top.model(dt=pm.opt.timestep, integrator="Euler", native=False)
+    floor = SphereFloor(cm, "top", ["big", "small"], top.ESTAR, top.CD, top.F, top.DELTA, law="table",
+                        G=STEEL_G, nu=STEEL_NU)
+    worst, identical = lockstep(pm, cm, floor, 3000)
+    print(f"tippe top, rolling (table), Euler, 3000 steps: max relative difference {worst:.3g}, "
+          f"bit for bit: {identical}")
+    assert worst <= 1e-12
+
+
 # ------------------------------------------------------------------------ the scenes' figures
 
 
@@ -122,6 +171,27 @@ def test_rattleback_stalls_as_the_rust_scene():
     run = run_models.run_rattleback(1.0)
     assert run["reversal"] is None
     assert run["stall"] == pytest.approx(0.87, abs=0.02)
+
+
+# The Rust scene with the rolling law `table` (README, the rattleback rolling; RK4 0.1 ms, events
+# located between the steps): ω₀ = −2 rad/s reverses at 2.0838 s, ω₀ = +2 rad/s stalls at
+# 1.9201 s (`cargo run --release --features scenes --example rattleback`,
+# RATTLEBACK_LAWS=table → rattleback_summary.csv; committed: docs/rattleback_summary.csv).
+RUST_RATTLEBACK_TABLE = {"launch": ("reversal", 2.0838), "steady": ("stall", 1.9201)}
+
+
+@pytest.mark.parametrize("key", ["launch", "steady"])
+def test_rolling_rattleback_reverses_and_stalls_as_the_rust_scene(key):
+    """The ellipsoid's rolling velocity (the support point's travel over the body, closed form)
+    through the model rattleback_rolling.xml (table, G and ν of the Rust scene), at its shipped
+    step (RK4 0.1 ms): the outcome per spin direction and its time, sampled every 1 ms, against
+    the Rust scene's located events (measured: reversal 2.084 s, stall 1.921 s)."""
+    event, t_rust = RUST_RATTLEBACK_TABLE[key]
+    m = mujoco.MjModel.from_xml_path(str(run_models.MODELS / "rattleback_rolling.xml"))
+    run = run_models.run_rattleback(t_rust + 0.05, sample=1e-3, name="rattleback_rolling", key=m.key(key).id)
+    other = "stall" if event == "reversal" else "reversal"
+    assert run[other] is None
+    assert run[event] == pytest.approx(t_rust, abs=2e-3), run[event]
 
 
 def test_ellipsoid_approach_matches_mpmath():
@@ -218,7 +288,23 @@ BALL = """<body name="ball"><freejoint/><plugin instance="c"/>
   <geom name="ball" type="sphere" size="0.01" mass="0.03" contype="0" conaffinity="0"/></body>"""
 
 
+ROLLING = CONFIG + '<config key="law" value="rolling"/>'
+
+
 @pytest.mark.parametrize("config,bodies,message", [
+    (CONFIG + '<config key="law" value="full-slip"/>', BALL, r"law = 'full-slip' is no law \(best, .*fastsim-16\)"),
+    (CONFIG + '<config key="G" value="8e10"/>', BALL, r"G = '8e10' is read by the rolling laws only \(law = 'best'"),
+    (CONFIG + '<config key="law" value="pade"/><config key="nu" value="0.3"/>', BALL,
+     r"nu = '0.3' is read by the rolling laws only \(law = 'pade'"),
+    (ROLLING + '<config key="G" value="-5"/>', BALL, r"G = -5: "),
+    (ROLLING + '<config key="nu" value="0.7"/>', BALL, r"nu = 0\.7: "),
+    (ROLLING + '<config key="G" value="soft"/>', BALL, r"G = 'soft' is not a finite number"),
+    ('<config key="young1" value="2e11"/><config key="poisson1" value="0.3"/><config key="young2" value="2e11"/>'
+     '<config key="poisson2" value="0.3"/><config key="f" value="0.3"/><config key="law" value="table"/>'
+     '<config key="G" value="8e10"/>', BALL, r"give either G \(= '8e10'\) or young1"),
+    ('<config key="young1" value="2e11"/><config key="poisson1" value="-0.2"/><config key="young2" value="2e11"/>'
+     '<config key="poisson2" value="0.3"/><config key="f" value="0.3"/><config key="law" value="blend"/>', BALL,
+     r"poisson1 = -0\.2: the rolling laws take Poisson's ratios in \[0, 0\.5\]"),
     ('<config key="estar" value="1e9"/><config key="f" value="0.3"/><config key="law" value="stribeck"/>', BALL,
      r"law = 'stribeck' is no law"),
     ('<config key="estar" value="1e9"/><config key="f" value="-0.3"/>', BALL, r"f = -0\.3: .*friction"),
@@ -257,6 +343,60 @@ def test_young_and_poisson_give_estar():
         mujoco.mj_forward(m, d)
         out.append(run_models.contacts(m, d)[0, 0])
     assert out[0] > 0 and out[0] == pytest.approx(out[1], rel=1e-12)
+
+
+def test_materials_give_the_rolling_laws_kalkers_g_and_nu():
+    """young1, poisson1, young2, poisson2 with a rolling law: G, ν by Kalker's rule for
+    dissimilar bodies (Gᵢ = Eᵢ/(2(1 + νᵢ)), G = 2G₁G₂/(G₁ + G₂), ν = (G₂ν₁ + G₁ν₂)/(G₁ + G₂),
+    written here in the textbook form) — the same motion as G, ν and E* given directly."""
+    e1, n1, e2, n2 = 3e9, 0.35, 70e9, 0.22
+    g1, g2 = e1 / (2 * (1 + n1)), e2 / (2 * (1 + n2))
+    shear, nu = 2 * g1 * g2 / (g1 + g2), (g2 * n1 + g1 * n2) / (g1 + g2)
+    estar = 1 / ((1 - n1 * n1) / e1 + (1 - n2 * n2) / e2)
+    law = '<config key="f" value="0.3"/><config key="law" value="table"/>'
+    materials = (f'<config key="young1" value="{e1!r}"/><config key="poisson1" value="{n1!r}"/>'
+                 f'<config key="young2" value="{e2!r}"/><config key="poisson2" value="{n2!r}"/>' + law)
+    direct = (f'<config key="estar" value="{estar!r}"/><config key="G" value="{shear!r}"/>'
+              f'<config key="nu" value="{nu!r}"/>' + law)
+    out = []
+    for c in (materials, direct):
+        m = mujoco.MjModel.from_xml_string(xml(BALL, config=c))
+        d = mujoco.MjData(m)
+        d.qpos[2] = 0.01 - 2e-6
+        d.qvel[:] = [0.2, 0.0, 0.0, 0.0, 5.0, 3.0]  # rolling forward with some slip, spinning
+        mujoco.mj_step(m, d, 200)
+        out.append(run_models.contacts(m, d)[0].copy())
+    assert out[0][0] > 0 and abs(out[0][1]) > 0 and abs(out[0][3]) > 0
+    assert np.allclose(out[0], out[1], rtol=1e-9, atol=0)
+
+
+def post_and_ball(radius):
+    """A sphere of radius 0.01 welded to the world (the post) and a free ball of `radius` beside
+    it, in both model orders: (post first, ball first)."""
+    fixed = """<body name="post" pos="0 0 0.05"><plugin instance="c"/>
+      <geom name="post" type="sphere" size="0.01" contype="0" conaffinity="0"/></body>"""
+    moving = f"""<body name="ball" pos="-0.0199 0 0.05"><freejoint/><plugin instance="c"/>
+      <geom name="ball" type="sphere" size="{radius!r}" mass="0.03" contype="0" conaffinity="0"/></body>"""
+    return fixed + moving, moving + fixed
+
+
+def test_rolling_spheres_move_the_same_whichever_is_body_a():
+    """Sphere–sphere with a rolling law: V = v_P − ½(u_A + u_B) is symmetric in A and B, so
+    the moving ball rolls over the fixed one the same way whichever comes first in the model
+    (a V missing u_A, or v_P taken at the wrong centre, breaks the symmetry)."""
+    out = []
+    for bodies in post_and_ball(0.008):
+        m = mujoco.MjModel.from_xml_string(xml(bodies, config=ROLLING, gravity="10 0 0", floor=""))
+        d = mujoco.MjData(m)
+        d.qpos[0] = -0.018 + 1e-6  # pressed onto the post by the "gravity" along x
+        d.qvel[:] = [0.0, 0.05, 0.01, 0.0, 0.0, 4.0]
+        mujoco.mj_forward(m, d)
+        assert run_models.contacts(m, d)[0, 0] > 0
+        mujoco.mj_step(m, d, 2000)
+        assert run_models.contacts(m, d)[0, 0] > 0  # still in contact: rolled over the post
+        out.append(np.concatenate([d.qpos, d.qvel]))
+    assert np.abs(out[0][3:]).max() > 0.1
+    assert np.allclose(out[1], out[0], rtol=1e-9, atol=1e-12)
 
 
 def test_sensor_reports_hertz_force_of_a_resting_sphere():
@@ -337,12 +477,8 @@ def test_ellipsoid_patch_matches_mpmath_hertz():
 def test_a_fixed_sphere_pushes_a_moving_one_whichever_comes_first():
     """Sphere–sphere with one body welded to the world, as body A or as body B (model order):
     the moving ball is stopped by it the same way; the fixed one takes no load."""
-    fixed = """<body name="post" pos="0 0 0.05"><plugin instance="c"/>
-      <geom name="post" type="sphere" size="0.01" contype="0" conaffinity="0"/></body>"""
-    moving = """<body name="ball" pos="-0.0199 0 0.05"><freejoint/><plugin instance="c"/>
-      <geom name="ball" type="sphere" size="0.01" mass="0.03" contype="0" conaffinity="0"/></body>"""
     vx = []
-    for bodies in (fixed + moving, moving + fixed):
+    for bodies in post_and_ball(0.01):
         m = mujoco.MjModel.from_xml_string(xml(bodies, gravity="0 0 0", floor=""))
         d = mujoco.MjData(m)
         d.qvel[0] = 0.01
