@@ -38,6 +38,10 @@ if nm -D --defined-only build/libcontensou_mujoco.so | awk '$2 ~ /[TDB]/ { print
 fi
 gcc "${flags[@]}" examples/run_model.c "$lib" -Wl,-rpath,"$pkg" -lm -o build/run_model
 echo "mujoco: build/run_model"
+# The tests' shim (tests/inverse_mass_shim.c): the contacts' W through ctypes, no plugin registration.
+gcc "${flags[@]}" -fvisibility=hidden -shared tests/inverse_mass_shim.c src/pairs.c src/inverse_mass.c "$lib" \
+    -Wl,-z,defs -Wl,-rpath,"$pkg" -lm -o build/libcontensou_mujoco_test.so
+echo "mujoco: build/libcontensou_mujoco_test.so (tests only)"
 
 if ((check)); then
     echo "mujoco: the four models from C under ASan + UBSan (plugin and runner instrumented), and a refused model"

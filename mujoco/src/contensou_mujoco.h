@@ -105,4 +105,13 @@ void contact_point_velocity(const mjModel* m, const mjData* d, const pair* k, co
                             const double vb[3], const double wb[3], const double* va, const double* wa,
                             double out[3]);
 
+/* inverse_mass.c */
+/* The 4 × nv rows (n, x, y, spin) of the contact velocity u = J q̇ of pair k at geometry g
+ * (B relative to A at the patch centre); scratch: 6 × nv values. */
+void contact_jacobian(const mjModel* m, const mjData* d, const pair* k, const geometry* g, mjtNum* jac,
+                      mjtNum* scratch);
+/* W = J M⁻¹ Jᵀ (rows × rows, row-major) of the stacked rows jac (rows × nv) by mj_solveM;
+ * work: rows × nv values. */
+void inverse_mass(const mjModel* m, mjData* d, const mjtNum* jac, int rows, mjtNum* work, mjtNum* w);
+
 #endif /* CONTENSOU_MUJOCO_H */

@@ -8,6 +8,7 @@ Needs the `mujoco` and `contensou` Python packages (the callback path: pip insta
 """
 
 import csv
+import ctypes
 import math
 import re
 import sys
@@ -488,3 +489,104 @@ def test_a_fixed_sphere_pushes_a_moving_one_whichever_comes_first():
         vx.append(float(d.qvel[0]))
     assert vx[0] < 0  # bounced back
     assert vx[1] == pytest.approx(vx[0], rel=1e-12)
+
+
+# ------------------------------------------------------- the contacts' inverse mass W from MuJoCo
+
+
+class ShimContact(ctypes.Structure):
+    _fields_ = [("pair", ctypes.c_int), ("body_a", ctypes.c_int), ("body_b", ctypes.c_int),
+                ("point", ctypes.c_double * 3), ("n", ctypes.c_double * 3), ("x", ctypes.c_double * 3),
+                ("y", ctypes.c_double * 3)]
+
+
+def inverse_mass(m, d, cap=8):
+    """The touching pairs and their W = J M⁻¹ Jᵀ (4K × 4K) as the plugin computes them
+    (src/inverse_mass.c: mj_jac, mj_solveM), through build/libcontensou_mujoco_test.so."""
+    path = REPO / "mujoco" / "build" / "libcontensou_mujoco_test.so"
+    if not path.exists():
+        pytest.skip(f"{path}: run mujoco/build.sh")
+    lib = ctypes.CDLL(str(path))
+    fn = lib.contensou_mujoco_test_inverse_mass
+    fn.restype = ctypes.c_int
+    fn.argtypes = [ctypes.c_void_p, ctypes.c_void_p, ctypes.c_int, ctypes.POINTER(ShimContact),
+                   ctypes.POINTER(ctypes.c_double), ctypes.c_int]
+    contacts = (ShimContact * cap)()
+    w = np.zeros((4 * cap) ** 2)
+    k = fn(m._address, d._address, 0, contacts, w.ctypes.data_as(ctypes.POINTER(ctypes.c_double)), cap)
+    assert k >= 0
+    return list(contacts[:k]), w[: (4 * k) ** 2].reshape(4 * k, 4 * k)
+
+
+def test_inverse_mass_of_a_free_sphere_on_a_plane_is_the_analytic_one():
+    """W of a sphere (mass m, isotropic inertia I, centre at ρ = r − h above the patch centre P
+    on the plane) in the contact frame (n, x, y, spin): diag(1/m, 1/m + ρ²/I, 1/m + ρ²/I, 1/I) —
+    the slip at P is v − ρ ω × n, the spin ω·n."""
+    mass, r, inertia, h = 0.03, 0.01, 2e-6, 1e-6
+    rho = r - h
+    body = f"""<body name="ball"><freejoint/><plugin instance="c"/>
+      <inertial pos="0 0 0" mass="{mass}" diaginertia="{inertia} {inertia} {inertia}"/>
+      <geom name="ball" type="sphere" size="{r}" contype="0" conaffinity="0"/></body>"""
+    m = mujoco.MjModel.from_xml_string(xml(body))
+    d = mujoco.MjData(m)
+    d.qpos[:] = [0.1, -0.2, rho, 0.9, 0.1, -0.3, 0.2]  # turned: the frame is the plane's anyway
+    d.qpos[3:] /= np.linalg.norm(d.qpos[3:])
+    mujoco.mj_forward(m, d)
+    contacts, w = inverse_mass(m, d)
+    assert len(contacts) == 1
+    expected = np.diag([1 / mass, 1 / mass + rho * rho / inertia, 1 / mass + rho * rho / inertia, 1 / inertia])
+    assert np.abs(w - expected).max() <= 1e-12 * np.abs(expected).max()  # measured 8e-19 relative
+
+
+def hand_inverse_mass(m, d, contacts):
+    """W = J M⁻¹ Jᵀ built by hand for free bodies, in the coordinates (v_G, ω) of each body (G
+    its centre of mass, ω world): M = diag(m I₃, R diag(I) Rᵀ), R the inertial frame (ximat);
+    the contact rows of B are tᵀ(v_G + ω × (P − G)) = [tᵀ, ((P − G) × t)ᵀ] for t = n, x, y and
+    [0, nᵀ] for the spin, minus the same for A — no MuJoCo Jacobian, no mj_solveM."""
+    bodies = sorted({b for c in contacts for b in (c.body_a, c.body_b) if b > 0})
+    col = {b: 6 * i for i, b in enumerate(bodies)}
+    minv = np.zeros((6 * len(bodies), 6 * len(bodies)))
+    for b in bodies:
+        rot = d.ximat[b].reshape(3, 3)
+        i = col[b]
+        minv[i:i + 3, i:i + 3] = np.eye(3) / m.body_mass[b]
+        minv[i + 3:i + 6, i + 3:i + 6] = np.linalg.inv(rot @ np.diag(m.body_inertia[b]) @ rot.T)
+    jac = np.zeros((4 * len(contacts), 6 * len(bodies)))
+    for k, c in enumerate(contacts):
+        p, n, x, y = (np.array(v[:]) for v in (c.point, c.n, c.x, c.y))
+        for b, sign in ((c.body_b, 1.0), (c.body_a, -1.0)):
+            if b <= 0:
+                continue
+            arm = p - d.xipos[b]
+            for row, t in enumerate((n, x, y)):
+                jac[4 * k + row, col[b]:col[b] + 3] += sign * t
+                jac[4 * k + row, col[b] + 3:col[b] + 6] += sign * np.cross(arm, t)
+            jac[4 * k + 3, col[b] + 3:col[b] + 6] += sign * n
+    return jac @ minv @ jac.T
+
+
+def test_inverse_mass_with_cross_blocks_matches_a_hand_construction():
+    """Three free bodies of one instance: a dumbbell (two spheres on one body, off-centre mass,
+    turned principal axes) on the floor, and two balls touching each other, one of them on the
+    floor — five contacts: W's cross blocks between the dumbbell's two contacts, between a ball's
+    floor contact and the ball–ball contact, zero between contacts of different bodies."""
+    bodies = """
+    <body name="dumbbell" pos="0 0 0.0099995"><freejoint/><plugin instance="c"/>
+      <inertial pos="0.004 0.001 0.002" quat="0.9 0.2 0.1 0.3" mass="0.05" diaginertia="2e-5 3e-5 4e-5"/>
+      <geom name="left" type="sphere" size="0.01" pos="-0.03 0 0" contype="0" conaffinity="0"/>
+      <geom name="right" type="sphere" size="0.01" pos="0.03 0 0" contype="0" conaffinity="0"/></body>
+    <body name="ball1" pos="0.2 0 0.0099995"><freejoint/><plugin instance="c"/>
+      <geom name="ball1" type="sphere" size="0.01" mass="0.03" contype="0" conaffinity="0"/></body>
+    <body name="ball2" pos="0.2 0.012 0.0249"><freejoint/><plugin instance="c"/>
+      <geom name="ball2" type="sphere" size="0.01" mass="0.02" contype="0" conaffinity="0"/></body>"""
+    m = mujoco.MjModel.from_xml_string(xml(bodies))
+    d = mujoco.MjData(m)
+    mujoco.mj_forward(m, d)
+    contacts, w = inverse_mass(m, d)
+    assert [(c.body_a, c.body_b) for c in contacts] == [(0, 1), (0, 1), (0, 2), (2, 3)]
+    expected = hand_inverse_mass(m, d, contacts)
+    assert np.abs(w - expected).max() <= 1e-12 * np.abs(expected).max()  # measured 4e-19 relative
+    assert np.abs(w[0:4, 4:8]).max() > 1.0  # the dumbbell's two contacts are coupled
+    assert np.abs(w[8:12, 12:16]).max() > 1.0  # ball1's floor contact and ball1–ball2
+    assert np.all(w[0:8, 8:16] == 0.0)  # no body in common
+    assert np.all(w == w.T) and np.linalg.eigvalsh(w).min() > -1e-12 * np.abs(w).max()
