@@ -96,7 +96,8 @@ contensou_status new_contact(contensou_contact_f64* storage, const config* c, co
 int enumerate_pairs(const mjModel* m, int instance, pair* out);
 /* P ≤ Q of ellipsoid geom g resting on its −z pole (construction-time curvatures). */
 void ellipsoid_rest(const mjModel* m, int g, double* p, double* q);
-/* The geometry of pair k at the state of d; 0 if they touch (h > 0), −1 if apart (g->h set). */
+/* The geometry of pair k at the state of d; 0 if they touch (h > 0), −1 if apart (then h < 0
+ * is the gap, the rest filled as well, except for two sphere centres at the same point). */
 int pair_geometry(const mjModel* m, const mjData* d, const pair* k, geometry* g);
 /* The velocity (world) of the geometric contact point P of pair k at geometry g: how P moves
  * as the bodies move (not a material velocity). vb, wb: B's origin velocity and ω; va, wa: A's
@@ -113,5 +114,28 @@ void contact_jacobian(const mjModel* m, const mjData* d, const pair* k, const ge
 /* W = J M⁻¹ Jᵀ (rows × rows, row-major) of the stacked rows jac (rows × nv) by mj_solveM;
  * work: rows × nv values. */
 void inverse_mass(const mjModel* m, mjData* d, const mjtNum* jac, int rows, mjtNum* work, mjtNum* w);
+
+/* step_aware.c: what the step-aware wrench needs from MuJoCo, per instance and evaluation. */
+typedef struct {
+  int cap;          /* pairs of the instance */
+  int count;        /* pairs taken this evaluation (touching, or closing within the step) */
+  int* index;       /* their pair indices */
+  geometry* geom;   /* their geometry (index order) */
+  double* u;        /* 4 per pair taken: (v_n, v_x, v_y, ω) = J q̇ */
+  double* u_free;   /* 4 per pair taken: J q̇_free, the end-of-step velocity without the instance */
+  mjtNum* w;        /* W = J M⁻¹ Jᵀ, 4·count × 4·count, row-major, cross blocks included */
+  mjtNum* jac;      /* J, 4·cap × nv */
+  mjtNum* work;     /* 4·cap × nv */
+  mjtNum* scratch;  /* 6 × nv */
+  mjtNum* qfrc;     /* nv */
+  mjtNum* qvel;     /* q̇_free, nv */
+} step_work;
+
+/* Buffers for npair pairs of model m; −1 if memory is short (then nothing is held). */
+int step_work_init(step_work* s, const mjModel* m, int npair);
+void step_work_free(step_work* s);
+/* Fills s for the state of d (position and velocity stages done): the pairs that touch, or are
+ * apart but closing within the step at their free velocity (h − Δt·u_free,n > 0); their count. */
+int step_prepare(const mjModel* m, mjData* d, const pair* pairs, int npair, step_work* s);
 
 #endif /* CONTENSOU_MUJOCO_H */

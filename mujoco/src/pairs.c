@@ -147,7 +147,7 @@ int pair_geometry(const mjModel* m, const mjData* d, const pair* k, geometry* g)
     double dv[3] = {cb[0] - ca[0], cb[1] - ca[1], cb[2] - ca[2]};
     double dist = sqrt(dot3(dv, dv));
     g->h = k->radius_a + k->radius - dist;
-    if (g->h <= 0.0 || !(dist > 0.0)) return -1;
+    if (!(dist > 0.0)) return -1;
     for (int i = 0; i < 3; i++) g->n[i] = dv[i] / dist;
     double s = k->radius_a - g->h * k->radius / (k->radius_a + k->radius);
     for (int i = 0; i < 3; i++) g->point[i] = ca[i] + s * g->n[i];
@@ -158,7 +158,7 @@ int pair_geometry(const mjModel* m, const mjData* d, const pair* k, geometry* g)
     g->ratio = s / dist;
     any_tangent(g->n, g->x);
     cross3(g->n, g->x, g->y);
-    return 0;
+    return g->h > 0.0 ? 0 : -1;
   }
   const mjtNum* p0 = d->geom_xpos + 3 * k->geom_a;
   const mjtNum* pm = d->geom_xmat + 9 * k->geom_a; /* plane frame: columns x, y, normal */
@@ -172,14 +172,13 @@ int pair_geometry(const mjModel* m, const mjData* d, const pair* k, geometry* g)
     double rel[3] = {c[0] - p0[0], c[1] - p0[1], c[2] - p0[2]};
     double dist = dot3(rel, n);
     g->h = k->radius - dist;
-    if (g->h <= 0.0) return -1;
     for (int i = 0; i < 3; i++) {
       g->centre[i] = c[i];
       g->point[i] = c[i] - dist * n[i];
       g->x[i] = t1[i];
       g->y[i] = t2[i];
     }
-    return 0;
+    return g->h > 0.0 ? 0 : -1;
   }
   /* Ellipsoid: the support point in the direction −n (geom frame), closed form. */
   const mjtNum* a = m->geom_size + 3 * k->geom_b;
@@ -199,7 +198,6 @@ int pair_geometry(const mjModel* m, const mjData* d, const pair* k, geometry* g)
   double rel[3] = {xw[0] - p0[0], xw[1] - p0[1], xw[2] - p0[2]};
   double dist = dot3(rel, n);
   g->h = -dist;
-  if (g->h <= 0.0) return -1;
   for (int i = 0; i < 3; i++) {
     g->point[i] = xw[i] - dist * n[i];
     g->centre[i] = xw[i];
@@ -218,7 +216,7 @@ int pair_geometry(const mjModel* m, const mjData* d, const pair* k, geometry* g)
   }
   for (int i = 0; i < 3; i++) g->x[i] = cs * t1[i] + sn * t2[i];
   cross3(g->n, g->x, g->y);
-  return 0;
+  return g->h > 0.0 ? 0 : -1;
 }
 
 /* The material velocity (world) at the world point q of a body with origin velocity v and ω w
