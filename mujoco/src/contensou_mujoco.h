@@ -123,6 +123,8 @@ typedef struct {
   geometry* geom;   /* their geometry (index order) */
   double* u;        /* 4 per pair taken: (v_n, v_x, v_y, ω) = J q̇ */
   double* u_free;   /* 4 per pair taken: J q̇_free, the end-of-step velocity without the instance */
+  double* h_free;   /* per pair taken: the approach at the free end-of-step pose (q drifted by Δt·q̇_free) */
+  mjData* drift;    /* scratch data for that pose (mj_kinematics only) */
   mjtNum* w;        /* W = J M⁻¹ Jᵀ, 4·count × 4·count, row-major, cross blocks included */
   mjtNum* jac;      /* J, 4·cap × nv */
   mjtNum* work;     /* 4·cap × nv */
@@ -134,8 +136,8 @@ typedef struct {
 /* Buffers for npair pairs of model m; −1 if memory is short (then nothing is held). */
 int step_work_init(step_work* s, const mjModel* m, int npair);
 void step_work_free(step_work* s);
-/* Fills s for the state of d (position and velocity stages done): the pairs that touch, or are
- * apart but closing within the step at their free velocity (h − Δt·u_free,n > 0); their count. */
+/* Fills s for the state of d (position and velocity stages done): the pairs that touch now or
+ * at the free end-of-step pose (h_free > 0); their count. */
 int step_prepare(const mjModel* m, mjData* d, const pair* pairs, int npair, step_work* s);
 
 #endif /* CONTENSOU_MUJOCO_H */

@@ -5,6 +5,11 @@
  * u_free = J q̇_free and the pairs' inverse mass W = J M⁻¹ Jᵀ with its cross blocks
  * (inverse_mass.c).
  *
+ * and the approach h_free of each pair at the free end-of-step pose — q integrated over Δt with
+ * q̇_free (mj_integratePos), as MuJoCo's Euler does with the end velocity: the gap as the bodies
+ * drift (a rattleback rolling over its 2 m bottom radius moves its gap by ≈ 1e-5 m per 1 ms step,
+ * four times its static approach) — by mj_kinematics on a scratch mjData.
+ *
  * The free end-of-step velocity is MuJoCo's semi-implicit Euler velocity update without this
  * instance's contacts:
  *
@@ -33,10 +38,12 @@ int step_work_init(step_work* s, const mjModel* m, int npair) {
   s->qvel = calloc(nv, sizeof(mjtNum));
   s->u = calloc(rows, sizeof(double));
   s->u_free = calloc(rows, sizeof(double));
+  s->h_free = calloc(rows / 4, sizeof(double));
+  s->drift = mj_makeData(m);
   s->geom = calloc(rows / 4, sizeof(geometry));
   s->index = calloc(rows / 4, sizeof(int));
   if (!s->jac || !s->work || !s->scratch || !s->w || !s->qfrc || !s->qvel || !s->u || !s->u_free || !s->geom ||
-      !s->index) {
+      !s->index || !s->h_free || !s->drift) {
     step_work_free(s);
     return -1;
   }
@@ -52,6 +59,8 @@ void step_work_free(step_work* s) {
   free(s->qvel);
   free(s->u);
   free(s->u_free);
+  free(s->h_free);
+  if (s->drift) mj_deleteData(s->drift);
   free(s->geom);
   free(s->index);
   memset(s, 0, sizeof(*s));
@@ -72,22 +81,36 @@ static void free_velocity(const mjModel* m, mjData* d, step_work* s) {
   for (int i = 0; i < nv; i++) s->qvel[i] = d->qvel[i] + m->opt.timestep * s->qvel[i];
 }
 
+/* The pose q + Δt·q̇_free in s->drift (its kinematics). */
+static void drift_pose(const mjModel* m, const mjData* d, step_work* s) {
+  mjData* x = s->drift;
+  mju_copy(x->qpos, d->qpos, m->nq);
+  if (m->nmocap) {
+    mju_copy(x->mocap_pos, d->mocap_pos, 3 * m->nmocap);
+    mju_copy(x->mocap_quat, d->mocap_quat, 4 * m->nmocap);
+  }
+  mj_integratePos(m, x->qpos, s->qvel, m->opt.timestep);
+  mj_kinematics(m, x);
+}
+
 int step_prepare(const mjModel* m, mjData* d, const pair* pairs, int npair, step_work* s) {
   int nv = m->nv;
   free_velocity(m, d, s);
+  drift_pose(m, d, s);
   int k = 0;
   for (int i = 0; i < npair; i++) {
     geometry* g = &s->geom[k];
+    geometry end;
     int touching = pair_geometry(m, d, &pairs[i], g) == 0;
-    if (!touching && !(g->h < 0.0)) continue; /* degenerate (two coincident sphere centres) */
+    int touching_end = pair_geometry(m, s->drift, &pairs[i], &end) == 0;
+    if (!touching && !touching_end) continue; /* apart now and at the free end of the step */
+    s->h_free[k] = end.h;
     mjtNum* jac = s->jac + (size_t)4 * k * nv;
     contact_jacobian(m, d, &pairs[i], g, jac, s->scratch);
     for (int r = 0; r < 4; r++) {
       s->u[4 * k + r] = mju_dot(jac + (size_t)r * nv, d->qvel, nv);
       s->u_free[4 * k + r] = mju_dot(jac + (size_t)r * nv, s->qvel, nv);
     }
-    /* Apart now and apart at the end of the free step: no contact within the step. */
-    if (!touching && !(g->h - m->opt.timestep * s->u_free[4 * k] > 0.0)) continue;
     s->index[k++] = i;
   }
   s->count = k;

@@ -57,12 +57,13 @@ __attribute__((visibility("default"))) int contensou_mujoco_test_inverse_mass(co
 }
 
 /* step_prepare (src/step_aware.c) on the pairs of `instance`: the K pairs taken into pair[],
- * their u and u_free (4K each) and W (4K × 4K); returns K, or −1 if more than cap or memory is
+ * their u and u_free (4K each), h_free (K) and W (4K × 4K); returns K, or −1 if more than cap or memory is
  * short. */
 __attribute__((visibility("default"))) int contensou_mujoco_test_step_prepare(const mjModel* m, mjData* d,
                                                                               int instance, int* pair_index,
                                                                               double* u, double* u_free,
-                                                                              double* w, int cap) {
+                                                                              double* h_free, double* w,
+                                                                              int cap) {
   int npair = enumerate_pairs(m, instance, NULL);
   pair* pairs = calloc(npair ? npair : 1, sizeof(pair));
   step_work s;
@@ -75,6 +76,7 @@ __attribute__((visibility("default"))) int contensou_mujoco_test_step_prepare(co
   if (k > cap) k = -1;
   for (int i = 0; i < k; i++) {
     pair_index[i] = s.index[i];
+    h_free[i] = s.h_free[i];
     for (int r = 0; r < 4; r++) {
       u[4 * i + r] = s.u[4 * i + r];
       u_free[4 * i + r] = s.u_free[4 * i + r];

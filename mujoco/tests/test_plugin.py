@@ -593,29 +593,30 @@ def test_inverse_mass_with_cross_blocks_matches_a_hand_construction():
 
 
 def step_prepare(m, d, cap=8):
-    """src/step_aware.c's step_prepare through the shim: the pairs taken, u, u_free, W."""
+    """src/step_aware.c's step_prepare through the shim: the pairs taken, u, u_free, h_free, W."""
     path = REPO / "mujoco" / "build" / "libcontensou_mujoco_test.so"
     if not path.exists():
         pytest.skip(f"{path}: run mujoco/build.sh")
     fn = ctypes.CDLL(str(path)).contensou_mujoco_test_step_prepare
     fn.restype = ctypes.c_int
     dp = ctypes.POINTER(ctypes.c_double)
-    fn.argtypes = [ctypes.c_void_p, ctypes.c_void_p, ctypes.c_int, ctypes.POINTER(ctypes.c_int), dp, dp, dp,
+    fn.argtypes = [ctypes.c_void_p, ctypes.c_void_p, ctypes.c_int, ctypes.POINTER(ctypes.c_int), dp, dp, dp, dp,
                    ctypes.c_int]
     index = (ctypes.c_int * cap)()
-    u, u_free, w = np.zeros(4 * cap), np.zeros(4 * cap), np.zeros((4 * cap) ** 2)
+    u, u_free, h_free, w = np.zeros(4 * cap), np.zeros(4 * cap), np.zeros(cap), np.zeros((4 * cap) ** 2)
     k = fn(m._address, d._address, 0, index, u.ctypes.data_as(dp), u_free.ctypes.data_as(dp),
-           w.ctypes.data_as(dp), cap)
+           h_free.ctypes.data_as(dp), w.ctypes.data_as(dp), cap)
     assert k >= 0
-    return list(index[:k]), u[:4 * k].reshape(k, 4), u_free[:4 * k].reshape(k, 4), w[:(4 * k) ** 2].reshape(4 * k, 4 * k)
+    return (list(index[:k]), u[:4 * k].reshape(k, 4), u_free[:4 * k].reshape(k, 4), h_free[:k],
+            w[:(4 * k) ** 2].reshape(4 * k, 4 * k))
 
 
 def test_free_end_velocity_is_mujocos_euler_step_without_the_contact():
     """u_free = J q̇_free: a tumbling dumbbell (turned principal axes, off-centre mass: Coriolis
     terms) falling towards the floor, just apart (no contact force at the start state), pushed
     by qfrc_applied and xfrc_applied: after one MuJoCo Euler step of 1 ms, J (at the start pose)
-    times the new q̇ equals the u_free computed before the step. The pairs close within the step,
-    so they are taken though apart; u = J q̇ equals the velocity of B's material point at the
+    times the new q̇ equals the u_free computed before the step, and the approach at the pose the
+    step reached equals h_free. The pairs close within the step, so they are taken though apart; u = J q̇ equals the velocity of B's material point at the
     patch centre P (below each sphere's centre on the floor) in (n, x, y) and ω·n."""
     bodies = """
     <body name="dumbbell" pos="0 0 0.01005"><freejoint/><plugin instance="c"/>
@@ -630,7 +631,7 @@ def test_free_end_velocity_is_mujocos_euler_step_without_the_contact():
     d.xfrc_applied[1] = [0.0, 0.03, 0.0, 0.0, 5e-5, 0.0]
     mujoco.mj_forward(m, d)
     assert np.all(run_models.contacts(m, d)[:, 6] < 0)  # both spheres apart
-    index, u, u_free, _ = step_prepare(m, d)
+    index, u, u_free, h_free, _ = step_prepare(m, d)
     assert index == [0, 1]  # both close within the step
     omega = d.xmat[1].reshape(3, 3) @ d.qvel[3:6]
     for k, g in enumerate((m.geom("left").id, m.geom("right").id)):
@@ -639,8 +640,11 @@ def test_free_end_velocity_is_mujocos_euler_step_without_the_contact():
         assert u[k] == pytest.approx([v[2], v[0], v[1], omega[2]], rel=1e-13, abs=1e-15)
     qpos0 = d.qpos.copy()
     mujoco.mj_step(m, d)
+    # h_free: the approach at the pose MuJoCo's step reached (no contact force: apart at the start)
+    mujoco.mj_forward(m, d)
+    assert np.all(h_free > 0) and np.array_equal(run_models.contacts(m, d)[:, 6], h_free)
     d.qpos[:] = qpos0  # J at the start pose, q̇ after the step
     mujoco.mj_forward(m, d)
-    _, u_end, _, _ = step_prepare(m, d)
+    _, u_end, _, _, _ = step_prepare(m, d)
     assert np.abs(u_end - u_free).max() <= 1e-12 * np.abs(u_free).max()  # measured: 0 (bit for bit)
     assert np.abs(u_free - u).max() > 1e-3  # the step changed u
