@@ -205,7 +205,8 @@ static void body_velocity(const mjModel* m, const mjData* d, int b, body_state* 
 
 static const double ZERO3[3] = {0.0, 0.0, 0.0};
 
-static void passive(const mjModel* m, mjData* d, instance_data* x) {
+/* The bodies' velocities at this state; their loads cleared. */
+static void begin_bodies(const mjModel* m, mjData* d, instance_data* x) {
   for (int i = 0; i < x->nbody; i++) {
     body_state* s = &x->state[i];
     body_velocity(m, d, x->bodies[i], s);
@@ -213,6 +214,110 @@ static void passive(const mjModel* m, mjData* d, instance_data* x) {
     memset(s->torque, 0, sizeof(s->torque));
     s->active = 0;
   }
+}
+
+/* Each loaded body's sum of loads into qfrc_passive, once per body. */
+static void end_bodies(const mjModel* m, mjData* d, instance_data* x) {
+  for (int i = 0; i < x->nbody; i++) {
+    body_state* s = &x->state[i];
+    if (s->active) {
+      int b = x->bodies[i];
+      mj_applyFT(m, d, s->force, s->torque, d->xpos + 3 * b, b, d->qfrc_passive);
+    }
+  }
+}
+
+/* One pair's kinematics at this state: the bodies (NULL: at rest, welded to the world), the
+ * arms from their origins to P, the slip v_B(P) − v_A(P) and spin ω_B − ω_A (world). */
+typedef struct {
+  body_state *sa, *sb;
+  double arm_a[3], arm_b[3];
+  double vrel[3], wrel[3];
+} kinematics;
+
+static void pair_kinematics(const mjData* d, instance_data* x, const pair* p, const geometry* g, kinematics* k) {
+  k->sb = x->slot[p->body_b] >= 0 ? &x->state[x->slot[p->body_b]] : NULL;
+  k->sa = x->slot[p->body_a] >= 0 ? &x->state[x->slot[p->body_a]] : NULL;
+  const mjtNum* ob = d->xpos + 3 * p->body_b;
+  for (int i = 0; i < 3; i++) {
+    k->arm_b[i] = g->point[i] - ob[i];
+    k->arm_a[i] = k->vrel[i] = k->wrel[i] = 0.0;
+  }
+  if (k->sb) {
+    point_velocity(k->sb->v, k->sb->w, k->arm_b, k->vrel);
+    memcpy(k->wrel, k->sb->w, sizeof(k->wrel));
+  }
+  if (k->sa) {
+    const mjtNum* oa = d->xpos + 3 * p->body_a;
+    double va[3];
+    for (int i = 0; i < 3; i++) k->arm_a[i] = g->point[i] - oa[i];
+    point_velocity(k->sa->v, k->sa->w, k->arm_a, va);
+    for (int i = 0; i < 3; i++) {
+      k->vrel[i] -= va[i];
+      k->wrel[i] -= k->sa->w[i];
+    }
+  }
+}
+
+/* Kalker's rolling velocity V = v_P − ½(u_A + u_B): the velocity of the geometric contact point
+ * over each surface, averaged (u the material velocities at P), in (x, y). */
+static contensou_rolling_step_f64 rolling_velocity(const mjModel* m, const mjData* d, const pair* p,
+                                                   const geometry* g, const kinematics* k) {
+  double vp[3], usum[3];
+  contact_point_velocity(m, d, p, g, k->sb ? k->sb->v : ZERO3, k->sb ? k->sb->w : ZERO3, k->sa ? k->sa->v : NULL,
+                         k->sa ? k->sa->w : NULL, vp);
+  for (int i = 0; i < 3; i++) usum[i] = k->vrel[i];
+  if (k->sa) {
+    double ua[3];
+    point_velocity(k->sa->v, k->sa->w, k->arm_a, ua);
+    for (int i = 0; i < 3; i++) usum[i] = k->vrel[i] + 2.0 * ua[i]; /* (u_B − u_A) + 2u_A */
+  }
+  double v[3];
+  for (int i = 0; i < 3; i++) v[i] = vp[i] - 0.5 * usum[i];
+  contensou_rolling_step_f64 roll = {dot3(v, g->x), dot3(v, g->y)};
+  return roll;
+}
+
+/* The wrench (N, F_x, F_y, T_z in the contact frame) of a pair: on B at P, its opposite on A. */
+static void apply_wrench(const geometry* g, const kinematics* k, double n, double fx, double fy, double tz) {
+  double force[3], moment[3];
+  for (int i = 0; i < 3; i++) force[i] = n * g->n[i] + fx * g->x[i] + fy * g->y[i];
+  if (k->sb) {
+    cross3(k->arm_b, force, moment);
+    for (int i = 0; i < 3; i++) {
+      k->sb->force[i] += force[i];
+      k->sb->torque[i] += moment[i] + tz * g->n[i];
+    }
+    k->sb->active = 1;
+  }
+  if (k->sa) {
+    cross3(k->arm_a, force, moment);
+    for (int i = 0; i < 3; i++) {
+      k->sa->force[i] -= force[i];
+      k->sa->torque[i] -= moment[i] + tz * g->n[i];
+    }
+    k->sa->active = 1;
+  }
+}
+
+/* The plain wrench of a pair at this state (its start-of-step wrench; with `step`, at the
+ * given per-step inputs instead of the pair's own kinematics). */
+static contensou_status plain_wrench(const mjModel* m, const mjData* d, const instance_data* x, pair* p,
+                                     const geometry* g, const kinematics* k, const contensou_step_f64* step,
+                                     contensou_wrench_f64* w) {
+  if (p->kind == ELLIPSOID_PLANE && g->p > 0.0) {
+    /* On error (a ratio beyond the library's range) the contact keeps its last curvatures. */
+    contensou_contact_set_curvatures_f64(&p->contact, g->p, g->q, NULL);
+  }
+  if (x->rolling) {
+    contensou_rolling_step_f64 roll = rolling_velocity(m, d, p, g, k);
+    return contensou_contact_wrench_rolling_f64(&p->contact, step, &roll, w, NULL);
+  }
+  return contensou_contact_wrench_f64(&p->contact, step, w, NULL);
+}
+
+static void passive(const mjModel* m, mjData* d, instance_data* x) {
+  begin_bodies(m, d, x);
   for (int k = 0; k < x->npair; k++) {
     pair* p = &x->pairs[k];
     double* out = x->out + NOUT * k;
@@ -221,54 +326,12 @@ static void passive(const mjModel* m, mjData* d, instance_data* x) {
     memset(out, 0, sizeof(double) * NOUT);
     out[OUT_H] = g.h;
     if (!touching) continue;
-    if (p->kind == ELLIPSOID_PLANE && g.p > 0.0) {
-      /* On error (a ratio beyond the library's range) the contact keeps its last curvatures. */
-      contensou_contact_set_curvatures_f64(&p->contact, g.p, g.q, NULL);
-    }
-    /* A body welded to the world (no slot) is at rest and takes no load. */
-    body_state* sb = x->slot[p->body_b] >= 0 ? &x->state[x->slot[p->body_b]] : NULL;
-    body_state* sa = x->slot[p->body_a] >= 0 ? &x->state[x->slot[p->body_a]] : NULL;
-    const mjtNum* ob = d->xpos + 3 * p->body_b;
-    double arm_b[3] = {g.point[0] - ob[0], g.point[1] - ob[1], g.point[2] - ob[2]};
-    double vrel[3] = {0, 0, 0}, wrel[3] = {0, 0, 0};
-    if (sb) {
-      point_velocity(sb->v, sb->w, arm_b, vrel);
-      memcpy(wrel, sb->w, sizeof(wrel));
-    }
-    double arm_a[3] = {0, 0, 0};
-    if (sa) {
-      const mjtNum* oa = d->xpos + 3 * p->body_a;
-      double va[3];
-      for (int i = 0; i < 3; i++) arm_a[i] = g.point[i] - oa[i];
-      point_velocity(sa->v, sa->w, arm_a, va);
-      for (int i = 0; i < 3; i++) {
-        vrel[i] -= va[i];
-        wrel[i] -= sa->w[i];
-      }
-    }
-    contensou_step_f64 step = {g.h, -dot3(vrel, g.n), dot3(vrel, g.x), dot3(vrel, g.y), dot3(wrel, g.n)};
+    kinematics kin;
+    pair_kinematics(d, x, p, &g, &kin);
+    contensou_step_f64 step = {g.h, -dot3(kin.vrel, g.n), dot3(kin.vrel, g.x), dot3(kin.vrel, g.y),
+                               dot3(kin.wrel, g.n)};
     contensou_wrench_f64 w;
-    contensou_status status;
-    if (x->rolling) {
-      /* Kalker's rolling velocity V = v_P − ½(u_A + u_B): the velocity of the geometric contact
-       * point over each surface, averaged (u the material velocities at P), in (x, y). */
-      double vp[3], usum[3];
-      contact_point_velocity(m, d, p, &g, sb ? sb->v : ZERO3, sb ? sb->w : ZERO3, sa ? sa->v : NULL,
-                             sa ? sa->w : NULL, vp);
-      for (int i = 0; i < 3; i++) usum[i] = vrel[i];
-      if (sa) {
-        double ua[3];
-        point_velocity(sa->v, sa->w, arm_a, ua);
-        for (int i = 0; i < 3; i++) usum[i] = vrel[i] + 2.0 * ua[i]; /* (u_B − u_A) + 2u_A */
-      }
-      double v[3];
-      for (int i = 0; i < 3; i++) v[i] = vp[i] - 0.5 * usum[i];
-      contensou_rolling_step_f64 roll = {dot3(v, g.x), dot3(v, g.y)};
-      status = contensou_contact_wrench_rolling_f64(&p->contact, &step, &roll, &w, NULL);
-    } else {
-      status = contensou_contact_wrench_f64(&p->contact, &step, &w, NULL);
-    }
-    if (status != CONTENSOU_STATUS_OK) {
+    if (plain_wrench(m, d, x, p, &g, &kin, &step, &w) != CONTENSOU_STATUS_OK) {
       continue; /* a non-finite state: no load (MuJoCo's own checks then reset the state) */
     }
     out[OUT_N] = w.n;
@@ -277,32 +340,9 @@ static void passive(const mjModel* m, mjData* d, instance_data* x) {
     out[OUT_TZ] = w.tz;
     out[OUT_A] = w.a;
     out[OUT_B] = w.b;
-    double force[3], moment[3];
-    for (int i = 0; i < 3; i++) force[i] = w.n * g.n[i] + w.fx * g.x[i] + w.fy * g.y[i];
-    if (sb) {
-      cross3(arm_b, force, moment);
-      for (int i = 0; i < 3; i++) {
-        sb->force[i] += force[i];
-        sb->torque[i] += moment[i] + w.tz * g.n[i];
-      }
-      sb->active = 1;
-    }
-    if (sa) {
-      cross3(arm_a, force, moment);
-      for (int i = 0; i < 3; i++) {
-        sa->force[i] -= force[i];
-        sa->torque[i] -= moment[i] + w.tz * g.n[i];
-      }
-      sa->active = 1;
-    }
+    apply_wrench(&g, &kin, w.n, w.fx, w.fy, w.tz);
   }
-  for (int i = 0; i < x->nbody; i++) {
-    body_state* s = &x->state[i];
-    if (s->active) {
-      int b = x->bodies[i];
-      mj_applyFT(m, d, s->force, s->torque, d->xpos + 3 * b, b, d->qfrc_passive);
-    }
-  }
+  end_bodies(m, d, x);
 }
 
 static void sensor(const mjModel* m, mjData* d, int instance, const instance_data* x) {
