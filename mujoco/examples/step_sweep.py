@@ -149,8 +149,9 @@ def main():
     ap.add_argument("--config", action="append", default=[], help="plugin config key=value (repeatable)")
     ap.add_argument("--end", type=float, default=None, help="simulated time (s; default per model)")
     ap.add_argument("--json", action="store_true", help="one JSON object per run instead of a table")
+    ap.add_argument("--plugin", default=str(run_models.PLUGIN), help="the plugin library")
     args = ap.parse_args()
-    run_models.load_plugin()
+    run_models.load_plugin(args.plugin)
     config = dict(c.split("=", 1) for c in args.config)
     if not args.json:
         print("| model | step | events (s; ball spin_rate rad/s²) | run | energy rise / step (rel.) | CPU s per sim. s |")

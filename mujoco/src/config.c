@@ -187,6 +187,19 @@ int read_config(const mjModel* m, int instance, config* c) {
   }
   c->rolling = is_rolling(c->law);
   if (read_elasticity(m, instance, c, law, nmaterial == 4)) return -1;
+  const char* step = config_value(m, instance, "step");
+  c->step_aware = 0;
+  if (step) {
+    if (!strcmp(step, "aware")) c->step_aware = 1;
+    else if (strcmp(step, "explicit")) {
+      mju_warning(PLUGIN_NAME ": step = '%s' is no step mode (explicit, aware)", step);
+      return -1;
+    }
+    if (c->step_aware && !step_available()) {
+      mju_warning(PLUGIN_NAME ": step = 'aware' needs the library's step-aware wrench, not in this build");
+      return -1;
+    }
+  }
   const char* form = config_value(m, instance, "form");
   c->form = FORM_AUTO;
   if (form) {

@@ -38,6 +38,7 @@ typedef struct {
   int rolling;         /* a rolling law (table, blend, fastsim, fastsim-16): G, ν and V are used */
   int has_g, has_nu;   /* G, ν given (or from the materials); else the library's defaults */
   double shear, poisson; /* G (Pa), ν of the pair (rolling laws) */
+  int step_aware;        /* step = aware: the step-aware wrench for MuJoCo's timestep */
 } config;
 
 /* The geometry of one pair at this state: approach h, patch centre, contact frame (n from A
@@ -99,6 +100,9 @@ void ellipsoid_rest(const mjModel* m, int g, double* p, double* q);
 /* The geometry of pair k at the state of d; 0 if they touch (h > 0), −1 if apart (then h < 0
  * is the gap, the rest filled as well, except for two sphere centres at the same point). */
 int pair_geometry(const mjModel* m, const mjData* d, const pair* k, geometry* g);
+/* The same at the geoms' poses geom_xpos (3 per geom), geom_xmat (9 per geom, row-major). */
+int pair_geometry_at(const mjModel* m, const mjtNum* geom_xpos, const mjtNum* geom_xmat, const pair* k,
+                     geometry* g);
 /* The velocity (world) of the geometric contact point P of pair k at geometry g: how P moves
  * as the bodies move (not a material velocity). vb, wb: B's origin velocity and ω; va, wa: A's
  * (NULL: A at rest). Only its tangential part is meaningful (the normal part is not computed). */
@@ -124,7 +128,9 @@ typedef struct {
   double* u;        /* 4 per pair taken: (v_n, v_x, v_y, ω) = J q̇ */
   double* u_free;   /* 4 per pair taken: J q̇_free, the end-of-step velocity without the instance */
   double* h_free;   /* per pair taken: the approach at the free end-of-step pose (q drifted by Δt·q̇_free) */
-  mjData* drift;    /* scratch data for that pose (mj_kinematics only) */
+  mjtNum* geom_xpos; /* that pose of every geom, 3 per geom */
+  mjtNum* geom_xmat; /* 9 per geom */
+  int* done;        /* scratch, per pair */
   mjtNum* w;        /* W = J M⁻¹ Jᵀ, 4·count × 4·count, row-major, cross blocks included */
   mjtNum* jac;      /* J, 4·cap × nv */
   mjtNum* work;     /* 4·cap × nv */
@@ -139,5 +145,14 @@ void step_work_free(step_work* s);
 /* Fills s for the state of d (position and velocity stages done): the pairs that touch now or
  * at the free end-of-step pose (h_free > 0); their count. */
 int step_prepare(const mjModel* m, mjData* d, const pair* pairs, int npair, step_work* s);
+
+/* The step-aware wrenches (4 per contact, contact frame) of k contacts sharing W (4k × 4k,
+ * row-major) over dt, from their start steps, rolling velocities (NULL: none), free end
+ * velocities u_free (4k) and approaches h_free (k); 0, or −1 if the library refused. */
+int step_solve(const contensou_contact_f64* const* contacts, int k, double dt, const double* w,
+               const contensou_step_f64* steps, const contensou_rolling_step_f64* rolling, const double* u_free,
+               const double* h_free, double* out);
+/* Whether this build has the step-aware wrench (step = aware). */
+int step_available(void);
 
 #endif /* CONTENSOU_MUJOCO_H */

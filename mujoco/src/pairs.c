@@ -126,14 +126,14 @@ void ellipsoid_rest(const mjModel* m, int g, double* p, double* q) {
   *q = fmax(k1, k2);
 }
 
-static void sphere_centre(const mjData* d, const pair* k, double c[3]) {
-  const mjtNum* xp = d->geom_xpos + 3 * k->geom_b;
+static void sphere_centre(const mjtNum* geom_xpos, const mjtNum* geom_xmat, const pair* k, double c[3]) {
+  const mjtNum* xp = geom_xpos + 3 * k->geom_b;
   if (k->offset == 0.0) {
     c[0] = xp[0];
     c[1] = xp[1];
     c[2] = xp[2];
   } else {
-    const mjtNum* r = d->geom_xmat + 9 * k->geom_b; /* geom z axis: column 2 */
+    const mjtNum* r = geom_xmat + 9 * k->geom_b; /* geom z axis: column 2 */
     c[0] = xp[0] + k->offset * r[2];
     c[1] = xp[1] + k->offset * r[5];
     c[2] = xp[2] + k->offset * r[8];
@@ -141,9 +141,14 @@ static void sphere_centre(const mjData* d, const pair* k, double c[3]) {
 }
 
 int pair_geometry(const mjModel* m, const mjData* d, const pair* k, geometry* g) {
+  return pair_geometry_at(m, d->geom_xpos, d->geom_xmat, k, g);
+}
+
+int pair_geometry_at(const mjModel* m, const mjtNum* geom_xpos, const mjtNum* geom_xmat, const pair* k,
+                     geometry* g) {
   if (k->kind == SPHERE_SPHERE) {
-    const mjtNum* ca = d->geom_xpos + 3 * k->geom_a;
-    const mjtNum* cb = d->geom_xpos + 3 * k->geom_b;
+    const mjtNum* ca = geom_xpos + 3 * k->geom_a;
+    const mjtNum* cb = geom_xpos + 3 * k->geom_b;
     double dv[3] = {cb[0] - ca[0], cb[1] - ca[1], cb[2] - ca[2]};
     double dist = sqrt(dot3(dv, dv));
     g->h = k->radius_a + k->radius - dist;
@@ -160,15 +165,15 @@ int pair_geometry(const mjModel* m, const mjData* d, const pair* k, geometry* g)
     cross3(g->n, g->x, g->y);
     return g->h > 0.0 ? 0 : -1;
   }
-  const mjtNum* p0 = d->geom_xpos + 3 * k->geom_a;
-  const mjtNum* pm = d->geom_xmat + 9 * k->geom_a; /* plane frame: columns x, y, normal */
+  const mjtNum* p0 = geom_xpos + 3 * k->geom_a;
+  const mjtNum* pm = geom_xmat + 9 * k->geom_a; /* plane frame: columns x, y, normal */
   double n[3] = {pm[2], pm[5], pm[8]};
   double t1[3] = {pm[0], pm[3], pm[6]};
   double t2[3] = {pm[1], pm[4], pm[7]};
   for (int i = 0; i < 3; i++) g->n[i] = n[i];
   if (k->kind == SPHERE_PLANE) {
     double c[3];
-    sphere_centre(d, k, c);
+    sphere_centre(geom_xpos, geom_xmat, k, c);
     double rel[3] = {c[0] - p0[0], c[1] - p0[1], c[2] - p0[2]};
     double dist = dot3(rel, n);
     g->h = k->radius - dist;
@@ -182,8 +187,8 @@ int pair_geometry(const mjModel* m, const mjData* d, const pair* k, geometry* g)
   }
   /* Ellipsoid: the support point in the direction −n (geom frame), closed form. */
   const mjtNum* a = m->geom_size + 3 * k->geom_b;
-  const mjtNum* r = d->geom_xmat + 9 * k->geom_b; /* geom → world, row-major */
-  const mjtNum* c = d->geom_xpos + 3 * k->geom_b;
+  const mjtNum* r = geom_xmat + 9 * k->geom_b; /* geom → world, row-major */
+  const mjtNum* c = geom_xpos + 3 * k->geom_b;
   double a2[3] = {a[0] * a[0], a[1] * a[1], a[2] * a[2]};
   double u[3], l1[3], l2[3];
   for (int i = 0; i < 3; i++) {

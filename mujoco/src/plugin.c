@@ -48,7 +48,7 @@
 #include "contensou_mujoco.h"
 
 static const char* const ATTRIBUTES[] = {"estar", "young1", "poisson1", "young2", "poisson2", "cd", "f",
-                                         "delta", "law",    "form",     "G",      "nu"};
+                                         "delta", "law",    "form",     "G",      "nu",       "step"};
 #define NATTRIBUTE ((int)(sizeof(ATTRIBUTES) / sizeof(ATTRIBUTES[0])))
 
 /* A body's velocity this step: ω (world) and the velocity of its origin xpos (world). */
@@ -62,6 +62,8 @@ typedef struct {
 
 typedef struct {
   int rolling; /* a rolling law: the rolling velocity is computed and passed */
+  int aware;   /* step = aware: the step-aware wrench (step_work) */
+  step_work step;
   int npair;
   pair* pairs;
   double* out;       /* NOUT per pair */
@@ -73,6 +75,7 @@ typedef struct {
 
 static void free_instance(instance_data* x) {
   if (!x) return;
+  if (x->aware) step_work_free(&x->step);
   free(x->pairs);
   free(x->out);
   free(x->bodies);
@@ -98,6 +101,13 @@ static int init(const mjModel* m, mjData* d, int instance) {
   }
   x->rolling = c.rolling;
   enumerate_pairs(m, instance, x->pairs);
+  if (c.step_aware) {
+    if (step_work_init(&x->step, m, x->npair)) {
+      free_instance(x);
+      return -1;
+    }
+    x->aware = 1;
+  }
   if (check_geoms(m, instance, x->pairs, x->npair)) {
     free_instance(x);
     return -1;
@@ -316,7 +326,114 @@ static contensou_status plain_wrench(const mjModel* m, const mjData* d, const in
   return contensou_contact_wrench_f64(&p->contact, step, w, NULL);
 }
 
+/*
+ * The step-aware path (step = aware): the pairs touching now or at the free end of the step
+ * (step_prepare: u = J q̇, u_free, h_free, W with its cross blocks), grouped by the moving bodies
+ * they share (W's cross blocks couple only those; groups of up to STEP_GROUP pairs, a larger group
+ * split in model order without the cross blocks between its parts), each group's step-aware
+ * wrenches in one call of the library, applied like the plain ones. The sensor reports the
+ * step-aware wrench and the patch (a, b) of the plain wrench at the start state.
+ */
+#define STEP_GROUP 4
+
+/* The moving body of a pair's side (−1: at rest). */
+static int moving(const instance_data* x, int body) { return x->slot[body]; }
+
+static void passive_step(const mjModel* m, mjData* d, instance_data* x) {
+  begin_bodies(m, d, x);
+  for (int k = 0; k < x->npair; k++) {
+    geometry g;
+    double* out = x->out + NOUT * k;
+    memset(out, 0, sizeof(double) * NOUT);
+    pair_geometry(m, d, &x->pairs[k], &g);
+    out[OUT_H] = g.h;
+  }
+  step_work* s = &x->step;
+  int count = step_prepare(m, d, x->pairs, x->npair, s);
+  int* done = s->done;
+  memset(done, 0, sizeof(int) * (size_t)(count > 0 ? count : 1));
+  for (int first = 0; first < count; first++) {
+    if (done[first]) continue;
+    /* The group of `first`: the taken pairs connected to it through shared moving bodies. */
+    int group[STEP_GROUP], n = 0;
+    group[n++] = first;
+    done[first] = 1;
+    for (int grown = 1; grown && n < STEP_GROUP;) {
+      grown = 0;
+      for (int j = first + 1; j < count && n < STEP_GROUP; j++) {
+        if (done[j]) continue;
+        const pair* pj = &x->pairs[s->index[j]];
+        for (int i = 0; i < n; i++) {
+          const pair* pi = &x->pairs[s->index[group[i]]];
+          int a = moving(x, pj->body_a), b = moving(x, pj->body_b);
+          int ai = moving(x, pi->body_a), bi = moving(x, pi->body_b);
+          if ((a >= 0 && (a == ai || a == bi)) || (b >= 0 && (b == ai || b == bi))) {
+            group[n++] = j;
+            done[j] = 1;
+            grown = 1;
+            break;
+          }
+        }
+      }
+    }
+    const contensou_contact_f64* contacts[STEP_GROUP];
+    contensou_step_f64 steps[STEP_GROUP];
+    contensou_rolling_step_f64 rolls[STEP_GROUP];
+    kinematics kins[STEP_GROUP];
+    double w[16 * STEP_GROUP * STEP_GROUP], u_free[4 * STEP_GROUP], h_free[STEP_GROUP], wrench[4 * STEP_GROUP];
+    double ab[2 * STEP_GROUP];
+    int rows = 4 * count;
+    for (int i = 0; i < n; i++) {
+      int t = group[i];
+      pair* p = &x->pairs[s->index[t]];
+      const geometry* g = &s->geom[t];
+      pair_kinematics(d, x, p, g, &kins[i]);
+      const double* u = s->u + 4 * t;
+      steps[i] = (contensou_step_f64){g->h, -u[0], u[1], u[2], u[3]};
+      contensou_wrench_f64 plain;
+      ab[2 * i] = ab[2 * i + 1] = 0.0;
+      if (g->h > 0.0 && plain_wrench(m, d, x, p, g, &kins[i], &steps[i], &plain) == CONTENSOU_STATUS_OK) {
+        ab[2 * i] = plain.a;
+        ab[2 * i + 1] = plain.b;
+      } else if (p->kind == ELLIPSOID_PLANE && g->p > 0.0) {
+        contensou_contact_set_curvatures_f64(&p->contact, g->p, g->q, NULL);
+      }
+      rolls[i] = x->rolling ? rolling_velocity(m, d, p, g, &kins[i]) : (contensou_rolling_step_f64){0.0, 0.0};
+      contacts[i] = &p->contact;
+      for (int r = 0; r < 4; r++) u_free[4 * i + r] = s->u_free[4 * t + r];
+      h_free[i] = s->h_free[t];
+      for (int j = 0; j < n; j++) {
+        for (int r = 0; r < 4; r++) {
+          for (int c = 0; c < 4; c++) {
+            w[(4 * i + r) * 4 * n + 4 * j + c] = s->w[(4 * t + r) * rows + 4 * group[j] + c];
+          }
+        }
+      }
+    }
+    if (step_solve(contacts, n, m->opt.timestep, w, steps, x->rolling ? rolls : NULL, u_free, h_free, wrench)) {
+      continue; /* refused (a non-finite state): no load, MuJoCo's own checks then act */
+    }
+    for (int i = 0; i < n; i++) {
+      int t = group[i];
+      double* out = x->out + NOUT * s->index[t];
+      const double* f = wrench + 4 * i;
+      out[OUT_N] = f[0];
+      out[OUT_FX] = f[1];
+      out[OUT_FY] = f[2];
+      out[OUT_TZ] = f[3];
+      out[OUT_A] = ab[2 * i];
+      out[OUT_B] = ab[2 * i + 1];
+      apply_wrench(&s->geom[t], &kins[i], f[0], f[1], f[2], f[3]);
+    }
+  }
+  end_bodies(m, d, x);
+}
+
 static void passive(const mjModel* m, mjData* d, instance_data* x) {
+  if (x->aware) {
+    passive_step(m, d, x);
+    return;
+  }
   begin_bodies(m, d, x);
   for (int k = 0; k < x->npair; k++) {
     pair* p = &x->pairs[k];

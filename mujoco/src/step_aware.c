@@ -5,10 +5,13 @@
  * u_free = J q̇_free and the pairs' inverse mass W = J M⁻¹ Jᵀ with its cross blocks
  * (inverse_mass.c).
  *
- * and the approach h_free of each pair at the free end-of-step pose — q integrated over Δt with
- * q̇_free (mj_integratePos), as MuJoCo's Euler does with the end velocity: the gap as the bodies
- * drift (a rattleback rolling over its 2 m bottom radius moves its gap by ≈ 1e-5 m per 1 ms step,
- * four times its static approach) — by mj_kinematics on a scratch mjData.
+ * and the approach h_free of each pair at the free end-of-step pose: the gap as the bodies drift
+ * (a rattleback rolling over its 2 m bottom radius moves its gap by ≈ 1e-5 m per 1 ms step, four
+ * times its static approach). Each body moves rigidly with its free end velocity (v_o of its
+ * origin, ω; mj_jac times q̇_free): origin p' = p + Δt·v_o, attitude R' = Q·R with Q the
+ * rotation by Δt·ω, so a geom at x goes to p' + Q(x − p). For a free joint this is MuJoCo's Euler
+ * position update (q̇_free as the end velocity; its quaternion integration is the same rotation,
+ * to rounding); for other joints a first-order rigid drift.
  *
  * The free end-of-step velocity is MuJoCo's semi-implicit Euler velocity update without this
  * instance's contacts:
@@ -39,11 +42,13 @@ int step_work_init(step_work* s, const mjModel* m, int npair) {
   s->u = calloc(rows, sizeof(double));
   s->u_free = calloc(rows, sizeof(double));
   s->h_free = calloc(rows / 4, sizeof(double));
-  s->drift = mj_makeData(m);
+  s->geom_xpos = calloc((size_t)3 * (size_t)(m->ngeom ? m->ngeom : 1), sizeof(mjtNum));
+  s->geom_xmat = calloc((size_t)9 * (size_t)(m->ngeom ? m->ngeom : 1), sizeof(mjtNum));
+  s->done = calloc(rows / 4, sizeof(int));
   s->geom = calloc(rows / 4, sizeof(geometry));
   s->index = calloc(rows / 4, sizeof(int));
   if (!s->jac || !s->work || !s->scratch || !s->w || !s->qfrc || !s->qvel || !s->u || !s->u_free || !s->geom ||
-      !s->index || !s->h_free || !s->drift) {
+      !s->index || !s->h_free || !s->geom_xpos || !s->geom_xmat || !s->done) {
     step_work_free(s);
     return -1;
   }
@@ -60,7 +65,9 @@ void step_work_free(step_work* s) {
   free(s->u);
   free(s->u_free);
   free(s->h_free);
-  if (s->drift) mj_deleteData(s->drift);
+  free(s->geom_xpos);
+  free(s->geom_xmat);
+  free(s->done);
   free(s->geom);
   free(s->index);
   memset(s, 0, sizeof(*s));
@@ -81,16 +88,40 @@ static void free_velocity(const mjModel* m, mjData* d, step_work* s) {
   for (int i = 0; i < nv; i++) s->qvel[i] = d->qvel[i] + m->opt.timestep * s->qvel[i];
 }
 
-/* The pose q + Δt·q̇_free in s->drift (its kinematics). */
+/* The geoms' poses at the free end of the step (module docs) in s->geom_xpos, s->geom_xmat:
+ * every geom of a body that moves (body_weldid ≠ 0), the others as they are. */
 static void drift_pose(const mjModel* m, const mjData* d, step_work* s) {
-  mjData* x = s->drift;
-  mju_copy(x->qpos, d->qpos, m->nq);
-  if (m->nmocap) {
-    mju_copy(x->mocap_pos, d->mocap_pos, 3 * m->nmocap);
-    mju_copy(x->mocap_quat, d->mocap_quat, 4 * m->nmocap);
+  int nv = m->nv;
+  double dt = m->opt.timestep;
+  mju_copy(s->geom_xpos, d->geom_xpos, 3 * m->ngeom);
+  mju_copy(s->geom_xmat, d->geom_xmat, 9 * m->ngeom);
+  for (int b = 1; b < m->nbody; b++) {
+    if (m->body_weldid[b] == 0 || m->body_geomnum[b] == 0) continue;
+    const mjtNum* p = d->xpos + 3 * b;
+    mjtNum* jp = s->scratch;
+    mjtNum* jr = s->scratch + 3 * nv;
+    mj_jac(m, d, jp, jr, p, b);
+    double v[3], w[3];
+    for (int i = 0; i < 3; i++) {
+      v[i] = mju_dot(jp + i * nv, s->qvel, nv);
+      w[i] = mju_dot(jr + i * nv, s->qvel, nv);
+    }
+    mjtNum q[4] = {1, 0, 0, 0}, rot[9];
+    double angle = mju_norm3(w) * dt;
+    if (angle > 0.0) {
+      mjtNum axis[3] = {w[0], w[1], w[2]};
+      mju_normalize3(axis);
+      mju_axisAngle2Quat(q, axis, angle);
+    }
+    mju_quat2Mat(rot, q);
+    for (int g = m->body_geomadr[b]; g < m->body_geomadr[b] + m->body_geomnum[b]; g++) {
+      const mjtNum* x = d->geom_xpos + 3 * g;
+      double r[3] = {x[0] - p[0], x[1] - p[1], x[2] - p[2]}, rr[3];
+      mju_mulMatVec3(rr, rot, r);
+      for (int i = 0; i < 3; i++) s->geom_xpos[3 * g + i] = p[i] + dt * v[i] + rr[i];
+      mju_mulMatMat(s->geom_xmat + 9 * g, rot, d->geom_xmat + 9 * g, 3, 3, 3);
+    }
   }
-  mj_integratePos(m, x->qpos, s->qvel, m->opt.timestep);
-  mj_kinematics(m, x);
 }
 
 int step_prepare(const mjModel* m, mjData* d, const pair* pairs, int npair, step_work* s) {
@@ -102,7 +133,7 @@ int step_prepare(const mjModel* m, mjData* d, const pair* pairs, int npair, step
     geometry* g = &s->geom[k];
     geometry end;
     int touching = pair_geometry(m, d, &pairs[i], g) == 0;
-    int touching_end = pair_geometry(m, s->drift, &pairs[i], &end) == 0;
+    int touching_end = pair_geometry_at(m, s->geom_xpos, s->geom_xmat, &pairs[i], &end) == 0;
     if (!touching && !touching_end) continue; /* apart now and at the free end of the step */
     s->h_free[k] = end.h;
     mjtNum* jac = s->jac + (size_t)4 * k * nv;
@@ -117,3 +148,27 @@ int step_prepare(const mjModel* m, mjData* d, const pair* pairs, int npair, step
   if (k > 0) inverse_mass(m, d, s->jac, 4 * k, s->work, s->w);
   return k;
 }
+
+#ifdef CONTENSOU_MUJOCO_PROTO
+/* Prototype build only (not committed to use): the step branch's step_wrenches through a local
+ * export, Jacobian by central differences. */
+unsigned contensou_proto_step_many_f64(const contensou_contact_f64* const* contacts, size_t k, double dt,
+                                       const double* w, const contensou_step_f64* steps,
+                                       const contensou_rolling_step_f64* rolling, const double* u_free,
+                                       const double* h_free, double* out);
+int step_available(void) { return 1; }
+int step_solve(const contensou_contact_f64* const* contacts, int k, double dt, const double* w,
+               const contensou_step_f64* steps, const contensou_rolling_step_f64* rolling, const double* u_free,
+               const double* h_free, double* out) {
+  return contensou_proto_step_many_f64(contacts, (size_t)k, dt, w, steps, rolling, u_free, h_free, out) ? -1 : 0;
+}
+#else
+/* Not yet in the C API: step = aware is refused at load. */
+int step_available(void) { return 0; }
+int step_solve(const contensou_contact_f64* const* contacts, int k, double dt, const double* w,
+               const contensou_step_f64* steps, const contensou_rolling_step_f64* rolling, const double* u_free,
+               const double* h_free, double* out) {
+  (void)contacts, (void)k, (void)dt, (void)w, (void)steps, (void)rolling, (void)u_free, (void)h_free, (void)out;
+  return -1;
+}
+#endif
