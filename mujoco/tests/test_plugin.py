@@ -651,7 +651,7 @@ def test_free_end_velocity_is_mujocos_euler_step_without_the_contact():
     assert np.abs(u_free - u).max() > 1e-3  # the step changed u
 
 
-def test_step_aware_mode_is_refused_until_the_library_has_it_and_bad_modes_are_refused():
+def test_bad_step_modes_are_refused_and_explicit_is_the_default():
     with pytest.raises(ValueError, match=r"step = 'implicit' is no step mode \(explicit, aware\)"):
         mujoco.MjModel.from_xml_string(xml(BALL, config=CONFIG + '<config key="step" value="implicit"/>'))
     m = mujoco.MjModel.from_xml_string(xml(BALL, config=CONFIG + '<config key="step" value="explicit"/>'))
