@@ -37,9 +37,10 @@ LEAVE = 0.01  # m: a body whose height rises this much above its start has left 
 ENDS = {"ball": 1.5, "tippe_top": 2.0, "rattleback": 3.0, "rattleback_rolling": 3.0}
 
 
-def load(name, dt, config):
-    """The model file with `timestep` = dt (None: as shipped) and the plugin config keys of
-    `config` replaced or added."""
+def load(name, dt, config, integrator=None):
+    """The model file with `timestep` = dt (None: as shipped), the integrator (None: as shipped;
+    Euler, RK4, implicit, implicitfast) and the plugin config keys of `config` replaced or
+    added."""
     text = (run_models.MODELS / f"{name}.xml").read_text()
     for key, value in config.items():
         tag = f'<config key="{key}" value="'
@@ -51,6 +52,8 @@ def load(name, dt, config):
     m = mujoco.MjModel.from_xml_string(text)
     if dt is not None:
         m.opt.timestep = dt
+    if integrator is not None:
+        m.opt.integrator = getattr(mujoco.mjtIntegrator, f"mjINT_{integrator.upper()}")
     m.opt.enableflags |= int(mujoco.mjtEnableBit.mjENBL_ENERGY)
     return m
 
@@ -59,9 +62,9 @@ def crossing(ts, xs, level):
     return run_models.crossing(ts, xs, level)
 
 
-def run(name, dt=None, config=None, key=0, end=None):
+def run(name, dt=None, config=None, key=0, end=None, integrator=None):
     """One run of model `name` from keyframe `key`; a dict of the figures (module docs)."""
-    m = load(name, dt, config or {})
+    m = load(name, dt, config or {}, integrator)
     d = mujoco.MjData(m)
     mujoco.mj_resetDataKeyframe(m, d, key)
     mujoco.mj_forward(m, d)
@@ -104,7 +107,8 @@ def run(name, dt=None, config=None, key=0, end=None):
             ts.append(d.time)
             series.append(sample())
     cpu = time.process_time() - cpu
-    out = {"model": name, "dt": h, "key": m.key(key).name if m.nkey else "", "config": config or {},
+    names = {int(v): k[len("mjINT_"):] for k, v in mujoco.mjtIntegrator.__members__.items()}
+    out = {"model": name, "dt": h, "integrator": names.get(int(m.opt.integrator), "?"), "key": m.key(key).name if m.nkey else "", "config": config or {},
            "stable": stable, "left_support": left, "t_end": d.time, "energy_max_rise": rise,
            "cpu_per_s": cpu / max(d.time, 1e-12)}
     if name == "ball":
@@ -138,7 +142,8 @@ def row(r):
     ev = {k: r[k] for k in ("roll", "spin_rate", "half", "touch", "reversal", "stall") if k in r}
     events = ", ".join(f"{k} {fmt(v)}" for k, v in ev.items())
     state = "stable" if r["stable"] else ("left its support" if r["left_support"] else "UNSTABLE")
-    return (f"| {r['model']}{' ' + r['key'] if r['key'] not in ('', 'launch') else ''} | {r['dt'] * 1e3:g} ms | "
+    return (f"| {r['model']}{' ' + r['key'] if r['key'] not in ('', 'launch') else ''} | {r['dt'] * 1e3:g} ms "
+            f"{r['integrator']} | "
             f"{events} | {state} at {r['t_end']:.3f} s | {r['energy_max_rise']:.2e} | {r['cpu_per_s']:.3f} |")
 
 
@@ -147,6 +152,7 @@ def main():
     ap.add_argument("--models", default="ball,tippe_top,rattleback,rattleback_rolling")
     ap.add_argument("--dt", default="shipped,0.0005,0.001,0.002", help="steps (s), 'shipped' for the file's")
     ap.add_argument("--config", action="append", default=[], help="plugin config key=value (repeatable)")
+    ap.add_argument("--integrator", default=None, help="Euler, RK4, implicit, implicitfast (default: as shipped)")
     ap.add_argument("--end", type=float, default=None, help="simulated time (s; default per model)")
     ap.add_argument("--json", action="store_true", help="one JSON object per run instead of a table")
     ap.add_argument("--plugin", default=str(run_models.PLUGIN), help="the plugin library")
@@ -159,7 +165,7 @@ def main():
     for name in args.models.split(","):
         for dt in args.dt.split(","):
             for key in keys(name):
-                r = run(name, None if dt == "shipped" else float(dt), config, key, args.end)
+                r = run(name, None if dt == "shipped" else float(dt), config, key, args.end, args.integrator)
                 print(json.dumps(r) if args.json else row(r), flush=True)
 
 

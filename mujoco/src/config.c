@@ -200,6 +200,16 @@ int read_config(const mjModel* m, int instance, config* c) {
       return -1;
     }
   }
+  if (config_number(m, instance, "step_point", 0, 0.0, &c->step_point)) return -1;
+  if (!(c->step_point >= 0.0 && c->step_point <= 1.0)) {
+    mju_warning(PLUGIN_NAME ": step_point = %g is not in [0, 1] (the fraction of the step at which the "
+                "contact velocity is predicted)", c->step_point);
+    return -1;
+  }
+  if (config_value(m, instance, "step_point") && !c->step_aware) {
+    mju_warning(PLUGIN_NAME ": step_point is read by step = 'aware' only");
+    return -1;
+  }
   const char* form = config_value(m, instance, "form");
   c->form = FORM_AUTO;
   if (form) {

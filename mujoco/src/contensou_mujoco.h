@@ -39,6 +39,7 @@ typedef struct {
   int has_g, has_nu;   /* G, ν given (or from the materials); else the library's defaults */
   double shear, poisson; /* G (Pa), ν of the pair (rolling laws) */
   int step_aware;        /* step = aware: the step-aware wrench for MuJoCo's timestep */
+  double step_point;     /* step_point θ ∈ [0, 1] (step-aware): where u_free is taken (default 0) */
 } config;
 
 /* The geometry of one pair at this state: approach h, patch centre, contact frame (n from A
@@ -131,6 +132,10 @@ typedef struct {
   mjtNum* geom_xpos; /* that pose of every geom, 3 per geom */
   mjtNum* geom_xmat; /* 9 per geom */
   int* done;        /* scratch, per pair */
+  double point;     /* step_point θ: u_free at the contact point and frame of the pose drifted by θ·Δt */
+  mjtNum* body_v;   /* per body: the free end velocity of its origin (3), */
+  mjtNum* body_w;   /* its ω (3), */
+  mjtNum* body_p;   /* its origin drifted by θ·Δt (3) */
   mjtNum* w;        /* W = J M⁻¹ Jᵀ, 4·count × 4·count, row-major, cross blocks included */
   mjtNum* jac;      /* J, 4·cap × nv */
   mjtNum* work;     /* 4·cap × nv */
@@ -139,8 +144,9 @@ typedef struct {
   mjtNum* qvel;     /* q̇_free, nv */
 } step_work;
 
-/* Buffers for npair pairs of model m; −1 if memory is short (then nothing is held). */
-int step_work_init(step_work* s, const mjModel* m, int npair);
+/* Buffers for npair pairs of model m, u_free at step_point θ; −1 if memory is short (then
+ * nothing is held). */
+int step_work_init(step_work* s, const mjModel* m, int npair, double point);
 void step_work_free(step_work* s);
 /* Fills s for the state of d (position and velocity stages done): the pairs that touch now or
  * at the free end-of-step pose (h_free > 0); their count. */

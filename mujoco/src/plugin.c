@@ -48,7 +48,8 @@
 #include "contensou_mujoco.h"
 
 static const char* const ATTRIBUTES[] = {"estar", "young1", "poisson1", "young2", "poisson2", "cd", "f",
-                                         "delta", "law",    "form",     "G",      "nu",       "step"};
+                                         "delta", "law",    "form",     "G",      "nu",       "step",
+                                         "step_point"};
 #define NATTRIBUTE ((int)(sizeof(ATTRIBUTES) / sizeof(ATTRIBUTES[0])))
 
 /* A body's velocity this step: ω (world) and the velocity of its origin xpos (world). */
@@ -102,7 +103,7 @@ static int init(const mjModel* m, mjData* d, int instance) {
   x->rolling = c.rolling;
   enumerate_pairs(m, instance, x->pairs);
   if (c.step_aware) {
-    if (step_work_init(&x->step, m, x->npair)) {
+    if (step_work_init(&x->step, m, x->npair, c.step_point)) {
       free_instance(x);
       return -1;
     }

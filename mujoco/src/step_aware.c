@@ -28,8 +28,12 @@
 
 #include "contensou_mujoco.h"
 
-int step_work_init(step_work* s, const mjModel* m, int npair) {
+int step_work_init(step_work* s, const mjModel* m, int npair, double point) {
   memset(s, 0, sizeof(*s));
+  s->point = point;
+  s->body_v = calloc((size_t)3 * (size_t)m->nbody, sizeof(mjtNum));
+  s->body_w = calloc((size_t)3 * (size_t)m->nbody, sizeof(mjtNum));
+  s->body_p = calloc((size_t)3 * (size_t)m->nbody, sizeof(mjtNum));
   size_t nv = (size_t)(m->nv ? m->nv : 1);
   size_t rows = (size_t)4 * (size_t)(npair ? npair : 1);
   s->cap = npair;
@@ -48,7 +52,8 @@ int step_work_init(step_work* s, const mjModel* m, int npair) {
   s->geom = calloc(rows / 4, sizeof(geometry));
   s->index = calloc(rows / 4, sizeof(int));
   if (!s->jac || !s->work || !s->scratch || !s->w || !s->qfrc || !s->qvel || !s->u || !s->u_free || !s->geom ||
-      !s->index || !s->h_free || !s->geom_xpos || !s->geom_xmat || !s->done) {
+      !s->index || !s->h_free || !s->geom_xpos || !s->geom_xmat || !s->done ||
+      !s->body_v || !s->body_w || !s->body_p) {
     step_work_free(s);
     return -1;
   }
@@ -68,6 +73,9 @@ void step_work_free(step_work* s) {
   free(s->geom_xpos);
   free(s->geom_xmat);
   free(s->done);
+  free(s->body_v);
+  free(s->body_w);
+  free(s->body_p);
   free(s->geom);
   free(s->index);
   memset(s, 0, sizeof(*s));
@@ -90,9 +98,9 @@ static void free_velocity(const mjModel* m, mjData* d, step_work* s) {
 
 /* The geoms' poses at the free end of the step (module docs) in s->geom_xpos, s->geom_xmat:
  * every geom of a body that moves (body_weldid ≠ 0), the others as they are. */
-static void drift_pose(const mjModel* m, const mjData* d, step_work* s) {
+static void drift_pose(const mjModel* m, const mjData* d, step_work* s, double fraction) {
   int nv = m->nv;
-  double dt = m->opt.timestep;
+  double dt = m->opt.timestep * fraction;
   mju_copy(s->geom_xpos, d->geom_xpos, 3 * m->ngeom);
   mju_copy(s->geom_xmat, d->geom_xmat, 9 * m->ngeom);
   for (int b = 1; b < m->nbody; b++) {
@@ -105,6 +113,9 @@ static void drift_pose(const mjModel* m, const mjData* d, step_work* s) {
     for (int i = 0; i < 3; i++) {
       v[i] = mju_dot(jp + i * nv, s->qvel, nv);
       w[i] = mju_dot(jr + i * nv, s->qvel, nv);
+      s->body_v[3 * b + i] = v[i];
+      s->body_w[3 * b + i] = w[i];
+      s->body_p[3 * b + i] = p[i] + dt * v[i];
     }
     mjtNum q[4] = {1, 0, 0, 0}, rot[9];
     double angle = mju_norm3(w) * dt;
@@ -124,10 +135,33 @@ static void drift_pose(const mjModel* m, const mjData* d, step_work* s) {
   }
 }
 
+/* The free end velocity u = (v_n, v_x, v_y, ω) of pair k at the drifted geometry e: the
+ * bodies' free end velocities (origin drifted as in drift_pose) at e's contact point, in e's
+ * frame. */
+static void drifted_velocity(const mjModel* m, const step_work* s, const pair* k, const geometry* e, double u[4]) {
+  double v[3] = {0, 0, 0}, w[3] = {0, 0, 0};
+  const int bodies[2] = {k->body_b, k->body_a};
+  for (int side = 0; side < 2; side++) {
+    int b = bodies[side];
+    if (b <= 0 || m->body_weldid[b] == 0) continue;
+    double sign = side == 0 ? 1.0 : -1.0, arm[3], pv[3];
+    for (int i = 0; i < 3; i++) arm[i] = e->point[i] - s->body_p[3 * b + i];
+    point_velocity(s->body_v + 3 * b, s->body_w + 3 * b, arm, pv);
+    for (int i = 0; i < 3; i++) {
+      v[i] += sign * pv[i];
+      w[i] += sign * s->body_w[3 * b + i];
+    }
+  }
+  u[0] = dot3(v, e->n);
+  u[1] = dot3(v, e->x);
+  u[2] = dot3(v, e->y);
+  u[3] = dot3(w, e->n);
+}
+
 int step_prepare(const mjModel* m, mjData* d, const pair* pairs, int npair, step_work* s) {
   int nv = m->nv;
   free_velocity(m, d, s);
-  drift_pose(m, d, s);
+  drift_pose(m, d, s, 1.0);
   int k = 0;
   for (int i = 0; i < npair; i++) {
     geometry* g = &s->geom[k];
@@ -145,6 +179,15 @@ int step_prepare(const mjModel* m, mjData* d, const pair* pairs, int npair, step
     s->index[k++] = i;
   }
   s->count = k;
+  if (s->point > 0.0) {
+    /* step_point θ > 0: u_free at the contact point and frame of the pose drifted by θ·Δt. */
+    if (s->point != 1.0) drift_pose(m, d, s, s->point);
+    for (int t = 0; t < k; t++) {
+      geometry e;
+      pair_geometry_at(m, s->geom_xpos, s->geom_xmat, &pairs[s->index[t]], &e);
+      drifted_velocity(m, s, &pairs[s->index[t]], &e, s->u_free + 4 * t);
+    }
+  }
   if (k > 0) inverse_mass(m, d, s->jac, 4 * k, s->work, s->w);
   return k;
 }

@@ -67,7 +67,7 @@ __attribute__((visibility("default"))) int contensou_mujoco_test_step_prepare(co
   int npair = enumerate_pairs(m, instance, NULL);
   pair* pairs = calloc(npair ? npair : 1, sizeof(pair));
   step_work s;
-  if (!pairs || step_work_init(&s, m, npair)) {
+  if (!pairs || step_work_init(&s, m, npair, 0.0)) {
     free(pairs);
     return -1;
   }

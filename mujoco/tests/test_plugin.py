@@ -656,3 +656,7 @@ def test_bad_step_modes_are_refused_and_explicit_is_the_default():
         mujoco.MjModel.from_xml_string(xml(BALL, config=CONFIG + '<config key="step" value="implicit"/>'))
     m = mujoco.MjModel.from_xml_string(xml(BALL, config=CONFIG + '<config key="step" value="explicit"/>'))
     assert m.nplugin == 1
+    with pytest.raises(ValueError, match=r"step_point is read by step = 'aware' only"):
+        mujoco.MjModel.from_xml_string(xml(BALL, config=CONFIG + '<config key="step_point" value="0.5"/>'))
+    with pytest.raises(ValueError, match=r"step_point = 1.5 is not in \[0, 1\]"):
+        mujoco.MjModel.from_xml_string(xml(BALL, config=CONFIG + '<config key="step_point" value="1.5"/>'))
