@@ -13,6 +13,7 @@ examples/rattleback.rs).
 
 import argparse
 import math
+import os
 import time
 from pathlib import Path
 
@@ -20,7 +21,8 @@ import mujoco
 import numpy as np
 
 ROOT = Path(__file__).resolve().parents[1]
-PLUGIN = ROOT / "build" / "libcontensou_mujoco.so"
+# The plugin library; CONTENSOU_MUJOCO_PLUGIN names another build (the tests, the examples).
+PLUGIN = Path(os.environ.get("CONTENSOU_MUJOCO_PLUGIN", ROOT / "build" / "libcontensou_mujoco.so"))
 MODELS = ROOT / "models"
 THETA_STAR = math.acos((5e-3 - 15e-3) / (16e-3 - 3e-3))  # both spheres of the top on the floor
 
