@@ -61,10 +61,26 @@ typedef struct {
   int active;
 } body_state;
 
+/* One pair's kinematics at this state: the bodies (NULL: at rest, welded to the world), the
+ * arms from their origins to P, the slip v_B(P) − v_A(P) and spin ω_B − ω_A (world). */
+typedef struct kinematics_ {
+  body_state *sa, *sb;
+  double arm_a[3], arm_b[3];
+  double vrel[3], wrel[3];
+} kinematics;
+
 typedef struct {
   int rolling; /* a rolling law: the rolling velocity is computed and passed */
   int aware;   /* step = aware: the step-aware wrench (step_work) */
   step_work step;
+  /* step = aware, per pair taken: */
+  contensou_step_f64* steps;
+  contensou_rolling_step_f64* rolls;
+  struct kinematics_* kins;
+  double* ab;     /* the start patch's a, b */
+  double* wrench; /* 4 */
+  int* group;
+  int* other;
   int npair;
   pair* pairs;
   double* out;       /* NOUT per pair */
@@ -77,6 +93,13 @@ typedef struct {
 static void free_instance(instance_data* x) {
   if (!x) return;
   if (x->aware) step_work_free(&x->step);
+  free(x->steps);
+  free(x->rolls);
+  free(x->kins);
+  free(x->ab);
+  free(x->wrench);
+  free(x->group);
+  free(x->other);
   free(x->pairs);
   free(x->out);
   free(x->bodies);
@@ -108,6 +131,18 @@ static int init(const mjModel* m, mjData* d, int instance) {
       return -1;
     }
     x->aware = 1;
+    size_t n = (size_t)(x->npair ? x->npair : 1);
+    x->steps = calloc(n, sizeof(contensou_step_f64));
+    x->rolls = calloc(n, sizeof(contensou_rolling_step_f64));
+    x->kins = calloc(n, sizeof(kinematics));
+    x->ab = calloc(2 * n, sizeof(double));
+    x->wrench = calloc(4 * n, sizeof(double));
+    x->group = calloc(n, sizeof(int));
+    x->other = calloc(n, sizeof(int));
+    if (!x->steps || !x->rolls || !x->kins || !x->ab || !x->wrench || !x->group || !x->other) {
+      free_instance(x);
+      return -1;
+    }
   }
   if (check_geoms(m, instance, x->pairs, x->npair)) {
     free_instance(x);
@@ -238,13 +273,6 @@ static void end_bodies(const mjModel* m, mjData* d, instance_data* x) {
   }
 }
 
-/* One pair's kinematics at this state: the bodies (NULL: at rest, welded to the world), the
- * arms from their origins to P, the slip v_B(P) − v_A(P) and spin ω_B − ω_A (world). */
-typedef struct {
-  body_state *sa, *sb;
-  double arm_a[3], arm_b[3];
-  double vrel[3], wrel[3];
-} kinematics;
 
 static void pair_kinematics(const mjData* d, instance_data* x, const pair* p, const geometry* g, kinematics* k) {
   k->sb = x->slot[p->body_b] >= 0 ? &x->state[x->slot[p->body_b]] : NULL;
@@ -335,10 +363,60 @@ static contensou_status plain_wrench(const mjModel* m, const mjData* d, const in
  * wrenches in one call of the library, applied like the plain ones. The sensor reports the
  * step-aware wrench and the patch (a, b) of the plain wrench at the start state.
  */
-#define STEP_GROUP 4
+#define STEP_GROUP 8
+/* Block Gauss–Seidel sweeps over the parts of a group larger than STEP_GROUP (fixed count). */
+#define STEP_SWEEPS 6
 
 /* The moving body of a pair's side (−1: at rest). */
 static int moving(const instance_data* x, int body) { return x->slot[body]; }
+
+/* Do taken pairs t and j of s share a moving body? */
+static int coupled(const instance_data* x, const step_work* s, int t, int j) {
+  const pair* pt = &x->pairs[s->index[t]];
+  const pair* pj = &x->pairs[s->index[j]];
+  int a = moving(x, pj->body_a), b = moving(x, pj->body_b);
+  int at = moving(x, pt->body_a), bt = moving(x, pt->body_b);
+  return (a >= 0 && (a == at || a == bt)) || (b >= 0 && (b == at || b == bt));
+}
+
+/* The step-aware wrenches of the n ≤ STEP_GROUP taken pairs part[] (into x->wrench), with
+ * u_free and h_free shifted by the impulse of the group's other pairs other[0..nother) (their
+ * current x->wrench): Δu = Δt·W·w̄, Δh = −Δt²·(W·w̄)_n. */
+static void solve_part(const mjModel* m, instance_data* x, const int* part, int n, const int* other, int nother) {
+  step_work* s = &x->step;
+  double dt = m->opt.timestep;
+  int rows = 4 * s->count;
+  const contensou_contact_f64* contacts[STEP_GROUP] = {0};
+  contensou_step_f64 steps[STEP_GROUP] = {{0}};
+  contensou_rolling_step_f64 rolls[STEP_GROUP] = {{0}};
+  double w[16 * STEP_GROUP * STEP_GROUP] = {0}, u_free[4 * STEP_GROUP] = {0}, h_free[STEP_GROUP] = {0};
+  double wrench[4 * STEP_GROUP] = {0};
+  for (int i = 0; i < n; i++) {
+    int t = part[i];
+    contacts[i] = &x->pairs[s->index[t]].contact;
+    steps[i] = x->steps[t];
+    rolls[i] = x->rolls[t];
+    h_free[i] = s->h_free[t];
+    for (int r = 0; r < 4; r++) {
+      double du = 0.0;
+      for (int o = 0; o < nother; o++) {
+        for (int c = 0; c < 4; c++) du += s->w[(4 * t + r) * rows + 4 * other[o] + c] * x->wrench[4 * other[o] + c];
+      }
+      u_free[4 * i + r] = s->u_free[4 * t + r] + dt * du;
+      if (r == 0) h_free[i] -= dt * dt * du;
+    }
+    for (int j = 0; j < n; j++) {
+      for (int r = 0; r < 4; r++) {
+        for (int c = 0; c < 4; c++) w[(4 * i + r) * 4 * n + 4 * j + c] = s->w[(4 * t + r) * rows + 4 * part[j] + c];
+      }
+    }
+  }
+  int ok = !step_solve(contacts, n, dt, w, steps, x->rolling ? rolls : NULL, u_free, h_free, wrench);
+  for (int i = 0; i < n; i++) {
+    /* Refused (a non-finite state): no load, MuJoCo's own checks then act. */
+    for (int r = 0; r < 4; r++) x->wrench[4 * part[i] + r] = ok ? wrench[4 * i + r] : 0.0;
+  }
+}
 
 static void passive_step(const mjModel* m, mjData* d, instance_data* x) {
   begin_bodies(m, d, x);
@@ -351,81 +429,67 @@ static void passive_step(const mjModel* m, mjData* d, instance_data* x) {
   }
   step_work* s = &x->step;
   int count = step_prepare(m, d, x->pairs, x->npair, s);
+  for (int t = 0; t < count; t++) {
+    pair* p = &x->pairs[s->index[t]];
+    const geometry* g = &s->geom[t];
+    pair_kinematics(d, x, p, g, &x->kins[t]);
+    const double* u = s->u + 4 * t;
+    x->steps[t] = (contensou_step_f64){g->h, -u[0], u[1], u[2], u[3]};
+    contensou_wrench_f64 plain;
+    x->ab[2 * t] = x->ab[2 * t + 1] = 0.0;
+    if (g->h > 0.0 && plain_wrench(m, d, x, p, g, &x->kins[t], &x->steps[t], &plain) == CONTENSOU_STATUS_OK) {
+      x->ab[2 * t] = plain.a;
+      x->ab[2 * t + 1] = plain.b;
+    } else if (p->kind == ELLIPSOID_PLANE && g->p > 0.0) {
+      contensou_contact_set_curvatures_f64(&p->contact, g->p, g->q, NULL);
+    }
+    x->rolls[t] = x->rolling ? rolling_velocity(m, d, p, g, &x->kins[t]) : (contensou_rolling_step_f64){0.0, 0.0};
+    for (int r = 0; r < 4; r++) x->wrench[4 * t + r] = 0.0;
+  }
+  /* Groups: the taken pairs connected through shared moving bodies (W couples only those). */
   int* done = s->done;
+  int* group = x->group;
   memset(done, 0, sizeof(int) * (size_t)(count > 0 ? count : 1));
   for (int first = 0; first < count; first++) {
     if (done[first]) continue;
-    /* The group of `first`: the taken pairs connected to it through shared moving bodies. */
-    int group[STEP_GROUP], n = 0;
+    int n = 0;
     group[n++] = first;
     done[first] = 1;
-    for (int grown = 1; grown && n < STEP_GROUP;) {
-      grown = 0;
-      for (int j = first + 1; j < count && n < STEP_GROUP; j++) {
-        if (done[j]) continue;
-        const pair* pj = &x->pairs[s->index[j]];
+    for (int i = 0; i < n; i++) {
+      for (int j = first + 1; j < count; j++) {
+        if (!done[j] && coupled(x, s, group[i], j)) {
+          group[n++] = j;
+          done[j] = 1;
+        }
+      }
+    }
+    if (n <= STEP_GROUP) {
+      solve_part(m, x, group, n, NULL, 0);
+      continue;
+    }
+    /* A larger group: parts of STEP_GROUP pairs in order, each solved with the others' latest
+     * impulse in its free motion, STEP_SWEEPS sweeps (block Gauss–Seidel on the step's system). */
+    int* other = x->other;
+    for (int sweep = 0; sweep < STEP_SWEEPS; sweep++) {
+      for (int start = 0; start < n; start += STEP_GROUP) {
+        int len = n - start < STEP_GROUP ? n - start : STEP_GROUP, nother = 0;
         for (int i = 0; i < n; i++) {
-          const pair* pi = &x->pairs[s->index[group[i]]];
-          int a = moving(x, pj->body_a), b = moving(x, pj->body_b);
-          int ai = moving(x, pi->body_a), bi = moving(x, pi->body_b);
-          if ((a >= 0 && (a == ai || a == bi)) || (b >= 0 && (b == ai || b == bi))) {
-            group[n++] = j;
-            done[j] = 1;
-            grown = 1;
-            break;
-          }
+          if (i < start || i >= start + len) other[nother++] = group[i];
         }
+        solve_part(m, x, group + start, len, other, nother);
       }
     }
-    const contensou_contact_f64* contacts[STEP_GROUP];
-    contensou_step_f64 steps[STEP_GROUP];
-    contensou_rolling_step_f64 rolls[STEP_GROUP];
-    kinematics kins[STEP_GROUP];
-    double w[16 * STEP_GROUP * STEP_GROUP], u_free[4 * STEP_GROUP], h_free[STEP_GROUP], wrench[4 * STEP_GROUP];
-    double ab[2 * STEP_GROUP];
-    int rows = 4 * count;
-    for (int i = 0; i < n; i++) {
-      int t = group[i];
-      pair* p = &x->pairs[s->index[t]];
-      const geometry* g = &s->geom[t];
-      pair_kinematics(d, x, p, g, &kins[i]);
-      const double* u = s->u + 4 * t;
-      steps[i] = (contensou_step_f64){g->h, -u[0], u[1], u[2], u[3]};
-      contensou_wrench_f64 plain;
-      ab[2 * i] = ab[2 * i + 1] = 0.0;
-      if (g->h > 0.0 && plain_wrench(m, d, x, p, g, &kins[i], &steps[i], &plain) == CONTENSOU_STATUS_OK) {
-        ab[2 * i] = plain.a;
-        ab[2 * i + 1] = plain.b;
-      } else if (p->kind == ELLIPSOID_PLANE && g->p > 0.0) {
-        contensou_contact_set_curvatures_f64(&p->contact, g->p, g->q, NULL);
-      }
-      rolls[i] = x->rolling ? rolling_velocity(m, d, p, g, &kins[i]) : (contensou_rolling_step_f64){0.0, 0.0};
-      contacts[i] = &p->contact;
-      for (int r = 0; r < 4; r++) u_free[4 * i + r] = s->u_free[4 * t + r];
-      h_free[i] = s->h_free[t];
-      for (int j = 0; j < n; j++) {
-        for (int r = 0; r < 4; r++) {
-          for (int c = 0; c < 4; c++) {
-            w[(4 * i + r) * 4 * n + 4 * j + c] = s->w[(4 * t + r) * rows + 4 * group[j] + c];
-          }
-        }
-      }
-    }
-    if (step_solve(contacts, n, m->opt.timestep, w, steps, x->rolling ? rolls : NULL, u_free, h_free, wrench)) {
-      continue; /* refused (a non-finite state): no load, MuJoCo's own checks then act */
-    }
-    for (int i = 0; i < n; i++) {
-      int t = group[i];
-      double* out = x->out + NOUT * s->index[t];
-      const double* f = wrench + 4 * i;
-      out[OUT_N] = f[0];
-      out[OUT_FX] = f[1];
-      out[OUT_FY] = f[2];
-      out[OUT_TZ] = f[3];
-      out[OUT_A] = ab[2 * i];
-      out[OUT_B] = ab[2 * i + 1];
-      apply_wrench(&s->geom[t], &kins[i], f[0], f[1], f[2], f[3]);
-    }
+  }
+  for (int t = 0; t < count; t++) {
+    double* out = x->out + NOUT * s->index[t];
+    const double* f = x->wrench + 4 * t;
+    out[OUT_N] = f[0];
+    out[OUT_FX] = f[1];
+    out[OUT_FY] = f[2];
+    out[OUT_TZ] = f[3];
+    out[OUT_A] = x->ab[2 * t];
+    out[OUT_B] = x->ab[2 * t + 1];
+    apply_wrench(&s->geom[t], &x->kins[t], f[0], f[1], f[2], f[3]);
   }
   end_bodies(m, d, x);
 }

@@ -720,3 +720,36 @@ def test_step_aware_rolling_rattleback_keeps_the_rust_scenes_outcome(dt, key):
         assert run[event] is not None
         if event == "reversal":  # measured −2.2 % at 0.5 ms, −2.3 % at 1 ms; the steady stall −11 / −14 %
             assert run[event] == pytest.approx(t_rust, rel=0.10)
+
+
+@pytest.mark.parametrize("nfeet,rest", [(6, 1e-9), (10, 1e-5)])
+def test_step_aware_feet_share_the_weight_at_2ms(nfeet, rest):
+    """A plate on n spheres (one body: n contacts with W's cross blocks) resting on the floor with
+    step = aware at 2 ms: the normal forces add up to the weight, every foot carries its share by
+    symmetry, no friction, the plate at rest. Six feet: one solve (up to 8 contacts per call);
+    ten: two parts of 8 and 2, block Gauss–Seidel over them — the weight is carried, the plate
+    at rest (|q̇| 2.8e-7 after 1 s), but the shares are uneven (0.30–0.87 N for 0.59 N each: the
+    sweeps settle on a slightly tilted plate; without them the parts each carried the whole
+    weight and the plate hopped at 0.28 m/s)."""
+    feet = "".join(f'<geom name="f{i}" type="sphere" size="0.01" pos="{0.05 * math.cos(2 * i * math.pi / nfeet)!r} '
+                   f'{0.05 * math.sin(2 * i * math.pi / nfeet)!r} 0" contype="0" conaffinity="0"/>'
+                   for i in range(nfeet))
+    body = f"""<body name="plate" pos="0 0 0.0099999"><freejoint/><plugin instance="c"/>
+      <inertial pos="0 0 0" mass="0.6" diaginertia="4e-4 4e-4 8e-4"/>{feet}</body>"""
+    config = CONFIG + "".join(f'<config key="{k}" value="{v}"/>' for k, v in AWARE.items())
+    try:
+        m = mujoco.MjModel.from_xml_string(xml(body, config=config))
+    except ValueError as e:
+        if "not in this build" in str(e):
+            pytest.skip("this build has no step-aware wrench (step = aware refused)")
+        raise
+    m.opt.timestep = 2e-3
+    m.opt.integrator = mujoco.mjtIntegrator.mjINT_IMPLICITFAST
+    d = mujoco.MjData(m)
+    mujoco.mj_step(m, d, 500)  # 1 s
+    rows = run_models.contacts(m, d)
+    assert rows.shape == (nfeet, 7)
+    assert rows[:, 0].sum() == pytest.approx(0.6 * 9.81, rel=1e-9)
+    if nfeet <= 8:
+        assert rows[:, 0] == pytest.approx([0.6 * 9.81 / nfeet] * nfeet, rel=1e-3)
+    assert np.abs(rows[:, 1:4]).max() < 1e-6 and np.abs(d.qvel).max() < rest
