@@ -71,6 +71,53 @@ def cases():
     return out
 
 
+STEP_AWARE_DT = 0.002  # MuJoCo's default step
+
+
+def step_aware_rows():
+    """(scene, run, model) at MuJoCo's default 2 ms against today's plugin at its shipped step:
+    native condim 6 at 2 ms, the plugin model with step = aware at 2 ms (Euler), the shipped
+    plugin model (explicit) at its own step; [] if this build has no step-aware wrench."""
+    out = []
+    for scene, xml, module in (("tippe top", "tippe_top.xml", top), ("ball", "ball.xml", ball)):
+        pm = mujoco.MjModel.from_xml_path(str(run_models.MODELS / xml))
+        text = (run_models.MODELS / xml).read_text().replace(
+            "</instance>", '  <config key="step" value="aware"/>\n      </instance>', 1)
+        try:
+            am = mujoco.MjModel.from_xml_string(text)
+        except ValueError:
+            return []
+        am.opt.timestep = STEP_AWARE_DT
+        native = (top.model(6, dt=STEP_AWARE_DT, integrator="Euler") if module is top
+                  else ball.model(6, dt=STEP_AWARE_DT))
+        out.append((scene, "MuJoCo native, condim 6, 2 ms", native))
+        out.append((scene, "contensou.contact plugin, step = aware, 2 ms", am))
+        out.append((scene, f"contensou.contact plugin as shipped (explicit, {pm.opt.timestep * 1e6:g} µs)", pm))
+    return out
+
+
+def step_aware_section(starts, sim, repeat):
+    rows = step_aware_rows()
+    if not rows:
+        return ["", "(This build has no step-aware wrench: `step = aware` is refused; no 2 ms rows.)"]
+    best = {}
+    for _ in range(repeat):
+        for scene, name, m in rows:
+            _, c, _ = timed(m, None, *starts[scene], sim)
+            best[(scene, name)] = min(c, best.get((scene, name), c))
+    lines = ["", "## At MuJoCo's default 2 ms: the step-aware plugin", "",
+             "The plugin model with `<config key=\"step\" value=\"aware\"/>` and `timestep` 2 ms (Euler) against "
+             "MuJoCo's native condim-6 contact at 2 ms and against the shipped model (explicit contact, its own small "
+             "step): CPU time per simulated second, the fastest of the repeats.", "",
+             "| scene | run | CPU / simulated s | vs native condim 6 at 2 ms |", "|---|---|---:|---:|"]
+    for scene in ("tippe top", "ball"):
+        c6 = best[(scene, "MuJoCo native, condim 6, 2 ms")]
+        for s_, name, _ in rows:
+            if s_ == scene:
+                lines.append(f"| {scene} | {name} | {best[(scene, name)]:.4f} s | {best[(scene, name)] / c6:.2f}× |")
+    return lines
+
+
 def start_state(scene):
     """qpos, qvel of the scene's keyframe 0 (the plugin model's)."""
     m = mujoco.MjModel.from_xml_path(str(run_models.MODELS / ("tippe_top.xml" if scene == "tippe top" else "ball.xml")))
@@ -109,8 +156,9 @@ def main():
     ap.add_argument("--sim", type=float, default=0.5, help="simulated seconds per run (default 0.5)")
     ap.add_argument("--repeat", type=int, default=3, help="repeats; the fastest counts (default 3)")
     ap.add_argument("--out", default=str(REPO / "bench-results" / "mujoco.md"), help="output file, - for stdout")
+    ap.add_argument("--plugin", default=str(run_models.PLUGIN), help="the plugin library")
     args = ap.parse_args()
-    run_models.load_plugin()
+    run_models.load_plugin(args.plugin)
     rows = cases()
     starts = {scene: start_state(scene) for scene in {r[0] for r in rows}}
     best = {}
@@ -158,6 +206,7 @@ def main():
             f"the example's; the contact's own cost over the bare step: plugin {(pl_off - bare) / max(cb_off - bare, 1e-30):.3f}× "
             f"the callback's; the shipped plugin model takes **{pl_off / c6:.2f}×** the CPU time of MuJoCo's native "
             f"condim-6 contact ({pl_on / c6:.2f}× with the contact flag on).")
+    lines += step_aware_section(starts, args.sim, args.repeat)
     text = "\n".join(lines) + "\n"
     if args.out == "-":
         print(text)

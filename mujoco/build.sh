@@ -3,7 +3,7 @@
 #   mujoco/build/libcontensou_mujoco.so   the plugin (C, capi's staticlib linked in; exports no symbol
 #                                         but its load-time registration)
 #   mujoco/build/run_model                 examples/run_model.c: loads the plugin and a model from C
-# and runs the three models from C with the plugin and the runner under ASan + UBSan (leaks too),
+# and runs the four models from C with the plugin and the runner under ASan + UBSan (leaks too),
 # plus a refused model (its message checked); `--no-check` skips that.
 # against the `mujoco` Python package of $PYTHON (default: python3; headers from mujoco.HEADERS_DIR,
 # its libmujoco.so.*), and the C API's host staticlib (capi/, built here with cargo).
@@ -38,15 +38,19 @@ if nm -D --defined-only build/libcontensou_mujoco.so | awk '$2 ~ /[TDB]/ { print
 fi
 gcc "${flags[@]}" examples/run_model.c "$lib" -Wl,-rpath,"$pkg" -lm -o build/run_model
 echo "mujoco: build/run_model"
+# The tests' shim (tests/inverse_mass_shim.c): the contacts' W through ctypes, no plugin registration.
+gcc "${flags[@]}" -fvisibility=hidden -shared tests/inverse_mass_shim.c src/pairs.c src/inverse_mass.c src/step_aware.c "$lib" \
+    -Wl,-z,defs -Wl,-rpath,"$pkg" -lm -o build/libcontensou_mujoco_test.so
+echo "mujoco: build/libcontensou_mujoco_test.so (tests only)"
 
 if ((check)); then
-    echo "mujoco: the three models from C under ASan + UBSan (plugin and runner instrumented), and a refused model"
+    echo "mujoco: the four models from C under ASan + UBSan (plugin and runner instrumented), and a refused model"
     san=(-fsanitize=address,undefined -fno-sanitize-recover=all -g -O1)
     gcc -std=c11 -fPIC -ffp-contract=off "${san[@]}" -I"$(dirname "$headers")" -I../capi/include -shared \
         src/*.c "$capi" "$lib" -Wl,--exclude-libs,ALL -Wl,-rpath,"$pkg" -lpthread -ldl -lm \
         -o build/libcontensou_mujoco-san.so
     gcc -std=c11 "${san[@]}" -I"$(dirname "$headers")" examples/run_model.c "$lib" -Wl,-rpath,"$pkg" -lm -o build/run_model-san
-    for model in tippe_top ball rattleback; do
+    for model in tippe_top ball rattleback rattleback_rolling; do
         build/run_model-san build/libcontensou_mujoco-san.so "models/$model.xml" 0.02 >/dev/null
     done
     bad="$(mktemp -d)"

@@ -2,7 +2,7 @@
 that declares it, reset to keyframe 0 and step — no callback code.
 
     mujoco/build.sh                                    # builds mujoco/build/libcontensou_mujoco.so
-    python mujoco/examples/run_models.py               # the three scenes: tippe top 2 s, ball 2 s, rattleback 2 s
+    python mujoco/examples/run_models.py               # the scenes: tippe top, ball, rattleback (full slip, rolling) 2 s each
     python mujoco/examples/run_models.py --end 0.1     # a smoke run
 
 Prints per scene what the library's own scene reports: the tippe top's t(θ = π/2) and touch-down
@@ -13,6 +13,7 @@ examples/rattleback.rs).
 
 import argparse
 import math
+import os
 import time
 from pathlib import Path
 
@@ -20,7 +21,8 @@ import mujoco
 import numpy as np
 
 ROOT = Path(__file__).resolve().parents[1]
-PLUGIN = ROOT / "build" / "libcontensou_mujoco.so"
+# The plugin library; CONTENSOU_MUJOCO_PLUGIN names another build (the tests, the examples).
+PLUGIN = Path(os.environ.get("CONTENSOU_MUJOCO_PLUGIN", ROOT / "build" / "libcontensou_mujoco.so"))
 MODELS = ROOT / "models"
 THETA_STAR = math.acos((5e-3 - 15e-3) / (16e-3 - 3e-3))  # both spheres of the top on the floor
 
@@ -32,11 +34,14 @@ def load_plugin(path=PLUGIN):
     mujoco.mj_loadPluginLibrary(str(path))
 
 
-def load(name):
-    """The model mujoco/models/<name>.xml and a data at its keyframe 0."""
+def load(name, key=0, timestep=None):
+    """The model mujoco/models/<name>.xml (its `timestep` replaced if given) and a data at its
+    keyframe `key`."""
     m = mujoco.MjModel.from_xml_path(str(MODELS / f"{name}.xml"))
+    if timestep is not None:
+        m.opt.timestep = timestep
     d = mujoco.MjData(m)
-    mujoco.mj_resetDataKeyframe(m, d, 0)
+    mujoco.mj_resetDataKeyframe(m, d, key)
     mujoco.mj_forward(m, d)
     return m, d
 
@@ -105,10 +110,12 @@ def spin_rate(run, t0, t1):
     return float(np.polyfit(run["t"][k], run["spin"][k], 1)[0])
 
 
-def run_rattleback(end, sample=1e-2):
+def run_rattleback(end, sample=1e-2, name="rattleback", key=0, timestep=None):
     """Spin ω·ẑ every `sample` s; reversal (turned and reached 10 % of |ω₀| the other way) or
-    stall (braked below 10 % of |ω₀| without reversal), as examples/rattleback.rs."""
-    m, d = load("rattleback")
+    stall (braked below 10 % of |ω₀| without reversal), as examples/rattleback.rs. `name`:
+    the model (rattleback_rolling: Kalker's creep), `key`: its keyframe (rattleback_rolling's
+    1: ω₀ = +2 rad/s)."""
+    m, d = load(name, key, timestep)
     every = max(1, round(sample / m.opt.timestep))
     spin0 = float((d.xmat[1].reshape(3, 3) @ d.qvel[3:6])[2])
     ts, spins = [d.time], [spin0]
@@ -146,6 +153,11 @@ def main():
     print(f"rattleback: ω₀ = {rb['spin0']:+.2f} rad/s, reversal {fmt(rb['reversal'], digits=2)}, "
           f"stall {fmt(rb['stall'], digits=2)}, spin({args.end:g} s) = {rb['spin']:+.3f} rad/s; "
           f"{rb['wall']:.2f} s wall, {rb['cpu']:.2f} s CPU")
+    for key, label in ((0, "ω₀ = −2"), (1, "ω₀ = +2")):
+        rb = run_rattleback(args.end, sample=1e-3, name="rattleback_rolling", key=key)
+        print(f"rattleback rolling (table), {label}: reversal {fmt(rb['reversal'], digits=3)}, "
+              f"stall {fmt(rb['stall'], digits=3)}, spin({args.end:g} s) = {rb['spin']:+.3f} rad/s; "
+              f"{rb['wall']:.2f} s wall, {rb['cpu']:.2f} s CPU")
 
 
 if __name__ == "__main__":

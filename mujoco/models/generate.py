@@ -1,7 +1,9 @@
-"""Writes mujoco/models/{tippe_top,ball,rattleback}.xml: the library's scenes as MJCF models with
-the `contensou.contact` plugin, each with keyframe 0 = the scene's initial state.
+"""Writes mujoco/models/{tippe_top,ball,rattleback,rattleback_rolling}.xml: the library's scenes as
+MJCF models with the `contensou.contact` plugin, each with keyframe 0 = the scene's initial state
+(rattleback_rolling: Kalker's creep, law `table`, G and ν of Params::elasticity; keyframe 1
+"steady" the opposite spin ω₀ = +2 rad/s).
 
-    python mujoco/models/generate.py            # rewrite the three files
+    python mujoco/models/generate.py            # rewrite the four files
     python mujoco/models/generate.py --check    # exit 1 if a committed file differs (numbers to 1e-12; the tests do this)
 
 Parameters come from the Python-callback examples (python/examples/mujoco_tippe_top.py and
@@ -167,7 +169,22 @@ def rattleback_lowest(rot):
     return low, p, q
 
 
-def rattleback():
+def rattleback_elasticity():
+    """G, ν of the rolling laws as src/scenes/rattleback.rs (Params::elasticity): PMMA-like
+    (2.744 GPa, 0.35) on soda-lime glass (70 GPa, 0.22) by Kalker's rule for dissimilar bodies
+    (Elasticity::dissimilar), G scaled by E*/E*_pair (E*_pair = 3.00 GPa); the same arithmetic."""
+    e1, nu1, e2, nu2 = 2.744e9, 0.35, 70e9, 0.22
+    pair_estar = 1.0 / ((1.0 - nu1 * nu1) / e1 + (1.0 - nu2 * nu2) / e2)
+    scale = RB_ESTAR / pair_estar
+    g1, g2 = e1 / (2.0 * (1.0 + nu1)) * scale, e2 / (2.0 * (1.0 + nu2)) * scale
+    (glo, nlo), (ghi, nhi) = sorted([(g1, nu1), (g2, nu2)], key=lambda x: x[0])
+    q = glo / ghi
+    r = 1.0 / (1.0 + q)
+    return min(glo * (2.0 * r), ghi), max(0.0, min(0.5, (nlo + q * nhi) * r))
+
+
+def rattleback_state(spin):
+    """qpos, qvel of Rattleback::initial_state(tilt, spin)."""
     import contensou
 
     half = RB_TILT / 2
@@ -183,18 +200,32 @@ def rattleback():
     k_h = contact.step(h_probe, 0.0, 0.0, 0.0, 0.0)[0] / h_probe**1.5
     h0 = (RB_MASS * RB_G / k_h) ** (2 / 3)
     g = np.array([0.0, 0.0, -low[2] - h0])
-    omega_w = np.array([0.0, 0.0, RB_SPIN])
+    omega_w = np.array([0.0, 0.0, spin])
     arm = np.array([low[0], low[1], -g[2]])
     v = -np.cross(omega_w, arm)
     omega_b = rot.T @ omega_w
-    qpos = [*g, *q]
-    qvel = [*v, *omega_b]
+    return [*g, *q], [*v, *omega_b]
+
+
+def rattleback(rolling=False):
+    qpos, qvel = rattleback_state(RB_SPIN)
     iquat = [math.cos(RB_SKEW / 2), 0, 0, math.sin(RB_SKEW / 2)]
-    return HEADER.format(source="src/scenes/rattleback.rs (Params::kane_levinson) and examples/rattleback.rs") + f"""<mujoco model="rattleback (contensou.contact)">
+    if rolling:
+        # Kalker's creep (the default rolling law, table) from the pair's G, ν and the contact's
+        # rolling velocity; δ is not read by the rolling laws.
+        shear, nu = rattleback_elasticity()
+        law = config(estar=f(RB_ESTAR), cd=f(RB_CD), f=f(RB_F), law="table", G=f(shear), nu=f(nu))
+        name, steady = "rattleback, rolling (contensou.contact)", rattleback_state(-RB_SPIN)
+        keys = f"""
+    <key name="steady" qpos="{vec(steady[0])}" qvel="{vec(steady[1])}"/>"""
+    else:
+        law = config(estar=f(RB_ESTAR), cd=f(RB_CD), f=f(RB_F), delta=f(RB_DELTA), law="best")
+        name, keys = "rattleback (contensou.contact)", ""
+    return HEADER.format(source="src/scenes/rattleback.rs (Params::kane_levinson) and examples/rattleback.rs") + f"""<mujoco model="{name}">
   <extension>
     <plugin plugin="contensou.contact">
       <instance name="contact">
-{config(estar=f(RB_ESTAR), cd=f(RB_CD), f=f(RB_F), delta=f(RB_DELTA), law="best")}
+{law}
       </instance>
     </plugin>
   </extension>
@@ -217,13 +248,14 @@ def rattleback():
     <plugin name="contacts" instance="contact"/>
   </sensor>
   <keyframe>
-    <key name="launch" qpos="{vec(qpos)}" qvel="{vec(qvel)}"/>
+    <key name="launch" qpos="{vec(qpos)}" qvel="{vec(qvel)}"/>{keys}
   </keyframe>
 </mujoco>
 """
 
 
-MODELS = {"tippe_top.xml": tippe_top, "ball.xml": ball_model, "rattleback.xml": rattleback}
+MODELS = {"tippe_top.xml": tippe_top, "ball.xml": ball_model, "rattleback.xml": rattleback,
+          "rattleback_rolling.xml": lambda: rattleback(rolling=True)}
 NUMBER = re.compile(r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?")
 
 

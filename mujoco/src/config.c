@@ -64,6 +64,87 @@ static int config_number(const mjModel* m, int instance, const char* key, int re
   return 0;
 }
 
+/* The law of a name: the library's sliding and rolling laws, and "rolling" for its default
+ * rolling law (table); −1 for any other name (also the library's reference laws full-slip and
+ * linear, which build no contact). */
+#define LAW_NAMES "best, simplified, pade, ellipsoid, coulomb; rolling laws: rolling (= table), table, blend, fastsim, fastsim-16"
+static int read_law(const char* name, contensou_law* law) {
+  if (!strcmp(name, "rolling")) {
+    *law = CONTENSOU_LAW_TABLE;
+    return 0;
+  }
+  if (contensou_law_from_name(name, law) != CONTENSOU_STATUS_OK) return -1;
+  return *law == CONTENSOU_LAW_FULL_SLIP || *law == CONTENSOU_LAW_LINEAR ? -1 : 0;
+}
+
+int is_rolling(contensou_law law) {
+  return law == CONTENSOU_LAW_TABLE || law == CONTENSOU_LAW_BLEND || law == CONTENSOU_LAW_FASTSIM ||
+         law == CONTENSOU_LAW_FASTSIM_16;
+}
+
+/*
+ * The rolling laws' elasticity: G and ν from the keys G, nu, or from the materials young1,
+ * poisson1, young2, poisson2 by Kalker's rule for dissimilar bodies (the C twin of
+ * contensou::friction::rolling::Elasticity::dissimilar: Gᵢ = Eᵢ/(2(1 + νᵢ)), with q = G_lo/G_hi,
+ * G = 2G_lo/(1 + q), ν = (ν_lo + qν_hi)/(1 + q)), or neither (the library's defaults G = E*(1 − ν),
+ * ν = 0.3). Refused: G or nu with a sliding law, G or nu together with the materials.
+ */
+static int read_elasticity(const mjModel* m, int instance, config* c, const char* law, int materials) {
+  const char* g = config_value(m, instance, "G");
+  const char* nu = config_value(m, instance, "nu");
+  if (!c->rolling) {
+    if (g || nu) {
+      mju_warning(PLUGIN_NAME ": %s = '%s' is read by the rolling laws only (law = '%s'; rolling laws: "
+                  "rolling, table, blend, fastsim, fastsim-16)", g ? "G" : "nu", g ? g : nu, law ? law : "best");
+      return -1;
+    }
+    return 0;
+  }
+  if (materials && (g || nu)) {
+    mju_warning(PLUGIN_NAME ": give either %s (= '%s') or young1, poisson1, young2, poisson2 (which give G "
+                "and nu by Kalker's rule), not both", g ? "G" : "nu", g ? g : nu);
+    return -1;
+  }
+  if (materials) {
+    double e[4];
+    const char* keys[4] = {"young1", "poisson1", "young2", "poisson2"};
+    for (int i = 0; i < 4; i++) {
+      if (config_number(m, instance, keys[i], 1, 0, &e[i])) return -1;
+    }
+    for (int i = 1; i < 4; i += 2) {
+      if (!(e[i] >= 0.0 && e[i] <= 0.5)) {
+        mju_warning(PLUGIN_NAME ": %s = %g: the rolling laws take Poisson's ratios in [0, 0.5]", keys[i], e[i]);
+        return -1;
+      }
+    }
+    double g1 = e[0] / (2.0 * (1.0 + e[1])), g2 = e[2] / (2.0 * (1.0 + e[3]));
+    double glo = g1 <= g2 ? g1 : g2, ghi = g1 <= g2 ? g2 : g1;
+    double nlo = g1 <= g2 ? e[1] : e[3], nhi = g1 <= g2 ? e[3] : e[1];
+    double q = glo / ghi, r = 1.0 / (1.0 + q);
+    c->shear = fmin(glo * (2.0 * r), ghi);
+    c->poisson = fmax(0.0, fmin(0.5, (nlo + q * nhi) * r));
+    c->has_g = c->has_nu = 1;
+    return 0;
+  }
+  if (g) {
+    if (config_number(m, instance, "G", 1, 0, &c->shear)) return -1;
+    c->has_g = 1;
+  }
+  if (nu) {
+    if (config_number(m, instance, "nu", 1, 0, &c->poisson)) return -1;
+    c->has_nu = 1;
+  }
+  return 0;
+}
+
+/* A contact of the configuration's law, elasticity and form on spec (P, Q set). */
+contensou_status new_contact(contensou_contact_f64* storage, const config* c, const contensou_spec_f64* spec,
+                             contensou_form form, contensou_column* column) {
+  if (!c->rolling) return contensou_contact_new_f64(storage, spec, c->law, form, column);
+  return contensou_contact_new_rolling_f64(storage, spec, c->has_g ? &c->shear : NULL,
+                                           c->has_nu ? &c->poisson : NULL, c->law, form, column);
+}
+
 /* The configuration of `instance`, validated by the library; −1 with a warning naming the
  * attribute and its value. */
 int read_config(const mjModel* m, int instance, config* c) {
@@ -100,8 +181,33 @@ int read_config(const mjModel* m, int instance, config* c) {
 
   const char* law = config_value(m, instance, "law");
   c->law = CONTENSOU_LAW_BEST;
-  if (law && contensou_law_from_name(law, &c->law) != CONTENSOU_STATUS_OK) {
-    mju_warning(PLUGIN_NAME ": law = '%s' is no law (best, simplified, pade, ellipsoid, coulomb)", law);
+  if (law && read_law(law, &c->law)) {
+    mju_warning(PLUGIN_NAME ": law = '%s' is no law (" LAW_NAMES ")", law);
+    return -1;
+  }
+  c->rolling = is_rolling(c->law);
+  if (read_elasticity(m, instance, c, law, nmaterial == 4)) return -1;
+  const char* step = config_value(m, instance, "step");
+  c->step_aware = 0;
+  if (step) {
+    if (!strcmp(step, "aware")) c->step_aware = 1;
+    else if (strcmp(step, "explicit")) {
+      mju_warning(PLUGIN_NAME ": step = '%s' is no step mode (explicit, aware)", step);
+      return -1;
+    }
+    if (c->step_aware && !step_available()) {
+      mju_warning(PLUGIN_NAME ": step = 'aware' needs the library's step-aware wrench, not in this build");
+      return -1;
+    }
+  }
+  if (config_number(m, instance, "step_point", 0, 0.0, &c->step_point)) return -1;
+  if (!(c->step_point >= 0.0 && c->step_point <= 1.0)) {
+    mju_warning(PLUGIN_NAME ": step_point = %g is not in [0, 1] (the fraction of the step at which the "
+                "contact velocity is predicted)", c->step_point);
+    return -1;
+  }
+  if (config_value(m, instance, "step_point") && !c->step_aware) {
+    mju_warning(PLUGIN_NAME ": step_point is read by step = 'aware' only");
     return -1;
   }
   const char* form = config_value(m, instance, "form");
@@ -115,18 +221,21 @@ int read_config(const mjModel* m, int instance, config* c) {
       return -1;
     }
   }
-  /* The library validates estar, cd, f, delta: build a sphere contact to learn its verdict. */
+  /* The library validates estar, cd, f, delta (and G, ν for a rolling law): build a sphere
+   * contact to learn its verdict. */
   contensou_spec_f64 probe = c->spec;
   probe.p = probe.q = 1.0;
   contensou_column column = CONTENSOU_COLUMN_NONE;
   contensou_contact_f64 storage;
-  contensou_status s = contensou_contact_new_f64(&storage, &probe, c->law, CONTENSOU_FORM_FIXED, &column);
+  contensou_status s = new_contact(&storage, c, &probe, CONTENSOU_FORM_FIXED, &column);
   if (s != CONTENSOU_STATUS_OK) {
     const char* key = contensou_column_name(column);
     double value = column == CONTENSOU_COLUMN_ESTAR ? c->spec.estar
                  : column == CONTENSOU_COLUMN_CD    ? c->spec.cd
                  : column == CONTENSOU_COLUMN_F     ? c->spec.f
                  : column == CONTENSOU_COLUMN_DELTA ? c->spec.delta
+                 : column == CONTENSOU_COLUMN_G     ? c->shear
+                 : column == CONTENSOU_COLUMN_NU    ? c->poisson
                                                     : NAN;
     mju_warning(PLUGIN_NAME ": %s = %g: %s", *key ? key : "configuration", value, contensou_status_message(s));
     return -1;

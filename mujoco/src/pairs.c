@@ -126,14 +126,14 @@ void ellipsoid_rest(const mjModel* m, int g, double* p, double* q) {
   *q = fmax(k1, k2);
 }
 
-static void sphere_centre(const mjData* d, const pair* k, double c[3]) {
-  const mjtNum* xp = d->geom_xpos + 3 * k->geom_b;
+static void sphere_centre(const mjtNum* geom_xpos, const mjtNum* geom_xmat, const pair* k, double c[3]) {
+  const mjtNum* xp = geom_xpos + 3 * k->geom_b;
   if (k->offset == 0.0) {
     c[0] = xp[0];
     c[1] = xp[1];
     c[2] = xp[2];
   } else {
-    const mjtNum* r = d->geom_xmat + 9 * k->geom_b; /* geom z axis: column 2 */
+    const mjtNum* r = geom_xmat + 9 * k->geom_b; /* geom z axis: column 2 */
     c[0] = xp[0] + k->offset * r[2];
     c[1] = xp[1] + k->offset * r[5];
     c[2] = xp[2] + k->offset * r[8];
@@ -141,44 +141,54 @@ static void sphere_centre(const mjData* d, const pair* k, double c[3]) {
 }
 
 int pair_geometry(const mjModel* m, const mjData* d, const pair* k, geometry* g) {
+  return pair_geometry_at(m, d->geom_xpos, d->geom_xmat, k, g);
+}
+
+int pair_geometry_at(const mjModel* m, const mjtNum* geom_xpos, const mjtNum* geom_xmat, const pair* k,
+                     geometry* g) {
   if (k->kind == SPHERE_SPHERE) {
-    const mjtNum* ca = d->geom_xpos + 3 * k->geom_a;
-    const mjtNum* cb = d->geom_xpos + 3 * k->geom_b;
+    const mjtNum* ca = geom_xpos + 3 * k->geom_a;
+    const mjtNum* cb = geom_xpos + 3 * k->geom_b;
     double dv[3] = {cb[0] - ca[0], cb[1] - ca[1], cb[2] - ca[2]};
     double dist = sqrt(dot3(dv, dv));
     g->h = k->radius_a + k->radius - dist;
-    if (g->h <= 0.0 || !(dist > 0.0)) return -1;
+    if (!(dist > 0.0)) return -1;
     for (int i = 0; i < 3; i++) g->n[i] = dv[i] / dist;
     double s = k->radius_a - g->h * k->radius / (k->radius_a + k->radius);
     for (int i = 0; i < 3; i++) g->point[i] = ca[i] + s * g->n[i];
+    for (int i = 0; i < 3; i++) {
+      g->centre_a[i] = ca[i];
+      g->centre[i] = cb[i];
+    }
+    g->ratio = s / dist;
     any_tangent(g->n, g->x);
     cross3(g->n, g->x, g->y);
-    return 0;
+    return g->h > 0.0 ? 0 : -1;
   }
-  const mjtNum* p0 = d->geom_xpos + 3 * k->geom_a;
-  const mjtNum* pm = d->geom_xmat + 9 * k->geom_a; /* plane frame: columns x, y, normal */
+  const mjtNum* p0 = geom_xpos + 3 * k->geom_a;
+  const mjtNum* pm = geom_xmat + 9 * k->geom_a; /* plane frame: columns x, y, normal */
   double n[3] = {pm[2], pm[5], pm[8]};
   double t1[3] = {pm[0], pm[3], pm[6]};
   double t2[3] = {pm[1], pm[4], pm[7]};
   for (int i = 0; i < 3; i++) g->n[i] = n[i];
   if (k->kind == SPHERE_PLANE) {
     double c[3];
-    sphere_centre(d, k, c);
+    sphere_centre(geom_xpos, geom_xmat, k, c);
     double rel[3] = {c[0] - p0[0], c[1] - p0[1], c[2] - p0[2]};
     double dist = dot3(rel, n);
     g->h = k->radius - dist;
-    if (g->h <= 0.0) return -1;
     for (int i = 0; i < 3; i++) {
+      g->centre[i] = c[i];
       g->point[i] = c[i] - dist * n[i];
       g->x[i] = t1[i];
       g->y[i] = t2[i];
     }
-    return 0;
+    return g->h > 0.0 ? 0 : -1;
   }
   /* Ellipsoid: the support point in the direction −n (geom frame), closed form. */
   const mjtNum* a = m->geom_size + 3 * k->geom_b;
-  const mjtNum* r = d->geom_xmat + 9 * k->geom_b; /* geom → world, row-major */
-  const mjtNum* c = d->geom_xpos + 3 * k->geom_b;
+  const mjtNum* r = geom_xmat + 9 * k->geom_b; /* geom → world, row-major */
+  const mjtNum* c = geom_xpos + 3 * k->geom_b;
   double a2[3] = {a[0] * a[0], a[1] * a[1], a[2] * a[2]};
   double u[3], l1[3], l2[3];
   for (int i = 0; i < 3; i++) {
@@ -193,8 +203,13 @@ int pair_geometry(const mjModel* m, const mjData* d, const pair* k, geometry* g)
   double rel[3] = {xw[0] - p0[0], xw[1] - p0[1], xw[2] - p0[2]};
   double dist = dot3(rel, n);
   g->h = -dist;
-  if (g->h <= 0.0) return -1;
-  for (int i = 0; i < 3; i++) g->point[i] = xw[i] - dist * n[i];
+  for (int i = 0; i < 3; i++) {
+    g->point[i] = xw[i] - dist * n[i];
+    g->centre[i] = xw[i];
+    g->u[i] = u[i];
+    g->xl[i] = xl[i];
+  }
+  g->inv_s = 1.0 / s;
   double half = 0.5 * s, cs, sn;
   double mxx = half * (l1[0] * l1[0] / a2[0] + l1[1] * l1[1] / a2[1] + l1[2] * l1[2] / a2[2]);
   double myy = half * (l2[0] * l2[0] / a2[0] + l2[1] * l2[1] / a2[1] + l2[2] * l2[2] / a2[2]);
@@ -206,5 +221,53 @@ int pair_geometry(const mjModel* m, const mjData* d, const pair* k, geometry* g)
   }
   for (int i = 0; i < 3; i++) g->x[i] = cs * t1[i] + sn * t2[i];
   cross3(g->n, g->x, g->y);
-  return 0;
+  return g->h > 0.0 ? 0 : -1;
+}
+
+/* The material velocity (world) at the world point q of a body with origin velocity v and ω w
+ * about its origin o. */
+static void material_velocity(const double v[3], const double w[3], const mjtNum* o, const double q[3],
+                              double out[3]) {
+  double arm[3] = {q[0] - o[0], q[1] - o[1], q[2] - o[2]};
+  point_velocity(v, w, arm, out);
+}
+
+/*
+ * The velocity of the geometric contact point P (mujoco/README.md, "Rolling"):
+ *   sphere–plane (a capsule's end sphere too): P is below the sphere centre c on the plane at
+ *     rest: v_P = the material velocity of B at c (tangential part);
+ *   ellipsoid–plane: P is below the support point x*, which travels over the body as it turns:
+ *     v_P = v_B(x*) + R ẋ*, ẋ* = (A u̇ − x*(x*·u̇))/s, A = diag(aᵢ²), u̇ = u × ω_g (u = −n in
+ *     the geom frame, world-fixed, ω_g = Rᵀω_B) — the closed form of src/scenes/rattleback.rs
+ *     (Kinematics);
+ *   sphere–sphere: P = c_a + s n, n = (c_b − c_a)/|c_b − c_a|: tangential part
+ *     v_A(c_a) + (s/|c_b − c_a|)(v_B(c_b) − v_A(c_a)) (ṅ = (I − nnᵀ)(ċ_b − ċ_a)/|c_b − c_a|).
+ * Planes are on bodies at rest (MuJoCo's rule): their motion is not taken into account.
+ */
+void contact_point_velocity(const mjModel* m, const mjData* d, const pair* k, const geometry* g,
+                            const double vb[3], const double wb[3], const double* va, const double* wa,
+                            double out[3]) {
+  const mjtNum* ob = d->xpos + 3 * k->body_b;
+  if (k->kind == SPHERE_PLANE) {
+    material_velocity(vb, wb, ob, g->centre, out);
+    return;
+  }
+  if (k->kind == SPHERE_SPHERE) {
+    double ub[3], ua[3] = {0, 0, 0};
+    material_velocity(vb, wb, ob, g->centre, ub);
+    if (va) material_velocity(va, wa, d->xpos + 3 * k->body_a, g->centre_a, ua);
+    for (int i = 0; i < 3; i++) out[i] = ua[i] + g->ratio * (ub[i] - ua[i]);
+    return;
+  }
+  const mjtNum* a = m->geom_size + 3 * k->geom_b;
+  const mjtNum* r = d->geom_xmat + 9 * k->geom_b; /* geom → world, row-major */
+  double a2[3] = {a[0] * a[0], a[1] * a[1], a[2] * a[2]};
+  double wg[3], du[3];
+  for (int i = 0; i < 3; i++) wg[i] = r[i] * wb[0] + r[3 + i] * wb[1] + r[6 + i] * wb[2];
+  cross3(g->u, wg, du);
+  double xdu = dot3(g->xl, du);
+  double rate[3];
+  for (int i = 0; i < 3; i++) rate[i] = (a2[i] * du[i] - g->xl[i] * xdu) * g->inv_s;
+  material_velocity(vb, wb, ob, g->centre, out);
+  for (int i = 0; i < 3; i++) out[i] += r[3 * i] * rate[0] + r[3 * i + 1] * rate[1] + r[3 * i + 2] * rate[2];
 }

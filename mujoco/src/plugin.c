@@ -29,8 +29,12 @@
  *
  * Configuration (<config key="…" value="…"/>): estar (Pa) or young1, poisson1, young2,
  * poisson2; f; cd (s/m, default 0); delta (m/s, default 1e-4); law (best|simplified|pade|
- * ellipsoid|coulomb, default best); form (auto|fixed|varying, default auto: fixed for spheres
- * and capsules, varying for ellipsoids). A bad value, an unsupported geom, or a plugin geom that
+ * ellipsoid|coulomb, default best, or a rolling law rolling (= table)|table|blend|fastsim|
+ * fastsim-16); G (Pa), nu (rolling laws only; else from the materials by Kalker's rule, else
+ * the library's defaults); form (auto|fixed|varying, default auto: fixed for spheres
+ * and capsules, varying for ellipsoids). With a rolling law each pair also gets Kalker's
+ * rolling velocity V = v_P − ½(u_A + u_B) (v_P: the geometric contact point's velocity,
+ * contact_point_velocity in pairs.c; u: the material velocities at P). A bad value, an unsupported geom, or a plugin geom that
  * MuJoCo would also collide with a plane (contype/conaffinity) refuses the model at load:
  * init() warns with the attribute and the value and returns −1, which the compiler turns into
  * the load error.
@@ -43,8 +47,9 @@
 
 #include "contensou_mujoco.h"
 
-static const char* const ATTRIBUTES[] = {"estar", "young1", "poisson1", "young2", "poisson2",
-                                         "cd",    "f",      "delta",    "law",    "form"};
+static const char* const ATTRIBUTES[] = {"estar", "young1", "poisson1", "young2", "poisson2", "cd", "f",
+                                         "delta", "law",    "form",     "G",      "nu",       "step",
+                                         "step_point"};
 #define NATTRIBUTE ((int)(sizeof(ATTRIBUTES) / sizeof(ATTRIBUTES[0])))
 
 /* A body's velocity this step: ω (world) and the velocity of its origin xpos (world). */
@@ -56,7 +61,26 @@ typedef struct {
   int active;
 } body_state;
 
+/* One pair's kinematics at this state: the bodies (NULL: at rest, welded to the world), the
+ * arms from their origins to P, the slip v_B(P) − v_A(P) and spin ω_B − ω_A (world). */
+typedef struct kinematics_ {
+  body_state *sa, *sb;
+  double arm_a[3], arm_b[3];
+  double vrel[3], wrel[3];
+} kinematics;
+
 typedef struct {
+  int rolling; /* a rolling law: the rolling velocity is computed and passed */
+  int aware;   /* step = aware: the step-aware wrench (step_work) */
+  step_work step;
+  /* step = aware, per pair taken: */
+  contensou_step_f64* steps;
+  contensou_rolling_step_f64* rolls;
+  struct kinematics_* kins;
+  double* ab;     /* the start patch's a, b */
+  double* wrench; /* 4 */
+  int* group;
+  int* other;
   int npair;
   pair* pairs;
   double* out;       /* NOUT per pair */
@@ -68,6 +92,14 @@ typedef struct {
 
 static void free_instance(instance_data* x) {
   if (!x) return;
+  if (x->aware) step_work_free(&x->step);
+  free(x->steps);
+  free(x->rolls);
+  free(x->kins);
+  free(x->ab);
+  free(x->wrench);
+  free(x->group);
+  free(x->other);
   free(x->pairs);
   free(x->out);
   free(x->bodies);
@@ -91,7 +123,27 @@ static int init(const mjModel* m, mjData* d, int instance) {
     free_instance(x);
     return -1;
   }
+  x->rolling = c.rolling;
   enumerate_pairs(m, instance, x->pairs);
+  if (c.step_aware) {
+    if (step_work_init(&x->step, m, x->npair, c.step_point)) {
+      free_instance(x);
+      return -1;
+    }
+    x->aware = 1;
+    size_t n = (size_t)(x->npair ? x->npair : 1);
+    x->steps = calloc(n, sizeof(contensou_step_f64));
+    x->rolls = calloc(n, sizeof(contensou_rolling_step_f64));
+    x->kins = calloc(n, sizeof(kinematics));
+    x->ab = calloc(2 * n, sizeof(double));
+    x->wrench = calloc(4 * n, sizeof(double));
+    x->group = calloc(n, sizeof(int));
+    x->other = calloc(n, sizeof(int));
+    if (!x->steps || !x->rolls || !x->kins || !x->ab || !x->wrench || !x->group || !x->other) {
+      free_instance(x);
+      return -1;
+    }
+  }
   if (check_geoms(m, instance, x->pairs, x->npair)) {
     free_instance(x);
     return -1;
@@ -126,8 +178,7 @@ static int init(const mjModel* m, mjData* d, int instance) {
     spec.q = k0.q;
     contensou_column column = CONTENSOU_COLUMN_NONE;
     if (s == CONTENSOU_STATUS_OK) {
-      s = contensou_contact_new_f64(&p->contact, &spec, c.law,
-                                    varying ? CONTENSOU_FORM_VARYING : CONTENSOU_FORM_FIXED, &column);
+      s = new_contact(&p->contact, &c, &spec, varying ? CONTENSOU_FORM_VARYING : CONTENSOU_FORM_FIXED, &column);
     }
     if (s != CONTENSOU_STATUS_OK) {
       mju_warning(PLUGIN_NAME ": geom '%s' (size %g) against '%s': curvatures P = %g, Q = %g: %s",
@@ -198,7 +249,10 @@ static void body_velocity(const mjModel* m, const mjData* d, int b, body_state* 
   }
 }
 
-static void passive(const mjModel* m, mjData* d, instance_data* x) {
+static const double ZERO3[3] = {0.0, 0.0, 0.0};
+
+/* The bodies' velocities at this state; their loads cleared. */
+static void begin_bodies(const mjModel* m, mjData* d, instance_data* x) {
   for (int i = 0; i < x->nbody; i++) {
     body_state* s = &x->state[i];
     body_velocity(m, d, x->bodies[i], s);
@@ -206,6 +260,246 @@ static void passive(const mjModel* m, mjData* d, instance_data* x) {
     memset(s->torque, 0, sizeof(s->torque));
     s->active = 0;
   }
+}
+
+/* Each loaded body's sum of loads into qfrc_passive, once per body. */
+static void end_bodies(const mjModel* m, mjData* d, instance_data* x) {
+  for (int i = 0; i < x->nbody; i++) {
+    body_state* s = &x->state[i];
+    if (s->active) {
+      int b = x->bodies[i];
+      mj_applyFT(m, d, s->force, s->torque, d->xpos + 3 * b, b, d->qfrc_passive);
+    }
+  }
+}
+
+
+static void pair_kinematics(const mjData* d, instance_data* x, const pair* p, const geometry* g, kinematics* k) {
+  k->sb = x->slot[p->body_b] >= 0 ? &x->state[x->slot[p->body_b]] : NULL;
+  k->sa = x->slot[p->body_a] >= 0 ? &x->state[x->slot[p->body_a]] : NULL;
+  const mjtNum* ob = d->xpos + 3 * p->body_b;
+  for (int i = 0; i < 3; i++) {
+    k->arm_b[i] = g->point[i] - ob[i];
+    k->arm_a[i] = k->vrel[i] = k->wrel[i] = 0.0;
+  }
+  if (k->sb) {
+    point_velocity(k->sb->v, k->sb->w, k->arm_b, k->vrel);
+    memcpy(k->wrel, k->sb->w, sizeof(k->wrel));
+  }
+  if (k->sa) {
+    const mjtNum* oa = d->xpos + 3 * p->body_a;
+    double va[3];
+    for (int i = 0; i < 3; i++) k->arm_a[i] = g->point[i] - oa[i];
+    point_velocity(k->sa->v, k->sa->w, k->arm_a, va);
+    for (int i = 0; i < 3; i++) {
+      k->vrel[i] -= va[i];
+      k->wrel[i] -= k->sa->w[i];
+    }
+  }
+}
+
+/* Kalker's rolling velocity V = v_P − ½(u_A + u_B): the velocity of the geometric contact point
+ * over each surface, averaged (u the material velocities at P), in (x, y). */
+static contensou_rolling_step_f64 rolling_velocity(const mjModel* m, const mjData* d, const pair* p,
+                                                   const geometry* g, const kinematics* k) {
+  double vp[3], usum[3];
+  contact_point_velocity(m, d, p, g, k->sb ? k->sb->v : ZERO3, k->sb ? k->sb->w : ZERO3, k->sa ? k->sa->v : NULL,
+                         k->sa ? k->sa->w : NULL, vp);
+  for (int i = 0; i < 3; i++) usum[i] = k->vrel[i];
+  if (k->sa) {
+    double ua[3];
+    point_velocity(k->sa->v, k->sa->w, k->arm_a, ua);
+    for (int i = 0; i < 3; i++) usum[i] = k->vrel[i] + 2.0 * ua[i]; /* (u_B − u_A) + 2u_A */
+  }
+  double v[3];
+  for (int i = 0; i < 3; i++) v[i] = vp[i] - 0.5 * usum[i];
+  contensou_rolling_step_f64 roll = {dot3(v, g->x), dot3(v, g->y)};
+  return roll;
+}
+
+/* The wrench (N, F_x, F_y, T_z in the contact frame) of a pair: on B at P, its opposite on A. */
+static void apply_wrench(const geometry* g, const kinematics* k, double n, double fx, double fy, double tz) {
+  double force[3], moment[3];
+  for (int i = 0; i < 3; i++) force[i] = n * g->n[i] + fx * g->x[i] + fy * g->y[i];
+  if (k->sb) {
+    cross3(k->arm_b, force, moment);
+    for (int i = 0; i < 3; i++) {
+      k->sb->force[i] += force[i];
+      k->sb->torque[i] += moment[i] + tz * g->n[i];
+    }
+    k->sb->active = 1;
+  }
+  if (k->sa) {
+    cross3(k->arm_a, force, moment);
+    for (int i = 0; i < 3; i++) {
+      k->sa->force[i] -= force[i];
+      k->sa->torque[i] -= moment[i] + tz * g->n[i];
+    }
+    k->sa->active = 1;
+  }
+}
+
+/* The plain wrench of a pair at this state (its start-of-step wrench; with `step`, at the
+ * given per-step inputs instead of the pair's own kinematics). */
+static contensou_status plain_wrench(const mjModel* m, const mjData* d, const instance_data* x, pair* p,
+                                     const geometry* g, const kinematics* k, const contensou_step_f64* step,
+                                     contensou_wrench_f64* w) {
+  if (p->kind == ELLIPSOID_PLANE && g->p > 0.0) {
+    /* On error (a ratio beyond the library's range) the contact keeps its last curvatures. */
+    contensou_contact_set_curvatures_f64(&p->contact, g->p, g->q, NULL);
+  }
+  if (x->rolling) {
+    contensou_rolling_step_f64 roll = rolling_velocity(m, d, p, g, k);
+    return contensou_contact_wrench_rolling_f64(&p->contact, step, &roll, w, NULL);
+  }
+  return contensou_contact_wrench_f64(&p->contact, step, w, NULL);
+}
+
+/*
+ * The step-aware path (step = aware): the pairs touching now or at the free end of the step
+ * (step_prepare: u = J q̇, u_free, h_free, W with its cross blocks), grouped by the moving bodies
+ * they share (W's cross blocks couple only those; groups of up to STEP_GROUP pairs, a larger group
+ * split in model order without the cross blocks between its parts), each group's step-aware
+ * wrenches in one call of the library, applied like the plain ones. The sensor reports the
+ * step-aware wrench and the patch (a, b) of the plain wrench at the start state.
+ */
+#define STEP_GROUP 8
+/* Block Gauss–Seidel sweeps over the parts of a group larger than STEP_GROUP (fixed count). */
+#define STEP_SWEEPS 6
+
+/* The moving body of a pair's side (−1: at rest). */
+static int moving(const instance_data* x, int body) { return x->slot[body]; }
+
+/* Do taken pairs t and j of s share a moving body? */
+static int coupled(const instance_data* x, const step_work* s, int t, int j) {
+  const pair* pt = &x->pairs[s->index[t]];
+  const pair* pj = &x->pairs[s->index[j]];
+  int a = moving(x, pj->body_a), b = moving(x, pj->body_b);
+  int at = moving(x, pt->body_a), bt = moving(x, pt->body_b);
+  return (a >= 0 && (a == at || a == bt)) || (b >= 0 && (b == at || b == bt));
+}
+
+/* The step-aware wrenches of the n ≤ STEP_GROUP taken pairs part[] (into x->wrench), with
+ * u_free and h_free shifted by the impulse of the group's other pairs other[0..nother) (their
+ * current x->wrench): Δu = Δt·W·w̄, Δh = −Δt²·(W·w̄)_n. */
+static void solve_part(const mjModel* m, instance_data* x, const int* part, int n, const int* other, int nother) {
+  step_work* s = &x->step;
+  double dt = m->opt.timestep;
+  int rows = 4 * s->count;
+  const contensou_contact_f64* contacts[STEP_GROUP] = {0};
+  contensou_step_f64 steps[STEP_GROUP] = {{0}};
+  contensou_rolling_step_f64 rolls[STEP_GROUP] = {{0}};
+  double w[16 * STEP_GROUP * STEP_GROUP] = {0}, u_free[4 * STEP_GROUP] = {0}, h_free[STEP_GROUP] = {0};
+  double wrench[4 * STEP_GROUP] = {0};
+  for (int i = 0; i < n; i++) {
+    int t = part[i];
+    contacts[i] = &x->pairs[s->index[t]].contact;
+    steps[i] = x->steps[t];
+    rolls[i] = x->rolls[t];
+    h_free[i] = s->h_free[t];
+    for (int r = 0; r < 4; r++) {
+      double du = 0.0;
+      for (int o = 0; o < nother; o++) {
+        for (int c = 0; c < 4; c++) du += s->w[(4 * t + r) * rows + 4 * other[o] + c] * x->wrench[4 * other[o] + c];
+      }
+      u_free[4 * i + r] = s->u_free[4 * t + r] + dt * du;
+      if (r == 0) h_free[i] -= dt * dt * du;
+    }
+    for (int j = 0; j < n; j++) {
+      for (int r = 0; r < 4; r++) {
+        for (int c = 0; c < 4; c++) w[(4 * i + r) * 4 * n + 4 * j + c] = s->w[(4 * t + r) * rows + 4 * part[j] + c];
+      }
+    }
+  }
+  int ok = !step_solve(contacts, n, dt, w, steps, x->rolling ? rolls : NULL, u_free, h_free, wrench);
+  for (int i = 0; i < n; i++) {
+    /* Refused (a non-finite state): no load, MuJoCo's own checks then act. */
+    for (int r = 0; r < 4; r++) x->wrench[4 * part[i] + r] = ok ? wrench[4 * i + r] : 0.0;
+  }
+}
+
+static void passive_step(const mjModel* m, mjData* d, instance_data* x) {
+  begin_bodies(m, d, x);
+  for (int k = 0; k < x->npair; k++) {
+    geometry g;
+    double* out = x->out + NOUT * k;
+    memset(out, 0, sizeof(double) * NOUT);
+    pair_geometry(m, d, &x->pairs[k], &g);
+    out[OUT_H] = g.h;
+  }
+  step_work* s = &x->step;
+  int count = step_prepare(m, d, x->pairs, x->npair, s);
+  for (int t = 0; t < count; t++) {
+    pair* p = &x->pairs[s->index[t]];
+    const geometry* g = &s->geom[t];
+    pair_kinematics(d, x, p, g, &x->kins[t]);
+    const double* u = s->u + 4 * t;
+    x->steps[t] = (contensou_step_f64){g->h, -u[0], u[1], u[2], u[3]};
+    contensou_wrench_f64 plain;
+    x->ab[2 * t] = x->ab[2 * t + 1] = 0.0;
+    if (g->h > 0.0 && plain_wrench(m, d, x, p, g, &x->kins[t], &x->steps[t], &plain) == CONTENSOU_STATUS_OK) {
+      x->ab[2 * t] = plain.a;
+      x->ab[2 * t + 1] = plain.b;
+    } else if (p->kind == ELLIPSOID_PLANE && g->p > 0.0) {
+      contensou_contact_set_curvatures_f64(&p->contact, g->p, g->q, NULL);
+    }
+    x->rolls[t] = x->rolling ? rolling_velocity(m, d, p, g, &x->kins[t]) : (contensou_rolling_step_f64){0.0, 0.0};
+    for (int r = 0; r < 4; r++) x->wrench[4 * t + r] = 0.0;
+  }
+  /* Groups: the taken pairs connected through shared moving bodies (W couples only those). */
+  int* done = s->done;
+  int* group = x->group;
+  memset(done, 0, sizeof(int) * (size_t)(count > 0 ? count : 1));
+  for (int first = 0; first < count; first++) {
+    if (done[first]) continue;
+    int n = 0;
+    group[n++] = first;
+    done[first] = 1;
+    for (int i = 0; i < n; i++) {
+      for (int j = first + 1; j < count; j++) {
+        if (!done[j] && coupled(x, s, group[i], j)) {
+          group[n++] = j;
+          done[j] = 1;
+        }
+      }
+    }
+    if (n <= STEP_GROUP) {
+      solve_part(m, x, group, n, NULL, 0);
+      continue;
+    }
+    /* A larger group: parts of STEP_GROUP pairs in order, each solved with the others' latest
+     * impulse in its free motion, STEP_SWEEPS sweeps (block Gauss–Seidel on the step's system). */
+    int* other = x->other;
+    for (int sweep = 0; sweep < STEP_SWEEPS; sweep++) {
+      for (int start = 0; start < n; start += STEP_GROUP) {
+        int len = n - start < STEP_GROUP ? n - start : STEP_GROUP, nother = 0;
+        for (int i = 0; i < n; i++) {
+          if (i < start || i >= start + len) other[nother++] = group[i];
+        }
+        solve_part(m, x, group + start, len, other, nother);
+      }
+    }
+  }
+  for (int t = 0; t < count; t++) {
+    double* out = x->out + NOUT * s->index[t];
+    const double* f = x->wrench + 4 * t;
+    out[OUT_N] = f[0];
+    out[OUT_FX] = f[1];
+    out[OUT_FY] = f[2];
+    out[OUT_TZ] = f[3];
+    out[OUT_A] = x->ab[2 * t];
+    out[OUT_B] = x->ab[2 * t + 1];
+    apply_wrench(&s->geom[t], &x->kins[t], f[0], f[1], f[2], f[3]);
+  }
+  end_bodies(m, d, x);
+}
+
+static void passive(const mjModel* m, mjData* d, instance_data* x) {
+  if (x->aware) {
+    passive_step(m, d, x);
+    return;
+  }
+  begin_bodies(m, d, x);
   for (int k = 0; k < x->npair; k++) {
     pair* p = &x->pairs[k];
     double* out = x->out + NOUT * k;
@@ -214,34 +508,12 @@ static void passive(const mjModel* m, mjData* d, instance_data* x) {
     memset(out, 0, sizeof(double) * NOUT);
     out[OUT_H] = g.h;
     if (!touching) continue;
-    if (p->kind == ELLIPSOID_PLANE && g.p > 0.0) {
-      /* On error (a ratio beyond the library's range) the contact keeps its last curvatures. */
-      contensou_contact_set_curvatures_f64(&p->contact, g.p, g.q, NULL);
-    }
-    /* A body welded to the world (no slot) is at rest and takes no load. */
-    body_state* sb = x->slot[p->body_b] >= 0 ? &x->state[x->slot[p->body_b]] : NULL;
-    body_state* sa = x->slot[p->body_a] >= 0 ? &x->state[x->slot[p->body_a]] : NULL;
-    const mjtNum* ob = d->xpos + 3 * p->body_b;
-    double arm_b[3] = {g.point[0] - ob[0], g.point[1] - ob[1], g.point[2] - ob[2]};
-    double vrel[3] = {0, 0, 0}, wrel[3] = {0, 0, 0};
-    if (sb) {
-      point_velocity(sb->v, sb->w, arm_b, vrel);
-      memcpy(wrel, sb->w, sizeof(wrel));
-    }
-    double arm_a[3] = {0, 0, 0};
-    if (sa) {
-      const mjtNum* oa = d->xpos + 3 * p->body_a;
-      double va[3];
-      for (int i = 0; i < 3; i++) arm_a[i] = g.point[i] - oa[i];
-      point_velocity(sa->v, sa->w, arm_a, va);
-      for (int i = 0; i < 3; i++) {
-        vrel[i] -= va[i];
-        wrel[i] -= sa->w[i];
-      }
-    }
-    contensou_step_f64 step = {g.h, -dot3(vrel, g.n), dot3(vrel, g.x), dot3(vrel, g.y), dot3(wrel, g.n)};
+    kinematics kin;
+    pair_kinematics(d, x, p, &g, &kin);
+    contensou_step_f64 step = {g.h, -dot3(kin.vrel, g.n), dot3(kin.vrel, g.x), dot3(kin.vrel, g.y),
+                               dot3(kin.wrel, g.n)};
     contensou_wrench_f64 w;
-    if (contensou_contact_wrench_f64(&p->contact, &step, &w, NULL) != CONTENSOU_STATUS_OK) {
+    if (plain_wrench(m, d, x, p, &g, &kin, &step, &w) != CONTENSOU_STATUS_OK) {
       continue; /* a non-finite state: no load (MuJoCo's own checks then reset the state) */
     }
     out[OUT_N] = w.n;
@@ -250,32 +522,9 @@ static void passive(const mjModel* m, mjData* d, instance_data* x) {
     out[OUT_TZ] = w.tz;
     out[OUT_A] = w.a;
     out[OUT_B] = w.b;
-    double force[3], moment[3];
-    for (int i = 0; i < 3; i++) force[i] = w.n * g.n[i] + w.fx * g.x[i] + w.fy * g.y[i];
-    if (sb) {
-      cross3(arm_b, force, moment);
-      for (int i = 0; i < 3; i++) {
-        sb->force[i] += force[i];
-        sb->torque[i] += moment[i] + w.tz * g.n[i];
-      }
-      sb->active = 1;
-    }
-    if (sa) {
-      cross3(arm_a, force, moment);
-      for (int i = 0; i < 3; i++) {
-        sa->force[i] -= force[i];
-        sa->torque[i] -= moment[i] + w.tz * g.n[i];
-      }
-      sa->active = 1;
-    }
+    apply_wrench(&g, &kin, w.n, w.fx, w.fy, w.tz);
   }
-  for (int i = 0; i < x->nbody; i++) {
-    body_state* s = &x->state[i];
-    if (s->active) {
-      int b = x->bodies[i];
-      mj_applyFT(m, d, s->force, s->torque, d->xpos + 3 * b, b, d->qfrc_passive);
-    }
-  }
+  end_bodies(m, d, x);
 }
 
 static void sensor(const mjModel* m, mjData* d, int instance, const instance_data* x) {

@@ -24,12 +24,17 @@ class SphereFloor:
     world velocity of the body origin, which must be its centre of mass, qvel[3:6] the angular
     velocity in the body frame)."""
 
-    def __init__(self, model, body, geoms, estar, cd, f, delta, law="best"):
+    def __init__(self, model, body, geoms, estar, cd, f, delta, law="best", G=None, nu=None):
         self.body = model.body(body).id
         self.geoms = [model.geom(g).id for g in geoms]
         self.radius = [float(model.geom_size[g][0]) for g in self.geoms]
+        # A rolling law (table, blend, fastsim, fastsim-16) takes the pair's G, ν and, per step,
+        # the rolling velocity V = v_P − ½u_P: the contact point below the centre moves with the
+        # centre, the floor is at rest (u_A = 0), u_P the sphere's material velocity at P.
+        self.rolling = law in ("table", "blend", "fastsim", "fastsim-16")
+        extra = {"G": G, "nu": nu} if self.rolling else {}
         self.contacts = [
-            contensou.Contact(1 / (2 * r), 1 / (2 * r), estar, cd, f, delta, law=law) for r in self.radius
+            contensou.Contact(1 / (2 * r), 1 / (2 * r), estar, cd, f, delta, law=law, **extra) for r in self.radius
         ]
         self.qvel = model.jnt_dofadr[model.body_jntadr[self.body]]
         self.force = np.zeros(3)
@@ -66,7 +71,14 @@ class SphereFloor:
             px = vx + wy * az - wz * ay
             py = vy + wz * ax - wx * az
             pz = vz + wx * ay - wy * ax
-            n, sx, sy, sz = contact.step(h, -pz, px, py, wz)[:4]
+            if self.rolling:
+                # the centre's velocity (v_P of the contact point below it), minus ½u_P
+                ex, ey, ez = cx - gx, cy - gy, cz - gz
+                cvx = vx + wy * ez - wz * ey
+                cvy = vy + wz * ex - wx * ez
+                n, sx, sy, sz = contact.step(h, -pz, px, py, wz, cvx - 0.5 * px, cvy - 0.5 * py)[:4]
+            else:
+                n, sx, sy, sz = contact.step(h, -pz, px, py, wz)[:4]
             self.normal[s] = n
             # Sum of the forces and of their moments about G (plus the drilling torque).
             fx, fy, fz = fx + sx, fy + sy, fz + n

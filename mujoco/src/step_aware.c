@@ -1,0 +1,217 @@
+/*
+ * contensou.contact: what the step-aware wrench needs from MuJoCo for the pairs of an instance
+ * at the state of one passive-force evaluation — each pair's contact velocity
+ * u = (v_n, v_x, v_y, ω) = J q̇ (B relative to A, v_n = −ḣ), its free end-of-step velocity
+ * u_free = J q̇_free and the pairs' inverse mass W = J M⁻¹ Jᵀ with its cross blocks
+ * (inverse_mass.c).
+ *
+ * and the approach h_free of each pair at the free end-of-step pose: the gap as the bodies drift
+ * (a rattleback rolling over its 2 m bottom radius moves its gap by ≈ 1e-5 m per 1 ms step, four
+ * times its static approach). Each body moves rigidly with its free end velocity (v_o of its
+ * origin, ω; mj_jac times q̇_free): origin p' = p + Δt·v_o, attitude R' = Q·R with Q the
+ * rotation by Δt·ω, so a geom at x goes to p' + Q(x − p). For a free joint this is MuJoCo's Euler
+ * position update (q̇_free as the end velocity; its quaternion integration is the same rotation,
+ * to rounding); for other joints a first-order rigid drift.
+ *
+ * The free end-of-step velocity is MuJoCo's semi-implicit Euler velocity update without this
+ * instance's contacts:
+ *
+ *   q̇_free = q̇ + Δt·M⁻¹·(qfrc_passive so far + qfrc_applied + Σ J_bᵀ xfrc_applied,b − qfrc_bias)
+ *
+ * with qfrc_bias (gravity, Coriolis and centrifugal terms) from mj_rne at this state, and
+ * qfrc_passive as MuJoCo's passive stage has filled it before the plugin (springs, dampers,
+ * gravity compensation, fluid forces). Left out, because MuJoCo computes them after the passive
+ * forces: actuator forces and MuJoCo's own constraint forces (joint limits, native contacts).
+ */
+#include <stdlib.h>
+#include <string.h>
+
+#include "contensou_mujoco.h"
+
+int step_work_init(step_work* s, const mjModel* m, int npair, double point) {
+  memset(s, 0, sizeof(*s));
+  s->point = point;
+  s->body_v = calloc((size_t)3 * (size_t)m->nbody, sizeof(mjtNum));
+  s->body_w = calloc((size_t)3 * (size_t)m->nbody, sizeof(mjtNum));
+  s->body_p = calloc((size_t)3 * (size_t)m->nbody, sizeof(mjtNum));
+  size_t nv = (size_t)(m->nv ? m->nv : 1);
+  size_t rows = (size_t)4 * (size_t)(npair ? npair : 1);
+  s->cap = npair;
+  s->jac = calloc(rows * nv, sizeof(mjtNum));
+  s->work = calloc(rows * nv, sizeof(mjtNum));
+  s->scratch = calloc(6 * nv, sizeof(mjtNum));
+  s->w = calloc(rows * rows, sizeof(mjtNum));
+  s->qfrc = calloc(nv, sizeof(mjtNum));
+  s->qvel = calloc(nv, sizeof(mjtNum));
+  s->u = calloc(rows, sizeof(double));
+  s->u_free = calloc(rows, sizeof(double));
+  s->h_free = calloc(rows / 4, sizeof(double));
+  s->geom_xpos = calloc((size_t)3 * (size_t)(m->ngeom ? m->ngeom : 1), sizeof(mjtNum));
+  s->geom_xmat = calloc((size_t)9 * (size_t)(m->ngeom ? m->ngeom : 1), sizeof(mjtNum));
+  s->done = calloc(rows / 4, sizeof(int));
+  s->geom = calloc(rows / 4, sizeof(geometry));
+  s->index = calloc(rows / 4, sizeof(int));
+  if (!s->jac || !s->work || !s->scratch || !s->w || !s->qfrc || !s->qvel || !s->u || !s->u_free || !s->geom ||
+      !s->index || !s->h_free || !s->geom_xpos || !s->geom_xmat || !s->done ||
+      !s->body_v || !s->body_w || !s->body_p) {
+    step_work_free(s);
+    return -1;
+  }
+  return 0;
+}
+
+void step_work_free(step_work* s) {
+  free(s->jac);
+  free(s->work);
+  free(s->scratch);
+  free(s->w);
+  free(s->qfrc);
+  free(s->qvel);
+  free(s->u);
+  free(s->u_free);
+  free(s->h_free);
+  free(s->geom_xpos);
+  free(s->geom_xmat);
+  free(s->done);
+  free(s->body_v);
+  free(s->body_w);
+  free(s->body_p);
+  free(s->geom);
+  free(s->index);
+  memset(s, 0, sizeof(*s));
+}
+
+/* q̇_free (module docs) into s->qvel. */
+static void free_velocity(const mjModel* m, mjData* d, step_work* s) {
+  int nv = m->nv;
+  mj_rne(m, d, 0, s->qfrc); /* qfrc_bias at this state */
+  for (int i = 0; i < nv; i++) s->qfrc[i] = d->qfrc_passive[i] + d->qfrc_applied[i] - s->qfrc[i];
+  for (int b = 1; b < m->nbody; b++) {
+    const mjtNum* x = d->xfrc_applied + 6 * b;
+    if (x[0] != 0 || x[1] != 0 || x[2] != 0 || x[3] != 0 || x[4] != 0 || x[5] != 0) {
+      mj_applyFT(m, d, x, x + 3, d->xipos + 3 * b, b, s->qfrc);
+    }
+  }
+  mj_solveM(m, d, s->qvel, s->qfrc, 1);
+  for (int i = 0; i < nv; i++) s->qvel[i] = d->qvel[i] + m->opt.timestep * s->qvel[i];
+}
+
+/* The geoms' poses at the free end of the step (module docs) in s->geom_xpos, s->geom_xmat:
+ * every geom of a body that moves (body_weldid ≠ 0), the others as they are. */
+static void drift_pose(const mjModel* m, const mjData* d, step_work* s, double fraction) {
+  int nv = m->nv;
+  double dt = m->opt.timestep * fraction;
+  mju_copy(s->geom_xpos, d->geom_xpos, 3 * m->ngeom);
+  mju_copy(s->geom_xmat, d->geom_xmat, 9 * m->ngeom);
+  for (int b = 1; b < m->nbody; b++) {
+    if (m->body_weldid[b] == 0 || m->body_geomnum[b] == 0) continue;
+    const mjtNum* p = d->xpos + 3 * b;
+    mjtNum* jp = s->scratch;
+    mjtNum* jr = s->scratch + 3 * nv;
+    mj_jac(m, d, jp, jr, p, b);
+    double v[3], w[3];
+    for (int i = 0; i < 3; i++) {
+      v[i] = mju_dot(jp + i * nv, s->qvel, nv);
+      w[i] = mju_dot(jr + i * nv, s->qvel, nv);
+      s->body_v[3 * b + i] = v[i];
+      s->body_w[3 * b + i] = w[i];
+      s->body_p[3 * b + i] = p[i] + dt * v[i];
+    }
+    mjtNum q[4] = {1, 0, 0, 0}, rot[9];
+    double angle = mju_norm3(w) * dt;
+    if (angle > 0.0) {
+      mjtNum axis[3] = {w[0], w[1], w[2]};
+      mju_normalize3(axis);
+      mju_axisAngle2Quat(q, axis, angle);
+    }
+    mju_quat2Mat(rot, q);
+    for (int g = m->body_geomadr[b]; g < m->body_geomadr[b] + m->body_geomnum[b]; g++) {
+      const mjtNum* x = d->geom_xpos + 3 * g;
+      double r[3] = {x[0] - p[0], x[1] - p[1], x[2] - p[2]}, rr[3];
+      mju_mulMatVec3(rr, rot, r);
+      for (int i = 0; i < 3; i++) s->geom_xpos[3 * g + i] = p[i] + dt * v[i] + rr[i];
+      mju_mulMatMat(s->geom_xmat + 9 * g, rot, d->geom_xmat + 9 * g, 3, 3, 3);
+    }
+  }
+}
+
+/* The free end velocity u = (v_n, v_x, v_y, ω) of pair k at the drifted geometry e: the
+ * bodies' free end velocities (origin drifted as in drift_pose) at e's contact point, in e's
+ * frame. */
+static void drifted_velocity(const mjModel* m, const step_work* s, const pair* k, const geometry* e, double u[4]) {
+  double v[3] = {0, 0, 0}, w[3] = {0, 0, 0};
+  const int bodies[2] = {k->body_b, k->body_a};
+  for (int side = 0; side < 2; side++) {
+    int b = bodies[side];
+    if (b <= 0 || m->body_weldid[b] == 0) continue;
+    double sign = side == 0 ? 1.0 : -1.0, arm[3], pv[3];
+    for (int i = 0; i < 3; i++) arm[i] = e->point[i] - s->body_p[3 * b + i];
+    point_velocity(s->body_v + 3 * b, s->body_w + 3 * b, arm, pv);
+    for (int i = 0; i < 3; i++) {
+      v[i] += sign * pv[i];
+      w[i] += sign * s->body_w[3 * b + i];
+    }
+  }
+  u[0] = dot3(v, e->n);
+  u[1] = dot3(v, e->x);
+  u[2] = dot3(v, e->y);
+  u[3] = dot3(w, e->n);
+}
+
+int step_prepare(const mjModel* m, mjData* d, const pair* pairs, int npair, step_work* s) {
+  int nv = m->nv;
+  free_velocity(m, d, s);
+  drift_pose(m, d, s, 1.0);
+  int k = 0;
+  for (int i = 0; i < npair; i++) {
+    geometry* g = &s->geom[k];
+    geometry end;
+    int touching = pair_geometry(m, d, &pairs[i], g) == 0;
+    int touching_end = pair_geometry_at(m, s->geom_xpos, s->geom_xmat, &pairs[i], &end) == 0;
+    if (!touching && !touching_end) continue; /* apart now and at the free end of the step */
+    s->h_free[k] = end.h;
+    mjtNum* jac = s->jac + (size_t)4 * k * nv;
+    contact_jacobian(m, d, &pairs[i], g, jac, s->scratch);
+    for (int r = 0; r < 4; r++) {
+      s->u[4 * k + r] = mju_dot(jac + (size_t)r * nv, d->qvel, nv);
+      s->u_free[4 * k + r] = mju_dot(jac + (size_t)r * nv, s->qvel, nv);
+    }
+    s->index[k++] = i;
+  }
+  s->count = k;
+  if (s->point > 0.0) {
+    /* step_point θ > 0: u_free at the contact point and frame of the pose drifted by θ·Δt. */
+    if (s->point != 1.0) drift_pose(m, d, s, s->point);
+    for (int t = 0; t < k; t++) {
+      geometry e;
+      pair_geometry_at(m, s->geom_xpos, s->geom_xmat, &pairs[s->index[t]], &e);
+      drifted_velocity(m, s, &pairs[s->index[t]], &e, s->u_free + 4 * t);
+    }
+  }
+  if (k > 0) inverse_mass(m, d, s->jac, 4 * k, s->work, s->w);
+  return k;
+}
+
+#ifdef CONTENSOU_MUJOCO_PROTO
+/* Prototype build only (not committed to use): the step branch's step_wrenches through a local
+ * export, Jacobian by central differences. */
+unsigned contensou_proto_step_many_f64(const contensou_contact_f64* const* contacts, size_t k, double dt,
+                                       const double* w, const contensou_step_f64* steps,
+                                       const contensou_rolling_step_f64* rolling, const double* u_free,
+                                       const double* h_free, double* out);
+int step_available(void) { return 1; }
+int step_solve(const contensou_contact_f64* const* contacts, int k, double dt, const double* w,
+               const contensou_step_f64* steps, const contensou_rolling_step_f64* rolling, const double* u_free,
+               const double* h_free, double* out) {
+  return contensou_proto_step_many_f64(contacts, (size_t)k, dt, w, steps, rolling, u_free, h_free, out) ? -1 : 0;
+}
+#else
+/* Not yet in the C API: step = aware is refused at load. */
+int step_available(void) { return 0; }
+int step_solve(const contensou_contact_f64* const* contacts, int k, double dt, const double* w,
+               const contensou_step_f64* steps, const contensou_rolling_step_f64* rolling, const double* u_free,
+               const double* h_free, double* out) {
+  (void)contacts, (void)k, (void)dt, (void)w, (void)steps, (void)rolling, (void)u_free, (void)h_free, (void)out;
+  return -1;
+}
+#endif
