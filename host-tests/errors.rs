@@ -1,5 +1,6 @@
-//! The README's "Errors" table (issue 8): it lists every `Error` variant of src/error.rs, and
-//! each variant is produced by the inputs the table names, in `f32` and `f64`.
+//! The guide's "Errors" table (docs/guide/src/conventions.md): it lists every `Error` variant
+//! of src/error.rs, and each variant is produced by the inputs the table names, in `f32` and
+//! `f64`.
 
 use contensou::batch::{BatchReal, Steps, Wrenches};
 use contensou::elliptic::Parameter;
@@ -28,10 +29,10 @@ fn declared() -> Vec<String> {
         .collect()
 }
 
-/// Variant names in the first column of the README's Errors table.
+/// Variant names in the first column of the guide's Errors table.
 fn documented() -> Vec<String> {
-    let readme = include_str!("../README.md");
-    let section = readme
+    let chapter = include_str!("../docs/guide/src/conventions.md");
+    let section = chapter
         .split("## Errors")
         .nth(1)
         .unwrap()
@@ -46,10 +47,10 @@ fn documented() -> Vec<String> {
 }
 
 #[test]
-fn readme_table_lists_every_variant() {
+fn guide_table_lists_every_variant() {
     let (d, r) = (declared(), documented());
     assert_eq!(d.len(), 15, "variants parsed from src/error.rs: {d:?}");
-    assert_eq!(d, r, "src/error.rs vs README Errors table");
+    assert_eq!(d, r, "src/error.rs vs the guide's Errors table");
 }
 
 fn nonfinite<V: std::fmt::Debug>(r: Result<V, Error>, name: &'static str) {
