@@ -87,7 +87,7 @@
 //! on the M4F and are never chosen. The choice goes through [`Precision`]: for `f64` (where the
 //! twins are libm code) and without the feature every declaration resolves to libm types.
 //!
-//! [`Best`]'s bounds hold for every accepted patch (g = P/Q ≥ 1e-4, e² ≤ 0.99998; issue 21);
+//! [`Best`]'s bounds hold for every accepted patch (g = P/Q ≥ 1e-4, e² ≤ 0.99998);
 //! [`Ellipsoid`]'s are measured for e² ≤ 0.99 (g = P/Q ≥ 0.0274) and it degrades beyond (see its
 //! docs).
 //!

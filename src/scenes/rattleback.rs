@@ -214,7 +214,7 @@ pub struct Probe<T> {
 /// - `material` u_B: the rattleback's material velocity at P, Ġ + ω × (P − G), horizontal
 ///   (the slip the friction laws take; the floor, body A, is at rest: u_A = 0).
 /// - `rolling` V = v_P − ½(u_A + u_B): the velocity at which the contact point moves over the
-///   two surfaces relative to their material, averaged (Kalker's rolling velocity; issue 20).
+///   two surfaces relative to their material, averaged (Kalker's rolling velocity).
 ///
 /// Rolling without slip about a principal axis of curvature: u_B = 0 and |V| = ρω, ρ the
 /// radius of curvature in the rolling plane; a pure spin about the vertical through x*: V = 0
