@@ -509,7 +509,7 @@ pub const ROLLING_NU: f64 = 0.3;
 
 /// Bound on |F − F_exact| (fN) of a [`Rolls`] scene: the default rolling law `table` against
 /// the exact steady-rolling theory over Kalker's creep curves, a/b ∈ [0.2, 5] (measured 0.045
-/// on held-out magnitudes; README "Rolling contact: Kalker's creep laws").
+/// on held-out magnitudes; the user guide, docs/guide/src/rolling.md).
 pub const ROLLING_FORCE: f64 = 0.05;
 
 /// Bound on |M_z − M_exact| (fNc, c = √(ab)) of a [`Rolls`] scene, as [`ROLLING_FORCE`]

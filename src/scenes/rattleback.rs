@@ -43,7 +43,7 @@
 //!   `Table`, `Blend`) through [`Rolling`] on the same contact with `Best`, fed the contact's
 //!   rolling velocity V = v_P − ½u_B in closed form ([`Kinematics`]) and the pair's elasticity
 //!   ([`Params::elasticity`]); the contact's δ is not used. Near V = 0 the creep rate grows
-//!   as 1/|V| and an explicit step chatters there (README, "The rattleback rolling").
+//!   as 1/|V| and an explicit step chatters there (the user guide, docs/guide/src/rattleback.md, "The rattleback rolling").
 //!
 //! # Diagnostics ([`Probe`])
 //!
@@ -630,7 +630,7 @@ impl<T: Real, L: FloorLaw<T>> Rattleback<T, L> {
 }
 
 /// Spin reversal and stall located between integration steps ([`crate::scenes::event`]),
-/// from a start with spin ω₀ and a threshold fraction k (the README's 0.1):
+/// from a start with spin ω₀ and a threshold fraction k (the guide's 0.1):
 ///
 /// - **reversal**: the first time the spin has turned and reached k·|ω₀| the other way,
 ///   ω·ẑ·sgn ω₀ = −k|ω₀|;

@@ -53,8 +53,8 @@
 //! over the five shapes, `host-tests/rolling.rs`).
 //! Linear limit: Kalker's coefficients, deviation O(t) (`host-tests/rolling.rs`: 1.3e-5
 //! relative at 1e-6 of saturation); full slip: `best`'s error (2.9e-5 fN, 2.0e-6 fNc
-//! measured); against the exact reference: [`Blend::REF_ERROR`] and the README's rolling
-//! section. Cost (M4F, f32, stage `rolling` of the firmware rig, 64 creep-curve states):
+//! measured); against the exact reference: [`Blend::REF_ERROR`] and the user guide's rolling
+//! chapter (docs/guide/src/rolling.md). Cost (M4F, f32, stage `rolling` of the firmware rig, 64 creep-curve states):
 //! 414 instructions per dimensional call on average (327 … 455; f64: 18,459), of which
 //! `best`'s full-slip call ≈ 110; `RollingContact::new` once per contact (f64 table
 //! interpolation, `best`'s per-contact tables). Flash of a probe with the contact built and one
