@@ -1,7 +1,9 @@
 #!/usr/bin/env python3
 """The user docs (README.md and the guide's chapters, docs/guide/src/*.md) as CI checks them.
 
-    python3 tools/guide_blocks.py links            # every relative link and image resolves
+    python3 tools/guide_blocks.py links            # every relative link and image resolves, and
+                                                   # every file, example, bench and test a
+                                                   # ```sh block names exists
     PY tools/guide_blocks.py run                   # every ```python block runs, every ```xml
                                                    # MuJoCo model loads and steps (PY: a venv with
                                                    # the contensou package, numpy and mujoco)
@@ -9,7 +11,9 @@
 `links` needs the standard library only. A link is checked when it is relative (resolved from
 the document's directory, anchors dropped) or points into this repository's web view
 (https://github.com/contensou/contensou/blob/main/<path>, raw.githubusercontent.com/...): the
-file must exist. External links are not fetched.
+file must exist. External links are not fetched. The ```sh blocks (commands, run by CI
+elsewhere or too long for it) are checked for what they name: repository paths
+(tools/…, capi/…, python/…, mujoco/…, firmware/…) and `--example/--bench/--test/--bin NAME`.
 
 `run` executes each Python block as its own script from the repository root (the blocks use
 repository paths such as mujoco/models/tippe_top.xml); blocks that load the MuJoCo plugin
@@ -62,8 +66,42 @@ def prose(text):
     return "\n".join(keep)
 
 
+def named_targets():
+    """The --example/--bench/--test/--bin names Cargo.toml and the tree define."""
+    names = {"example": set(), "bench": set(), "test": set(), "bin": {"contact_eval"}}
+    for f in (ROOT / "examples").iterdir():
+        names["example"].add(f.stem)
+    for f in (ROOT / "benches").iterdir():
+        names["bench"].add(f.stem)
+    kind = None
+    for line in (ROOT / "Cargo.toml").read_text().splitlines():
+        m = re.match(r"^\[\[(test|bench|example|bin)\]\]", line)
+        if m:
+            kind = m.group(1)
+        m = re.match(r'^name = "([^"]+)"', line)
+        if m and kind:
+            names[kind].add(m.group(1))
+    return names
+
+
+def check_commands(doc, names):
+    """Broken names in the document's ```sh blocks."""
+    bad = []
+    for lang, line, code in blocks(doc.read_text()):
+        if lang not in ("sh", "bash", "console"):
+            continue
+        for path in re.findall(r"(?<![\w./-])((?:tools|capi|python|mujoco|firmware)/[\w./-]*\w)", code):
+            if not (ROOT / path).exists() and not path.startswith(("capi/target", "mujoco/build")):
+                bad.append(f"{doc.relative_to(ROOT)}:{line}: {path}")
+        for kind, name in re.findall(r"--(example|bench|test|bin) ([\w-]+)", code):
+            if name not in names[kind]:
+                bad.append(f"{doc.relative_to(ROOT)}:{line}: --{kind} {name}")
+    return bad
+
+
 def check_links():
     bad, count = [], 0
+    names = named_targets()
     for doc in DOCS:
         for target in LINK.findall(prose(doc.read_text())):
             path = None
@@ -78,9 +116,10 @@ def check_links():
             count += 1
             if not path.exists():
                 bad.append(f"{doc.relative_to(ROOT)}: {target}")
+        bad += check_commands(doc, names)
     for b in bad:
         print(f"broken link: {b}", file=sys.stderr)
-    print(f"guide links: {count} checked in {len(DOCS)} documents, {len(bad)} broken")
+    print(f"guide links: {count} links and the sh blocks' names checked in {len(DOCS)} documents, {len(bad)} broken")
     return 1 if bad else 0
 
 
