@@ -111,6 +111,8 @@ mod guide_doctests {
         Bearing = "bearing.md",
         Rattleback = "rattleback.md",
         Events = "events.md",
+        TimeStepping = "time-stepping.md",
+        ScenesLargeSteps = "scenes-large-steps.md",
         Mcu = "mcu.md",
         Robustness = "robustness.md",
         Report = "report.md",
