@@ -63,13 +63,23 @@ for twin in wrench_eval rolling_eval; do
         -lpthread -ldl -lm -o "target/release/$twin-san"
 done
 
-echo "capi: the README's C example compiles (C99 and C++17) and runs"
-readme="$(mktemp -d)"
-awk '/^## From C/ { s = 1 } s && /^```c$/ { p = 1; next } p && /^```$/ { exit } p' ../README.md >"$readme/readme.c"
-grep -q contensou_contact_wrench_f32 "$readme/readme.c"
-gcc -std=c99 -Wall -Wextra -Werror -pedantic -Iinclude "$readme/readme.c" target/release/libcontensou_capi.a \
-    -lpthread -ldl -lm -o "$readme/readme"
-cp "$readme/readme.c" "$readme/readme.cpp"
-g++ -std=c++17 -Wall -Wextra -Werror -pedantic -Iinclude -c "$readme/readme.cpp" -o "$readme/readme.o"
-"$readme/readme"
-rm -rf "$readme"
+echo "capi: every C block of the README and the guide (docs/guide/src/*.md) compiles (C99 and C++17) and runs"
+blocks="$(mktemp -d)"
+for doc in ../README.md ../docs/guide/src/*.md; do
+    name="$(basename "$doc" .md)"
+    awk -v out="$blocks/$name" '/^```c$/ { n++; p = 1; f = sprintf("%s-%d.c", out, n); next }
+        p && /^```$/ { p = 0; next } p { print > f }' "$doc"
+done
+count=0
+for c in "$blocks"/*.c; do
+    [[ -e "$c" ]] || continue
+    count=$((count + 1))
+    gcc -std=c99 -Wall -Wextra -Werror -pedantic -Iinclude "$c" target/release/libcontensou_capi.a \
+        -lpthread -ldl -lm -o "${c%.c}"
+    cp "$c" "${c%.c}.cpp"
+    g++ -std=c++17 -Wall -Wextra -Werror -pedantic -Iinclude -c "${c%.c}.cpp" -o "${c%.c}.o"
+    "${c%.c}" >/dev/null || { echo "capi: C block $(basename "$c") failed" >&2; exit 1; }
+done
+echo "capi: $count C blocks compiled and run"
+((count >= 2)) || { echo "capi: expected the README's and the guide's C blocks, found $count" >&2; exit 1; }
+rm -rf "$blocks"

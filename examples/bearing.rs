@@ -5,7 +5,7 @@
 //!
 //! ```sh
 //! cargo run --release --features scenes --example bearing          # writes out/bearing_*.csv, out/bearing_fy.png
-//! cargo run --release --features scenes --example bearing -- out rolling   # README's creep vs full slip table (≈ 2 min)
+//! cargo run --release --features scenes --example bearing -- out rolling   # the guide's creep vs full slip table (≈ 2 min)
 //! cargo run --release --features scenes --example bearing -- out rolling table 0.05   # one rolling run to 50 ms
 //! ```
 //!
@@ -256,7 +256,7 @@ fn print_row(label: &str, delta: f64, h: f64, s: &Summary) {
 }
 
 /// Creep (rolling laws) against full slip (`best`) on bearing `g` at two δ and two steps:
-/// the README's bearing table. `which`: `best`, `table`, `blend` or all; `end`: the runs' end
+/// the guide's bearing table (docs/guide/src/bearing.md). `which`: `best`, `table`, `blend` or all; `end`: the runs' end
 /// (s). A run at another end than [`TABLE_END`] takes only the first (δ, h).
 fn rolling_table(which: Option<&str>, end: f64, g: Geometry<f64>) {
     let first = |runs: &[(f64, f64)]| -> Vec<(f64, f64)> {

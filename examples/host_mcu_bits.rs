@@ -1,4 +1,4 @@
-//! Host side of the host = MCU bit-identity check (issue 15 item 5).
+//! Host side of the host = MCU bit-identity check.
 //!
 //! - `host_mcu_bits` evaluates the shared f32 test vectors (`capi/examples/firmware/vectors.rs`:
 //!   10,240 states, every law and form) through `contensou::dynamic` and prints one line of

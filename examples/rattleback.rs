@@ -12,7 +12,7 @@
 //! `RATTLEBACK_H` (s), `RATTLEBACK_ESTAR` (Pa), `RATTLEBACK_SAMPLE` (s, the output
 //! interval, default 10 ms), `RATTLEBACK_DELTA` (m/s, the full-slip laws' δ, default 1 mm/s)
 //! and `RATTLEBACK_T` (s, default 20) override the step, E* (the rolling laws' G scales with
-//! it), the sampling, δ and the run's length (README: step, stiffness, sampling and δ checks);
+//! it), the sampling, δ and the run's length (docs/guide/src/rattleback.md: step, stiffness, sampling and δ checks);
 //! `RATTLEBACK_LAWS=table,blend` runs only the named laws; `RATTLEBACK_STIFFNESS=1` prints
 //! h × the friction's tangential rate against RK4's bound (before / after the event).
 //!
@@ -48,13 +48,13 @@ use plotters::style::{FontStyle, register_font};
 
 const F: f64 = 0.3;
 /// The full-slip laws' regularisation speed δ (m/s); `RATTLEBACK_DELTA` overrides it (the
-/// README's δ study; the rolling laws do not use it).
+/// the guide's δ study; the rolling laws do not use it).
 fn delta() -> f64 {
     env_or("RATTLEBACK_DELTA", 1e-3)
 }
 const TILT_DEG: f64 = 0.5;
 const SPIN: f64 = 2.0;
-/// RK4 step (s); `RATTLEBACK_H` overrides it (the step-size check in the README).
+/// RK4 step (s); `RATTLEBACK_H` overrides it (the step-size check in the guide).
 fn step() -> f64 {
     env_or("RATTLEBACK_H", 1e-4)
 }
@@ -62,7 +62,7 @@ fn step() -> f64 {
 fn t_end() -> f64 {
     env_or("RATTLEBACK_T", 20.0)
 }
-/// Output interval (s); `RATTLEBACK_SAMPLE` overrides it (the sampling check in the README).
+/// Output interval (s); `RATTLEBACK_SAMPLE` overrides it (the sampling check in the guide).
 fn sample() -> f64 {
     env_or("RATTLEBACK_SAMPLE", 1e-2)
 }

@@ -44,11 +44,11 @@ fn env_or(name: &str, default: f64) -> f64 {
         .and_then(|h| h.parse().ok())
         .unwrap_or(default)
 }
-/// RK4 step (s); `TIPPE_H` overrides it (the step-halving check in the README).
+/// RK4 step (s); `TIPPE_H` overrides it (the step-halving check in the guide).
 fn step() -> f64 {
     env_or("TIPPE_H", 1e-5)
 }
-/// Output interval (s); `TIPPE_SAMPLE` overrides it (the sampling check in the README).
+/// Output interval (s); `TIPPE_SAMPLE` overrides it (the sampling check in the guide).
 fn sample() -> f64 {
     env_or("TIPPE_SAMPLE", 2e-3)
 }

@@ -1,6 +1,7 @@
-//! The README's "Errors" table (issue 8) and the time-stepping guide chapter's: together they
-//! list every `Error` variant of src/error.rs, and each variant is produced by the inputs the
-//! table names, in `f32` and `f64` (the step-aware wrench's in host-tests/step_wrench.rs).
+//! The guide's "Errors" tables (docs/guide/src/conventions.md and the time-stepping chapter's):
+//! together they list every `Error` variant of src/error.rs, and each variant is produced by the
+//! inputs the table names, in `f32` and `f64` (the step-aware wrench's in
+//! host-tests/step_wrench.rs).
 
 use contensou::batch::{BatchReal, Steps, Wrenches};
 use contensou::elliptic::Parameter;
@@ -45,21 +46,21 @@ fn table(text: &str) -> Vec<String> {
         .collect()
 }
 
-/// Variant names in the Errors tables: the README's, then the time-stepping guide chapter's
+/// Variant names in the Errors tables: the conventions chapter's, then the time-stepping guide chapter's
 /// (the step-aware wrench's validation errors).
 fn documented() -> Vec<String> {
-    let mut names = table(include_str!("../README.md"));
+    let mut names = table(include_str!("../docs/guide/src/conventions.md"));
     names.extend(table(include_str!("../docs/guide/src/time-stepping.md")));
     names
 }
 
 #[test]
-fn readme_table_lists_every_variant() {
+fn guide_table_lists_every_variant() {
     let (d, r) = (declared(), documented());
     assert_eq!(d.len(), 21, "variants parsed from src/error.rs: {d:?}");
     assert_eq!(
         d, r,
-        "src/error.rs vs the README's and the time-stepping chapter's Errors tables"
+        "src/error.rs vs the guide's Errors tables"
     );
 }
 

@@ -141,7 +141,7 @@ fn table_stated_errors() {
 /// The thin band g = P/Q ∈ [1e-4, 1e-3] (issue 21: e² from 0.99978 to the contract's end
 /// 0.99998, where `best` reads m₁ = 1.7e-5 … 2.2e-4): the per-step shape table and the Newton
 /// path against the mpmath rows there (the dense 300 + grid rows of `tools/data/hertz_ref.csv`),
-/// every quantity relative — m₁ too, which an absolute error on c would hide (the README's
+/// every quantity relative — m₁ too, which an absolute error on c would hide (the guide's
 /// thin-band table).
 #[test]
 fn thin_band_errors() {

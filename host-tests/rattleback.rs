@@ -10,7 +10,7 @@
 //! f N/(δ m_eff) ≈ 4.4e3 1/s (f = 0.3, δ = 1e-3 m/s, m_eff ≈ 0.67 kg at the contact) gives
 //! 0.9 — both inside RK4's real-axis bound 2.78. The example runs h = 0.1 ms; its reversal and
 //! stall times, located between steps, are the same to 1 µs at h = 0.05 ms and within 0.3 ms at
-//! 0.2 ms (`Ellipsoid`: 11 ms; README).
+//! 0.2 ms (`Ellipsoid`: 11 ms; docs/guide/src/rattleback.md).
 
 use contensou::friction::{Best, Coulomb, Friction, FrictionLaw};
 use contensou::scenes::integrate::rk4;
@@ -483,7 +483,7 @@ fn rolling_law_stalls_the_steady_spin_without_reversal() {
 
 /// The reversal time converges with the step: h = 0.2 → 0.1 ms moves it by < 2 ms (measured
 /// 0.9 ms; 0.1 ms at 0.1 → 0.05 ms) although the creep rate G c² C₁₁/(m|V|) exceeds RK4's
-/// bound 2.785/h on ≈ 1.5 % of the steps (README).
+/// bound 2.785/h on ≈ 1.5 % of the steps (docs/guide/src/rattleback.md).
 #[test]
 fn rolling_reversal_converges_with_the_step() {
     use contensou::friction::rolling::Table;

@@ -39,7 +39,7 @@ fn theta_star() -> f64 {
 }
 
 // The simplified law's events with f64 RK4 at h = 10 µs, located between steps
-// (`cargo run --release --features scenes --example tippe_top`; README).
+// (`cargo run --release --features scenes --example tippe_top`; docs/guide/src/tippe-top.md).
 /// θ = π/2 (s).
 const T_HALF: f64 = 1.148067;
 /// θ = θ* (s).

@@ -76,3 +76,46 @@ pub use real::Real;
 #[cfg(doctest)]
 #[doc = include_str!("../README.md")]
 struct ReadmeDoctests;
+
+/// The user guide's Rust examples (docs/guide/src/, the mdBook) compile and run as doctests:
+/// every chapter is listed, so a Rust block added to any of them is tested. `#[cfg(doctest)]`
+/// drops these items before `include_str!` is expanded in every other build, so the published
+/// crate (which ships no docs/) builds without the files.
+#[cfg(doctest)]
+mod guide_doctests {
+    macro_rules! chapters {
+        ($($name:ident = $file:literal),* $(,)?) => {
+            $(
+                #[doc = include_str!(concat!("../docs/guide/src/", $file))]
+                struct $name;
+            )*
+        };
+    }
+    chapters! {
+        Introduction = "introduction.md",
+        Rust = "rust.md",
+        Cli = "cli.md",
+        C = "c.md",
+        Python = "python.md",
+        Mujoco = "mujoco.md",
+        Conventions = "conventions.md",
+        Model = "model.md",
+        Elliptic = "elliptic.md",
+        Hertz = "hertz.md",
+        Friction = "friction.md",
+        Best = "best.md",
+        Select = "select.md",
+        Batch = "batch.md",
+        Rolling = "rolling.md",
+        Scenes = "scenes.md",
+        TippeTop = "tippe-top.md",
+        Bearing = "bearing.md",
+        Rattleback = "rattleback.md",
+        Events = "events.md",
+        TimeStepping = "time-stepping.md",
+        ScenesLargeSteps = "scenes-large-steps.md",
+        Mcu = "mcu.md",
+        Robustness = "robustness.md",
+        Report = "report.md",
+    }
+}

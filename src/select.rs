@@ -87,7 +87,7 @@
 //! on the M4F and are never chosen. The choice goes through [`Precision`]: for `f64` (where the
 //! twins are libm code) and without the feature every declaration resolves to libm types.
 //!
-//! [`Best`]'s bounds hold for every accepted patch (g = P/Q ≥ 1e-4, e² ≤ 0.99998; issue 21);
+//! [`Best`]'s bounds hold for every accepted patch (g = P/Q ≥ 1e-4, e² ≤ 0.99998);
 //! [`Ellipsoid`]'s are measured for e² ≤ 0.99 (g = P/Q ≥ 0.0274) and it degrades beyond (see its
 //! docs).
 //!
@@ -509,7 +509,7 @@ pub const ROLLING_NU: f64 = 0.3;
 
 /// Bound on |F − F_exact| (fN) of a [`Rolls`] scene: the default rolling law `table` against
 /// the exact steady-rolling theory over Kalker's creep curves, a/b ∈ [0.2, 5] (measured 0.045
-/// on held-out magnitudes; README "Rolling contact: Kalker's creep laws").
+/// on held-out magnitudes; the user guide, docs/guide/src/rolling.md).
 pub const ROLLING_FORCE: f64 = 0.05;
 
 /// Bound on |M_z − M_exact| (fNc, c = √(ab)) of a [`Rolls`] scene, as [`ROLLING_FORCE`]

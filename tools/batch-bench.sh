@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The batch path's throughput (issue 23), one command:
+# The batch path's throughput, one command:
 #   tools/batch-bench.sh            # regenerates bench-results/batch.csv, batch.md,
 #                                   # batch-scaling.csv and docs/report/batch/scaling.png
 # 1. criterion (benches/batch.rs): the scalar loop and wrench_many on the same 4,096 rows, every
@@ -8,11 +8,12 @@
 # 2. examples/batch_scaling.rs: contacts/s against rows 1e3…1e7 and over threads → the chart.
 # 3. python/bench_batch.py: Contact.wrench (the batch path) against pure numpy, and threads;
 #    the package is built into a private directory (maturin; nothing installed in the venv).
-#    PYTHON (default: /work/venv/bin/python if present, else python3) needs numpy and maturin.
+#    PYTHON (default: the tools' own venv, tools/venv.sh → target/tools-venv, created on first
+#    use) needs numpy and maturin.
 # The machine's SIMD level (what the batch path dispatched to) is written into batch.md.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-py="${PYTHON:-$( [[ -x /work/venv/bin/python ]] && echo /work/venv/bin/python || echo python3)}"
+py="${PYTHON:-$(tools/venv.sh)}"
 md=bench-results/batch.md
 csv=bench-results/batch.csv
 log="$(mktemp)"

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Max error of `best` against the exact integrals per decade of m1 = 1 - e^2 (issue 21): the
-per-decade table of the README's `best` section and of src/friction/best.rs.
+per-decade table of the guide's `best` chapter (docs/guide/src/best.md) and of src/friction/best.rs.
 
 Both forms (`contact_eval friction --model best`: the per-contact BestContact; `--model
 best-varying`: the per-step flash table) and both precisions, against `--model exact` (f64;

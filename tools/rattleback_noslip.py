@@ -2,7 +2,7 @@
 """Stand-in for the published rattleback simulations (Kane & Levinson 1982; the model behind
 the Garcia & Hubbard 1988 formula): the rigid ellipsoid rolling WITHOUT slip and without
 dissipation, integrated here independently of the crate (numpy, fixed-step RK4), with the same
-body and start as examples/rattleback.rs. README, "The rattleback".
+body and start as examples/rattleback.rs. docs/guide/src/rattleback.md.
 
 Body (Kane & Levinson): semi-axes a = (0.2, 0.03, 0.02) m, G 0.01 m below the centre on the
 symmetry axis, m = 1 kg, inertia about G in the curvature frame A = 2e-4, B = 1.6e-3,

@@ -1,5 +1,5 @@
 /*
- * rolling_eval: the C twin of `contact_eval rolling` (Kalker's rolling contact, issue 20).
+ * rolling_eval: the C twin of `contact_eval rolling` (Kalker's rolling contact).
  *
  *   rolling_eval [--law table|blend|fastsim|fastsim-16|full-slip|linear] [--precision f32|f64]
  *                < in.csv > out.csv

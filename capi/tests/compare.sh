@@ -37,7 +37,7 @@ for precision in f32 f64; do
 done
 echo "compare: $rows rows × $runs runs (9 laws × 2 forms × 2 precisions): C = Rust bit for bit"
 
-# The optional rolling columns (G, nu, vrx, vry; issue 20): all four, vrx/vry only (G, nu
+# The optional rolling columns (G, nu, vrx, vry): all four, vrx/vry only (G, nu
 # by default), and two in another order, through the rolling laws (and best, which ignores
 # them), every form and precision.
 "$bits" wrench-rolling-gen >"$work/roll4.csv"
@@ -145,7 +145,7 @@ for bad in "50,50,1.15e11,0,0.1,1e-4,1e-6,0,0.01,0,50,-8e10,0.28,2,0" \
 done
 echo "compare: 5 bad rolling-column rows (G, nu, vrx, vry): both stop at row 3 with the same message"
 
-# The rolling evaluator (examples/rolling_eval.c, issue 20) against `contact_eval rolling`:
+# The rolling evaluator (examples/rolling_eval.c) against `contact_eval rolling`:
 # every rolling law × precision, bit for bit; clean under ASan + UBSan; the same bad rows
 # stop both at the same row.
 "$bits" rolling-gen >"$work/rolling.csv"

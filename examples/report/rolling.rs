@@ -1,4 +1,4 @@
-//! Rolling contact (issue 20): every rolling law's error against the exact steady-rolling
+//! Rolling contact: every rolling law's error against the exact steady-rolling
 //! reference on its held-out points, against cost, with the exact solver itself on the host
 //! chart.
 //!
@@ -148,7 +148,7 @@ fn exact_ns() -> Option<(f64, f64, f64)> {
 /// Writes the section (table + two charts) into `md`, the charts into `dir`; returns the
 /// "at a glance" line (the Pareto front on M4F instructions) if there is one.
 pub fn section(md: &mut String, dir: &Path, host: &Keyed, qemu: &Keyed) -> Option<String> {
-    md.push_str("### Rolling contact: Kalker's creep laws against the exact theory (issue 20)\n\n");
+    md.push_str("### Rolling contact: Kalker's creep laws against the exact theory\n\n");
     let Some(quarter) = rows("tools/data/rolling_ref_quarter.csv") else {
         md.push_str("No `tools/data/rolling_ref_quarter.csv`: section left out.\n\n");
         return None;

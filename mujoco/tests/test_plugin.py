@@ -166,7 +166,7 @@ def test_ball_rolls_and_spins_down_as_the_analytic_solution():
 
 
 def test_rattleback_stalls_as_the_rust_scene():
-    # README (the rattleback): `Best`, ω₀ = −2 rad/s, RK4 0.1 ms: the first 10 ms sample past
+    # The guide (docs/guide/src/rattleback.md): `Best`, ω₀ = −2 rad/s, RK4 0.1 ms: the first 10 ms sample past
     # the stall threshold is 0.87 s, as compared here (same sampling); located between the
     # steps, the stall is at 0.8436 s (the spin's first dip, between samples).
     run = run_models.run_rattleback(1.0)

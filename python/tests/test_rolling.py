@@ -1,4 +1,4 @@
-"""`contensou.rolling` (Kalker's rolling contact, issue 20) against `contact_eval rolling`: the
+"""`contensou.rolling` (Kalker's rolling contact) against `contact_eval rolling`: the
 same rows (shortest round-trip floats) give the same bits for every rolling law and precision;
 bad input is a ValueError naming the argument, its value, the index and the reason.
 

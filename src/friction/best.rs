@@ -130,7 +130,7 @@
 //! 5,760 states found (2.67×; QEMU row `wrench,table_each_step-best-worst,f32`); with the
 //! per-step geometry `Curvatures::from_bodies_cos_sin` as well 713 on average (465 … 908, row
 //! `-from-bodies`, a toroidal body on a race turned 0.1 rad per step, e² ≈ 0.93). (Before
-//! issue 21 extended both forms to the contract's end: 108, 181, 19,400, 272, 519, 748 — every
+//! the thin-patch extension took both forms to the contract's end: 108, 181, 19,400, 272, 519, 748 — every
 //! row within +1.9 %.) [`BestSeries`] 1,308 on average (micromath row), 3,099 worst; the
 //! varying wrench with it was 1,950 / 3,310. Flash: the series tables 7 × 9 × 11 `f32` = 2,772
 //! bytes and 7 × 7 × 15 = 2,940 bytes (thin); the per-step table 26 × 12 × 7 × 4 `f32` =

@@ -43,7 +43,7 @@
 //!   `Table`, `Blend`) through [`Rolling`] on the same contact with `Best`, fed the contact's
 //!   rolling velocity V = v_P − ½u_B in closed form ([`Kinematics`]) and the pair's elasticity
 //!   ([`Params::elasticity`]); the contact's δ is not used. Near V = 0 the creep rate grows
-//!   as 1/|V| and an explicit step chatters there (README, "The rattleback rolling").
+//!   as 1/|V| and an explicit step chatters there (the user guide, docs/guide/src/rattleback.md, "The rattleback rolling").
 //!
 //! # Diagnostics ([`Probe`])
 //!
@@ -219,7 +219,7 @@ pub struct Probe<T> {
 /// - `material` u_B: the rattleback's material velocity at P, Ġ + ω × (P − G), horizontal
 ///   (the slip the friction laws take; the floor, body A, is at rest: u_A = 0).
 /// - `rolling` V = v_P − ½(u_A + u_B): the velocity at which the contact point moves over the
-///   two surfaces relative to their material, averaged (Kalker's rolling velocity; issue 20).
+///   two surfaces relative to their material, averaged (Kalker's rolling velocity).
 ///
 /// Rolling without slip about a principal axis of curvature: u_B = 0 and |V| = ρω, ρ the
 /// radius of curvature in the rolling plane; a pure spin about the vertical through x*: V = 0
@@ -737,7 +737,7 @@ impl<T: Real, L: FloorLaw<T>> StepContact<T> for FloorStep<'_, T, L> {
 }
 
 /// Spin reversal and stall located between integration steps ([`crate::scenes::event`]),
-/// from a start with spin ω₀ and a threshold fraction k (the README's 0.1):
+/// from a start with spin ω₀ and a threshold fraction k (the guide's 0.1):
 ///
 /// - **reversal**: the first time the spin has turned and reached k·|ω₀| the other way,
 ///   ω·ẑ·sgn ω₀ = −k|ω₀|;

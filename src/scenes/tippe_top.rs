@@ -419,7 +419,7 @@ impl<T: Real, L: FrictionLaw> Ode<T, N> for TippeTop<T, L> {
 
 /// The top's events located between integration steps ([`crate::scenes::event`]): the first
 /// time θ reaches π/2 (the axis horizontal), θ reaches θ* ([`TippeTop::cos_theta_star`], where
-/// both spheres can touch: the "inversion" of the README's table), and the small sphere first
+/// both spheres can touch: the "inversion" of the guide's table, docs/guide/src/tippe-top.md), and the small sphere first
 /// reaches the floor (touch-down, [`TippeTop::penetrations`]). The θ events are located on
 /// cos θ ([`TippeTop::cos_tilt`], the same roots). Feed it every accepted step.
 #[derive(Clone, Copy, Debug, PartialEq)]

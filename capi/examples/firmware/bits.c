@@ -1,5 +1,5 @@
-/* C firmware image `bits`: the host = MCU bit-identity check through the C API (issue 15
- * item 5). Evaluates the shared f32 test vectors (vectors.c) with contensou_contact_wrench_f32
+/* C firmware image `bits`: the host = MCU bit-identity check through the C API.
+ * Evaluates the shared f32 test vectors (vectors.c) with contensou_contact_wrench_f32
  * for every law and form and streams, over semihosting, the same lines as the Rust twins
  * (vectors.rs): `CONFIG <law> <form>`, one line per state with the seven outputs
  * N Fx Fy Tz a b e2 as f32 bits in hex (`ERR <column>` if the C API refuses the state), and

@@ -1,4 +1,4 @@
-/* The host = MCU test vectors (issue 15 item 5), C twin of vectors.rs in this directory (see
+/* The host = MCU test vectors, C twin of vectors.rs in this directory (see
  * there for the ranges): the same xorshift64 stream and the same draws in the same order, so
  * both generate the same f32 bits. */
 #ifndef VECTORS_H

@@ -1,4 +1,4 @@
-// The host = MCU test vectors (issue 15 item 5), Rust twin of `vectors.c` in this directory:
+// The host = MCU test vectors, Rust twin of `vectors.c` in this directory:
 // the same xorshift64 stream and the same draws in the same order, so both produce the same
 // f32 bits. Shared verbatim (`include!`) by the host side `examples/host_mcu_bits.rs` and the
 // Rust MCU image `firmware/src/bin/bits.rs`; the C image uses `vectors.c`.

@@ -1,4 +1,4 @@
-//! The rolling evaluator (issue 20): Kalker's rolling contact with the columns of
+//! The rolling evaluator: Kalker's rolling contact with the columns of
 //! `contact_eval rolling` (`a,b,G,nu,f,N,V,xi,eta,phi` → `Fx,Fy,Mz`), bit for bit.
 
 use core::ffi::c_char;

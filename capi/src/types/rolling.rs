@@ -1,4 +1,4 @@
-//! The C types of the rolling evaluator (`contensou_rolling_*`, issue 20): Kalker's rolling
+//! The C types of the rolling evaluator (`contensou_rolling_*`): Kalker's rolling
 //! contact ([`contensou::friction::rolling`]) with the columns of `contact_eval rolling`.
 
 use contensou::friction::rolling::row::{Column, RowContact};

@@ -36,7 +36,7 @@
 //! ([`Blend::REF_ERROR`], asserted by `host-tests/rolling_ref.rs`): pure ξ 0.036 fN, pure η
 //! 0.054 fN / 0.088 fNc; the rest is spin (pure φ 0.101 / 0.158 at a/b = 5, η with φ 0.086 /
 //! 0.162). Between those magnitudes (`tools/data/rolling_ref_mid.csv`,
-//! `rolling_ref_quarter.csv`, not fitted): 0.165 / 0.169. The issue's aim (3 % fN, 5 % fNc) is
+//! `rolling_ref_quarter.csv`, not fitted): 0.165 / 0.169. The aim of 3 % fN, 5 % fNc is
 //! **not** met; [`super::Fastsim`] (32 × 32)
 //! is 0.085 / 0.060 on the same set at ≈ 120× the cost. σ and γ are fitted at ν = 0.25 only
 //! (the reference's creep curves); other ν use the same values with their own Kalker
@@ -53,8 +53,8 @@
 //! over the five shapes, `host-tests/rolling.rs`).
 //! Linear limit: Kalker's coefficients, deviation O(t) (`host-tests/rolling.rs`: 1.3e-5
 //! relative at 1e-6 of saturation); full slip: `best`'s error (2.9e-5 fN, 2.0e-6 fNc
-//! measured); against the exact reference: [`Blend::REF_ERROR`] and the README's rolling
-//! section. Cost (M4F, f32, stage `rolling` of the firmware rig, 64 creep-curve states):
+//! measured); against the exact reference: [`Blend::REF_ERROR`] and the user guide's rolling
+//! chapter (docs/guide/src/rolling.md). Cost (M4F, f32, stage `rolling` of the firmware rig, 64 creep-curve states):
 //! 414 instructions per dimensional call on average (327 … 455; f64: 18,459), of which
 //! `best`'s full-slip call ≈ 110; `RollingContact::new` once per contact (f64 table
 //! interpolation, `best`'s per-contact tables). Flash of a probe with the contact built and one
@@ -82,7 +82,7 @@ impl Blend {
     /// Measured max error against the exact steady-rolling reference over its creep-curve
     /// families (pure ξ, η, φ, combined, full slip; a/b ∈ {0.2, 0.5, 1, 2, 5}): (|ΔF| in fN,
     /// |ΔM_z| in fNc), asserted by `host-tests/rolling_ref.rs` (measured 0.101, 0.162). Misses
-    /// the issue's aim (3 %, 5 %) on the spin-dominated families; see the module docs.
+    /// the aim of 3 % fN, 5 % fNc on the spin-dominated families; see the module docs.
     pub const REF_ERROR: (f64, f64) = (0.105, 0.17);
 
     /// (σ, γ) for a/b: piecewise linear in ln(a/b) between the fitted shapes, the end values
@@ -133,7 +133,7 @@ pub(crate) fn creep<T: Real>(i: &Input<'_, T>) -> Creep<T> {
     let mv = fs.mz.abs() * v;
     let den = T::TWO * mv + dv;
     // S = (4dm + d²)/(2m + d)² = q(2 − q), q = d/(2m + d) ∈ [0, 1]: no square of a tiny or huge
-    // d, m to underflow to 0/0 (a spin of 1e-27 rad/s gave NaN in f32: fuzz finding, issue 20)
+    // d, m to underflow to 0/0 (a spin of 1e-27 rad/s gave NaN in f32: a fuzz finding)
     let sm = if den > T::ZERO {
         let q = dv / den;
         q * (T::TWO - q)

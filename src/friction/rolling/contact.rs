@@ -272,7 +272,7 @@ impl<T: Real> RollingContact<T> {
 /// 2e31; ∞ and NaN too). A larger κ only moves the end of the linear range to creepages below
 /// ε²/C, under the rounding of the velocities they come from (and needs a patch 1/ε² times
 /// smaller than the bodies' radii: nothing Hertzian); the clamp keeps κ·C and its square finite
-/// in every law (fuzz finding, issue 20: NaN from every law at G near the float's maximum, or
+/// in every law (a fuzz finding: NaN from every law at G near the float's maximum, or
 /// a tiny N in f32, with the old clamp κ ≤ T::MAX). Every caller building an [`Input`] uses it.
 ///
 /// And at least ε² (f32: 1.4e-14, f64: 4.9e-32): κ ≳ 1/f for any Hertzian contact (fN/(Gc²)
@@ -360,7 +360,7 @@ pub(crate) fn passive<T: Real>(c: Creep<T>, vx: T, vy: T, w: T) -> Creep<T> {
 }
 
 /// [`passive`] for a slip direction whose |u|² underflows (every component below ≈ 1e-19 in
-/// f32, 1e-154 in f64: p/|u|² was ∞, a fuzz finding of issue 20): u scaled by its largest
+/// f32, 1e-154 in f64: p/|u|² was ∞, a fuzz finding): u scaled by its largest
 /// component first.
 #[cold]
 fn passive_tiny<T: Real>(c: Creep<T>, vx: T, vy: T, w: T) -> Creep<T> {

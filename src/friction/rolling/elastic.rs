@@ -66,7 +66,7 @@ impl<T: Real> Elasticity<T> {
         let b2 = Self::new(g2, nu2)?;
         // In terms of q = G_lo/G_hi ∈ (0, 1]: G = 2G_lo/(1 + q), ν = (ν_lo + qν_hi)/(1 + q) —
         // the same formulas, free of the overflow of 1/G_i for subnormal G_i and of
-        // 1/G₁ + 1/G₂ → G = ∞ for G_i near the float's maximum (fuzz finding, issue 20).
+        // 1/G₁ + 1/G₂ → G = ∞ for G_i near the float's maximum (a fuzz finding).
         let (lo, hi) = if b1.g <= b2.g { (b1, b2) } else { (b2, b1) };
         let q = lo.g / hi.g;
         let r = T::ONE / (T::ONE + q);

@@ -87,7 +87,7 @@ impl<T: Real> RollingSlip<T> {
             None
         } else {
             // three divisions, not 1/V times each: 1/V overflows for subnormal V and
-            // 0 · ∞ would be NaN (fuzz finding, issue 20)
+            // 0 · ∞ would be NaN (a fuzz finding)
             Some((self.vx / self.v, self.vy / self.v, self.omega / self.v))
         }
     }
@@ -112,7 +112,7 @@ impl<T: Real> RollingSlip<T> {
             self.unusual(c, mirrored, vx, om, v)
         };
         // a subnormal |V|/S (a creepage beyond 1/MIN_POSITIVE) is full slip: 0, so that the
-        // laws' 1/v stays finite (fuzz finding, issue 20: ∞·0 in `blend` at V = 1e-310 m/s)
+        // laws' 1/v stays finite (a fuzz finding: ∞·0 in `blend` at V = 1e-310 m/s)
         if out.v < T::MIN_POSITIVE {
             out.v = T::ZERO;
         }
@@ -132,7 +132,7 @@ impl<T: Real> RollingSlip<T> {
 
     /// Rest, an overflowing sum, or a subnormal one: divide by the largest magnitude (c|ω|
     /// overflowing: pure spin; an infinite component, from a caller's arithmetic: its sign), by four divisions (1/m may overflow for a subnormal m: ∞·0 =
-    /// NaN, a fuzz finding of issue 20).
+    /// NaN, a fuzz finding).
     #[cold]
     fn unusual(&self, c: T, mirrored: bool, vx: T, om: T, v: T) -> Scaled<T> {
         let cw = c * om;
@@ -149,7 +149,7 @@ impl<T: Real> RollingSlip<T> {
         if !m.is_finite() {
             // a component itself overflowed (a caller's rotation of an extreme slip, or |V|
             // from its components): the limit direction, ±1 for the infinite ones (fuzz
-            // finding, issue 20: ∞/∞ = NaN in contact::Rolling at f32 |v| ≈ 3.8e38)
+            // finding: ∞/∞ = NaN in contact::Rolling at f32 |v| ≈ 3.8e38)
             let unit = |x: T| {
                 if !x.is_finite() {
                     T::ONE.copysign(x)
