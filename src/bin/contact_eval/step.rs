@@ -5,13 +5,12 @@ use std::fmt::LowerExp;
 use std::process::ExitCode;
 
 use contensou::Real;
-use contensou::dynamic::{
-    DynContact, Form, INPUTS, Invalid, Law, ROLLING_INPUTS, RollingSpec, RollingStep, Spec, Step,
-};
+use contensou::dynamic::{DynContact, Form, INPUTS, Law, ROLLING_INPUTS};
 use contensou::step::contract::{self, FREE_INPUTS, STEP_INPUTS, STEP_OUTPUTS};
 
-use crate::csv::{message, run_csv_optional, shortest};
-use crate::{Args, Precision, by_name, list};
+use crate::csv::run_csv_optional;
+use crate::wrench::{self, parts, refusal};
+use crate::{Args, Precision, list};
 
 const COLUMNS: &str =
     "  columns: those of `wrench` (P,Q,estar,cd,f,delta,h,hdot,vx,vy,omega; SI, contact frame),
@@ -37,75 +36,12 @@ pub fn help() -> String {
 }
 
 /// Run the subcommand, or say why the options are wrong.
-pub fn run(mut args: Args) -> Result<ExitCode, String> {
-    let law = by_name("--law", args.take(&["--law"]), &Law::ALL, |l| l.name())?;
-    let form = by_name("--form", args.take(&["--form"]), &Form::ALL, |f| f.name())?;
-    let (law, form) = (
-        law.copied().unwrap_or_default(),
-        form.copied().unwrap_or_default(),
-    );
-    let precision = args.precision;
-    args.finish()?;
+pub fn run(args: Args) -> Result<ExitCode, String> {
+    let (law, form, precision) = wrench::options(args)?;
     Ok(match precision {
         Precision::F32 => rows::<f32>(law, form),
         Precision::F64 => rows::<f64>(law, form),
     })
-}
-
-/// The contract's columns of a row: the contact (`r[0..6]`), the step (`r[6..11]`), and the
-/// optional rolling columns `G, nu, vrx, vry` (`o[0..4]`; absent: the defaults).
-fn parts<T: Real>(r: &[T], o: &[Option<T>]) -> (Spec<T>, Step<T>, RollingSpec<T>, RollingStep<T>) {
-    let get = |i: usize| o.get(i).copied().flatten();
-    let spec = Spec {
-        p: r[0],
-        q: r[1],
-        estar: r[2],
-        cd: r[3],
-        f: r[4],
-        delta: r[5],
-    };
-    let step = Step {
-        h: r[6],
-        hdot: r[7],
-        vx: r[8],
-        vy: r[9],
-        omega: r[10],
-    };
-    let rolling_spec = RollingSpec {
-        g: get(0),
-        nu: get(1),
-    };
-    let vr = (get(2).unwrap_or(T::ZERO), get(3).unwrap_or(T::ZERO));
-    (
-        spec,
-        step,
-        rolling_spec,
-        RollingStep {
-            vrx: vr.0,
-            vry: vr.1,
-        },
-    )
-}
-
-/// `column = value: reason` for a rejected row, the value looked up among the row's columns.
-fn refusal<T: Real + LowerExp>(
-    e: Invalid,
-    inputs: &[&str],
-    r: &[T],
-    optional: &[&str],
-    o: &[Option<T>],
-) -> String {
-    let Invalid { column, error } = e;
-    let at = |i: usize| o.get(i).copied().flatten();
-    let value = match inputs.iter().position(|&c| c == column) {
-        Some(i) => r.get(i).copied(),
-        None => optional.iter().position(|&c| c == column).and_then(at),
-    };
-    message(
-        column,
-        value.map_or_else(|| "?".into(), shortest),
-        error.as_str(),
-    )
 }
 
 fn rows<T: Real + LowerExp>(law: Law, form: Form) -> ExitCode {

@@ -102,47 +102,63 @@ pub type Eval<'a, T> =
 /// column is reported with its value.
 pub fn rows<T: Real + LowerExp>(outputs: &[&str], eval: &Eval<'_, T>) -> ExitCode {
     run_csv_optional::<T>(&INPUTS, &ROLLING_INPUTS, outputs, &mut |r, o| {
-        let spec = Spec {
-            p: r[0],
-            q: r[1],
-            estar: r[2],
-            cd: r[3],
-            f: r[4],
-            delta: r[5],
-        };
-        let step = Step {
-            h: r[6],
-            hdot: r[7],
-            vx: r[8],
-            vy: r[9],
-            omega: r[10],
-        };
-        let get = |i: usize| o.get(i).copied().flatten();
-        let rolling_spec = RollingSpec {
-            g: get(0),
-            nu: get(1),
-        };
-        let rolling_step = RollingStep {
-            vrx: get(2).unwrap_or(T::ZERO),
-            vry: get(3).unwrap_or(T::ZERO),
-        };
-        match eval(&spec, &rolling_spec, &step, &rolling_step) {
-            Ok(out) => Ok(out),
-            Err(Invalid { column, error }) => {
-                let value = INPUTS
-                    .iter()
-                    .position(|&c| c == column)
-                    .map(|i| r[i])
-                    .or_else(|| {
-                        let i = ROLLING_INPUTS.iter().position(|&c| c == column)?;
-                        get(i)
-                    });
-                Err(message(
-                    column,
-                    value.map_or_else(|| "?".into(), shortest),
-                    error.as_str(),
-                ))
-            }
-        }
+        let (spec, step, rolling_spec, rolling_step) = parts(r, o);
+        eval(&spec, &rolling_spec, &step, &rolling_step)
+            .map_err(|e| refusal(e, &INPUTS, r, &ROLLING_INPUTS, o))
     })
+}
+
+/// The contract's columns of a row: the contact (`r[0..6]`), the step (`r[6..11]`), and the
+/// optional rolling columns `G, nu, vrx, vry` (`o[0..4]`; absent: the defaults).
+pub fn parts<T: Real>(
+    r: &[T],
+    o: &[Option<T>],
+) -> (Spec<T>, Step<T>, RollingSpec<T>, RollingStep<T>) {
+    let get = |i: usize| o.get(i).copied().flatten();
+    let spec = Spec {
+        p: r[0],
+        q: r[1],
+        estar: r[2],
+        cd: r[3],
+        f: r[4],
+        delta: r[5],
+    };
+    let step = Step {
+        h: r[6],
+        hdot: r[7],
+        vx: r[8],
+        vy: r[9],
+        omega: r[10],
+    };
+    let rolling_spec = RollingSpec {
+        g: get(0),
+        nu: get(1),
+    };
+    let rolling_step = RollingStep {
+        vrx: get(2).unwrap_or(T::ZERO),
+        vry: get(3).unwrap_or(T::ZERO),
+    };
+    (spec, step, rolling_spec, rolling_step)
+}
+
+/// `column = value: reason` for a rejected row, the value looked up among the row's columns
+/// (`inputs`, then the `optional` ones).
+pub fn refusal<T: Real + LowerExp>(
+    e: Invalid,
+    inputs: &[&str],
+    r: &[T],
+    optional: &[&str],
+    o: &[Option<T>],
+) -> String {
+    let Invalid { column, error } = e;
+    let at = |i: usize| o.get(i).copied().flatten();
+    let value = match inputs.iter().position(|&c| c == column) {
+        Some(i) => r.get(i).copied(),
+        None => optional.iter().position(|&c| c == column).and_then(at),
+    };
+    message(
+        column,
+        value.map_or_else(|| "?".into(), shortest),
+        error.as_str(),
+    )
 }
