@@ -69,6 +69,22 @@ enum contensou_status
   // [`Error::ColumnLengthMismatch`] (batch columns; not returned by this API's calls,
   // whose columns share one `rows`).
   CONTENSOU_STATUS_COLUMN_LENGTH_MISMATCH = 15,
+  // [`Error::StepNotPositive`]: a time step Δt ≤ 0 (step-aware calls).
+  CONTENSOU_STATUS_STEP_NOT_POSITIVE = 16,
+  // [`Error::InverseMassNotSymmetric`]: the inverse-mass matrix W is not symmetric within
+  // the library's stated tolerance (step-aware calls).
+  CONTENSOU_STATUS_INVERSE_MASS_NOT_SYMMETRIC = 17,
+  // [`Error::InverseMassNotPositiveSemidefinite`]: W is not positive semidefinite within
+  // the library's stated tolerance (step-aware calls).
+  CONTENSOU_STATUS_INVERSE_MASS_NOT_POSITIVE_SEMIDEFINITE = 18,
+  // [`Error::MassNotPositive`]: a body's mass ≤ 0 (building W from bodies).
+  CONTENSOU_STATUS_MASS_NOT_POSITIVE = 19,
+  // [`Error::InertiaNotPositiveDefinite`]: a body's inertia tensor is not symmetric
+  // positive definite (building W from bodies).
+  CONTENSOU_STATUS_INERTIA_NOT_POSITIVE_DEFINITE = 20,
+  // [`Error::BodyIndexInvalid`]: a contact names a body index out of range, or the same
+  // body as A and B (building W from bodies).
+  CONTENSOU_STATUS_BODY_INDEX_INVALID = 21,
   // A pointer parameter that must not be NULL was NULL.
   CONTENSOU_STATUS_NULL_POINTER = 100,
   // A pointer parameter is not aligned for its type (storage: 8 bytes).
