@@ -10,12 +10,13 @@
 //! - `bits wrench-rolling-gen` prints rows of the wrench contract with the optional rolling
 //!   columns `G,nu,vrx,vry` (contact blocks, rolling velocities from 0 to past the slip);
 //! - `bits check f32|f64 A.csv B.csv` parses every field of both outputs in that precision
-//!   and requires the same bits (and the same header — the wrench contract's or
-//!   `contact_eval rolling`'s — and row count).
+//!   and requires the same bits (and the same header — the wrench contract's, its Jacobian's
+//!   or `contact_eval rolling`'s — and row count).
 use std::process::ExitCode;
 use std::str::FromStr;
 
 use contensou::dynamic::{INPUTS, OUTPUTS};
+use contensou::jacobian::OUTPUTS as JACOBIAN_OUTPUTS;
 use contensou::Real;
 
 /// splitmix64: a fixed, portable stream.
@@ -309,9 +310,11 @@ fn check<T: FromStr + Real>(a: &str, b: &str) -> ExitCode {
     let header = format!("{},{}", INPUTS.join(","), OUTPUTS.join(","));
     let rolling = format!("{},{}", ROLLING_INPUTS.join(","), ROLLING_OUTPUTS.join(","));
     let first = la.first().copied().unwrap_or_default();
-    // the wrench contract may add optional rolling columns between its inputs and outputs
-    let optional =
-        first.starts_with(INPUTS.join(",").as_str()) && first.ends_with(OUTPUTS.join(",").as_str());
+    // the wrench contract (and its Jacobian's, `contact_eval jacobian`) may add optional
+    // rolling columns between its inputs and outputs
+    let optional = first.starts_with(INPUTS.join(",").as_str())
+        && (first.ends_with(OUTPUTS.join(",").as_str())
+            || first.ends_with(JACOBIAN_OUTPUTS.join(",").as_str()));
     if !(first == header || first == rolling || optional) || lb.first() != Some(&first) {
         eprintln!("bits check: header differs from `{header}` or `{rolling}`");
         return ExitCode::from(1);

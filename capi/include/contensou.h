@@ -337,6 +337,60 @@ typedef struct {
   double *e2;
 } contensou_wrench_columns_f64;
 
+// The wrench (N, F_x, F_y, T_z) on body B of one step and its derivatives with respect to
+// the step's inputs q = (h, ḣ, v_x, v_y, ω) ([`contensou::jacobian::Jacobian`]): the outputs
+// `N,Fx,Fy,Tz,dN_dh,…,dTz_domega` of `contact_eval jacobian`, in that order (`d` row by
+// row). SI units: `d[0][0]` = ∂N/∂h in N/m, `d[3][4]` = ∂T_z/∂ω in N·m·s, ….
+typedef struct {
+  // Normal force N (N): bit for bit `contensou_contact_wrench_*`'s.
+  float n;
+  // Friction force F_x (N).
+  float fx;
+  // Friction force F_y (N).
+  float fy;
+  // Drilling torque T_z (N·m).
+  float tz;
+  // `d[i][j]` = ∂wᵢ/∂qⱼ: rows i = (N, F_x, F_y, T_z), columns j = (h, ḣ, v_x, v_y, ω).
+  float d[4][5];
+} contensou_jacobian_f32;
+
+// The wrench (N, F_x, F_y, T_z) on body B of one step and its derivatives with respect to
+// the step's inputs q = (h, ḣ, v_x, v_y, ω) ([`contensou::jacobian::Jacobian`]): the outputs
+// `N,Fx,Fy,Tz,dN_dh,…,dTz_domega` of `contact_eval jacobian`, in that order (`d` row by
+// row). SI units: `d[0][0]` = ∂N/∂h in N/m, `d[3][4]` = ∂T_z/∂ω in N·m·s, ….
+typedef struct {
+  // Normal force N (N): bit for bit `contensou_contact_wrench_*`'s.
+  double n;
+  // Friction force F_x (N).
+  double fx;
+  // Friction force F_y (N).
+  double fy;
+  // Drilling torque T_z (N·m).
+  double tz;
+  // `d[i][j]` = ∂wᵢ/∂qⱼ: rows i = (N, F_x, F_y, T_z), columns j = (h, ḣ, v_x, v_y, ω).
+  double d[4][5];
+} contensou_jacobian_f64;
+
+// The optional step columns `vrx, vry` of the rolling laws
+// ([`contensou::dynamic::RollingStep`]): the contact's rolling velocity in the contact frame
+// (x the major axis), m/s. The sliding laws ignore it.
+typedef struct {
+  // V_x (m/s), along the major axis.
+  float vrx;
+  // V_y (m/s).
+  float vry;
+} contensou_rolling_step_f32;
+
+// The optional step columns `vrx, vry` of the rolling laws
+// ([`contensou::dynamic::RollingStep`]): the contact's rolling velocity in the contact frame
+// (x the major axis), m/s. The sliding laws ignore it.
+typedef struct {
+  // V_x (m/s), along the major axis.
+  double vrx;
+  // V_y (m/s).
+  double vry;
+} contensou_rolling_step_f64;
+
 // A column of `contact_eval rolling` (`a,b,G,nu,f,N,V,xi,eta,phi`), the shape a/b, or
 // [`CONTENSOU_ROLLING_COLUMN_NONE`]: which input a rolling call's error came from.
 typedef uint32_t contensou_rolling_column;
@@ -425,26 +479,6 @@ typedef struct {
   // M_z (N·m), about the patch centre.
   double mz;
 } contensou_rolling_output_f64;
-
-// The optional step columns `vrx, vry` of the rolling laws
-// ([`contensou::dynamic::RollingStep`]): the contact's rolling velocity in the contact frame
-// (x the major axis), m/s. The sliding laws ignore it.
-typedef struct {
-  // V_x (m/s), along the major axis.
-  float vrx;
-  // V_y (m/s).
-  float vry;
-} contensou_rolling_step_f32;
-
-// The optional step columns `vrx, vry` of the rolling laws
-// ([`contensou::dynamic::RollingStep`]): the contact's rolling velocity in the contact frame
-// (x the major axis), m/s. The sliding laws ignore it.
-typedef struct {
-  // V_x (m/s), along the major axis.
-  double vrx;
-  // V_y (m/s).
-  double vry;
-} contensou_rolling_step_f64;
 
 // The rolling step columns of `contensou_contact_wrench_many_rolling_*`: two caller arrays
 // of `rows` values each (`vrx, vry`).
@@ -798,6 +832,53 @@ contensou_status contensou_contact_wrench_many_f64(const contensou_contact_f64 *
                                                    const contensou_wrench_columns_f64 *out,
                                                    size_t *row,
                                                    contensou_column *column);
+
+// The wrench of one step and its Jacobian ([`contensou_jacobian`]): `step` validated as
+// by [`contensou_contact_wrench_f32`] (the same errors and columns), N, F_x, F_y, T_z bit
+// for bit its values, the derivatives by forward-mode dual numbers through the library's
+// own code (`contensou::jacobian`: at a law's kink the derivative of the branch the value
+// takes; h ≤ 0 gives zeros). A rolling law takes V = 0
+// ([`contensou_contact_jacobian_rolling_f32`]). Bit for bit `contact_eval jacobian`.
+// Fixed cost: ≈ 8× the wrench's (1,542 M4F `float` instructions for fixed `best`).
+//
+// # Safety
+// `storage` is NULL or readable; `step` NULL or readable; `out`, `column` NULL or writable.
+contensou_status contensou_contact_jacobian_f32(const contensou_contact_f32 *storage,
+                                                const contensou_step_f32 *step,
+                                                contensou_jacobian_f32 *out,
+                                                contensou_column *column);
+
+// [`contensou_contact_jacobian_f32`] in `double`.
+//
+// # Safety
+// As [`contensou_contact_jacobian_f32`].
+contensou_status contensou_contact_jacobian_f64(const contensou_contact_f64 *storage,
+                                                const contensou_step_f64 *step,
+                                                contensou_jacobian_f64 *out,
+                                                contensou_column *column);
+
+// [`contensou_contact_jacobian_f32`] with the rolling velocity `rolling` (`vrx, vry`, m/s
+// in the contact frame; NULL: 0), read and validated after the step by the rolling laws
+// only (errors name `CONTENSOU_COLUMN_VRX` / `_VRY`); V is held fixed (no derivative with
+// respect to it). Bit for bit `contact_eval jacobian` with the columns `vrx, vry`.
+//
+// # Safety
+// As [`contensou_contact_jacobian_f32`]; `rolling` NULL or readable.
+contensou_status contensou_contact_jacobian_rolling_f32(const contensou_contact_f32 *storage,
+                                                        const contensou_step_f32 *step,
+                                                        const contensou_rolling_step_f32 *rolling,
+                                                        contensou_jacobian_f32 *out,
+                                                        contensou_column *column);
+
+// [`contensou_contact_jacobian_rolling_f32`] in `double`.
+//
+// # Safety
+// As [`contensou_contact_jacobian_rolling_f32`].
+contensou_status contensou_contact_jacobian_rolling_f64(const contensou_contact_f64 *storage,
+                                                        const contensou_step_f64 *step,
+                                                        const contensou_rolling_step_f64 *rolling,
+                                                        contensou_jacobian_f64 *out,
+                                                        contensou_column *column);
 
 // The name of a rolling column (`"a"`, …, `"phi"`, `"a/b"`): a static NUL-terminated
 // string, `""` for `CONTENSOU_ROLLING_COLUMN_NONE` and unknown values.

@@ -48,7 +48,9 @@ macro_rules! twins {
     };
 }
 
+mod jacobian;
 mod rolling;
+pub use jacobian::*;
 pub use rolling::*;
 
 /// The message of a status code: a static NUL-terminated string (also for unknown codes).

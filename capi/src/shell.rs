@@ -15,8 +15,10 @@ use crate::cstr::c_str;
 use crate::status::contensou_status as S;
 use crate::types::*;
 
+mod jacobian;
 mod many;
 mod rolling;
+pub(crate) use jacobian::contact_jacobian_rolling;
 pub(crate) use many::{contact_wrench_many, contact_wrench_many_rolling};
 pub(crate) use rolling::{rolling_column_name, rolling_law_of, rolling_new, rolling_wrench};
 

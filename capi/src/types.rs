@@ -5,7 +5,9 @@
 
 use contensou::dynamic::DynContact;
 
+mod jacobian;
 mod rolling;
+pub use jacobian::*;
 pub use rolling::*;
 
 /// The contact columns `P,Q,estar,cd,f,delta` of the contract ([`contensou::dynamic::Spec`]).
