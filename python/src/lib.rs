@@ -14,10 +14,16 @@
 //! Both return the dict `{N, Fx, Fy, Tz, a, b, e2}` of arrays of the broadcast shape (f32
 //! arrays for `precision="f32"`; numpy scalars when every argument is a scalar). Bad input is
 //! a `ValueError` naming the argument, the index into the broadcast shape and the reason.
+//! - `jacobian(...)`: `wrench`'s arguments → the wrench and its 20 derivatives
+//!   (`JACOBIAN_OUTPUTS`, `contact_eval jacobian`); `step(..., dt, w_nn, …, w_ww, *, …,
+//!   un_free, …)`: the step-aware wrench (`STEP_OUTPUTS`, `contact_eval step`). Row by row
+//!   (no batch path), bit for bit those commands.
 
 mod columns;
+mod jacobian;
 mod rolling;
 mod rows;
+mod step;
 
 use ::contensou::dynamic::{
     DynContact, Form, INPUTS, Law, OUTPUTS, ROLLING_INPUTS, RollingSpec, RollingStep, Spec, Step,
@@ -93,21 +99,29 @@ fn columns_of<'a, T: Precision, const N: usize>(
 fn convert_optional<'py, T: Precision>(
     values: [Option<&Bound<'py, PyAny>>; 4],
 ) -> PyResult<[Option<Arg<'py, T>>; 4]> {
-    let mut out = [None, None, None, None];
+    convert_named_optional(ROLLING_INPUTS, values)
+}
+
+/// Optional arguments called `names` converted to arrays of `T` (`None`: not given).
+fn convert_named_optional<'py, T: Precision, const N: usize>(
+    names: [&'static str; N],
+    values: [Option<&Bound<'py, PyAny>>; N],
+) -> PyResult<[Option<Arg<'py, T>>; N]> {
+    let mut out = [const { None }; N];
     for (k, value) in values.into_iter().enumerate() {
         if let Some(v) = value {
-            out[k] = Some(T::convert(ROLLING_INPUTS[k], v)?);
+            out[k] = Some(T::convert(names[k], v)?);
         }
     }
     Ok(out)
 }
 
 /// The columns of the given optional arguments over `shape`.
-fn optional_columns<'a, T: Precision>(
-    args: &'a [Option<Arg<'_, T>>; 4],
+fn optional_columns<'a, T: Precision, const N: usize>(
+    args: &'a [Option<Arg<'_, T>>; N],
     shape: &[usize],
-) -> PyResult<[Option<Column<'a, T>>; 4]> {
-    let mut out = [None, None, None, None];
+) -> PyResult<[Option<Column<'a, T>>; N]> {
+    let mut out = [const { None }; N];
     for (k, arg) in args.iter().enumerate() {
         if let Some(a) = arg {
             out[k] = Some(Column::new(a, shape)?);
@@ -494,6 +508,21 @@ impl Contact {
 #[pymodule(name = "contensou")]
 fn contensou_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(wrench, m)?)?;
+    m.add_function(wrap_pyfunction!(jacobian::jacobian, m)?)?;
+    m.add_function(wrap_pyfunction!(step::step, m)?)?;
+    m.add("JACOBIAN_OUTPUTS", ::contensou::jacobian::OUTPUTS.to_vec())?;
+    m.add(
+        "STEP_INPUTS",
+        ::contensou::step::contract::STEP_INPUTS.to_vec(),
+    )?;
+    m.add(
+        "FREE_INPUTS",
+        ::contensou::step::contract::FREE_INPUTS.to_vec(),
+    )?;
+    m.add(
+        "STEP_OUTPUTS",
+        ::contensou::step::contract::STEP_OUTPUTS.to_vec(),
+    )?;
     m.add_function(wrap_pyfunction!(rolling::rolling, m)?)?;
     m.add_class::<rolling::RollingContact>()?;
     m.add("ROLLING_INPUTS", ROLLING_INPUTS.to_vec())?;

@@ -1,0 +1,105 @@
+//! `contensou.jacobian`: the wrench of the contract and its 20 derivatives with respect to
+//! (h, ḣ, v_x, v_y, ω), row by row over broadcast arguments — each row
+//! [`DynContact::jacobian_rolling`], bit for bit `contact_eval jacobian`.
+
+use ::contensou::dynamic::{DynContact, Form, INPUTS, Law, ROLLING_INPUTS, RollingStep, Step};
+use ::contensou::jacobian::OUTPUTS;
+use pyo3::prelude::*;
+use pyo3::types::PyDict;
+
+use crate::columns::broadcast_shape;
+use crate::rows::{PerRow, Precision, evaluate_each_py};
+use crate::{columns_of, convert_all, convert_optional, form_of, is_f32, law_of, optional_columns};
+
+/// The per-row Jacobian in precision `T`.
+fn jacobian_in<'py, T: Precision>(
+    py: Python<'py>,
+    values: [&Bound<'py, PyAny>; 11],
+    optional: [Option<&Bound<'py, PyAny>>; 4],
+    law: Law,
+    form: Form,
+) -> PyResult<Bound<'py, PyDict>> {
+    let args = convert_all::<T, 11>(INPUTS, values)?;
+    let extra = convert_optional::<T>(optional)?;
+    let mut named: Vec<_> = INPUTS.iter().copied().zip(args.iter()).collect();
+    for (name, arg) in ROLLING_INPUTS.iter().zip(&extra) {
+        if let Some(a) = arg {
+            named.push((name, a));
+        }
+    }
+    let shape = broadcast_shape(&named)?;
+    let [p, q, estar, cd, f, delta, h, hdot, vx, vy, omega] = columns_of(&args, &shape)?;
+    let [g, nu, vrx, vry] = optional_columns(&extra, &shape)?;
+    let spec = [p, q, estar, cd, f, delta];
+    let steps = [h, hdot, vx, vy, omega];
+    let contacts = PerRow::new(&spec, [g.as_ref(), nu.as_ref()], law, form);
+    let row = |c: &DynContact<T>, i: usize| {
+        let [h, hdot, vx, vy, omega] = steps.each_ref().map(|c| c.at(i));
+        let [vrx, vry] = [&vrx, &vry].map(|c| c.as_ref().map_or(T::ZERO, |c| c.at(i)));
+        let step = Step {
+            h,
+            hdot,
+            vx,
+            vy,
+            omega,
+        };
+        c.jacobian_rolling(&step, &RollingStep { vrx, vry })
+            .map(|j| j.to_array())
+    };
+    let mut inputs: Vec<_> = INPUTS[..6]
+        .iter()
+        .copied()
+        .zip(spec.iter().map(Some))
+        .collect();
+    inputs.extend(INPUTS[6..].iter().copied().zip(steps.iter().map(Some)));
+    inputs.extend(
+        ROLLING_INPUTS
+            .iter()
+            .copied()
+            .zip([&g, &nu, &vrx, &vry].map(Option::as_ref)),
+    );
+    evaluate_each_py(py, &shape, contacts, row, &OUTPUTS, &inputs)
+}
+
+/// The wrench of the contract and its Jacobian, row by row over the broadcast arguments.
+///
+/// Arguments as `contensou.wrench` (the 11 columns, optional `G`, `nu`, `vrx`, `vry`; the
+/// rolling velocity is held fixed, not differentiated). Returns the dict of
+/// `contensou.JACOBIAN_OUTPUTS`: `N, Fx, Fy, Tz` (bit for bit `wrench`'s) and the 20
+/// derivatives `dN_dh, dN_dhdot, dN_dvx, dN_dvy, dN_domega, dFx_dh, …, dTz_domega` (SI), arrays
+/// of the broadcast shape — bit for bit `contact_eval jacobian`. Forward-mode dual numbers
+/// through the library's code: at a law's kink the derivative of the branch the value takes;
+/// h ≤ 0 gives zeros. `ValueError` as `wrench` (argument, index, reason).
+#[pyfunction]
+#[pyo3(signature = (P, Q, estar, cd, f, delta, h, hdot, vx, vy, omega, *, law = "best", precision = "f64", form = "fixed", G = None, nu = None, vrx = None, vry = None))]
+#[allow(non_snake_case, clippy::too_many_arguments)]
+pub fn jacobian<'py>(
+    py: Python<'py>,
+    P: &Bound<'py, PyAny>,
+    Q: &Bound<'py, PyAny>,
+    estar: &Bound<'py, PyAny>,
+    cd: &Bound<'py, PyAny>,
+    f: &Bound<'py, PyAny>,
+    delta: &Bound<'py, PyAny>,
+    h: &Bound<'py, PyAny>,
+    hdot: &Bound<'py, PyAny>,
+    vx: &Bound<'py, PyAny>,
+    vy: &Bound<'py, PyAny>,
+    omega: &Bound<'py, PyAny>,
+    law: &str,
+    precision: &str,
+    form: &str,
+    G: Option<&Bound<'py, PyAny>>,
+    nu: Option<&Bound<'py, PyAny>>,
+    vrx: Option<&Bound<'py, PyAny>>,
+    vry: Option<&Bound<'py, PyAny>>,
+) -> PyResult<Bound<'py, PyDict>> {
+    let (law, form) = (law_of(law)?, form_of(form)?);
+    let values = [P, Q, estar, cd, f, delta, h, hdot, vx, vy, omega];
+    let optional = [G, nu, vrx, vry];
+    if is_f32(precision)? {
+        jacobian_in::<f32>(py, values, optional, law, form)
+    } else {
+        jacobian_in::<f64>(py, values, optional, law, form)
+    }
+}
