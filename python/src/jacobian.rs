@@ -7,9 +7,8 @@ use ::contensou::jacobian::OUTPUTS;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
-use crate::columns::broadcast_shape;
 use crate::rows::{PerRow, Precision, evaluate_each_py};
-use crate::{columns_of, convert_all, convert_optional, form_of, is_f32, law_of, optional_columns};
+use crate::{form_of, is_f32, law_of, with_contract_columns};
 
 /// The per-row Jacobian in precision `T`.
 fn jacobian_in<'py, T: Precision>(
@@ -19,46 +18,27 @@ fn jacobian_in<'py, T: Precision>(
     law: Law,
     form: Form,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let args = convert_all::<T, 11>(INPUTS, values)?;
-    let extra = convert_optional::<T>(optional)?;
-    let mut named: Vec<_> = INPUTS.iter().copied().zip(args.iter()).collect();
-    for (name, arg) in ROLLING_INPUTS.iter().zip(&extra) {
-        if let Some(a) = arg {
-            named.push((name, a));
-        }
-    }
-    let shape = broadcast_shape(&named)?;
-    let [p, q, estar, cd, f, delta, h, hdot, vx, vy, omega] = columns_of(&args, &shape)?;
-    let [g, nu, vrx, vry] = optional_columns(&extra, &shape)?;
-    let spec = [p, q, estar, cd, f, delta];
-    let steps = [h, hdot, vx, vy, omega];
-    let contacts = PerRow::new(&spec, [g.as_ref(), nu.as_ref()], law, form);
-    let row = |c: &DynContact<T>, i: usize| {
-        let [h, hdot, vx, vy, omega] = steps.each_ref().map(|c| c.at(i));
-        let [vrx, vry] = [&vrx, &vry].map(|c| c.as_ref().map_or(T::ZERO, |c| c.at(i)));
-        let step = Step {
-            h,
-            hdot,
-            vx,
-            vy,
-            omega,
+    with_contract_columns::<T, _>(values, optional, |shape, spec, steps, rolling| {
+        let [g, nu, vrx, vry] = rolling.each_ref().map(Option::as_ref);
+        let contacts = PerRow::new(spec, [g, nu], law, form);
+        let row = |c: &DynContact<T>, i: usize| {
+            let [h, hdot, vx, vy, omega] = steps.each_ref().map(|c| c.at(i));
+            let [vrx, vry] = [vrx, vry].map(|c| c.map_or(T::ZERO, |c| c.at(i)));
+            let step = Step {
+                h,
+                hdot,
+                vx,
+                vy,
+                omega,
+            };
+            c.jacobian_rolling(&step, &RollingStep { vrx, vry })
+                .map(|j| j.to_array())
         };
-        c.jacobian_rolling(&step, &RollingStep { vrx, vry })
-            .map(|j| j.to_array())
-    };
-    let mut inputs: Vec<_> = INPUTS[..6]
-        .iter()
-        .copied()
-        .zip(spec.iter().map(Some))
-        .collect();
-    inputs.extend(INPUTS[6..].iter().copied().zip(steps.iter().map(Some)));
-    inputs.extend(
-        ROLLING_INPUTS
-            .iter()
-            .copied()
-            .zip([&g, &nu, &vrx, &vry].map(Option::as_ref)),
-    );
-    evaluate_each_py(py, &shape, contacts, row, &OUTPUTS, &inputs)
+        let given = spec.iter().chain(steps).map(Some);
+        let mut inputs: Vec<_> = INPUTS.iter().copied().zip(given).collect();
+        inputs.extend(ROLLING_INPUTS.iter().copied().zip([g, nu, vrx, vry]));
+        evaluate_each_py(py, shape, contacts, row, &OUTPUTS, &inputs)
+    })
 }
 
 /// The wrench of the contract and its Jacobian, row by row over the broadcast arguments.

@@ -33,7 +33,7 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
 use columns::{Arg, Column, broadcast_shape};
-use rows::{PerRow, Precision, evaluate_py};
+use rows::{PerRow, Precision, SpecColumns, StepColumns, evaluate_py};
 
 /// The value of `option` called `name` among `all`, or a `ValueError` listing the names.
 fn named<V: Copy>(
@@ -130,14 +130,18 @@ fn optional_columns<'a, T: Precision, const N: usize>(
     Ok(out)
 }
 
-/// The per-row function in precision `T`.
-fn wrench_in<'py, T: Precision>(
-    py: Python<'py>,
+/// The contract's arguments (the 11 columns, the optional `G, nu, vrx, vry`) as columns over
+/// their broadcast shape, handed to `then` (shape, contact columns, step columns, optional).
+fn with_contract_columns<'py, T: Precision, R>(
     values: [&Bound<'py, PyAny>; 11],
     optional: [Option<&Bound<'py, PyAny>>; 4],
-    law: Law,
-    form: Form,
-) -> PyResult<Bound<'py, PyDict>> {
+    then: impl for<'a> FnOnce(
+        &'a [usize],
+        &'a SpecColumns<'a, T>,
+        &'a StepColumns<'a, T>,
+        &'a [Option<Column<'a, T>>; 4],
+    ) -> PyResult<R>,
+) -> PyResult<R> {
     let args = convert_all::<T, 11>(INPUTS, values)?;
     let extra = convert_optional::<T>(optional)?;
     let mut named: Vec<_> = INPUTS.iter().copied().zip(args.iter()).collect();
@@ -148,17 +152,30 @@ fn wrench_in<'py, T: Precision>(
     }
     let shape = broadcast_shape(&named)?;
     let [p, q, estar, cd, f, delta, h, hdot, vx, vy, omega] = columns_of(&args, &shape)?;
-    let [g, nu, vrx, vry] = optional_columns(&extra, &shape)?;
+    let rolling = optional_columns(&extra, &shape)?;
     let spec = [p, q, estar, cd, f, delta];
     let steps = [h, hdot, vx, vy, omega];
-    let rolling = [g.as_ref(), nu.as_ref(), vrx.as_ref(), vry.as_ref()];
-    let inputs = core::array::from_fn(|k| match k {
-        0..6 => Some(&spec[k]),
-        6..11 => Some(&steps[k - 6]),
-        _ => rolling[k - 11],
-    });
-    let contacts = PerRow::new(&spec, [rolling[0], rolling[1]], law, form);
-    evaluate_py(py, &shape, &steps, contacts, inputs)
+    then(&shape, &spec, &steps, &rolling)
+}
+
+/// The per-row function in precision `T`.
+fn wrench_in<'py, T: Precision>(
+    py: Python<'py>,
+    values: [&Bound<'py, PyAny>; 11],
+    optional: [Option<&Bound<'py, PyAny>>; 4],
+    law: Law,
+    form: Form,
+) -> PyResult<Bound<'py, PyDict>> {
+    with_contract_columns::<T, _>(values, optional, |shape, spec, steps, rolling| {
+        let rolling = rolling.each_ref().map(Option::as_ref);
+        let inputs = core::array::from_fn(|k| match k {
+            0..6 => Some(&spec[k]),
+            6..11 => Some(&steps[k - 6]),
+            _ => rolling[k - 11],
+        });
+        let contacts = PerRow::new(spec, [rolling[0], rolling[1]], law, form);
+        evaluate_py(py, shape, steps, contacts, inputs)
+    })
 }
 
 /// The wrench of the contract, row by row over the broadcast arguments.
