@@ -2,13 +2,16 @@
 //! (h, ḣ, v_x, v_y, ω), row by row over broadcast arguments — each row
 //! [`DynContact::jacobian_rolling`], bit for bit `contact_eval jacobian`.
 
-use ::contensou::dynamic::{DynContact, Form, INPUTS, Law, ROLLING_INPUTS, RollingStep, Step};
+use ::contensou::dynamic::{
+    DynContact, Form, INPUTS, Invalid, Law, ROLLING_INPUTS, RollingStep, Step,
+};
 use ::contensou::jacobian::OUTPUTS;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
-use crate::rows::{PerRow, Precision, evaluate_each_py};
-use crate::{form_of, is_f32, law_of, with_contract_columns};
+use crate::columns::Column;
+use crate::rows::{PerRow, Precision, StepColumns, evaluate_each_py};
+use crate::{form_of, is_f32, law_of, with_contract_columns, with_step_columns};
 
 /// The per-row Jacobian in precision `T`.
 fn jacobian_in<'py, T: Precision>(
@@ -21,23 +24,47 @@ fn jacobian_in<'py, T: Precision>(
     with_contract_columns::<T, _>(values, optional, |shape, spec, steps, rolling| {
         let [g, nu, vrx, vry] = rolling.each_ref().map(Option::as_ref);
         let contacts = PerRow::new(spec, [g, nu], law, form);
-        let row = |c: &DynContact<T>, i: usize| {
-            let [h, hdot, vx, vy, omega] = steps.each_ref().map(|c| c.at(i));
-            let [vrx, vry] = [vrx, vry].map(|c| c.map_or(T::ZERO, |c| c.at(i)));
-            let step = Step {
-                h,
-                hdot,
-                vx,
-                vy,
-                omega,
-            };
-            c.jacobian_rolling(&step, &RollingStep { vrx, vry })
-                .map(|j| j.to_array())
-        };
         let given = spec.iter().chain(steps).map(Some);
         let mut inputs: Vec<_> = INPUTS.iter().copied().zip(given).collect();
         inputs.extend(ROLLING_INPUTS.iter().copied().zip([g, nu, vrx, vry]));
+        let row = row_of(steps, [vrx, vry]);
         evaluate_each_py(py, shape, contacts, row, &OUTPUTS, &inputs)
+    })
+}
+
+/// The Jacobian of row i from the step columns and the optional rolling velocity.
+fn row_of<'a, T: Precision>(
+    steps: &'a StepColumns<'a, T>,
+    rolling: [Option<&'a Column<'a, T>>; 2],
+) -> impl Fn(&DynContact<T>, usize) -> Result<[T; 24], Invalid> + Send + Sync + 'a {
+    move |c, i| {
+        let [h, hdot, vx, vy, omega] = steps.each_ref().map(|c| c.at(i));
+        let [vrx, vry] = rolling.map(|c| c.map_or(T::ZERO, |c| c.at(i)));
+        let step = Step {
+            h,
+            hdot,
+            vx,
+            vy,
+            omega,
+        };
+        c.jacobian_rolling(&step, &RollingStep { vrx, vry })
+            .map(|j| j.to_array())
+    }
+}
+
+/// `Contact.jacobian`: the step columns of a built contact.
+pub fn built_in<'py, T: Precision>(
+    py: Python<'py>,
+    contact: &DynContact<T>,
+    values: [&Bound<'py, PyAny>; 5],
+    rolling: [Option<&Bound<'py, PyAny>>; 2],
+) -> PyResult<Bound<'py, PyDict>> {
+    with_step_columns::<T, _>(values, rolling, |shape, steps, [vrx, vry]| {
+        let given = steps.iter().map(Some);
+        let mut inputs: Vec<_> = INPUTS[6..].iter().copied().zip(given).collect();
+        inputs.extend(ROLLING_INPUTS[2..].iter().copied().zip([vrx, vry]));
+        let row = row_of(steps, [vrx, vry]);
+        evaluate_each_py(py, shape, contact, row, &OUTPUTS, &inputs)
     })
 }
 

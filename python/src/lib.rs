@@ -9,7 +9,8 @@
 //!   the per-row function (a contact per row; rows that repeat the previous row's contact
 //!   columns reuse its contact).
 //! - `Contact(P, Q, estar, cd, f, delta, *, law, precision, form)`: built once;
-//!   `.wrench(h, hdot, vx, vy, omega)` per step, `.set_curvatures(P, Q)`.
+//!   `.wrench(h, hdot, vx, vy, omega)` per step (`.jacobian(...)`: with its derivatives),
+//!   `.set_curvatures(P, Q)`.
 //!
 //! Both return the dict `{N, Fx, Fy, Tz, a, b, e2}` of arrays of the broadcast shape (f32
 //! arrays for `precision="f32"`; numpy scalars when every argument is a scalar). Bad input is
@@ -304,13 +305,17 @@ fn build<T: Precision>(
     })
 }
 
-/// One step (or an array of steps) of a built contact in precision `T`.
-fn steps_in<'py, T: Precision>(
-    py: Python<'py>,
-    contact: &DynContact<T>,
+/// A built contact's step arguments (`h, hdot, vx, vy, omega`, the optional `vrx, vry`) as
+/// columns over their broadcast shape, handed to `then` (shape, step columns, `[vrx, vry]`).
+fn with_step_columns<'py, T: Precision, R>(
     values: [&Bound<'py, PyAny>; 5],
     rolling: [Option<&Bound<'py, PyAny>>; 2],
-) -> PyResult<Bound<'py, PyDict>> {
+    then: impl for<'a> FnOnce(
+        &'a [usize],
+        &'a StepColumns<'a, T>,
+        [Option<&'a Column<'a, T>>; 2],
+    ) -> PyResult<R>,
+) -> PyResult<R> {
     let names = [INPUTS[6], INPUTS[7], INPUTS[8], INPUTS[9], INPUTS[10]];
     let args = convert_all::<T, 5>(names, values)?;
     let extra = convert_optional::<T>([None, None, rolling[0], rolling[1]])?;
@@ -323,13 +328,25 @@ fn steps_in<'py, T: Precision>(
     let shape = broadcast_shape(&named)?;
     let steps = columns_of(&args, &shape)?;
     let [_, _, vrx, vry] = optional_columns(&extra, &shape)?;
-    let inputs = core::array::from_fn(|k| match k {
-        6..11 => Some(&steps[k - 6]),
-        13 => vrx.as_ref(),
-        14 => vry.as_ref(),
-        _ => None,
-    });
-    evaluate_py(py, &shape, &steps, contact, inputs)
+    then(&shape, &steps, [vrx.as_ref(), vry.as_ref()])
+}
+
+/// One step (or an array of steps) of a built contact in precision `T`.
+fn steps_in<'py, T: Precision>(
+    py: Python<'py>,
+    contact: &DynContact<T>,
+    values: [&Bound<'py, PyAny>; 5],
+    rolling: [Option<&Bound<'py, PyAny>>; 2],
+) -> PyResult<Bound<'py, PyDict>> {
+    with_step_columns::<T, _>(values, rolling, |shape, steps, [vrx, vry]| {
+        let inputs = core::array::from_fn(|k| match k {
+            6..11 => Some(&steps[k - 6]),
+            13 => vrx,
+            14 => vry,
+            _ => None,
+        });
+        evaluate_py(py, shape, steps, contact, inputs)
+    })
 }
 
 /// A contact of the contract built once (validated, the shape solved for `form="fixed"`),
@@ -387,6 +404,26 @@ impl Contact {
     ) -> PyResult<Bound<'py, PyDict>> {
         let values = [h, hdot, vx, vy, omega];
         each!(&self.built, c => steps_in(py, c, values, [vrx, vry]))
+    }
+
+    /// The wrench and its Jacobian at the step columns (scalars or arrays that broadcast),
+    /// optionally with the rolling velocity `vrx`, `vry`: the dict of `contensou.jacobian`
+    /// (`JACOBIAN_OUTPUTS`), bit for bit.
+    #[pyo3(signature = (h, hdot, vx, vy, omega, vrx = None, vry = None))]
+    #[allow(clippy::too_many_arguments)]
+    fn jacobian<'py>(
+        &self,
+        py: Python<'py>,
+        h: &Bound<'py, PyAny>,
+        hdot: &Bound<'py, PyAny>,
+        vx: &Bound<'py, PyAny>,
+        vy: &Bound<'py, PyAny>,
+        omega: &Bound<'py, PyAny>,
+        vrx: Option<&Bound<'py, PyAny>>,
+        vry: Option<&Bound<'py, PyAny>>,
+    ) -> PyResult<Bound<'py, PyDict>> {
+        let values = [h, hdot, vx, vy, omega];
+        each!(&self.built, c => jacobian::built_in(py, c, values, [vrx, vry]))
     }
 
     /// One scalar step for tight Python loops (a physics engine's callback): Python floats in,

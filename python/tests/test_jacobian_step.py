@@ -172,3 +172,28 @@ def test_jacobian_errors():
         contensou.jacobian(**SPEC, **STATE, law="exact")
     with pytest.raises(ValueError, match=r"shape mismatch"):
         contensou.jacobian(**SPEC, **{**STATE, "h": np.ones(3), "vx": np.ones(4)})
+
+
+@pytest.mark.parametrize("precision", ["f64", "f32"])
+@pytest.mark.parametrize("law,form", [("best", "fixed"), ("simplified", "varying"), ("table", "fixed")])
+def test_contact_jacobian_is_the_per_row_function(law, form, precision):
+    """Contact.jacobian on arrays of steps (and the rolling velocity) = contensou.jacobian on the
+    same rows with the contact's columns repeated, bit for bit; its errors name the step column."""
+    dtype = DTYPES[precision]
+    steps = contract_rows(120, seed=5, dtype=dtype)
+    roll = rolling_columns(steps, seed=6)
+    step_cols = {c: steps[c] for c in contensou.INPUTS[6:]}
+    contact = contensou.Contact(**SPEC, law=law, form=form, precision=precision)
+    got = contact.jacobian(**step_cols, vrx=roll["vrx"], vry=roll["vry"])
+    want = contensou.jacobian(**SPEC, **step_cols, vrx=roll["vrx"], vry=roll["vry"], law=law, form=form,
+                              precision=precision)
+    assert_same_bits(got, want, precision, J)
+    one = contact.jacobian(*(c[7] for c in step_cols.values()))
+    assert all(np.asarray(one[c]).tobytes() == np.asarray(contensou.jacobian(
+        **SPEC, **{k: v[7] for k, v in step_cols.items()}, law=law, form=form, precision=precision)[c]).tobytes()
+        for c in J)
+    bad = dict(step_cols)
+    bad["hdot"] = bad["hdot"].copy()
+    bad["hdot"][9] = np.inf
+    with pytest.raises(ValueError, match=r"^hdot = inf at index 9: input must be finite"):
+        contact.jacobian(**bad)
