@@ -49,7 +49,9 @@ macro_rules! twins {
 }
 
 mod rolling;
+mod step;
 pub use rolling::*;
+pub use step::*;
 
 /// The message of a status code: a static NUL-terminated string (also for unknown codes).
 #[no_mangle]

@@ -6,7 +6,9 @@
 use contensou::dynamic::DynContact;
 
 mod rolling;
+mod step;
 pub use rolling::*;
+pub use step::*;
 
 /// The contact columns `P,Q,estar,cd,f,delta` of the contract ([`contensou::dynamic::Spec`]).
 #[repr(C)]
