@@ -152,13 +152,12 @@ void step_work_free(step_work* s);
  * at the free end-of-step pose (h_free > 0); their count. */
 int step_prepare(const mjModel* m, mjData* d, const pair* pairs, int npair, step_work* s);
 
-/* The step-aware wrenches (4 per contact, contact frame) of k contacts sharing W (4k × 4k,
- * row-major) over dt, from their start steps, rolling velocities (NULL: none), free end
- * velocities u_free (4k) and approaches h_free (k); 0, or −1 if the library refused. */
+/* The step-aware wrenches (4 per contact, contact frame) of k ≤ CONTENSOU_STEP_MAX_CONTACTS
+ * contacts sharing W (4k × 4k, row-major) over dt, from their start steps, rolling velocities
+ * (NULL: none), free end velocities u_free (4k) and approaches h_free (k), by
+ * contensou_step_many_f64; 0, or −1 if the library refused. */
 int step_solve(const contensou_contact_f64* const* contacts, int k, double dt, const double* w,
                const contensou_step_f64* steps, const contensou_rolling_step_f64* rolling, const double* u_free,
                const double* h_free, double* out);
-/* Whether this build has the step-aware wrench (step = aware). */
-int step_available(void);
 
 #endif /* CONTENSOU_MUJOCO_H */

@@ -363,7 +363,7 @@ static contensou_status plain_wrench(const mjModel* m, const mjData* d, const in
  * wrenches in one call of the library, applied like the plain ones. The sensor reports the
  * step-aware wrench and the patch (a, b) of the plain wrench at the start state.
  */
-#define STEP_GROUP 8
+#define STEP_GROUP CONTENSOU_STEP_MAX_CONTACTS
 /* Block Gauss–Seidel sweeps over the parts of a group larger than STEP_GROUP (fixed count). */
 #define STEP_SWEEPS 6
 

@@ -192,26 +192,28 @@ int step_prepare(const mjModel* m, mjData* d, const pair* pairs, int npair, step
   return k;
 }
 
-#ifdef CONTENSOU_MUJOCO_PROTO
-/* Prototype build only (not committed to use): the step branch's step_wrenches through a local
- * export, Jacobian by central differences. */
-unsigned contensou_proto_step_many_f64(const contensou_contact_f64* const* contacts, size_t k, double dt,
-                                       const double* w, const contensou_step_f64* steps,
-                                       const contensou_rolling_step_f64* rolling, const double* u_free,
-                                       const double* h_free, double* out);
-int step_available(void) { return 1; }
 int step_solve(const contensou_contact_f64* const* contacts, int k, double dt, const double* w,
                const contensou_step_f64* steps, const contensou_rolling_step_f64* rolling, const double* u_free,
                const double* h_free, double* out) {
-  return contensou_proto_step_many_f64(contacts, (size_t)k, dt, w, steps, rolling, u_free, h_free, out) ? -1 : 0;
+  contensou_step_free_f64 free[CONTENSOU_STEP_MAX_CONTACTS];
+  contensou_step_wrench_f64 wrench[CONTENSOU_STEP_MAX_CONTACTS];
+  if (k < 1 || k > CONTENSOU_STEP_MAX_CONTACTS) return -1;
+  for (int i = 0; i < k; i++) {
+    free[i].u.vn = u_free[4 * i];
+    free[i].u.vx = u_free[4 * i + 1];
+    free[i].u.vy = u_free[4 * i + 2];
+    free[i].u.omega = u_free[4 * i + 3];
+    free[i].h = h_free[i];
+  }
+  if (contensou_step_many_f64(contacts, (size_t)k, steps, rolling, dt, w, free, wrench, NULL, NULL) !=
+      CONTENSOU_STATUS_OK) {
+    return -1;
+  }
+  for (int i = 0; i < k; i++) {
+    out[4 * i] = wrench[i].n;
+    out[4 * i + 1] = wrench[i].fx;
+    out[4 * i + 2] = wrench[i].fy;
+    out[4 * i + 3] = wrench[i].tz;
+  }
+  return 0;
 }
-#else
-/* Not yet in the C API: step = aware is refused at load. */
-int step_available(void) { return 0; }
-int step_solve(const contensou_contact_f64* const* contacts, int k, double dt, const double* w,
-               const contensou_step_f64* steps, const contensou_rolling_step_f64* rolling, const double* u_free,
-               const double* h_free, double* out) {
-  (void)contacts, (void)k, (void)dt, (void)w, (void)steps, (void)rolling, (void)u_free, (void)h_free, (void)out;
-  return -1;
-}
-#endif

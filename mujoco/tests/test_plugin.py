@@ -669,16 +669,10 @@ AWARE = {"step": "aware", "step_point": "0.25"}
 
 
 def aware_run(name, dt, key=0):
-    """step_sweep.run of `name` with the step-aware settings at `dt`; skipped when this build has no
-    step-aware wrench."""
+    """step_sweep.run of `name` with the step-aware settings at `dt`."""
     import step_sweep
 
-    try:
-        return step_sweep.run(name, dt, AWARE, key, integrator="implicitfast")
-    except ValueError as e:
-        if "not in this build" in str(e):
-            pytest.skip("this build has no step-aware wrench (step = aware refused)")
-        raise
+    return step_sweep.run(name, dt, AWARE, key, integrator="implicitfast")
 
 
 @pytest.mark.parametrize("dt", [5e-4, 1e-3, 2e-3])
@@ -738,12 +732,7 @@ def test_step_aware_feet_share_the_weight_at_2ms(nfeet, rest):
     body = f"""<body name="plate" pos="0 0 0.0099999"><freejoint/><plugin instance="c"/>
       <inertial pos="0 0 0" mass="0.6" diaginertia="4e-4 4e-4 8e-4"/>{feet}</body>"""
     config = CONFIG + "".join(f'<config key="{k}" value="{v}"/>' for k, v in AWARE.items())
-    try:
-        m = mujoco.MjModel.from_xml_string(xml(body, config=config))
-    except ValueError as e:
-        if "not in this build" in str(e):
-            pytest.skip("this build has no step-aware wrench (step = aware refused)")
-        raise
+    m = mujoco.MjModel.from_xml_string(xml(body, config=config))
     m.opt.timestep = 2e-3
     m.opt.integrator = mujoco.mjtIntegrator.mjINT_IMPLICITFAST
     d = mujoco.MjData(m)
