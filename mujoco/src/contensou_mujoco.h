@@ -110,6 +110,11 @@ int pair_geometry_at(const mjModel* m, const mjtNum* geom_xpos, const mjtNum* ge
 void contact_point_velocity(const mjModel* m, const mjData* d, const pair* k, const geometry* g,
                             const double vb[3], const double wb[3], const double* va, const double* wa,
                             double out[3]);
+/* The same with the bodies' origins xpos (3 per body) and the geoms' attitudes geom_xmat (9 per
+ * geom) of another pose (the step-aware path's drifted pose). */
+void contact_point_velocity_at(const mjModel* m, const mjtNum* xpos, const mjtNum* geom_xmat, const pair* k,
+                               const geometry* g, const double vb[3], const double wb[3], const double* va,
+                               const double* wa, double out[3]);
 
 /* inverse_mass.c */
 /* The 4 × nv rows (n, x, y, spin) of the contact velocity u = J q̇ of pair k at geometry g
@@ -129,6 +134,8 @@ typedef struct {
   double* u;        /* 4 per pair taken: (v_n, v_x, v_y, ω) = J q̇ */
   double* u_free;   /* 4 per pair taken: J q̇_free, the end-of-step velocity without the instance */
   double* h_free;   /* per pair taken: the approach at the free end-of-step pose (q drifted by Δt·q̇_free) */
+  double* roll;     /* 2 per pair taken (step_point θ > 0): Kalker's rolling velocity (V_x, V_y) at the
+                       pose drifted by θ·Δt with the free velocities, in that pose's contact frame */
   mjtNum* geom_xpos; /* that pose of every geom, 3 per geom */
   mjtNum* geom_xmat; /* 9 per geom */
   int* done;        /* scratch, per pair */
