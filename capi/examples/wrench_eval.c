@@ -62,7 +62,7 @@ static int fail_row(long row, const char *column, const char *value, contensou_s
 int main(int argc, char **argv) {
     contensou_law law = CONTENSOU_LAW_BEST;
     contensou_form form = CONTENSOU_FORM_FIXED;
-    int f32 = 0, i, jacobian = argc > 1 && strcmp(argv[1], "jacobian") == 0;
+    int f32 = 0, jacobian = argc > 1 && strcmp(argv[1], "jacobian") == 0;
     int outputs = jacobian ? MAX_OUTPUTS : 7;
     static char line[4096], header[4096];
     static contensou_contact_f32 c32; /* caller-owned storage: static, no allocation */
@@ -73,53 +73,17 @@ int main(int argc, char **argv) {
     int field_of[OPTIONAL] = {-1, -1, -1, -1};
     long row = 0;
 
-    for (i = 1 + jacobian; i < argc; i += 2) {
-        const char *opt = argv[i], *val = i + 1 < argc ? argv[i + 1] : NULL;
-        if (!val) return usage("option without a value");
-        if (strcmp(opt, "--law") == 0) {
-            if (contensou_law_from_name(val, &law) != CONTENSOU_STATUS_OK || law == CONTENSOU_LAW_FULL_SLIP ||
-                law == CONTENSOU_LAW_LINEAR)
-                return usage("--law: unknown law");
-        } else if (strcmp(opt, "--form") == 0) {
-            if (contensou_form_from_name(val, &form) != CONTENSOU_STATUS_OK) return usage("--form: must be fixed or varying");
-        } else if (strcmp(opt, "--precision") == 0) {
-            if (strcmp(val, "f32") == 0) f32 = 1;
-            else if (strcmp(val, "f64") == 0) f32 = 0;
-            else return usage("--precision: must be f32 or f64");
-        } else {
-            return usage("unknown option");
-        }
+    {
+        /* `jacobian` takes argv[1]: the options start after it */
+        const char *why = contract_options(argc - jacobian, argv + jacobian, &law, &form, &f32);
+        if (why) return usage(why);
     }
-
     if (!fgets(line, sizeof line, stdin)) return usage("missing header row");
     memcpy(header, trim(line), strlen(trim(line)) + 1);
-    {
-        size_t n = strlen(INPUT_NAMES);
-        char *rest = header + n, *names[MAX_FIELDS + 1];
-        int extra, k, j;
-        char copy[sizeof header];
-        if (strncmp(header, INPUT_NAMES, n) != 0 || (*rest != '\0' && *rest != ',')) {
-            fprintf(stderr, "wrench_eval: header = %s: must be `%s` then any of G,nu,vrx,vry\n", header, INPUT_NAMES);
-            return 1;
-        }
-        memcpy(copy, rest, strlen(rest) + 1);
-        extra = *copy ? split(copy + 1, names, MAX_FIELDS + 1) : 0;
-        if (extra > OPTIONAL) {
-            fprintf(stderr, "wrench_eval: header = %s: too many columns\n", header);
-            return 1;
-        }
-        for (j = 0; j < extra; j++) {
-            for (k = 0; k < OPTIONAL && strcmp(names[j], OPTIONAL_NAMES[k]) != 0; k++) {}
-            if (k == OPTIONAL || field_of[k] >= 0) {
-                fprintf(stderr, "wrench_eval: header = %s: `%s` is no optional column or repeats (G,nu,vrx,vry)\n", header, names[j]);
-                return 1;
-            }
-            field_of[k] = COLUMNS + j;
-        }
-        fields_per_row = COLUMNS + extra;
-        has_contact_option = field_of[0] >= 0 || field_of[1] >= 0;
-        has_step_option = field_of[2] >= 0 || field_of[3] >= 0;
-    }
+    fields_per_row = optional_columns("wrench_eval", header, INPUT_NAMES, OPTIONAL_NAMES, OPTIONAL, field_of);
+    if (fields_per_row < 0) return 1;
+    has_contact_option = field_of[0] >= 0 || field_of[1] >= 0;
+    has_step_option = field_of[2] >= 0 || field_of[3] >= 0;
     printf("%s,%s\n", header, jacobian ? JACOBIAN_NAMES : OUTPUT_NAMES);
 
     while (fgets(line, sizeof line, stdin)) {

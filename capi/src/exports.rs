@@ -50,8 +50,10 @@ macro_rules! twins {
 
 mod jacobian;
 mod rolling;
+mod step;
 pub use jacobian::*;
 pub use rolling::*;
+pub use step::*;
 
 /// The message of a status code: a static NUL-terminated string (also for unknown codes).
 #[no_mangle]

@@ -87,6 +87,9 @@ pub enum contensou_status {
     /// A `contensou::Error` variant newer than this C API (the enum is non-exhaustive). Never
     /// returned by this build: every variant of its `contensou` is mapped.
     UnknownError = 108,
+    /// A contact count outside 1 … `CONTENSOU_STEP_MAX_CONTACTS` (8) for
+    /// `contensou_step_many_*`.
+    ContactCountOutOfRange = 109,
 }
 
 impl From<Error> for contensou_status {
@@ -131,7 +134,7 @@ impl contensou_status {
     /// The message of a raw code (any `u32`: unknown codes get a message too).
     pub fn message_of(code: u32) -> &'static CStr {
         use contensou_status as S;
-        const ALL: [contensou_status; 31] = [
+        const ALL: [contensou_status; 32] = [
             S::Ok,
             S::NonFinite,
             S::EllipticParameterOutOfDomain,
@@ -163,6 +166,7 @@ impl contensou_status {
             S::UnknownName,
             S::Panic,
             S::UnknownError,
+            S::ContactCountOutOfRange,
         ];
         match ALL.into_iter().find(|s| *s as u32 == code) {
             Some(s) => s.message(),
@@ -213,6 +217,9 @@ impl contensou_status {
             S::UnknownName => c_str!("unknown law or form name"),
             S::Panic => c_str!("panic caught at the C boundary (reserved: cannot happen)"),
             S::UnknownError => c_str!("contensou error unknown to this C API version"),
+            S::ContactCountOutOfRange => {
+                c_str!("contact count outside 1 ... CONTENSOU_STEP_MAX_CONTACTS (8)")
+            }
         }
     }
 

@@ -7,7 +7,8 @@
 # the same rows before it. Usage: capi/tests/compare.sh (after capi/build.sh, or it builds).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-[[ -x target/release/wrench_eval && -x target/release/wrench_eval-san && -x target/release/rolling_eval ]] || ./build.sh --no-check
+[[ -x target/release/wrench_eval && -x target/release/wrench_eval-san && -x target/release/rolling_eval &&
+   -x target/release/step_eval && -x target/release/step_eval-san ]] || ./build.sh --no-check
 cargo build --release --quiet --example bits
 bits=target/release/examples/bits
 c=target/release/wrench_eval
@@ -233,3 +234,59 @@ for kind in $(cut -f1 "$work/bad.tsv" | uniq); do
     kinds=$((kinds + 1))
 done
 echo "compare: rolling: $kinds kinds of bad row: both stop at row 4 naming the same column, exit 1, same rows before it"
+
+# The step-aware wrench (examples/step_eval.c, contensou_contact_step_*) against
+# `contact_eval step`: every law × form × precision on rows with every optional column (G, nu,
+# vrx, vry and the four free velocities), without the free columns (u_free NULL) and with two
+# of them; bit for bit; clean under ASan + UBSan; the bad rows stop both at the same row with
+# the same message.
+"$bits" step-gen >"$work/step.csv"
+cut -d, -f1-26 "$work/step.csv" >"$work/step-nofree.csv"
+cut -d, -f1-22,28,30 "$work/step.csv" >"$work/step-some.csv"
+srows=$(($(wc -l <"$work/step.csv") - 1))
+runs=0
+for file in step step-nofree step-some; do
+    for precision in f32 f64; do
+        for form in fixed varying; do
+            laws=(best simplified pade ellipsoid coulomb table blend fastsim fastsim-16)
+            [[ "$file" == step ]] || laws=(best table)
+            for law in "${laws[@]}"; do
+                opts=(--law "$law" --form "$form" --precision "$precision")
+                target/release/step_eval "${opts[@]}" <"$work/$file.csv" >"$work/c.csv" || { echo "compare: step_eval failed for $file ${opts[*]}" >&2; exit 1; }
+                ../target/release/contact_eval step "${opts[@]}" <"$work/$file.csv" >"$work/rust.csv" || { echo "compare: contact_eval step failed for $file ${opts[*]}" >&2; exit 1; }
+                n="$("$bits" check "$precision" "$work/c.csv" "$work/rust.csv")" || { echo "compare: step FAILED for $file ${opts[*]}" >&2; exit 1; }
+                ((n == srows)) || { echo "compare: $n of $srows step rows for $file ${opts[*]}" >&2; exit 1; }
+                runs=$((runs + 1))
+            done
+        done
+    done
+done
+for precision in f32 f64; do
+    opts=(--law table --form varying --precision "$precision")
+    target/release/step_eval-san "${opts[@]}" <"$work/step.csv" >"$work/san.csv" ||
+        { echo "compare: the sanitized step twin failed (${opts[*]})" >&2; exit 1; }
+    target/release/step_eval "${opts[@]}" <"$work/step.csv" | cmp -s - "$work/san.csv" ||
+        { echo "compare: the sanitized step twin prints other values (${opts[*]})" >&2; exit 1; }
+done
+echo "compare: step: $srows rows × $runs runs (9 laws × 2 forms × 2 precisions with every optional column; best, table without and with two free columns): C = contact_eval step bit for bit; clean under ASan + UBSan (table)"
+
+"$bits" step-bad >"$work/bad.tsv"
+kinds=0
+for kind in $(cut -f1 "$work/bad.tsv" | uniq); do
+    { head -n 1 "$work/step.csv" | cut -d, -f1-22; grep "^$kind"$'\t' "$work/bad.tsv" | cut -f2-; } >"$work/in.csv"
+    for precision in f32 f64; do
+        set +e
+        target/release/step_eval --precision "$precision" <"$work/in.csv" >"$work/c.csv" 2>"$work/c.err"; rc_c=$?
+        ../target/release/contact_eval step --precision "$precision" <"$work/in.csv" >"$work/rust.csv" 2>"$work/rust.err"; rc_r=$?
+        set -e
+        msg_c="$(sed -e 's/^step_eval: //' -e 's/ (status [0-9]*)$//' -e 's/ = [^:]*:/ = _:/' "$work/c.err")"
+        msg_r="$(sed -e 's/^contact_eval: //' -e 's/ = [^:]*:/ = _:/' "$work/rust.err")"
+        if ((rc_c != 1 || rc_r != 1)) || [[ "$msg_c" != "$msg_r" || "$msg_c" != "row 4: "* ]]; then
+            printf 'compare: bad step row %s (%s): exit %s / %s\n  C:    %s\n  Rust: %s\n' "$kind" "$precision" "$rc_c" "$rc_r" "$msg_c" "$msg_r" >&2
+            exit 1
+        fi
+        "$bits" check "$precision" "$work/c.csv" "$work/rust.csv" >/dev/null
+    done
+    kinds=$((kinds + 1))
+done
+echo "compare: step: $kinds kinds of bad row (dt, W, start state): both stop at row 4 with the same message, exit 1, same rows before it"
