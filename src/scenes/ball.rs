@@ -198,6 +198,7 @@ impl<T: Real, L: FrictionLaw> Ball<T, L> {
             h_pred: self.radius - g_pred.z + dt * (u_pred[0] - u_free[0]),
             u_free,
             rolling: Default::default(),
+            drift: [T::ZERO; 4],
         }];
         let sol = solve(dt, &wm, &[&self.contact], &cand, warm);
         let (f, t) = site.load(&sol.w[0]);

@@ -373,6 +373,7 @@ impl<T: Real, C: RaceLaw<T>> Raceway<T, C> {
                 h_pred: h_end,
                 u_free: [0, 1, 2, 3].map(|i| ball_u[i] - ring_u[i]),
                 rolling: RollingVelocity::new(vrx, vry).unwrap_or(RollingVelocity::ZERO),
+                drift: [T::ZERO; 4],
             },
         })
     }

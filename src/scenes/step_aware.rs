@@ -170,6 +170,12 @@ pub struct Candidate<T> {
     pub u_free: [T; 4],
     /// The rolling velocity (held over the step; rolling laws only).
     pub rolling: RollingVelocity<T>,
+    /// The free velocity's own change over the second half of the step, from the pose the
+    /// impulse acts at ([`Coupling::pose`]) to the end pose (the contact point running over
+    /// the surface, the body turning): the velocity at the fraction θ of the step is
+    /// u_free + θ·Δt·W·w̄ + (θ − pose)/(1 − pose)·drift — the end velocity (θ = 1)
+    /// u_free + Δt·W·w̄ + drift. Zero when the caller reads u_free where the step ends.
+    pub drift: [T; 4],
 }
 
 /// The result of [`solve`].
@@ -311,6 +317,11 @@ pub struct Coupling<'a, T> {
     /// used while the slip keeps its direction: a contact whose slip or spin would reverse
     /// within the step switches to θ = 1 for that step).
     pub theta: T,
+    /// The fraction of the step at which u_free (and W) are read: the pose the impulse acts
+    /// at (½ for a Strang splitting; 1 when everything is read at the end). A contact's
+    /// [`Candidate::drift`] (the free velocity's change from that pose to the end) enters the
+    /// velocity at θ with the weight (θ − pose)/(1 − pose).
+    pub pose: T,
 }
 
 /// The step-aware wrench of K ≤ [`MAX_CONTACTS`] contacts sharing one inverse mass `w`, over
@@ -328,6 +339,7 @@ pub fn solve<T: Real, C: StepContact<T>, const K: usize>(
         w,
         gap: w,
         theta: T::ONE,
+        pose: T::ONE,
     };
     solve_with(dt, &c, contacts, cand, warm)
 }
@@ -383,10 +395,18 @@ pub fn solve_with<T: Real, C: StepContact<T>, const K: usize>(
                 theta[k] = T::ONE;
             }
             let th = theta[k];
+            // u_θ = u_free + t·Δt·W·w̄ + (2t − 1)·drift, t = 1 for the normal.
             let mut ul = [T::ZERO; 4];
+            let mut shift = [T::ZERO; 4];
             for c in 0..4 {
                 let t = if c == 0 { T::ONE } else { th };
-                ul[c] = free[c] + t * (u[k][c] - free[c]);
+                let dr = cand[k].drift[c];
+                shift[c] = if cp.pose < T::ONE {
+                    (t - cp.pose) / (T::ONE - cp.pose) * dr
+                } else {
+                    dr
+                };
+                ul[c] = free[c] + t * (u[k][c] - dr - free[c]) + shift[c];
             }
             if reversed {
                 (ul[1], ul[2]) = (T::ZERO, T::ZERO);
@@ -414,7 +434,7 @@ pub fn solve_with<T: Real, C: StepContact<T>, const K: usize>(
                 a[k][i] = [d[0], th * d[1], th * d[2], th * d[3]];
                 let mut bi = jac.value[i] + kh[k][i] * (cand[k].h_pred - h_lin[k]);
                 for c in 0..4 {
-                    bi += d[c] * (free[c] - ul[c]);
+                    bi += d[c] * (free[c] + shift[c] - ul[c]);
                 }
                 b[k][i] = bi;
             }
@@ -528,7 +548,7 @@ fn end_state<T: Real, const K: usize>(
                     }
                 }
             }
-            u[k][a] = cand[k].u_free[a] + dt * s;
+            u[k][a] = cand[k].u_free[a] + dt * s + cand[k].drift[a];
         }
         h[k] = cand[k].h_pred - dt * dt * g;
     }
@@ -678,6 +698,7 @@ mod tests {
             h_pred: 1e-3,
             u_free: [-0.1, 0.2, 0.0, 3.0],
             rolling: RollingVelocity::default(),
+            drift: [0.0; 4],
         }];
         let s = solve(dt, &w, &[&Linear], &cand, &mut Warm::default());
         let (wn, k, c) = (w[0][0], 1e6, 10.0);

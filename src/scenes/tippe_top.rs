@@ -365,6 +365,7 @@ impl<T: Real, L: FrictionLaw> TippeTop<T, L> {
             h_pred: h,
             u_free: site.velocity(v_free, w_free),
             rolling: Default::default(),
+            drift: [T::ZERO; 4],
         };
         let wm = rigid_w(self.inv_mass, &iw, &[sb, ss]);
         let wg = rigid_w_split(self.inv_mass, &iw, &[sb, ss], T::HALF);
@@ -372,6 +373,7 @@ impl<T: Real, L: FrictionLaw> TippeTop<T, L> {
             w: &wm,
             gap: &wg,
             theta: T::HALF,
+            pose: T::HALF,
         };
         let sol = solve_with(
             dt,
