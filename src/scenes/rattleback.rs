@@ -57,8 +57,7 @@ use super::event::{Crossing, Direction};
 use super::integrate::Ode;
 use super::rigid::{Quat, Vec3, euler_rate};
 use super::step_aware::{
-    Candidate, Coupling, InvInertia, Site, StepContact, Warm, rigid_w, rigid_w_split, rotate_by,
-    solve_with,
+    Candidate, InvInertia, Site, StepContact, Warm, rigid_w, rotate_by, solve_library,
 };
 use crate::contact::Rolling;
 use crate::contact::VaryingContact;
@@ -70,6 +69,7 @@ use crate::geometry::Curvatures;
 use crate::jacobian::State as StepState;
 use crate::normal::{Hertz, HuntCrossley, Modulus, NormalLaw};
 use crate::shape::Newton;
+use crate::step::Scheme;
 use crate::{Error, Real};
 use core::marker::PhantomData;
 
@@ -716,20 +716,14 @@ impl<T: Real, L: FloorLaw<T>> Rattleback<T, L> {
             }),
         }];
         let wm = rigid_w(T::ONE / self.mass, &iw, &[site]);
-        // The gap's response: both the translation and the rotation move with the new
-        // velocities over the second half-step only.
-        let wg = rigid_w_split(T::HALF / self.mass, &iw, &[site], T::HALF);
-        let coupling = Coupling {
-            w: &wm,
-            gap: &wg,
-            theta: T::HALF,
-            pose: T::HALF,
-        };
         let floor = FloorStep::<T, L> {
             contact: &self.contact,
             curvatures: &g.curvatures,
         };
-        let sol = solve_with(dt, &coupling, &[&floor], &cand, warm);
+        // The library's step-aware wrench, Strang scheme: θ = ½ (the drift's share 0 unless
+        // the slip reverses), the gap's response ½W (both halves of the pose move with the
+        // new velocities over the second half-step only).
+        let sol = solve_library(dt, &wm, &[&floor], &cand, &Scheme::strang(), warm);
         let (f, t) = site.load(&sol.w[0]);
         let v1 = v_free + f * (dt / self.mass);
         let l1 = l + t * dt;

@@ -54,8 +54,9 @@ use crate::Real;
 use crate::contact::Contact;
 use crate::friction::rolling::RollingVelocity;
 use crate::friction::{FrictionLaw, Slip};
-use crate::jacobian::{Jacobian, State, input};
+use crate::jacobian::{Jacobian, Linearize, State, input};
 use crate::normal::{Damping, NormalLaw};
+use crate::step::{Free, InverseMass as LibInverseMass, Scheme, TimeStep, step_wrenches_with};
 
 use super::rigid::{Quat, Vec3};
 
@@ -525,6 +526,97 @@ pub fn solve_with<T: Real, C: StepContact<T>, const K: usize>(
     warm.w = wbar;
     warm.h = h;
     Solution { w: wbar, u, h }
+}
+
+/// A scene contact as the library's [`Linearize`]: its wrench, and its Jacobian by
+/// [`StepContact::linearize`].
+struct AsLinearize<'a, C>(&'a C);
+
+impl<T: Real, C: StepContact<T>> Linearize<T> for AsLinearize<'_, C> {
+    fn wrench4(&self, s: &State<T>) -> [T; 4] {
+        self.0.wrench4(s)
+    }
+    fn linearize(&self, s: &State<T>) -> Jacobian<T> {
+        self.0.linearize(s)
+    }
+}
+
+/// The step-aware wrench of the library ([`crate::step::step_wrenches_with`]) for K ≤
+/// [`MAX_CONTACTS`] contacts sharing the inverse mass `w` (validated by
+/// [`crate::step::InverseMass::new`]), integrated as `scheme` says ([`Scheme`]: backward Euler,
+/// or a Strang splitting whose gap response is ½W). What the scenes run: the same wrench as a
+/// user of [`crate::step`] gets. `warm` receives the solution (the library starts from its
+/// own normal predictor, not from `warm`). A W or Δt the library refuses (not symmetric
+/// positive semidefinite within its tolerance, Δt ≤ 0) falls back to [`solve_with`].
+pub fn solve_library<T: Real, C: StepContact<T>, const K: usize>(
+    dt: T,
+    w: &InverseMass<T>,
+    contacts: &[&C; K],
+    cand: &[Candidate<T>; K],
+    scheme: &Scheme<T>,
+    warm: &mut Warm<T>,
+) -> Solution<T> {
+    const { assert!(K <= MAX_CONTACTS) };
+    let blocks: [[[[T; 4]; 4]; K]; K] = core::array::from_fn(|i| {
+        core::array::from_fn(|j| {
+            core::array::from_fn(|a| core::array::from_fn(|b| w[4 * i + a][4 * j + b]))
+        })
+    });
+    let frees: [Result<Free<T>, crate::Error>; K] = core::array::from_fn(|k| {
+        Free::new(cand[k].u_free, cand[k].h_pred).and_then(|f| f.with_drift(cand[k].drift))
+    });
+    let (Ok(dts), Ok(wm)) = (TimeStep::new(dt), LibInverseMass::<T, K>::new(blocks)) else {
+        return fallback(dt, w, scheme, contacts, cand, warm);
+    };
+    let mut free = [Free::coasting(dts, &State::default()); K];
+    for k in 0..K {
+        match frees[k] {
+            Ok(f) => free[k] = f,
+            Err(_) => return fallback(dt, w, scheme, contacts, cand, warm),
+        }
+    }
+    let lins: [AsLinearize<'_, C>; K] = core::array::from_fn(|k| AsLinearize(contacts[k]));
+    let dyns: [&dyn Linearize<T>; K] = core::array::from_fn(|k| &lins[k] as &dyn Linearize<T>);
+    let states: [State<T>; K] = core::array::from_fn(|k| State {
+        h: cand[k].h_pred,
+        hdot: -cand[k].u_free[0],
+        slip: Slip::or_rest(cand[k].u_free[1], cand[k].u_free[2], cand[k].u_free[3]),
+        rolling: cand[k].rolling,
+    });
+    let out = step_wrenches_with(dyns, dts, &wm, &states, &free, scheme);
+    let mut sol = Solution::default();
+    for k in 0..K {
+        sol.w[k] = out[k].wrench;
+        sol.u[k] = out[k].u_end;
+        sol.h[k] = out[k].h_end;
+    }
+    warm.w = sol.w;
+    warm.h = sol.h;
+    sol
+}
+
+/// [`solve_with`] with the coupling `scheme` describes (G = γ·W).
+fn fallback<T: Real, C: StepContact<T>, const K: usize>(
+    dt: T,
+    w: &InverseMass<T>,
+    scheme: &Scheme<T>,
+    contacts: &[&C; K],
+    cand: &[Candidate<T>; K],
+    warm: &mut Warm<T>,
+) -> Solution<T> {
+    let mut gap = *w;
+    for row in gap.iter_mut() {
+        for x in row.iter_mut() {
+            *x *= scheme.gap();
+        }
+    }
+    let cp = Coupling {
+        w,
+        gap: &gap,
+        theta: scheme.theta(),
+        pose: T::ONE - scheme.gap(),
+    };
+    solve_with(dt, &cp, contacts, cand, warm)
 }
 
 /// u⁺ = u_free + Δt·W·w̄ and h⁺ = h_pred − Δt²·(G·w̄)ₙ per contact.
