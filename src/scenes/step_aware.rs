@@ -1,8 +1,17 @@
-//! A step-aware contact step for large time steps: the linearly implicit (backward Euler) step
-//! of up to [`MAX_CONTACTS`] contacts on one body, with the normal direction in the solve, the
-//! gap predicted from the free motion, an active set, a slip-reversal rule and a projection.
-//! The scenes' large-step integrators ([`super::ball`], [`super::tippe_top`] and
-//! [`super::rattleback`]'s `step_aware` functions) are built on it.
+//! The scenes' glue to the library's step-aware wrench, and the rigid-body pieces of their
+//! large-step integrators.
+//!
+//! The scenes' `step_aware` integrators ([`super::ball`], [`super::tippe_top`],
+//! [`super::rattleback`], [`super::bearing`]) build each step's [`Candidate`]s (free velocity,
+//! predicted approach, the slip's drift, rolling velocity) and the inverse mass W
+//! ([`rigid_w`]), and call [`solve_library`]: the library's
+//! [`crate::step::step_wrenches_with`] with the integrator's [`crate::step::Scheme`] — the
+//! same wrench a user of [`crate::step`] gets. Also here: the exact torque-free rotation of
+//! the symmetric top ([`symmetric_free`]) and [`rotate_by`].
+//!
+//! [`solve_with`] is the scenes' former private step (central-difference Jacobian, an ellipse
+//! projection), kept only as [`solve_library`]'s fallback for a W or Δt the library refuses
+//! (never reached by the scenes' own W); it is described below.
 //!
 //! # The step
 //!

@@ -13,11 +13,16 @@
 //! Free::predicted(dt, &state, u_free) / Free::coasting(dt, &state) / Free::new(u_free, h_free)
 //! step_wrench(&contact, dt, &W, &state, &free)            → Outcome { wrench, u_end, h_end, flags }
 //! step_wrenches([&dyn Linearize; K], dt, &W, &states, &frees) → [Outcome; K]
+//! step_wrenches_with(…, &Scheme::strang())  → for a Strang-split integrator (θ = γ = ½)
+//! Free::with_drift(drift)                   → the slip's own change within the step
 //! Numeric::new(wrench_fn, steps)            → a central-difference `Linearize` (reference adapter)
 //! ```
 //!
 //! `contact` is anything implementing [`Linearize`] (the library's contacts; [`Numeric`] for a
 //! wrench given as a function). Every call is total: validated inputs in, finite wrench out.
+//! [`scheme`] says how the caller's integrator moves the bodies (where the friction is
+//! evaluated, θ; the share γ of the step the pose moves with the new velocities; the drift);
+//! [`step_wrench`] and [`step_wrenches`] assume semi-implicit Euler (θ = γ = 1).
 //! Also: [`stable`] (the plain path's step limits, what this path tolerates), [`contract`]
 //! (`contact_eval step`'s row), [`project`] (the limit set).
 //!
