@@ -340,7 +340,12 @@ def main():
         lines += family_tables(ho, laws)
     print("\n".join(lines))
     if "--md" in sys.argv:
-        pathlib.Path(args("--md", [""])[0]).write_text("\n".join(lines) + "\n")
+        title = ["# Rolling surrogate prototype against the held-out set", "",
+                 "`" + " ".join(["python3", "tools/fit_rolling_surrogate.py"] + sys.argv[1:]) + "` (see its docstring "
+                 "and docs/guide/src/rolling.md). ΔF = |(ΔF_x, ΔF_y)| (fN), ΔM = |ΔM_z| (fNc); per family: worst ΔF / "
+                 "worst ΔM (median ΔF / median ΔM); `table`, `fastsim` (32×32): the library's laws "
+                 "(tools/data/rolling_heldout_laws.csv); `base`, `prototype`: this script's.", ""]
+        pathlib.Path(args("--md", [""])[0]).write_text("\n".join(title + lines) + "\n")
     np.savez("/tmp/roll/last.npz", fit=fit_ho, ref=ho["ref"], rho=pho["rho"], aob=ho["aob"], theta=ho["theta"],
              lin=pho["lin"], fs=pho["fs"], base=pho["base"])
     np.savez("/tmp/roll/surrogate_fit.npz", coef=coef, mons=np.array([str(m) for m in mons]),
