@@ -5,12 +5,12 @@
 use core::ffi::CStr;
 use core::ptr::{null, null_mut};
 
+use contensou::friction::rolling::row::RowLaw;
 use contensou::friction::rolling::{
     Blend, Elasticity, Fastsim, FastsimGrid, FullSlip, Linear, Patch, RollingContact, RollingLaw,
     RollingSlip, Table,
 };
 use contensou::Real;
-use contensou::friction::rolling::row::RowLaw;
 use contensou_capi::*;
 
 mod common;
@@ -51,8 +51,14 @@ fn law_names_and_columns() {
     // "rolling" names the default rolling law (the library's RowLaw::DEFAULT)
     let default = std::ffi::CString::new(RowLaw::DEFAULT.name()).unwrap();
     let [mut by_alias, mut by_name] = [98, 99];
-    for (name, law) in [(c"rolling", &mut by_alias), (default.as_c_str(), &mut by_name)] {
-        assert_eq!(unsafe { contensou_law_from_name(name.as_ptr(), law) }, S::Ok);
+    for (name, law) in [
+        (c"rolling", &mut by_alias),
+        (default.as_c_str(), &mut by_name),
+    ] {
+        assert_eq!(
+            unsafe { contensou_law_from_name(name.as_ptr(), law) },
+            S::Ok
+        );
     }
     assert_eq!(by_alias, by_name);
     assert_eq!(by_alias, CONTENSOU_LAW_TABLE);
