@@ -789,7 +789,8 @@ const char *contensou_status_message(uint32_t status);
 const char *contensou_column_name(contensou_column column);
 
 // The law of a name (`"best"`, `"simplified"`, `"pade"`, `"ellipsoid"`, `"coulomb"`; the
-// rolling laws `"table"`, `"blend"`, `"fastsim"`, `"fastsim-16"`, `"full-slip"`, `"linear"`).
+// rolling laws `"table"`, `"blend"`, `"fastsim"`, `"fastsim-16"`, `"full-slip"`, `"linear"`;
+// `"rolling"` names the default rolling law, today `"table"`).
 //
 // # Safety
 // `name` is NULL or a NUL-terminated string; `law` is NULL or writable.

@@ -29,6 +29,7 @@ mod step;
 use ::contensou::dynamic::{
     DynContact, Form, INPUTS, Law, OUTPUTS, ROLLING_INPUTS, RollingSpec, RollingStep, Spec, Step,
 };
+use ::contensou::friction::rolling::row::RowLaw;
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
@@ -43,9 +44,11 @@ fn named<V: Copy>(
     all: &[V],
     name_of: fn(V) -> &'static str,
 ) -> PyResult<V> {
+    // the alias "rolling" names the default rolling law (resolved by the library)
+    let resolved = RowLaw::resolve(name);
     all.iter()
         .copied()
-        .find(|&v| name_of(v) == name)
+        .find(|&v| name_of(v) == resolved)
         .ok_or_else(|| {
             let names: Vec<_> = all.iter().map(|&v| name_of(v)).collect();
             PyValueError::new_err(format!(
