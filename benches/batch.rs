@@ -8,7 +8,6 @@
 //! rows in contact with mixed slips (inside and outside `best`'s ellipse, spin and no spin).
 //! `tools/batch-bench.sh` turns the estimates into bench-results/batch.csv and batch.md.
 use std::hint::black_box;
-use std::time::Duration;
 
 use contensou::Real;
 use contensou::batch::{self, BatchLaw, BatchReal, CurvatureColumns, Steps, Wrenches};
@@ -17,7 +16,7 @@ use contensou::friction::{Best, Coulomb, Ellipsoid, Friction, Pade, Simplified, 
 use contensou::geometry::Curvatures;
 use contensou::normal::{Hertz, HuntCrossley, Modulus};
 use contensou::shape::Newton;
-use criterion::{Criterion, Throughput, criterion_group, criterion_main};
+use criterion::{Criterion, Throughput};
 
 const ROWS: usize = 4096;
 
@@ -165,12 +164,5 @@ fn benches(c: &mut Criterion) {
     all!(Best, Simplified, Pade, Ellipsoid, Coulomb);
 }
 
-criterion_group! {
-    name = group;
-    config = Criterion::default()
-        .warm_up_time(Duration::from_millis(200))
-        .measurement_time(Duration::from_millis(700))
-        .sample_size(15);
-    targets = benches
-}
-criterion_main!(group);
+include!("group.rs");
+bench_main!(benches, warm_up_ms: 200, measure_ms: 700, samples: 15);

@@ -11,11 +11,10 @@
 //! `tools/host-bench.sh` runs this and turns criterion's estimates into
 //! bench-results/host-elliptic.md with the ratio ours/ellip. Whole run: well under 2 minutes.
 use std::hint::black_box;
-use std::time::Duration;
 
 use contensou::Real;
 use contensou::elliptic::{Agm, Method, Parameter, Table, Theta};
-use criterion::{Criterion, criterion_group, criterion_main};
+use criterion::Criterion;
 
 /// The 64 benchmark parameters as (m, m₁) pairs in f64.
 fn points() -> Vec<(f64, f64)> {
@@ -122,12 +121,5 @@ fn all(c: &mut Criterion) {
     ours_as::<f32, contensou::elliptic::ThetaMicromath>(c, "theta_micromath_f32");
 }
 
-criterion_group! {
-    name = benches;
-    config = Criterion::default()
-        .warm_up_time(Duration::from_millis(300))
-        .measurement_time(Duration::from_millis(1500))
-        .sample_size(60);
-    targets = all
-}
-criterion_main!(benches);
+include!("group.rs");
+bench_main!(all, warm_up_ms: 300, measure_ms: 1500, samples: 60);

@@ -4,13 +4,12 @@
 //! `cargo run --release --example hertz_report`. With `--features micromath` also
 //! `hertz/per_step_micromath_f32` and `hertz/shape_hamrock-dowson_micromath_f32`.
 use std::hint::black_box;
-use std::time::Duration;
 
 use contensou::Real;
 use contensou::geometry::Curvatures;
 use contensou::normal::{Fitted, Hertz, Modulus, NormalLaw, Volumetric};
 use contensou::shape::{Eccentricity, HamrockDowson, Linear, Newton, Ratio, Table};
-use criterion::{Criterion, criterion_group, criterion_main};
+use criterion::Criterion;
 
 /// The 209 bearing's inner-race contact (P, Q in 1/m), steel E*, a few approaches.
 fn inputs<T: Real>() -> (T, T, Modulus<T>, [T; 4]) {
@@ -106,12 +105,5 @@ fn benches(c: &mut Criterion) {
     }
 }
 
-criterion_group! {
-    name = hertz;
-    config = Criterion::default()
-        .warm_up_time(Duration::from_millis(300))
-        .measurement_time(Duration::from_secs(1))
-        .sample_size(20);
-    targets = benches
-}
-criterion_main!(hertz);
+include!("group.rs");
+bench_main!(benches, warm_up_ms: 300, measure_ms: 1000, samples: 20);

@@ -2,7 +2,6 @@
 //! wrench benches' scene and mixed slip set (benches/wrench_set.rs), fixed and varying
 //! geometry, `best` and `simplified`, f32 and f64: the cost ratio of the dual-number form.
 use std::hint::black_box;
-use std::time::Duration;
 
 use contensou::Real;
 use contensou::contact::{Contact, VaryingContact};
@@ -12,7 +11,7 @@ use contensou::geometry::{Curvatures, Race};
 use contensou::jacobian::{LinearLaw, Linearize, State};
 use contensou::normal::{Hertz, Modulus, Undamped};
 use contensou::shape::Newton;
-use criterion::{Criterion, criterion_group, criterion_main};
+use criterion::Criterion;
 
 include!("friction_set.rs");
 include!("wrench_set.rs");
@@ -61,12 +60,5 @@ fn benches(c: &mut Criterion) {
     jacobian::<f64, Simplified>(c);
 }
 
-criterion_group! {
-    name = group;
-    config = Criterion::default()
-        .warm_up_time(Duration::from_millis(300))
-        .measurement_time(Duration::from_secs(1))
-        .sample_size(30);
-    targets = benches
-}
-criterion_main!(group);
+include!("group.rs");
+bench_main!(benches, warm_up_ms: 300, measure_ms: 1000, samples: 30);

@@ -20,14 +20,24 @@ use contensou::friction::rolling::{
 };
 use criterion::Criterion;
 
+/// Creep state `i` of 64: (magnitude, r, z, θ) — magnitudes log-spaced from 1e-3 of
+/// saturation to 30× past it, the direction (r cos θ, r sin θ, z) on a golden-angle spiral.
+fn creep(i: usize) -> (f64, f64, f64, f64) {
+    let mag = 2.5e-3 * 10f64.powf(-3.0 + 4.5 * (i as f64 + 0.5) / 64.0);
+    let z = 1.0 - 2.0 * (i as f64 + 0.5) / 64.0;
+    (
+        mag,
+        (1.0 - z * z).sqrt(),
+        z,
+        2.399_963_229_728_653 * i as f64,
+    )
+}
+
 fn states<T: Real>() -> Vec<RollingSlip<T>> {
     let c = (6e-3f64 * 4e-3).sqrt();
     (0..64)
         .map(|i| {
-            let mag = 2.5e-3 * 10f64.powf(-3.0 + 4.5 * (i as f64 + 0.5) / 64.0);
-            let z = 1.0 - 2.0 * (i as f64 + 0.5) / 64.0;
-            let r = (1.0 - z * z).sqrt();
-            let th = 2.399_963_229_728_653 * i as f64;
+            let (mag, r, z, th) = creep(i);
             RollingSlip::from_creepages(
                 T::from_f64(mag * r * th.cos()),
                 T::from_f64(mag * r * th.sin()),
@@ -84,10 +94,7 @@ fn wrench_bench<T: Real>(cr: &mut Criterion) {
         let (ct, st) = (theta.cos(), theta.sin());
         (0..64)
             .map(|i| {
-                let mag = 2.5e-3 * 10f64.powf(-3.0 + 4.5 * (i as f64 + 0.5) / 64.0);
-                let z = 1.0 - 2.0 * (i as f64 + 0.5) / 64.0;
-                let r = (1.0 - z * z).sqrt();
-                let th = 2.399_963_229_728_653 * i as f64;
+                let (mag, r, z, th) = creep(i);
                 let (vx, vy) = (30.0 * mag * r * th.cos(), 30.0 * mag * r * th.sin());
                 (
                     Slip::new(

@@ -2,7 +2,6 @@
 //! fixed (`Contact`) and with the eccentricity by table each step (`VaryingContact`), f32 and
 //! f64, on the friction stage's mixed input set (the same one as the QEMU stage `wrench`).
 use std::hint::black_box;
-use std::time::Duration;
 
 use contensou::Real;
 use contensou::contact::{Contact, VaryingContact};
@@ -10,7 +9,7 @@ use contensou::friction::{Best, Friction, FrictionLaw, Simplified, Slip};
 use contensou::geometry::{Curvatures, Race};
 use contensou::normal::{Hertz, Modulus, Undamped};
 use contensou::shape::Newton;
-use criterion::{Criterion, criterion_group, criterion_main};
+use criterion::Criterion;
 
 include!("friction_set.rs");
 include!("wrench_set.rs");
@@ -47,12 +46,5 @@ fn benches(c: &mut Criterion) {
     wrench::<f64, Best>(c);
 }
 
-criterion_group! {
-    name = group;
-    config = Criterion::default()
-        .warm_up_time(Duration::from_millis(300))
-        .measurement_time(Duration::from_secs(1))
-        .sample_size(30);
-    targets = benches
-}
-criterion_main!(group);
+include!("group.rs");
+bench_main!(benches, warm_up_ms: 300, measure_ms: 1000, samples: 30);

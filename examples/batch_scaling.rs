@@ -52,6 +52,30 @@ fn time(mut f: impl FnMut()) -> f64 {
     best
 }
 
+/// `wrench_many` of the step columns `[h, hdot, vx, vy, omega]` into the output columns
+/// `[N, Fx, Fy, Tz, a, b, e2]`.
+fn wrench_cols<T: BatchReal>(c: &Fixed<T>, cols: [&[T]; 5], out: [&mut [T]; 7]) {
+    let [h, hdot, vx, vy, omega] = cols;
+    let [n, fx, fy, tz, a, b, e2] = out;
+    let steps = Steps {
+        h,
+        hdot,
+        vx,
+        vy,
+        omega,
+    };
+    let mut wrenches = Wrenches {
+        n,
+        fx,
+        fy,
+        tz,
+        a,
+        b,
+        e2,
+    };
+    c.wrench_many(&steps, &mut wrenches).unwrap();
+}
+
 /// Rows of `cols` split in `k` chunks over `k` threads (k = 1: on this thread).
 fn threaded<T: BatchReal + Send + Sync>(
     c: &Fixed<T>,
@@ -61,28 +85,11 @@ fn threaded<T: BatchReal + Send + Sync>(
 ) {
     let n = cols[0].len();
     if k == 1 {
-        let [h, hdot, vx, vy, omega] = cols.each_ref().map(|c| &c[..]);
-        let [n, fx, fy, tz, a, b, e2] = out.each_mut().map(|c| &mut c[..]);
-        let steps = Steps {
-            h,
-            hdot,
-            vx,
-            vy,
-            omega,
-        };
-        c.wrench_many(
-            &steps,
-            &mut Wrenches {
-                n,
-                fx,
-                fy,
-                tz,
-                a,
-                b,
-                e2,
-            },
-        )
-        .unwrap();
+        wrench_cols(
+            c,
+            cols.each_ref().map(|c| &c[..]),
+            out.each_mut().map(|c| &mut c[..]),
+        );
         return;
     }
     let mut outs: Vec<[&mut [T]; 7]> = Vec::new();
@@ -96,29 +103,7 @@ fn threaded<T: BatchReal + Send + Sync>(
     std::thread::scope(|s| {
         for (i, o) in outs.into_iter().enumerate() {
             let r = i * n / k..(i + 1) * n / k;
-            s.spawn(move || {
-                let [h, hdot, vx, vy, omega] = cols.each_ref().map(|c| &c[r.clone()]);
-                let [n, fx, fy, tz, a, b, e2] = o;
-                c.wrench_many(
-                    &Steps {
-                        h,
-                        hdot,
-                        vx,
-                        vy,
-                        omega,
-                    },
-                    &mut Wrenches {
-                        n,
-                        fx,
-                        fy,
-                        tz,
-                        a,
-                        b,
-                        e2,
-                    },
-                )
-                .unwrap();
-            });
+            s.spawn(move || wrench_cols(c, cols.each_ref().map(|c| &c[r.clone()]), o));
         }
     });
 }

@@ -25,28 +25,21 @@ const ROWS: usize = if cfg!(debug_assertions) {
     100_003
 };
 
-/// xorshift64*: a fixed, reproducible sequence.
-struct Rng(u64);
+#[path = "common/rng.rs"]
+mod rng;
+use rng::Rng;
+
 impl Rng {
-    fn next(&mut self) -> u64 {
-        self.0 ^= self.0 >> 12;
-        self.0 ^= self.0 << 25;
-        self.0 ^= self.0 >> 27;
-        self.0.wrapping_mul(0x2545_f491_4f6c_dd1d)
-    }
-    fn unit(&mut self) -> f64 {
-        (self.next() >> 11) as f64 / (1u64 << 53) as f64
-    }
     fn pick<X: Copy>(&mut self, xs: &[X]) -> X {
-        xs[(self.next() % xs.len() as u64) as usize]
+        xs[(self.bits() % xs.len() as u64) as usize]
     }
     /// ± 10^[lo, hi], sometimes 0.
     fn magnitude(&mut self, lo: f64, hi: f64) -> f64 {
-        if self.unit() < 0.1 {
+        if self.next() < 0.1 {
             return 0.0;
         }
-        let s = if self.unit() < 0.5 { -1.0 } else { 1.0 };
-        s * 10f64.powf(lo + (hi - lo) * self.unit())
+        let s = if self.next() < 0.5 { -1.0 } else { 1.0 };
+        s * 10f64.powf(lo + (hi - lo) * self.next())
     }
 }
 
@@ -82,37 +75,37 @@ fn rows<T: Real>(a_of: impl Fn(f64, f64, f64) -> (f64, f64), fixed: (f64, f64)) 
         let (p, q) = if i % 3 == 0 {
             fixed
         } else {
-            let q = 10f64.powf(1.0 + 2.0 * r.unit());
-            let g = if r.unit() < 0.5 {
+            let q = 10f64.powf(1.0 + 2.0 * r.next());
+            let g = if r.next() < 0.5 {
                 r.pick(&[1.0, 1.001e-4, 0.5, 0.0274])
             } else {
-                10f64.powf(-3.99 * r.unit())
+                10f64.powf(-3.99 * r.next())
             };
             (q * g, q)
         };
-        let h = match r.next() % 10 {
-            0 => -r.unit() * 1e-6,
+        let h = match r.bits() % 10 {
+            0 => -r.next() * 1e-6,
             1 => 0.0,
             2 => r.pick(&[tiny_h, 1e-15, 1e-12, huge]),
-            _ => 10f64.powf(-9.0 + 5.0 * r.unit()),
+            _ => 10f64.powf(-9.0 + 5.0 * r.next()),
         };
         let m = r.magnitude(-6.0, 1.0);
         let hdot = r.pick(&[0.0, 0.0, m, -1e3, 1e3]);
         let (a, m1) = a_of(p, q, h);
-        let kind = r.next() % 8;
+        let kind = r.bits() % 8;
         let (vx, vy, omega) = match kind {
             // the inside/outside switch of `best`: ρ = 1 ± a few ulps on x² + m₁y² = m₁w²
             0 | 1 if a > 0.0 => {
                 let omega = r.magnitude(-2.0, 3.0);
                 let rho = 1.0 + r.pick(&[0.0, 1e-16, -1e-16, 6e-8, -6e-8, 1e-3, -1e-3]);
-                let th = std::f64::consts::TAU * r.unit();
+                let th = std::f64::consts::TAU * r.next();
                 let aw = a * omega;
                 (rho * aw * th.cos(), rho * aw * m1.sqrt() * th.sin(), omega)
             }
             // around δ = 1e-4 m/s
             2 => {
                 let s = 1e-4 * (1.0 + r.pick(&[0.0, 1e-7, -1e-7, 0.5, -0.5, -0.999]));
-                let th = std::f64::consts::TAU * r.unit();
+                let th = std::f64::consts::TAU * r.next();
                 (
                     s * th.cos() * 0.5,
                     s * th.sin() * 0.5,

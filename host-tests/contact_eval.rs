@@ -10,7 +10,7 @@ use contensou::Real;
 use contensou::dynamic::{Form, INPUTS, Law, OUTPUTS, Spec, Step};
 use contensou::friction::rolling::row::RowLaw;
 
-use contract::{bits, generic, specs, steps};
+use contract::{bits, generic, specs, stdout_of, stdout_with, steps};
 
 /// Runs `contact_eval args…` with `input` on stdin.
 fn run(args: &[&str], input: &str) -> Output {
@@ -39,19 +39,7 @@ fn wrench_matches_the_generic_contacts<T: Real>(precision: &str) {
     }
     for law in Law::ALL {
         for form in Form::ALL {
-            let args = [
-                "wrench",
-                "--law",
-                law.name(),
-                "--form",
-                form.name(),
-                "--precision",
-                precision,
-            ];
-            let out = run(&args, &input);
-            let stderr = String::from_utf8_lossy(&out.stderr);
-            assert!(out.status.success(), "{args:?}: {stderr}");
-            let stdout = String::from_utf8(out.stdout).unwrap();
+            let stdout = stdout_with("wrench", law, form, precision, &input);
             let mut lines = stdout.lines();
             assert_eq!(
                 lines.next().unwrap(),
@@ -67,7 +55,7 @@ fn wrench_matches_the_generic_contacts<T: Real>(precision: &str) {
                 assert_eq!(
                     bits::<T>(got[11..].try_into().unwrap()),
                     bits(expect),
-                    "{args:?}: {line}"
+                    "{law:?} {form:?} {precision}: {line}"
                 );
                 n += 1;
             }
@@ -292,16 +280,10 @@ fn rolling_matches_the_library<T: Real>(precision: &str) {
         ("linear", rolling_direct::<T, Linear>),
     ];
     for (name, direct) in laws {
-        let out = run(
+        let stdout = stdout_of(
             &["rolling", "--law", name, "--precision", precision],
             &input,
         );
-        assert!(
-            out.status.success(),
-            "{name}: {}",
-            String::from_utf8_lossy(&out.stderr)
-        );
-        let stdout = String::from_utf8(out.stdout).unwrap();
         let mut lines = stdout.lines();
         assert_eq!(lines.next().unwrap(), "a,b,G,nu,f,N,V,xi,eta,phi,Fx,Fy,Mz");
         for (line, r) in lines.zip(&rows) {

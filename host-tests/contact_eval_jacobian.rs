@@ -8,7 +8,7 @@ use contensou::Real;
 use contensou::dynamic::{DynContact, Form, INPUTS, Law, RollingSpec, RollingStep};
 use contensou::jacobian::OUTPUTS;
 
-use contract::{bits, generic, run_contact_eval as run, specs, steps};
+use contract::{bits, generic, run_contact_eval as run, specs, stdout_with, steps};
 
 fn matches_the_library<T: Real>(precision: &str) {
     let x = T::from_f64;
@@ -42,22 +42,7 @@ fn matches_the_library<T: Real>(precision: &str) {
     }
     for law in Law::ALL {
         for form in Form::ALL {
-            let args = [
-                "jacobian",
-                "--law",
-                law.name(),
-                "--form",
-                form.name(),
-                "--precision",
-                precision,
-            ];
-            let out = run(&args, &input);
-            assert!(
-                out.status.success(),
-                "{args:?}: {}",
-                String::from_utf8_lossy(&out.stderr)
-            );
-            let stdout = String::from_utf8(out.stdout).unwrap();
+            let stdout = stdout_with("jacobian", law, form, precision, &input);
             let mut lines = stdout.lines();
             assert_eq!(
                 lines.next().unwrap(),
@@ -71,12 +56,24 @@ fn matches_the_library<T: Real>(precision: &str) {
                 let want = dc.jacobian_rolling(s, &velocity).unwrap().to_array();
                 let wrench = dc.wrench_rolling(s, &velocity).unwrap().to_array();
                 let raw = |v: &[T]| v.iter().map(|x| x.to_f64().to_bits()).collect::<Vec<_>>();
-                assert_eq!(raw(&got[13..]), raw(&want), "{args:?}: {line}");
-                assert_eq!(raw(&got[13..17]), raw(&wrench[..4]), "{args:?}: {line}");
+                assert_eq!(
+                    raw(&got[13..]),
+                    raw(&want),
+                    "{law:?} {form:?} {precision}: {line}"
+                );
+                assert_eq!(
+                    raw(&got[13..17]),
+                    raw(&wrench[..4]),
+                    "{law:?} {form:?} {precision}: {line}"
+                );
                 if Law::SLIDING.contains(&law) {
                     // the rolling columns are not read: the generic contact's wrench
                     let g = bits(generic(law, spec, form, s));
-                    assert_eq!(raw(&got[13..17]), g[..4].to_vec(), "{args:?}: {line}");
+                    assert_eq!(
+                        raw(&got[13..17]),
+                        g[..4].to_vec(),
+                        "{law:?} {form:?} {precision}: {line}"
+                    );
                 }
                 n += 1;
             }

@@ -2,24 +2,13 @@
 //! ([`contensou::step::contract::step_row`]) for every law, both forms and precisions, with and
 //! without the optional free velocity; a bad `dt` or W is refused naming the column; `--help`.
 
-use std::io::Write;
-use std::process::{Command, Output, Stdio};
-
 use contensou::Real;
 use contensou::dynamic::{DynContact, Form, INPUTS, Law, RollingSpec, RollingStep, Spec, Step};
 use contensou::step::contract::{FREE_INPUTS, STEP_INPUTS, STEP_OUTPUTS, step_row};
 
-fn run(args: &[&str], input: &str) -> Output {
-    let mut child = Command::new(env!("CARGO_BIN_EXE_contact_eval"))
-        .args(args)
-        .stdin(Stdio::piped())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .expect("contact_eval runs");
-    let _ = child.stdin.take().unwrap().write_all(input.as_bytes());
-    child.wait_with_output().unwrap()
-}
+#[allow(dead_code)] // the binary's runners only
+mod contract;
+use contract::{run_contact_eval as run, stdout_with};
 
 /// A 20 mm steel ball on a plane (W = diag(1/m, 3.5/m, 3.5/m, 1/I)), in a few start states.
 const ROWS: [&str; 4] = [
@@ -78,24 +67,7 @@ fn matches<T: Real>(precision: &str) {
                     }
                     input += "\n";
                 }
-                let out = run(
-                    &[
-                        "step",
-                        "--law",
-                        law.name(),
-                        "--form",
-                        form.name(),
-                        "--precision",
-                        precision,
-                    ],
-                    &input,
-                );
-                assert!(
-                    out.status.success(),
-                    "{law:?} {form:?}: {}",
-                    String::from_utf8_lossy(&out.stderr)
-                );
-                let text = String::from_utf8(out.stdout).unwrap();
+                let text = stdout_with("step", law, form, precision, &input);
                 let mut lines = text.lines();
                 assert!(lines.next().unwrap().ends_with(&STEP_OUTPUTS.join(",")));
                 for (r, line) in ROWS.iter().zip(lines) {

@@ -18,20 +18,11 @@ const STATES: usize = 100_000;
 /// 1-D paths per law and precision searched for branch switches.
 const PATHS: usize = 20_000;
 
-struct Rng(u64);
+#[path = "common/rng.rs"]
+mod rng;
+use rng::SplitMix as Rng;
 
 impl Rng {
-    fn next(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^ (z >> 31)
-    }
-    /// Uniform in [0, 1).
-    fn unit(&mut self) -> f64 {
-        (self.next() >> 11) as f64 / (1u64 << 53) as f64
-    }
     fn range(&mut self, lo: f64, hi: f64) -> f64 {
         lo + (hi - lo) * self.unit()
     }
@@ -39,7 +30,7 @@ impl Rng {
         (lo.ln() + (hi.ln() - lo.ln()) * self.unit()).exp()
     }
     fn below(&mut self, n: u64) -> u64 {
-        self.next() % n
+        self.bits() % n
     }
 }
 

@@ -172,17 +172,9 @@ fn per_call_error_against_exact() {
     assert!(e64.force <= BestSeries::ERROR.0 && e64.torque <= BestSeries::ERROR.1);
 }
 
-/// splitmix64
-struct Rng(u64);
-impl Rng {
-    fn unit(&mut self) -> f64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        ((z ^ (z >> 31)) >> 11) as f64 / (1u64 << 53) as f64
-    }
-}
+#[path = "common/rng.rs"]
+mod rng;
+use rng::SplitMix as Rng;
 
 /// Passivity (F·v_P + T_z·ω ≤ 0, each component opposing its own velocity), |F| ≤ 1,
 /// finiteness and the exact law's symmetries, bit-exact, over random states of every kind.

@@ -15,23 +15,15 @@ use contensou::friction::Slip;
 use contensou::friction::rolling::RollingVelocity;
 use contensou::jacobian::{Jacobian, Linearize, State};
 
-struct Rng(u64);
+#[path = "common/rng.rs"]
+mod rng;
+
+use rng::Rng;
+
 impl Rng {
-    fn next(&mut self) -> f64 {
-        // xorshift64*
-        self.0 ^= self.0 >> 12;
-        self.0 ^= self.0 << 25;
-        self.0 ^= self.0 >> 27;
-        (self.0.wrapping_mul(0x2545_F491_4F6C_DD1D) >> 11) as f64 / (1u64 << 53) as f64
-    }
-    fn range(&mut self, lo: f64, hi: f64) -> f64 {
-        lo + (hi - lo) * self.next()
-    }
+    /// Log-uniform in [lo, hi].
     fn log(&mut self, lo: f64, hi: f64) -> f64 {
         (lo.ln() + (hi.ln() - lo.ln()) * self.next()).exp()
-    }
-    fn sign(&mut self) -> f64 {
-        if self.next() < 0.5 { -1.0 } else { 1.0 }
     }
 }
 

@@ -213,15 +213,11 @@ fn fastsim_full_slip_within_its_grid_error() {
     assert!(ef <= 3e-2 && em <= 3e-2, "{ef} {em}");
 }
 
-/// xorshift64*: a fixed, dependency-free stream.
-struct Rng(u64);
+#[path = "common/rng.rs"]
+mod rng;
+use rng::Rng;
+
 impl Rng {
-    fn next(&mut self) -> f64 {
-        self.0 ^= self.0 >> 12;
-        self.0 ^= self.0 << 25;
-        self.0 ^= self.0 >> 27;
-        (self.0.wrapping_mul(0x2545F4914F6CDD1D) >> 11) as f64 / (1u64 << 53) as f64
-    }
     /// log-uniform magnitude in [1e-8, 1e4] with a random sign (or 0 one time in 8)
     fn signed(&mut self) -> f64 {
         if self.next() < 0.125 {

@@ -23,19 +23,9 @@ const F: f64 = 0.3;
 const G: f64 = 8e10;
 const NU: f64 = 0.28;
 
-/// A small deterministic generator (xorshift64*), uniform in [0, 1).
-struct Rng(u64);
-impl Rng {
-    fn next(&mut self) -> f64 {
-        self.0 ^= self.0 >> 12;
-        self.0 ^= self.0 << 25;
-        self.0 ^= self.0 >> 27;
-        (self.0.wrapping_mul(0x2545_f491_4f6c_dd1d) >> 11) as f64 / (1u64 << 53) as f64
-    }
-    fn sym(&mut self) -> f64 {
-        2.0 * self.next() - 1.0
-    }
-}
+#[path = "common/rng.rs"]
+mod rng;
+use rng::Rng;
 
 fn fixed<T: Real>(p: f64, q: f64, f: f64) -> Contact<T, contensou::normal::Hertz<T>, Undamped> {
     let x = T::from_f64;

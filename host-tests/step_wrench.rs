@@ -521,23 +521,14 @@ fn a_slip_that_would_reverse_within_the_step_is_stopped() {
     }
 }
 
-/// xorshift64*: a fixed, reproducible stream in [0, 1).
-struct Rng(u64);
+#[path = "common/rng.rs"]
+mod rng;
+use rng::Rng;
+
 impl Rng {
-    fn next(&mut self) -> f64 {
-        self.0 ^= self.0 >> 12;
-        self.0 ^= self.0 << 25;
-        self.0 ^= self.0 >> 27;
-        (self.0.wrapping_mul(0x2545_F491_4F6C_DD1D) >> 11) as f64 / (1u64 << 53) as f64
-    }
-    fn range(&mut self, lo: f64, hi: f64) -> f64 {
-        lo + (hi - lo) * self.next()
-    }
+    /// 10^x, x uniform in [lo, hi).
     fn log(&mut self, lo: f64, hi: f64) -> f64 {
         10f64.powf(self.range(lo, hi))
-    }
-    fn sign(&mut self) -> f64 {
-        if self.next() < 0.5 { -1.0 } else { 1.0 }
     }
 }
 

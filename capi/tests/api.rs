@@ -247,6 +247,65 @@ fn bad_pointers_and_values_are_codes_and_write_nothing() {
     }
 }
 
+/// With several bad pointers the wrench reports the first in the order storage (NULL,
+/// alignment, initialisation), step, output; `*column` is NONE after a refused pointer and
+/// after a success, the step's column after a refused step; `*out` is written on success only.
+#[test]
+fn wrench_statuses_follow_the_documented_order() {
+    unsafe {
+        let mut c = storage64();
+        let zeroed = storage64();
+        assert_eq!(
+            contensou_contact_new_f64(&mut *c, &SPEC, 0, 0, null_mut()),
+            S::Ok
+        );
+        let off = c
+            .opaque
+            .as_ptr()
+            .cast::<u8>()
+            .add(4)
+            .cast::<contensou_contact_f64>();
+        let words = [0.0_f64; 8];
+        let odd = words.as_ptr().cast::<u8>().add(4);
+        let (odd_step, odd_out) = (odd.cast::<contensou_step<f64>>(), odd.cast_mut().cast());
+        let mut w = contensou_wrench::default();
+        let (good, zeroed) = (&*c as *const _, &*zeroed as *const _);
+        let cases = [
+            (null(), odd_step, odd_out, S::NullPointer),
+            (off, null(), null_mut(), S::Misaligned),
+            (zeroed, odd_step, null_mut(), S::NotInitialized),
+            (good, odd_step, null_mut(), S::Misaligned),
+            (good, null(), odd_out, S::NullPointer),
+            (good, &STEP, odd_out, S::Misaligned),
+            (good, &STEP, null_mut(), S::NullPointer),
+        ];
+        for (storage, step, out, status) in cases {
+            let mut col = CONTENSOU_COLUMN_OMEGA;
+            assert_eq!(
+                contensou_contact_wrench_f64(storage, step, out, &mut col),
+                status
+            );
+            assert_eq!(col, CONTENSOU_COLUMN_NONE);
+        }
+        let bad = contensou_step {
+            vx: f64::NAN,
+            ..STEP
+        };
+        let mut col = CONTENSOU_COLUMN_NONE;
+        assert_eq!(
+            contensou_contact_wrench_f64(good, &bad, &mut w, &mut col),
+            S::NonFinite
+        );
+        assert_eq!((col, w), (CONTENSOU_COLUMN_VX, contensou_wrench::default()));
+        assert_eq!(
+            contensou_contact_wrench_f64(good, &STEP, &mut w, &mut col),
+            S::Ok
+        );
+        assert_eq!(col, CONTENSOU_COLUMN_NONE);
+        assert!(w.n > 0.0);
+    }
+}
+
 #[test]
 fn errors_name_their_column() {
     let mut c = storage64();

@@ -138,3 +138,23 @@ pub fn run_contact_eval(args: &[&str], input: &str) -> std::process::Output {
     let _ = child.stdin.take().unwrap().write_all(input.as_bytes());
     child.wait_with_output().unwrap()
 }
+
+/// The stdout of a successful `contact_eval args…` run on `input` (a failure shows `args` and
+/// the stderr).
+#[allow(dead_code)] // not every test of the contract runs the binary
+pub fn stdout_of(args: &[&str], input: &str) -> String {
+    let out = run_contact_eval(args, input);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.success(), "{args:?}: {stderr}");
+    String::from_utf8(out.stdout).unwrap()
+}
+
+/// [`stdout_of`] `contact_eval sub --law … --form … --precision …`.
+#[allow(dead_code)] // not every test of the contract runs the binary
+pub fn stdout_with(sub: &str, law: Law, form: Form, precision: &str, input: &str) -> String {
+    let (law, form) = (law.name(), form.name());
+    stdout_of(
+        &[sub, "--law", law, "--form", form, "--precision", precision],
+        input,
+    )
+}
