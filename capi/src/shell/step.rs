@@ -254,7 +254,8 @@ pub(crate) unsafe fn step_many<T: Precision>(
         which = k;
         let dt = TimeStep::new(dt).map_err(|e| at("dt", e))?;
         if let Some(i) = w.iter().position(|x| !x.is_finite()) {
-            which = i / (16 * k); // its row / 4
+            // Its row / 4 (k ≥ 1 here; no division that could panic).
+            which = i.checked_div(16 * k).unwrap_or(k);
             return Err(at("W", Error::NonFinite("W")));
         }
         let mut frees: [Option<Free<T>>; CONTENSOU_STEP_MAX_CONTACTS] =
