@@ -17,7 +17,7 @@
 //!   with Ψ = C + Q₂ + Q₄ (its homogeneous parts),
 //!   k_T = C² + 3(Q₂² + 2C·Q₄) + 20·Q₂Q₄ + 21·Q₄².
 //!
-//! κ and κ_T are 8/3 times their maxima over the inside region, found by [`maximise`]. With the IC
+//! κ and κ_T are 8/3 times their maxima over the inside region, found by `maximise` (a grid and pattern searches). With the IC
 //! outside the ellipse, and past the ramp (p ≥ δ: fN/p times the core's own stiffness, whose
 //! sup is lower), the stiffness is smaller: checked on the whole direction sphere, for the
 //! exact law and for `best` (`host-tests/stability.rs`).
@@ -137,15 +137,15 @@ fn maximise<T: Real>(k: &Constants<T>, f: impl Fn(T, T) -> T) -> T {
 
 /// κ(e²): the largest stiffness of `best`'s ramped law in units of fN/δ — the supremum, over
 /// every slip direction and every spin ratio, of the largest eigenvalue of the translational
-/// block −(δ/fN)·∂F/∂v_P (symmetric positive semidefinite: the Hessian of G = D²/2, see the
-/// [module docs](self)). The stable explicit step
+/// block −(δ/fN)·∂F/∂v_P (symmetric positive semidefinite: the Hessian of G = D²/2, see
+/// [`FrictionLaw::RAMP_BELOW_DELTA`](crate::friction::FrictionLaw::RAMP_BELOW_DELTA)). The stable explicit step
 /// ([`Friction::stable_step`](crate::friction::Friction::stable_step) for `Best`) is
 /// limit·mδ/(κ·fN).
 ///
 /// # Formula
 ///
 /// κ = (8/3)·max over the IC (X, Y) inside the ellipse of the larger eigenvalue of the
-/// Hessian of Ψ²/2 (Ψ the exact quartic), by [`maximise`]. Pure translation gives 8/3
+/// Hessian of Ψ²/2 (Ψ the exact quartic), by `maximise` (a grid and pattern searches). Pure translation gives 8/3
 /// (G = |v_P|²/2), rest with spin (8/3)·C·diag(A, B); the maximum lies in between, on the
 /// minor-axis slip direction (IC on the major axis) once e² > 0: 3.205 for a circle (IC at
 /// 0.81a), 3.316 at e² = 0.5, 3.755 at 0.9, 5.317 at 0.99, 10.40 at the contract's end
@@ -169,7 +169,7 @@ pub fn ramp_stiffness<T: Real>(k: &Constants<T>) -> T {
 
 /// κ_T(e²): the largest torque stiffness of `best`'s ramped law in units of fN·a²/δ — the
 /// supremum, over every slip direction and every spin ratio, of −(δ/(fN·a²))·∂T_z/∂ω with v_P
-/// held fixed (the spin entry of the Hessian of G = D²/2, see the [module docs](self)). The
+/// held fixed (the spin entry of the Hessian of G = D²/2, see [`FrictionLaw::RAMP_BELOW_DELTA`](crate::friction::FrictionLaw::RAMP_BELOW_DELTA)). The
 /// stable explicit step for the spin
 /// ([`Friction::stable_spin_step`](crate::friction::Friction::stable_spin_step) for `Best`) is
 /// limit·Iδ/(κ_T·fN·a²).
@@ -178,7 +178,7 @@ pub fn ramp_stiffness<T: Real>(k: &Constants<T>) -> T {
 ///
 /// κ_T = (8/3)·max over the IC (X, Y) inside the ellipse of
 /// k_T = C² + 3(Q₂² + 2C·Q₄) + 20·Q₂Q₄ + 21·Q₄² (Q₂ = (B/2)X² + (A/2)Y²,
-/// Q₄ = c₄₀(X⁴ + Y⁴/m₁) + c₂₂X²Y²), by [`maximise`]. Pure spin gives (8/3)·C² (the plateau
+/// Q₄ = c₄₀(X⁴ + Y⁴/m₁) + c₂₂X²Y²), by `maximise` (a grid and pattern searches). Pure spin gives (8/3)·C² (the plateau
 /// −C·fNa ramped over C·a|ω| < 3δ/8); the maximum lies with the IC inside the patch at
 /// ≈ 0.76–0.81 of the way to its edge: 1.226 for a circle (1.32× pure spin), 1.029 at
 /// e² = 0.5, 0.842 at 0.9, 0.775 at 0.99, 0.760 at the contract's end (≈ 2.03× pure spin) —
