@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Builds the C API (run from anywhere):
 #   host:  capi/target/release/libcontensou_capi.a (staticlib) and .so (cdylib),
-#          capi/target/release/wrench_eval and rolling_eval (the C twins of `contact_eval
-#          wrench` and `contact_eval rolling`)
+#          capi/target/release/wrench_eval, rolling_eval and step_eval (the C twins of
+#          `contact_eval wrench`, `contact_eval rolling` and `contact_eval step`)
 #   MCU:   capi/target/thumbv7em-none-eabihf/release/libcontensou_capi.a
 # and checks that the committed header is what cbindgen generates and that it compiles as
 # C99 and C++17 with -Wall -Wextra -Werror -pedantic. `--no-check` skips the header checks.
@@ -36,7 +36,7 @@ cargo rustc --release --lib --crate-type staticlib,cdylib
 echo "capi: thumbv7em-none-eabihf staticlib"
 cargo rustc --release --lib --target thumbv7em-none-eabihf --crate-type staticlib
 
-for twin in wrench_eval rolling_eval; do
+for twin in wrench_eval rolling_eval step_eval; do
     echo "capi: examples/$twin.c against the host staticlib"
     gcc -std=c99 -O2 -Wall -Wextra -Werror -pedantic -Iinclude "examples/$twin.c" \
         target/release/libcontensou_capi.a -lpthread -ldl -lm -o "target/release/$twin"
@@ -58,7 +58,7 @@ if nm -D --defined-only target/release/libcontensou_capi.so | awk '{ print $3 }'
     echo "capi: the cdylib exports symbols outside contensou_* (above)" >&2
     exit 1
 fi
-for twin in wrench_eval rolling_eval; do
+for twin in wrench_eval rolling_eval step_eval; do
     gcc -std=c99 -g "${san[@]}" -Iinclude "examples/$twin.c" target/release/libcontensou_capi.a \
         -lpthread -ldl -lm -o "target/release/$twin-san"
 done

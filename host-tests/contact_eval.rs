@@ -8,6 +8,7 @@ use std::process::Output;
 
 use contensou::Real;
 use contensou::dynamic::{Form, INPUTS, Law, OUTPUTS, Spec, Step};
+use contensou::friction::rolling::row::RowLaw;
 
 use contract::{bits, generic, specs, stdout_of, stdout_with, steps};
 
@@ -300,6 +301,13 @@ fn rolling_matches_the_library<T: Real>(precision: &str) {
         &input,
     );
     assert_eq!(first, String::from_utf8(blend.stdout).unwrap());
+    // `--law rolling` names the default rolling law (the library's RowLaw::DEFAULT)
+    let alias = run(
+        &["rolling", "--law", "rolling", "--precision", precision],
+        &input,
+    );
+    assert!(alias.status.success());
+    assert_eq!(first, String::from_utf8(alias.stdout).unwrap());
 }
 
 #[test]
@@ -403,6 +411,14 @@ fn wrench_takes_the_optional_rolling_columns() {
             "{law:?}"
         );
     }
+    // `--law rolling` is the default rolling law, bit for bit
+    let default = RowLaw::DEFAULT.name();
+    let [by_alias, by_name] = ["rolling", default].map(|law| {
+        let out = run(&["wrench", "--law", law, "--precision", "f64"], &input);
+        assert_eq!(out.status.code(), Some(0), "{law}");
+        out.stdout
+    });
+    assert_eq!(by_alias, by_name);
     let bad = format!("{},nu\n{base},0.7\n", INPUTS.join(","));
     let out = run(&["wrench", "--law", "table"], &bad);
     assert_eq!(out.status.code(), Some(1));

@@ -196,3 +196,12 @@ fn names_round_trip() {
     assert_eq!(Law::from_name("exact"), None);
     assert_eq!(Law::default(), Law::Best);
 }
+
+#[test]
+fn rolling_names_the_default_rolling_law() {
+    use contensou::friction::rolling::row::RowLaw;
+    let law = Law::from_name("rolling").unwrap();
+    assert!(law.is_rolling());
+    assert_eq!(law.name(), RowLaw::DEFAULT.name());
+    assert_eq!(Law::from_name(RowLaw::ALIAS), Some(law));
+}

@@ -557,6 +557,19 @@ mod row {
     }
 
     #[test]
+    fn rolling_names_the_default_law() {
+        assert_eq!(RowLaw::from_name("rolling"), Some(RowLaw::DEFAULT));
+        assert_eq!(RowLaw::DEFAULT, RowLaw::ALL[0]);
+        assert_eq!(RowLaw::resolve("blend"), "blend");
+        assert_eq!(RowLaw::resolve("rolling"), RowLaw::DEFAULT.name());
+        assert_eq!(RowLaw::from_name("Rolling"), None);
+        assert_eq!(
+            Rows::<f64>::new(RowLaw::from_name("rolling").unwrap()).eval(&GOOD),
+            Rows::<f64>::new(RowLaw::DEFAULT).eval(&GOOD)
+        );
+    }
+
+    #[test]
     fn a_built_contact_gives_the_row_bits_and_v_zero_is_the_limit() {
         for law in RowLaw::ALL {
             let mut rows = Rows::<f64>::new(law);

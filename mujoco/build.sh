@@ -39,8 +39,9 @@ fi
 gcc "${flags[@]}" examples/run_model.c "$lib" -Wl,-rpath,"$pkg" -lm -o build/run_model
 echo "mujoco: build/run_model"
 # The tests' shim (tests/inverse_mass_shim.c): the contacts' W through ctypes, no plugin registration.
-gcc "${flags[@]}" -fvisibility=hidden -shared tests/inverse_mass_shim.c src/pairs.c src/inverse_mass.c src/step_aware.c "$lib" \
-    -Wl,-z,defs -Wl,-rpath,"$pkg" -lm -o build/libcontensou_mujoco_test.so
+gcc "${flags[@]}" -fvisibility=hidden -shared tests/inverse_mass_shim.c src/pairs.c src/inverse_mass.c src/step_aware.c \
+    "$capi" "$lib" -Wl,--exclude-libs,ALL -Wl,-z,defs -Wl,-rpath,"$pkg" -lpthread -ldl -lm \
+    -o build/libcontensou_mujoco_test.so
 echo "mujoco: build/libcontensou_mujoco_test.so (tests only)"
 
 if ((check)); then

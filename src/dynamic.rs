@@ -56,6 +56,7 @@ use core::fmt;
 
 use crate::contact::{Contact, Rolling, VaryingContact, Wrench};
 use crate::error::finite;
+use crate::friction::rolling::row::RowLaw;
 use crate::friction::rolling::{
     Blend, Elasticity, Fastsim, FastsimGrid, RollingLaw, RollingVelocity, Table,
 };
@@ -152,8 +153,10 @@ impl Law {
         )
     }
 
-    /// The law of that name ([`Law::name`]); `None` for any other string.
+    /// The law of that name ([`Law::name`]), the default rolling law for `"rolling"`
+    /// ([`RowLaw::ALIAS`], resolved by [`RowLaw::resolve`]); `None` for any other string.
     pub fn from_name(name: &str) -> Option<Self> {
+        let name = RowLaw::resolve(name);
         Law::ALL.into_iter().find(|l| l.name() == name)
     }
 }

@@ -113,8 +113,54 @@ def main():
                       f"{r['dt'] * 1e3:g} ms | {stable} | " + " | ".join(cells)
                       + f" | {rise} | {r['cpu_s'] / r['end']:.3g} |")
         md.append("")
+    md += real_time(rows)
     with open("bench-results/step-sweep.md", "w") as f:
         f.write("\n".join(md))
+
+
+# The M4F rows (bench-results/cycles.csv, tools/qemu-bench.sh: firmware/src/bin/step_scenes.rs)
+# and the sweep run each scene's largest holding step is read from: (M4F row, scene, law, spin,
+# step).
+HOLDING = [
+    ("ball", "ball", "best", None, 5e-3),
+    ("tippe-top", "tippe-top", "best", None, 2e-3),
+    ("tippe-top-two-contacts", None, None, None, 2e-3),
+    ("rattleback", "rattleback", "best", -2, 2e-3),
+    ("rattleback-table", "rattleback", "table", -2, 1e-3),
+    (None, "bearing", "table", None, 5e-5),
+]
+
+
+def real_time(rows):
+    """The real-time factor per scene at its largest holding step: M4F at 168 MHz from the
+    cycle model's mid estimate of one step-aware step, host from the sweep's CPU time."""
+    cycles = {}
+    try:
+        with open("bench-results/cycles.csv") as f:
+            for r in csv.DictReader(f):
+                if r["stage"] == "scene-step" and r["precision"] == "f32":
+                    cycles[r["method"]] = (int(r["insns"]), int(r["cycles_mid"]))
+    except FileNotFoundError:
+        pass
+    md = ["## Real-time factors at the largest holding step", "",
+          "M4F: one step-aware step in f32 (QEMU instructions, cycle model mid, "
+          "bench-results/cycles.csv rows `scene-step`), at 168 MHz: Δt·168e6 / cycles. Host: "
+          "simulated s per CPU s of the sweep's run (f64; `—` below the timer's resolution).",
+          "", "| scene | step | M4F insns / step | M4F cycles / step | M4F real-time factor "
+          "| host real-time factor |", "|---|---|---|---|---|---|"]
+    for m4f, scene, law, spin, dt in HOLDING:
+        host = "—"
+        for r in rows:
+            if (r["scene"], r["law"], r["spin"], r["integrator"]) == (scene, law, spin,
+                                                                    "step-aware") \
+                    and abs(r["dt"] - dt) < 1e-12 and r["cpu_s"] > 0:
+                host = f"{r['end'] / r['cpu_s']:.3g}×"
+        ins, cyc = cycles.get(m4f, (None, None))
+        m = "not measured" if cyc is None else f"{dt * 168e6 / cyc:.3g}×"
+        md.append(f"| {m4f or scene} | {dt * 1e3:g} ms | {ins or '—'} | {cyc or '—'} | {m} "
+                  f"| {host} |")
+    md.append("")
+    return md
 
 
 if __name__ == "__main__":

@@ -9,13 +9,19 @@
 //!   f = 0, ν at both ends); `bits rolling-bad` the bad rows of its error paths (as `bad`);
 //! - `bits wrench-rolling-gen` prints rows of the wrench contract with the optional rolling
 //!   columns `G,nu,vrx,vry` (contact blocks, rolling velocities from 0 to past the slip);
+//! - `bits step-gen` prints rows of `contact_eval step` with every optional column
+//!   (`G,nu,vrx,vry,un_free,ux_free,uy_free,uw_free`): the wrench's states, steps from 10 µs
+//!   to 10 ms, W of random rigid bodies (J M⁻¹ Jᵀ: PSD, some singular), free velocities
+//!   around the start; `bits step-bad` the bad rows of its error paths (as `bad`);
 //! - `bits check f32|f64 A.csv B.csv` parses every field of both outputs in that precision
-//!   and requires the same bits (and the same header — the wrench contract's or
-//!   `contact_eval rolling`'s — and row count).
+//!   and requires the same bits (and the same header — the wrench contract's, its Jacobian's
+//!   or `contact_eval rolling`'s — and row count).
 use std::process::ExitCode;
 use std::str::FromStr;
 
 use contensou::dynamic::{INPUTS, OUTPUTS};
+use contensou::jacobian::OUTPUTS as JACOBIAN_OUTPUTS;
+use contensou::step::contract::{FREE_INPUTS, STEP_INPUTS, STEP_OUTPUTS};
 use contensou::Real;
 
 /// splitmix64: a fixed, portable stream.
@@ -240,6 +246,144 @@ fn wrench_rolling_generate() {
     }
 }
 
+/// W = J M⁻¹ Jᵀ of one random rigid body (mass m, principal inertia I, arm r from its centre
+/// of mass to the contact point, contact frame = body axes): u = (v + ω × r)·(n, x, y), ω·n.
+fn body_w(rng: &mut Rng) -> [f64; 10] {
+    let m = rng.log(1e-3, 10.0);
+    let i = [
+        m * rng.log(1e-6, 1e-2),
+        m * rng.log(1e-6, 1e-2),
+        m * rng.log(1e-6, 1e-2),
+    ];
+    let r = [
+        rng.signed(1e-4, 0.1),
+        rng.signed(1e-4, 0.1),
+        -rng.log(1e-4, 0.1),
+    ];
+    // Rows of J over (v, ω): n = z, x, y directions, and the spin about z.
+    let dir = [[0.0, 0.0, 1.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]];
+    let mut j = [[0.0f64; 6]; 4];
+    for (k, d) in dir.iter().enumerate() {
+        // (v + ω × r)·d = v·d + ω·(r × d)
+        let c = [
+            r[1] * d[2] - r[2] * d[1],
+            r[2] * d[0] - r[0] * d[2],
+            r[0] * d[1] - r[1] * d[0],
+        ];
+        j[k] = [d[0], d[1], d[2], c[0], c[1], c[2]];
+    }
+    j[3] = [0.0, 0.0, 0.0, 0.0, 0.0, 1.0];
+    let inv = [
+        1.0 / m,
+        1.0 / m,
+        1.0 / m,
+        1.0 / i[0],
+        1.0 / i[1],
+        1.0 / i[2],
+    ];
+    let mut w = [0.0; 10];
+    let mut n = 0;
+    for a in 0..4 {
+        for b in a..4 {
+            w[n] = (0..6).map(|c| j[a][c] * inv[c] * j[b][c]).sum();
+            n += 1;
+        }
+    }
+    w
+}
+
+/// Rows of `contact_eval step` with every optional column.
+fn step_generate() {
+    let mut rng = Rng(27);
+    println!(
+        "{},{},G,nu,vrx,vry,{}",
+        INPUTS.join(","),
+        STEP_INPUTS.join(","),
+        FREE_INPUTS.join(",")
+    );
+    for _ in 0..60 {
+        let estar = rng.log(1e8, 1e12);
+        let cd = pick!(rng, 0.0, rng.log(1e-3, 10.0));
+        let f = pick!(rng, 0.0, rng.log(1e-2, 1.0), rng.log(1e-2, 1.0));
+        let delta = pick!(rng, 0.0, rng.log(1e-6, 1e-2), 1e-4);
+        let g = estar * pick!(rng, 0.7, rng.log(0.1, 1.0));
+        let nu = pick!(rng, 0.0, 0.5, rng.unit() * 0.5);
+        for _ in 0..5 {
+            let q = rng.log(1e-1, 1e4);
+            let ratio = pick!(rng, 1.0, rng.log(2e-4, 1.0), rng.log(0.05, 1.0));
+            let h = pick!(rng, -1e-6, rng.log(1e-12, 1e-4), rng.log(1e-9, 1e-5));
+            let hdot = pick!(rng, 0.0, rng.signed(1e-6, 1.0));
+            let vx = pick!(rng, 0.0, rng.signed(1e-7, 1.0), rng.signed(1e-5, 1e-1));
+            let vy = pick!(rng, 0.0, rng.signed(1e-7, 1.0), rng.signed(1e-5, 1e-1));
+            let omega = pick!(rng, 0.0, rng.signed(1e-3, 1e3), rng.signed(1e-1, 1e2));
+            let vrx = pick!(rng, 0.0, rng.signed(1e-4, 30.0), rng.signed(1e-2, 10.0));
+            let vry = pick!(rng, 0.0, 0.0, rng.signed(1e-4, 30.0));
+            let dt = pick!(rng, 1e-3, 2e-3, rng.log(1e-5, 1e-2));
+            let mut w = body_w(&mut rng);
+            if rng.next() & 3 == 0 {
+                // A body that cannot spin about the normal: W singular (its spin row zero).
+                for k in [3, 6, 8, 9] {
+                    w[k] = 0.0;
+                }
+            }
+            // The free velocity: the start's plus what gravity or a push adds over the step.
+            let un = -hdot + pick!(rng, 0.0, -9.81 * dt, rng.signed(1e-4, 1.0));
+            let ux = vx + pick!(rng, 0.0, rng.signed(1e-5, 1.0));
+            let uy = vy + pick!(rng, 0.0, rng.signed(1e-5, 1.0));
+            let uw = omega + pick!(rng, 0.0, rng.signed(1e-3, 10.0));
+            let mut v = vec![
+                ratio * q,
+                q,
+                estar,
+                cd,
+                f,
+                delta,
+                h,
+                hdot,
+                vx,
+                vy,
+                omega,
+                dt,
+            ];
+            v.extend_from_slice(&w);
+            v.extend_from_slice(&[g, nu, vrx, vry, un, ux, uy, uw]);
+            println!("{}", row(&v));
+        }
+    }
+}
+
+/// Valid step rows, then one bad row (`kind<TAB>line`), for the step's error paths.
+fn step_bad() {
+    let c = "50,50,1.15e11,0,0.1,1e-4,7.6e-8,0,0.5,0,0";
+    let w = "30.609,0,0,0,107.13,0,0,107.13,0,7.6522e5";
+    let good = format!("{c},1e-3,{w}");
+    let cases = [
+        ("dt-zero", format!("{c},0,{w}")),
+        ("dt-neg", format!("{c},-1e-3,{w}")),
+        ("dt-inf", format!("{c},inf,{w}")),
+        (
+            "w-inf",
+            format!("{c},1e-3,30.609,0,0,0,inf,0,0,107.13,0,7.6522e5"),
+        ),
+        (
+            "w-not-psd",
+            format!("{c},1e-3,30.609,0,0,0,-107.13,0,0,107.13,0,7.6522e5"),
+        ),
+        ("w-coupled", format!("{c},1e-3,1,5,0,0,1,0,0,1,0,1")),
+        (
+            "h-inf",
+            format!("50,50,1.15e11,0,0.1,1e-4,inf,0,0.5,0,0,1e-3,{w}"),
+        ),
+        (
+            "p-gt-q",
+            format!("60,50,1.15e11,0,0.1,1e-4,7.6e-8,0,0.5,0,0,1e-3,{w}"),
+        ),
+    ];
+    for (kind, line) in cases {
+        println!("{kind}\t{good}\n{kind}\t\n{kind}\t{good}\n{kind}\t{line}\n{kind}\t{good}");
+    }
+}
+
 /// Valid rows, then one bad row (`kind<TAB>line`), for the rolling error paths.
 fn rolling_bad() {
     let good = "6e-3,4e-3,8e10,0.28,0.3,8e4,30,1e-3,0,1";
@@ -309,9 +453,15 @@ fn check<T: FromStr + Real>(a: &str, b: &str) -> ExitCode {
     let header = format!("{},{}", INPUTS.join(","), OUTPUTS.join(","));
     let rolling = format!("{},{}", ROLLING_INPUTS.join(","), ROLLING_OUTPUTS.join(","));
     let first = la.first().copied().unwrap_or_default();
-    // the wrench contract may add optional rolling columns between its inputs and outputs
-    let optional =
-        first.starts_with(INPUTS.join(",").as_str()) && first.ends_with(OUTPUTS.join(",").as_str());
+    // the wrench contract (and its Jacobian's, `contact_eval jacobian`) may add optional
+    // rolling columns between its inputs and outputs
+    let optional = first.starts_with(INPUTS.join(",").as_str())
+        && (first.ends_with(OUTPUTS.join(",").as_str())
+            || first.ends_with(JACOBIAN_OUTPUTS.join(",").as_str()));
+    // the step contract: the wrench's inputs, the step's, optional ones, then N,Fx,Fy,Tz
+    let step = first.starts_with(&format!("{},{}", INPUTS.join(","), STEP_INPUTS.join(",")))
+        && first.ends_with(STEP_OUTPUTS.join(",").as_str());
+    let optional = optional || step;
     if !(first == header || first == rolling || optional) || lb.first() != Some(&first) {
         eprintln!("bits check: header differs from `{header}` or `{rolling}`");
         return ExitCode::from(1);
@@ -349,6 +499,8 @@ fn main() -> ExitCode {
         Some("rolling-gen") => rolling_generate(),
         Some("rolling-bad") => rolling_bad(),
         Some("wrench-rolling-gen") => wrench_rolling_generate(),
+        Some("step-gen") => step_generate(),
+        Some("step-bad") => step_bad(),
         Some("check") if args.len() == 4 => {
             return match args[1].as_str() {
                 "f32" => check::<f32>(&args[2], &args[3]),
@@ -356,7 +508,7 @@ fn main() -> ExitCode {
             };
         }
         _ => {
-            eprintln!("usage: bits gen | bad | rolling-gen | rolling-bad | wrench-rolling-gen | check f32|f64 A B");
+            eprintln!("usage: bits gen | bad | rolling-gen | rolling-bad | wrench-rolling-gen | step-gen | step-bad | check f32|f64 A B");
             return ExitCode::from(2);
         }
     }

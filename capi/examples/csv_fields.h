@@ -1,10 +1,12 @@
 /*
- * The CSV reading shared by the C twins (wrench_eval.c, rolling_eval.c): one row of
- * comma-separated numbers, as contact_eval reads them. Header-only (static functions).
+ * The CSV reading shared by the C twins (wrench_eval.c, rolling_eval.c, step_eval.c): one row
+ * of comma-separated numbers, as contact_eval reads them; a header's optional columns; with
+ * contensou.h, the contract twins' options. Header-only (static functions).
  */
 #ifndef CONTENSOU_CSV_FIELDS_H
 #define CONTENSOU_CSV_FIELDS_H
 
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -40,6 +42,64 @@ static const char *parse(const char *field, double *out, int f32) {
     if (f32) *out = strtof(field, &end); else *out = strtod(field, &end);
     if (*end != '\0') return "not a number";
     return *out == *out ? NULL : "not a number (NaN)";
+}
+
+#ifdef CONTENSOU_H
+/* The options of the wrench contract's twins (wrench_eval, step_eval): --law (a law of the
+ * contract: not full-slip or linear), --form, --precision; NULL, or why they are wrong. */
+static inline const char *contract_options(int argc, char **argv, contensou_law *law, contensou_form *form, int *f32) {
+    int i;
+    for (i = 1; i < argc; i += 2) {
+        const char *opt = argv[i], *val = i + 1 < argc ? argv[i + 1] : NULL;
+        if (!val) return "option without a value";
+        if (strcmp(opt, "--law") == 0) {
+            if (contensou_law_from_name(val, law) != CONTENSOU_STATUS_OK || *law == CONTENSOU_LAW_FULL_SLIP ||
+                *law == CONTENSOU_LAW_LINEAR)
+                return "--law: unknown law";
+        } else if (strcmp(opt, "--form") == 0) {
+            if (contensou_form_from_name(val, form) != CONTENSOU_STATUS_OK) return "--form: must be fixed or varying";
+        } else if (strcmp(opt, "--precision") == 0) {
+            if (strcmp(val, "f32") == 0) *f32 = 1;
+            else if (strcmp(val, "f64") == 0) *f32 = 0;
+            else return "--precision: must be f32 or f64";
+        } else {
+            return "unknown option";
+        }
+    }
+    return NULL;
+}
+#endif
+
+/* A header made of the `required` columns then any of the `count` optional `names` (each at
+ * most once, any order): field_of[k] gets the field of names[k] (−1 if absent); the fields per
+ * row, or −1 after a message on stderr naming `program`. */
+static inline int optional_columns(const char *program, const char *header, const char *required, const char *const *names,
+                                   int count, int *field_of) {
+    size_t n = strlen(required);
+    const char *rest = header + n;
+    char copy[4096], *found[64];
+    int extra, k, j, columns = 1;
+    for (k = 0; k < count; k++) field_of[k] = -1;
+    for (k = 0; required[k]; k++) columns += required[k] == ',';
+    if (strncmp(header, required, n) != 0 || (*rest != '\0' && *rest != ',') || strlen(rest) >= sizeof copy) {
+        fprintf(stderr, "%s: header = %s: must be `%s` then optional columns\n", program, header, required);
+        return -1;
+    }
+    memcpy(copy, rest, strlen(rest) + 1);
+    extra = *copy ? split(copy + 1, found, 64) : 0;
+    if (extra > count) {
+        fprintf(stderr, "%s: header = %s: too many columns\n", program, header);
+        return -1;
+    }
+    for (j = 0; j < extra; j++) {
+        for (k = 0; k < count && strcmp(found[j], names[k]) != 0; k++) {}
+        if (k == count || field_of[k] >= 0) {
+            fprintf(stderr, "%s: header = %s: `%s` is no optional column or repeats\n", program, header, found[j]);
+            return -1;
+        }
+        field_of[k] = columns + j;
+    }
+    return columns + extra;
 }
 
 #endif

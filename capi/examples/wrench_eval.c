@@ -1,14 +1,17 @@
 /*
- * wrench_eval: the C twin of `contact_eval wrench` (the wrench contract of contensou::dynamic).
+ * wrench_eval: the C twin of `contact_eval wrench` (the wrench contract of contensou::dynamic)
+ * and, with the first argument `jacobian`, of `contact_eval jacobian`.
  *
- *   wrench_eval [--law best|simplified|pade|ellipsoid|coulomb|table|blend|fastsim|fastsim-16]
+ *   wrench_eval [jacobian]
+ *               [--law best|simplified|pade|ellipsoid|coulomb|table|blend|fastsim|fastsim-16]
  *               [--form fixed|varying] [--precision f32|f64] < in.csv > out.csv
  *
  * stdin: the header row P,Q,estar,cd,f,delta,h,hdot,vx,vy,omega, then any of the optional
  * rolling columns G,nu,vrx,vry (each at most once, any order), then one state per row; stdout:
- * the inputs echoed, then N,Fx,Fy,Tz,a,b,e2. Without optional columns the calls are
- * contensou_contact_new_* / _wrench_*; with them, contensou_contact_new_rolling_* (G, nu; NULL
- * when absent) and contensou_contact_wrench_rolling_* (vrx, vry; 0 when absent). Floats print with %.9g (f32) or %.17g (f64), so
+ * the inputs echoed, then N,Fx,Fy,Tz,a,b,e2 (`jacobian`: N,Fx,Fy,Tz,dN_dh,...,dTz_domega). Without
+ * optional columns the calls are contensou_contact_new_* / _wrench_* (_jacobian_*); with them,
+ * contensou_contact_new_rolling_* (G, nu; NULL when absent) and
+ * contensou_contact_wrench_rolling_* (_jacobian_rolling_*; vrx, vry; 0 when absent). Floats print with %.9g (f32) or %.17g (f64), so
  * they read back to the same bits. Blank lines are skipped (row K is line K + 1). The first bad
  * row stops the run: "wrench_eval: row K: column = value: message (status code NAME)" on
  * stderr, exit 1. Usage errors exit 2. Defaults: best, fixed, f64 (as contact_eval).
@@ -26,14 +29,26 @@
 #define COLUMNS 11
 #define OPTIONAL 4
 #define MAX_FIELDS (COLUMNS + OPTIONAL)
-#define OUTPUTS 7
+#define MAX_OUTPUTS 24
 static const char *const INPUT_NAMES = "P,Q,estar,cd,f,delta,h,hdot,vx,vy,omega";
 static const char *const OUTPUT_NAMES = "N,Fx,Fy,Tz,a,b,e2";
+static const char *const JACOBIAN_NAMES =
+    "N,Fx,Fy,Tz,dN_dh,dN_dhdot,dN_dvx,dN_dvy,dN_domega,dFx_dh,dFx_dhdot,dFx_dvx,dFx_dvy,dFx_domega,"
+    "dFy_dh,dFy_dhdot,dFy_dvx,dFy_dvy,dFy_domega,dTz_dh,dTz_dhdot,dTz_dvx,dTz_dvy,dTz_domega";
+
+/* The outputs of a Jacobian (contensou_jacobian_f32 / _f64): the wrench, then d row by row. */
+#define JACOBIAN_OUT(out, j)                                                  \
+    do {                                                                      \
+        int r_, c_;                                                           \
+        (out)[0] = (j).n; (out)[1] = (j).fx; (out)[2] = (j).fy; (out)[3] = (j).tz; \
+        for (r_ = 0; r_ < 4; r_++)                                            \
+            for (c_ = 0; c_ < 5; c_++) (out)[4 + 5 * r_ + c_] = (j).d[r_][c_];  \
+    } while (0)
 /* The optional columns, in contensou_column order from CONTENSOU_COLUMN_G. */
 static const char *const OPTIONAL_NAMES[OPTIONAL] = {"G", "nu", "vrx", "vry"};
 
 static int usage(const char *why) {
-    fprintf(stderr, "wrench_eval: %s\nusage: wrench_eval [--law NAME] [--form fixed|varying] "
+    fprintf(stderr, "wrench_eval: %s\nusage: wrench_eval [jacobian] [--law NAME] [--form fixed|varying] "
                     "[--precision f32|f64] < in.csv > out.csv\n", why);
     return 2;
 }
@@ -47,7 +62,8 @@ static int fail_row(long row, const char *column, const char *value, contensou_s
 int main(int argc, char **argv) {
     contensou_law law = CONTENSOU_LAW_BEST;
     contensou_form form = CONTENSOU_FORM_FIXED;
-    int f32 = 0, i;
+    int f32 = 0, jacobian = argc > 1 && strcmp(argv[1], "jacobian") == 0;
+    int outputs = jacobian ? MAX_OUTPUTS : 7;
     static char line[4096], header[4096];
     static contensou_contact_f32 c32; /* caller-owned storage: static, no allocation */
     static contensou_contact_f64 c64;
@@ -57,59 +73,23 @@ int main(int argc, char **argv) {
     int field_of[OPTIONAL] = {-1, -1, -1, -1};
     long row = 0;
 
-    for (i = 1; i < argc; i += 2) {
-        const char *opt = argv[i], *val = i + 1 < argc ? argv[i + 1] : NULL;
-        if (!val) return usage("option without a value");
-        if (strcmp(opt, "--law") == 0) {
-            if (contensou_law_from_name(val, &law) != CONTENSOU_STATUS_OK || law == CONTENSOU_LAW_FULL_SLIP ||
-                law == CONTENSOU_LAW_LINEAR)
-                return usage("--law: unknown law");
-        } else if (strcmp(opt, "--form") == 0) {
-            if (contensou_form_from_name(val, &form) != CONTENSOU_STATUS_OK) return usage("--form: must be fixed or varying");
-        } else if (strcmp(opt, "--precision") == 0) {
-            if (strcmp(val, "f32") == 0) f32 = 1;
-            else if (strcmp(val, "f64") == 0) f32 = 0;
-            else return usage("--precision: must be f32 or f64");
-        } else {
-            return usage("unknown option");
-        }
+    {
+        /* `jacobian` takes argv[1]: the options start after it */
+        const char *why = contract_options(argc - jacobian, argv + jacobian, &law, &form, &f32);
+        if (why) return usage(why);
     }
-
     if (!fgets(line, sizeof line, stdin)) return usage("missing header row");
     memcpy(header, trim(line), strlen(trim(line)) + 1);
-    {
-        size_t n = strlen(INPUT_NAMES);
-        char *rest = header + n, *names[MAX_FIELDS + 1];
-        int extra, k, j;
-        char copy[sizeof header];
-        if (strncmp(header, INPUT_NAMES, n) != 0 || (*rest != '\0' && *rest != ',')) {
-            fprintf(stderr, "wrench_eval: header = %s: must be `%s` then any of G,nu,vrx,vry\n", header, INPUT_NAMES);
-            return 1;
-        }
-        memcpy(copy, rest, strlen(rest) + 1);
-        extra = *copy ? split(copy + 1, names, MAX_FIELDS + 1) : 0;
-        if (extra > OPTIONAL) {
-            fprintf(stderr, "wrench_eval: header = %s: too many columns\n", header);
-            return 1;
-        }
-        for (j = 0; j < extra; j++) {
-            for (k = 0; k < OPTIONAL && strcmp(names[j], OPTIONAL_NAMES[k]) != 0; k++) {}
-            if (k == OPTIONAL || field_of[k] >= 0) {
-                fprintf(stderr, "wrench_eval: header = %s: `%s` is no optional column or repeats (G,nu,vrx,vry)\n", header, names[j]);
-                return 1;
-            }
-            field_of[k] = COLUMNS + j;
-        }
-        fields_per_row = COLUMNS + extra;
-        has_contact_option = field_of[0] >= 0 || field_of[1] >= 0;
-        has_step_option = field_of[2] >= 0 || field_of[3] >= 0;
-    }
-    printf("%s,%s\n", header, OUTPUT_NAMES);
+    fields_per_row = optional_columns("wrench_eval", header, INPUT_NAMES, OPTIONAL_NAMES, OPTIONAL, field_of);
+    if (fields_per_row < 0) return 1;
+    has_contact_option = field_of[0] >= 0 || field_of[1] >= 0;
+    has_step_option = field_of[2] >= 0 || field_of[3] >= 0;
+    printf("%s,%s\n", header, jacobian ? JACOBIAN_NAMES : OUTPUT_NAMES);
 
     while (fgets(line, sizeof line, stdin)) {
         char copy[sizeof line];
         char *fields[MAX_FIELDS];
-        double v[MAX_FIELDS], out[OUTPUTS], opt[OPTIONAL];
+        double v[MAX_FIELDS], out[MAX_OUTPUTS], opt[OPTIONAL];
         contensou_column column = CONTENSOU_COLUMN_NONE;
         contensou_status s;
         int n, k, same_but_curvatures, bad_field;
@@ -156,10 +136,18 @@ int main(int argc, char **argv) {
                 s = contensou_contact_new_rolling_f32(&c32, &spec, field_of[0] >= 0 ? &g : NULL, field_of[1] >= 0 ? &nu : NULL,
                                                       law, form, &column);
             else s = contensou_contact_new_f32(&c32, &spec, law, form, &column);
-            if (s == CONTENSOU_STATUS_OK)
-                s = has_step_option ? contensou_contact_wrench_rolling_f32(&c32, &step, &roll, &w, &column)
-                                    : contensou_contact_wrench_f32(&c32, &step, &w, &column);
-            out[0] = w.n; out[1] = w.fx; out[2] = w.fy; out[3] = w.tz; out[4] = w.a; out[5] = w.b; out[6] = w.e2;
+            if (s == CONTENSOU_STATUS_OK && jacobian) {
+                contensou_jacobian_f32 j;
+                memset(&j, 0, sizeof j);
+                s = has_step_option ? contensou_contact_jacobian_rolling_f32(&c32, &step, &roll, &j, &column)
+                                    : contensou_contact_jacobian_f32(&c32, &step, &j, &column);
+                JACOBIAN_OUT(out, j);
+            } else {
+                if (s == CONTENSOU_STATUS_OK)
+                    s = has_step_option ? contensou_contact_wrench_rolling_f32(&c32, &step, &roll, &w, &column)
+                                        : contensou_contact_wrench_f32(&c32, &step, &w, &column);
+                out[0] = w.n; out[1] = w.fx; out[2] = w.fy; out[3] = w.tz; out[4] = w.a; out[5] = w.b; out[6] = w.e2;
+            }
         } else {
             contensou_spec_f64 spec;
             contensou_step_f64 step;
@@ -173,10 +161,18 @@ int main(int argc, char **argv) {
                 s = contensou_contact_new_rolling_f64(&c64, &spec, field_of[0] >= 0 ? &opt[0] : NULL,
                                                       field_of[1] >= 0 ? &opt[1] : NULL, law, form, &column);
             else s = contensou_contact_new_f64(&c64, &spec, law, form, &column);
-            if (s == CONTENSOU_STATUS_OK)
-                s = has_step_option ? contensou_contact_wrench_rolling_f64(&c64, &step, &roll, &w, &column)
-                                    : contensou_contact_wrench_f64(&c64, &step, &w, &column);
-            out[0] = w.n; out[1] = w.fx; out[2] = w.fy; out[3] = w.tz; out[4] = w.a; out[5] = w.b; out[6] = w.e2;
+            if (s == CONTENSOU_STATUS_OK && jacobian) {
+                contensou_jacobian_f64 j;
+                memset(&j, 0, sizeof j);
+                s = has_step_option ? contensou_contact_jacobian_rolling_f64(&c64, &step, &roll, &j, &column)
+                                    : contensou_contact_jacobian_f64(&c64, &step, &j, &column);
+                JACOBIAN_OUT(out, j);
+            } else {
+                if (s == CONTENSOU_STATUS_OK)
+                    s = has_step_option ? contensou_contact_wrench_rolling_f64(&c64, &step, &roll, &w, &column)
+                                        : contensou_contact_wrench_f64(&c64, &step, &w, &column);
+                out[0] = w.n; out[1] = w.fx; out[2] = w.fy; out[3] = w.tz; out[4] = w.a; out[5] = w.b; out[6] = w.e2;
+            }
         }
         if (s != CONTENSOU_STATUS_OK) {
             bad_field = column < COLUMNS ? (int)column
@@ -187,7 +183,7 @@ int main(int argc, char **argv) {
         memcpy(prev, v, sizeof v);
         have_prev = 1;
         for (k = 0; k < fields_per_row; k++) printf(f32 ? "%.9g," : "%.17g,", v[k]);
-        for (k = 0; k < OUTPUTS; k++) printf(f32 ? "%.9g%s" : "%.17g%s", out[k], k + 1 < OUTPUTS ? "," : "\n");
+        for (k = 0; k < outputs; k++) printf(f32 ? "%.9g%s" : "%.17g%s", out[k], k + 1 < outputs ? "," : "\n");
     }
     return fflush(stdout) == 0 ? 0 : 1;
 }

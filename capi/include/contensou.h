@@ -29,6 +29,9 @@
 // Bytes of [`contensou_rolling_f64`] (3,568 bytes used in this version on 64-bit hosts).
 #define CONTENSOU_ROLLING_F64_SIZE 8192
 
+// The most contacts one `contensou_step_many_*` call solves together (W of 32 × 32).
+#define CONTENSOU_STEP_MAX_CONTACTS 8
+
 // What a call did: [`contensou_status::Ok`] or why it refused (nothing was written then,
 // except the `column` out-parameter).
 enum contensou_status
@@ -69,6 +72,22 @@ enum contensou_status
   // [`Error::ColumnLengthMismatch`] (batch columns; not returned by this API's calls,
   // whose columns share one `rows`).
   CONTENSOU_STATUS_COLUMN_LENGTH_MISMATCH = 15,
+  // [`Error::StepNotPositive`]: a time step Δt ≤ 0 (step-aware calls).
+  CONTENSOU_STATUS_STEP_NOT_POSITIVE = 16,
+  // [`Error::InverseMassNotSymmetric`]: the inverse-mass matrix W is not symmetric within
+  // the library's stated tolerance (step-aware calls).
+  CONTENSOU_STATUS_INVERSE_MASS_NOT_SYMMETRIC = 17,
+  // [`Error::InverseMassNotPositiveSemidefinite`]: W is not positive semidefinite within
+  // the library's stated tolerance (step-aware calls).
+  CONTENSOU_STATUS_INVERSE_MASS_NOT_POSITIVE_SEMIDEFINITE = 18,
+  // [`Error::MassNotPositive`]: a body's mass ≤ 0 (building W from bodies).
+  CONTENSOU_STATUS_MASS_NOT_POSITIVE = 19,
+  // [`Error::InertiaNotPositiveDefinite`]: a body's inertia tensor is not symmetric
+  // positive definite (building W from bodies).
+  CONTENSOU_STATUS_INERTIA_NOT_POSITIVE_DEFINITE = 20,
+  // [`Error::BodyIndexInvalid`]: a contact names a body index out of range, or the same
+  // body as A and B (building W from bodies).
+  CONTENSOU_STATUS_BODY_INDEX_INVALID = 21,
   // A pointer parameter that must not be NULL was NULL.
   CONTENSOU_STATUS_NULL_POINTER = 100,
   // A pointer parameter is not aligned for its type (storage: 8 bytes).
@@ -93,6 +112,9 @@ enum contensou_status
   // A `contensou::Error` variant newer than this C API (the enum is non-exhaustive). Never
   // returned by this build: every variant of its `contensou` is mapped.
   CONTENSOU_STATUS_UNKNOWN_ERROR = 108,
+  // A contact count outside 1 … `CONTENSOU_STEP_MAX_CONTACTS` (8) for
+  // `contensou_step_many_*`.
+  CONTENSOU_STATUS_CONTACT_COUNT_OUT_OF_RANGE = 109,
 };
 #ifndef __cplusplus
 typedef uint32_t contensou_status;
@@ -321,6 +343,60 @@ typedef struct {
   double *e2;
 } contensou_wrench_columns_f64;
 
+// The wrench (N, F_x, F_y, T_z) on body B of one step and its derivatives with respect to
+// the step's inputs q = (h, ḣ, v_x, v_y, ω) ([`contensou::jacobian::Jacobian`]): the outputs
+// `N,Fx,Fy,Tz,dN_dh,…,dTz_domega` of `contact_eval jacobian`, in that order (`d` row by
+// row). SI units: `d[0][0]` = ∂N/∂h in N/m, `d[3][4]` = ∂T_z/∂ω in N·m·s, ….
+typedef struct {
+  // Normal force N (N): bit for bit `contensou_contact_wrench_*`'s.
+  float n;
+  // Friction force F_x (N).
+  float fx;
+  // Friction force F_y (N).
+  float fy;
+  // Drilling torque T_z (N·m).
+  float tz;
+  // `d[i][j]` = ∂wᵢ/∂qⱼ: rows i = (N, F_x, F_y, T_z), columns j = (h, ḣ, v_x, v_y, ω).
+  float d[4][5];
+} contensou_jacobian_f32;
+
+// The wrench (N, F_x, F_y, T_z) on body B of one step and its derivatives with respect to
+// the step's inputs q = (h, ḣ, v_x, v_y, ω) ([`contensou::jacobian::Jacobian`]): the outputs
+// `N,Fx,Fy,Tz,dN_dh,…,dTz_domega` of `contact_eval jacobian`, in that order (`d` row by
+// row). SI units: `d[0][0]` = ∂N/∂h in N/m, `d[3][4]` = ∂T_z/∂ω in N·m·s, ….
+typedef struct {
+  // Normal force N (N): bit for bit `contensou_contact_wrench_*`'s.
+  double n;
+  // Friction force F_x (N).
+  double fx;
+  // Friction force F_y (N).
+  double fy;
+  // Drilling torque T_z (N·m).
+  double tz;
+  // `d[i][j]` = ∂wᵢ/∂qⱼ: rows i = (N, F_x, F_y, T_z), columns j = (h, ḣ, v_x, v_y, ω).
+  double d[4][5];
+} contensou_jacobian_f64;
+
+// The optional step columns `vrx, vry` of the rolling laws
+// ([`contensou::dynamic::RollingStep`]): the contact's rolling velocity in the contact frame
+// (x the major axis), m/s. The sliding laws ignore it.
+typedef struct {
+  // V_x (m/s), along the major axis.
+  float vrx;
+  // V_y (m/s).
+  float vry;
+} contensou_rolling_step_f32;
+
+// The optional step columns `vrx, vry` of the rolling laws
+// ([`contensou::dynamic::RollingStep`]): the contact's rolling velocity in the contact frame
+// (x the major axis), m/s. The sliding laws ignore it.
+typedef struct {
+  // V_x (m/s), along the major axis.
+  double vrx;
+  // V_y (m/s).
+  double vry;
+} contensou_rolling_step_f64;
+
 // A column of `contact_eval rolling` (`a,b,G,nu,f,N,V,xi,eta,phi`), the shape a/b, or
 // [`CONTENSOU_ROLLING_COLUMN_NONE`]: which input a rolling call's error came from.
 typedef uint32_t contensou_rolling_column;
@@ -410,26 +486,6 @@ typedef struct {
   double mz;
 } contensou_rolling_output_f64;
 
-// The optional step columns `vrx, vry` of the rolling laws
-// ([`contensou::dynamic::RollingStep`]): the contact's rolling velocity in the contact frame
-// (x the major axis), m/s. The sliding laws ignore it.
-typedef struct {
-  // V_x (m/s), along the major axis.
-  float vrx;
-  // V_y (m/s).
-  float vry;
-} contensou_rolling_step_f32;
-
-// The optional step columns `vrx, vry` of the rolling laws
-// ([`contensou::dynamic::RollingStep`]): the contact's rolling velocity in the contact frame
-// (x the major axis), m/s. The sliding laws ignore it.
-typedef struct {
-  // V_x (m/s), along the major axis.
-  double vrx;
-  // V_y (m/s).
-  double vry;
-} contensou_rolling_step_f64;
-
 // The rolling step columns of `contensou_contact_wrench_many_rolling_*`: two caller arrays
 // of `rows` values each (`vrx, vry`).
 typedef struct {
@@ -447,6 +503,132 @@ typedef struct {
   // V_y (m/s) per row.
   const double *vry;
 } contensou_rolling_step_columns_f64;
+
+// W's upper triangle over u = (v_n, v_x, v_y, ω) (v_n = −ḣ; `w` = spin): the columns
+// `w_nn,w_nx,w_ny,w_nw,w_xx,w_xy,w_xw,w_yy,w_yw,w_ww` of `contact_eval step`. An impulse
+// Δt·(N, F_x, F_y, T_z) on body B changes its contact velocity u by Δt·W·(N, F_x, F_y, T_z).
+typedef struct {
+  // W_nn (1/kg).
+  float nn;
+  // W_nx.
+  float nx;
+  // W_ny.
+  float ny;
+  // W_nω.
+  float nw;
+  // W_xx.
+  float xx;
+  // W_xy.
+  float xy;
+  // W_xω.
+  float xw;
+  // W_yy.
+  float yy;
+  // W_yω.
+  float yw;
+  // W_ωω (1/(kg·m²)).
+  float ww;
+} contensou_inverse_mass_f32;
+
+// A contact velocity u = (v_n, v_x, v_y, ω) of body B relative to A (v_n = −ḣ: separation
+// speed), contact frame: the free end-of-step velocity `un_free,ux_free,uy_free,uw_free` of
+// `contact_eval step` — what u would be at the end of the step without this contact.
+typedef struct {
+  // v_n = −ḣ (m/s).
+  float vn;
+  // v_x (m/s).
+  float vx;
+  // v_y (m/s).
+  float vy;
+  // ω (rad/s).
+  float omega;
+} contensou_step_velocity_f32;
+
+// The step-aware wrench (N, F_x, F_y, T_z) on B from A, contact frame: the outputs
+// `N,Fx,Fy,Tz` of `contact_eval step`, to apply over the whole step.
+typedef struct {
+  // N (N).
+  float n;
+  // F_x (N).
+  float fx;
+  // F_y (N).
+  float fy;
+  // T_z (N·m).
+  float tz;
+} contensou_step_wrench_f32;
+
+// W's upper triangle over u = (v_n, v_x, v_y, ω) (v_n = −ḣ; `w` = spin): the columns
+// `w_nn,w_nx,w_ny,w_nw,w_xx,w_xy,w_xw,w_yy,w_yw,w_ww` of `contact_eval step`. An impulse
+// Δt·(N, F_x, F_y, T_z) on body B changes its contact velocity u by Δt·W·(N, F_x, F_y, T_z).
+typedef struct {
+  // W_nn (1/kg).
+  double nn;
+  // W_nx.
+  double nx;
+  // W_ny.
+  double ny;
+  // W_nω.
+  double nw;
+  // W_xx.
+  double xx;
+  // W_xy.
+  double xy;
+  // W_xω.
+  double xw;
+  // W_yy.
+  double yy;
+  // W_yω.
+  double yw;
+  // W_ωω (1/(kg·m²)).
+  double ww;
+} contensou_inverse_mass_f64;
+
+// A contact velocity u = (v_n, v_x, v_y, ω) of body B relative to A (v_n = −ḣ: separation
+// speed), contact frame: the free end-of-step velocity `un_free,ux_free,uy_free,uw_free` of
+// `contact_eval step` — what u would be at the end of the step without this contact.
+typedef struct {
+  // v_n = −ḣ (m/s).
+  double vn;
+  // v_x (m/s).
+  double vx;
+  // v_y (m/s).
+  double vy;
+  // ω (rad/s).
+  double omega;
+} contensou_step_velocity_f64;
+
+// The step-aware wrench (N, F_x, F_y, T_z) on B from A, contact frame: the outputs
+// `N,Fx,Fy,Tz` of `contact_eval step`, to apply over the whole step.
+typedef struct {
+  // N (N).
+  double n;
+  // F_x (N).
+  double fx;
+  // F_y (N).
+  double fy;
+  // T_z (N·m).
+  double tz;
+} contensou_step_wrench_f64;
+
+// One contact's free end-of-step motion for `contensou_step_many_*`: its velocity u and its
+// approach h at the end of the step without the call's contacts (gravity and every other
+// force; h from the caller's prediction of the drifted pose, or h − Δt·v_n).
+typedef struct {
+  // The free end-of-step velocity.
+  contensou_step_velocity_f32 u;
+  // The free end-of-step approach h (m).
+  float h;
+} contensou_step_free_f32;
+
+// One contact's free end-of-step motion for `contensou_step_many_*`: its velocity u and its
+// approach h at the end of the step without the call's contacts (gravity and every other
+// force; h from the caller's prediction of the drifted pose, or h − Δt·v_n).
+typedef struct {
+  // The free end-of-step velocity.
+  contensou_step_velocity_f64 u;
+  // The free end-of-step approach h (m).
+  double h;
+} contensou_step_free_f64;
 
 // `best`, the exact-grade default.
 #define CONTENSOU_LAW_BEST 0
@@ -579,6 +761,22 @@ typedef struct {
 // No column: success, or an error not tied to an input (a NULL pointer, …).
 #define CONTENSOU_ROLLING_COLUMN_NONE 11
 
+// `dt` (`contact_eval step`; after the rolling columns).
+#define CONTENSOU_COLUMN_DT 16
+
+// `w_nn`; `w_nx` … `w_ww` follow (17 … 26), in the order of [`contensou_inverse_mass`].
+#define CONTENSOU_COLUMN_W_NN 17
+
+// `W`: the inverse mass as a whole (not symmetric or not positive semidefinite; an entry of
+// the full matrix of `contensou_step_many_*` that is not finite).
+#define CONTENSOU_COLUMN_W 27
+
+// `un_free`; `ux_free`, `uy_free`, `uw_free` follow (29 … 31).
+#define CONTENSOU_COLUMN_UN_FREE 28
+
+// `h_free`: a contact's free end-of-step approach (`contensou_step_many_*`).
+#define CONTENSOU_COLUMN_H_FREE 32
+
 #ifdef __cplusplus
 extern "C" {
 #endif // __cplusplus
@@ -591,7 +789,8 @@ const char *contensou_status_message(uint32_t status);
 const char *contensou_column_name(contensou_column column);
 
 // The law of a name (`"best"`, `"simplified"`, `"pade"`, `"ellipsoid"`, `"coulomb"`; the
-// rolling laws `"table"`, `"blend"`, `"fastsim"`, `"fastsim-16"`, `"full-slip"`, `"linear"`).
+// rolling laws `"table"`, `"blend"`, `"fastsim"`, `"fastsim-16"`, `"full-slip"`, `"linear"`;
+// `"rolling"` names the default rolling law, today `"table"`).
 //
 // # Safety
 // `name` is NULL or a NUL-terminated string; `law` is NULL or writable.
@@ -783,6 +982,53 @@ contensou_status contensou_contact_wrench_many_f64(const contensou_contact_f64 *
                                                    size_t *row,
                                                    contensou_column *column);
 
+// The wrench of one step and its Jacobian ([`contensou_jacobian`]): `step` validated as
+// by [`contensou_contact_wrench_f32`] (the same errors and columns), N, F_x, F_y, T_z bit
+// for bit its values, the derivatives by forward-mode dual numbers through the library's
+// own code (`contensou::jacobian`: at a law's kink the derivative of the branch the value
+// takes; h ≤ 0 gives zeros). A rolling law takes V = 0
+// ([`contensou_contact_jacobian_rolling_f32`]). Bit for bit `contact_eval jacobian`.
+// Fixed cost: ≈ 8× the wrench's (≈ 1,540 M4F `float` instructions for fixed `best`; the wrench 184).
+//
+// # Safety
+// `storage` is NULL or readable; `step` NULL or readable; `out`, `column` NULL or writable.
+contensou_status contensou_contact_jacobian_f32(const contensou_contact_f32 *storage,
+                                                const contensou_step_f32 *step,
+                                                contensou_jacobian_f32 *out,
+                                                contensou_column *column);
+
+// [`contensou_contact_jacobian_f32`] in `double`.
+//
+// # Safety
+// As [`contensou_contact_jacobian_f32`].
+contensou_status contensou_contact_jacobian_f64(const contensou_contact_f64 *storage,
+                                                const contensou_step_f64 *step,
+                                                contensou_jacobian_f64 *out,
+                                                contensou_column *column);
+
+// [`contensou_contact_jacobian_f32`] with the rolling velocity `rolling` (`vrx, vry`, m/s
+// in the contact frame; NULL: 0), read and validated after the step by the rolling laws
+// only (errors name `CONTENSOU_COLUMN_VRX` / `_VRY`); V is held fixed (no derivative with
+// respect to it). Bit for bit `contact_eval jacobian` with the columns `vrx, vry`.
+//
+// # Safety
+// As [`contensou_contact_jacobian_f32`]; `rolling` NULL or readable.
+contensou_status contensou_contact_jacobian_rolling_f32(const contensou_contact_f32 *storage,
+                                                        const contensou_step_f32 *step,
+                                                        const contensou_rolling_step_f32 *rolling,
+                                                        contensou_jacobian_f32 *out,
+                                                        contensou_column *column);
+
+// [`contensou_contact_jacobian_rolling_f32`] in `double`.
+//
+// # Safety
+// As [`contensou_contact_jacobian_rolling_f32`].
+contensou_status contensou_contact_jacobian_rolling_f64(const contensou_contact_f64 *storage,
+                                                        const contensou_step_f64 *step,
+                                                        const contensou_rolling_step_f64 *rolling,
+                                                        contensou_jacobian_f64 *out,
+                                                        contensou_column *column);
+
 // The name of a rolling column (`"a"`, …, `"phi"`, `"a/b"`): a static NUL-terminated
 // string, `""` for `CONTENSOU_ROLLING_COLUMN_NONE` and unknown values.
 const char *contensou_rolling_column_name(contensou_rolling_column column);
@@ -915,6 +1161,97 @@ contensou_status contensou_contact_wrench_many_rolling_f64(const contensou_conta
                                                            const contensou_wrench_columns_f64 *out,
                                                            size_t *row,
                                                            contensou_column *column);
+
+// One contact's step-aware wrench: bit for bit `contact_eval step` on the row made of the
+// contact's columns (`storage`, built by [`contensou_contact_new_f32`] or its rolling
+// variant), the start `step` (`h,hdot,vx,vy,omega`), `rolling` (`vrx,vry`, read by the
+// rolling laws; NULL: 0), `dt` (s, > 0), `w` (W's upper triangle `w_nn … w_ww`: symmetric
+// positive semidefinite by construction, checked within the library's tolerance) and
+// `u_free` (`un_free,ux_free,uy_free,uw_free`: the end-of-step velocity without this
+// contact; NULL: the start velocity (−ḣ, v_x, v_y, ω), as the contract's absent columns).
+// The free end approach is h − Δt·u_free,n. Writes N, F_x, F_y, T_z on B into `*out`.
+//
+// Errors: the start step as [`contensou_contact_wrench_rolling_f32`] (its columns), `dt`
+// ≤ 0 or not finite (`STEP_NOT_POSITIVE` / `NON_FINITE`, `CONTENSOU_COLUMN_DT`), a W entry
+// not finite (`NON_FINITE`, its column `CONTENSOU_COLUMN_W_NN` + i), W not symmetric or not
+// positive semidefinite (`INVERSE_MASS_NOT_*`, `CONTENSOU_COLUMN_W`), a free velocity not
+// finite (`CONTENSOU_COLUMN_UN_FREE` + i). Fixed cost (the library's step_wrench: at most
+// a fixed number of wrench and Jacobian evaluations and 4 × 4 solves).
+//
+// # Safety
+// `storage`, `step`, `w` NULL or readable; `rolling`, `u_free` NULL or readable; `out`,
+// `column` NULL or writable.
+contensou_status contensou_contact_step_f32(const contensou_contact_f32 *storage,
+                                            const contensou_step_f32 *step,
+                                            const contensou_rolling_step_f32 *rolling,
+                                            float dt,
+                                            const contensou_inverse_mass_f32 *w,
+                                            const contensou_step_velocity_f32 *u_free,
+                                            contensou_step_wrench_f32 *out,
+                                            contensou_column *column);
+
+// [`contensou_contact_step_f32`] in `double`.
+//
+// # Safety
+// As [`contensou_contact_step_f32`].
+contensou_status contensou_contact_step_f64(const contensou_contact_f64 *storage,
+                                            const contensou_step_f64 *step,
+                                            const contensou_rolling_step_f64 *rolling,
+                                            double dt,
+                                            const contensou_inverse_mass_f64 *w,
+                                            const contensou_step_velocity_f64 *u_free,
+                                            contensou_step_wrench_f64 *out,
+                                            contensou_column *column);
+
+// The step-aware wrenches of `k` ∈ 1 … `CONTENSOU_STEP_MAX_CONTACTS` (8) contacts that
+// share bodies, in one solve (`contensou::step::step_wrenches`): `contacts[i]` (each built
+// by [`contensou_contact_new_f32`] or its rolling variant; one may appear twice), their
+// start `steps[i]`, rolling velocities `rolling[i]` (NULL: 0 for all), the step `dt`, `w`
+// the contacts' inverse mass over (u₀, …, u_{k−1}), u_i = (v_n, v_x, v_y, ω) of contact i:
+// 4k × 4k values row-major, the cross blocks W_ij (an impulse on contact j's B changes
+// u_i), and `free[i]` the end-of-step velocity and approach of contact i without the k
+// contacts (NULL: each contact's start velocity, approach h + Δt·ḣ). Contacts whose
+// solved normal force would pull are dropped from the solve (an active set), not clamped
+// afterwards. k = 1 with `free[0].h` = h − Δt·v_n is [`contensou_contact_step_f32`]'s
+// value bit for bit.
+//
+// Errors: `k` = 0 or > 8: `CONTACT_COUNT_OUT_OF_RANGE`; else as
+// [`contensou_contact_step_f32`] (the columns of its row; a W entry not finite:
+// `CONTENSOU_COLUMN_W`; a free approach not finite: `CONTENSOU_COLUMN_H_FREE`), the
+// contact it is about in `*index` (k for an error of no contact and on success); nothing
+// is written to `out` then. `index`, `column` may be NULL. Fixed cost per k (W's solve
+// grows as (4k)³).
+//
+// # Safety
+// `contacts`, `steps`, `free` NULL or holding `k` readable values (each contact pointer
+// NULL or readable); `rolling` NULL or holding `k` values; `w` NULL or holding 16·k²
+// values; `out` NULL or holding `k` writable values, not overlapping the inputs; `index`,
+// `column` NULL or writable.
+contensou_status contensou_step_many_f32(const contensou_contact_f32 *const *contacts,
+                                         size_t k,
+                                         const contensou_step_f32 *steps,
+                                         const contensou_rolling_step_f32 *rolling,
+                                         float dt,
+                                         const float *w,
+                                         const contensou_step_free_f32 *free,
+                                         contensou_step_wrench_f32 *out,
+                                         size_t *index,
+                                         contensou_column *column);
+
+// [`contensou_step_many_f32`] in `double`.
+//
+// # Safety
+// As [`contensou_step_many_f32`].
+contensou_status contensou_step_many_f64(const contensou_contact_f64 *const *contacts,
+                                         size_t k,
+                                         const contensou_step_f64 *steps,
+                                         const contensou_rolling_step_f64 *rolling,
+                                         double dt,
+                                         const double *w,
+                                         const contensou_step_free_f64 *free,
+                                         contensou_step_wrench_f64 *out,
+                                         size_t *index,
+                                         contensou_column *column);
 
 #ifdef __cplusplus
 } // extern "C"

@@ -48,8 +48,12 @@ macro_rules! twins {
     };
 }
 
+mod jacobian;
 mod rolling;
+mod step;
+pub use jacobian::*;
 pub use rolling::*;
+pub use step::*;
 
 /// The message of a status code: a static NUL-terminated string (also for unknown codes).
 #[no_mangle]
@@ -65,7 +69,8 @@ pub extern "C" fn contensou_column_name(column: contensou_column) -> *const c_ch
 }
 
 /// The law of a name (`"best"`, `"simplified"`, `"pade"`, `"ellipsoid"`, `"coulomb"`; the
-/// rolling laws `"table"`, `"blend"`, `"fastsim"`, `"fastsim-16"`, `"full-slip"`, `"linear"`).
+/// rolling laws `"table"`, `"blend"`, `"fastsim"`, `"fastsim-16"`, `"full-slip"`, `"linear"`;
+/// `"rolling"` names the default rolling law, today `"table"`).
 ///
 /// # Safety
 /// `name` is NULL or a NUL-terminated string; `law` is NULL or writable.

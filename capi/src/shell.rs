@@ -15,10 +15,14 @@ use crate::cstr::c_str;
 use crate::status::contensou_status as S;
 use crate::types::*;
 
+mod jacobian;
 mod many;
 mod rolling;
+mod step;
+pub(crate) use jacobian::contact_jacobian_rolling;
 pub(crate) use many::{contact_wrench_many, contact_wrench_many_rolling};
 pub(crate) use rolling::{rolling_column_name, rolling_law_of, rolling_new, rolling_wrench};
+pub(crate) use step::{contact_step, step_many};
 
 /// A precision of the C API: its storage type and the tag a constructor writes.
 pub(crate) trait Precision: Real {
@@ -505,10 +509,11 @@ const COLUMN_NAMES: [&CStr; 16] = {
     ]
 };
 
-/// The name of a column code (`""` for `CONTENSOU_COLUMN_NONE` and unknown codes).
+/// The name of a column code (`""` for `CONTENSOU_COLUMN_NONE` and unknown codes; the step's
+/// columns from `CONTENSOU_COLUMN_DT`).
 pub(crate) fn column_name(column: contensou_column) -> *const c_char {
     match COLUMN_NAMES.get(column as usize) {
         Some(c) => c.as_ptr(),
-        None => c_str!("").as_ptr(),
+        None => step::step_column_name(column).as_ptr(),
     }
 }

@@ -1,6 +1,6 @@
 //! The one status code of every fallible function, and its message.
 //!
-//! Codes 1–15 map one to one to the variants of [`contensou::Error`] (their messages are
+//! Codes 1–21 map one to one to the variants of [`contensou::Error`] (their messages are
 //! [`contensou::Error::as_str`]); codes from 100 are the C boundary's own.
 
 use core::ffi::{c_char, CStr};
@@ -47,6 +47,22 @@ pub enum contensou_status {
     /// [`Error::ColumnLengthMismatch`] (batch columns; not returned by this API's calls,
     /// whose columns share one `rows`).
     ColumnLengthMismatch = 15,
+    /// [`Error::StepNotPositive`]: a time step Δt ≤ 0 (step-aware calls).
+    StepNotPositive = 16,
+    /// [`Error::InverseMassNotSymmetric`]: the inverse-mass matrix W is not symmetric within
+    /// the library's stated tolerance (step-aware calls).
+    InverseMassNotSymmetric = 17,
+    /// [`Error::InverseMassNotPositiveSemidefinite`]: W is not positive semidefinite within
+    /// the library's stated tolerance (step-aware calls).
+    InverseMassNotPositiveSemidefinite = 18,
+    /// [`Error::MassNotPositive`]: a body's mass ≤ 0 (building W from bodies).
+    MassNotPositive = 19,
+    /// [`Error::InertiaNotPositiveDefinite`]: a body's inertia tensor is not symmetric
+    /// positive definite (building W from bodies).
+    InertiaNotPositiveDefinite = 20,
+    /// [`Error::BodyIndexInvalid`]: a contact names a body index out of range, or the same
+    /// body as A and B (building W from bodies).
+    BodyIndexInvalid = 21,
     /// A pointer parameter that must not be NULL was NULL.
     NullPointer = 100,
     /// A pointer parameter is not aligned for its type (storage: 8 bytes).
@@ -71,6 +87,9 @@ pub enum contensou_status {
     /// A `contensou::Error` variant newer than this C API (the enum is non-exhaustive). Never
     /// returned by this build: every variant of its `contensou` is mapped.
     UnknownError = 108,
+    /// A contact count outside 1 … `CONTENSOU_STEP_MAX_CONTACTS` (8) for
+    /// `contensou_step_many_*`.
+    ContactCountOutOfRange = 109,
 }
 
 impl From<Error> for contensou_status {
@@ -91,6 +110,14 @@ impl From<Error> for contensou_status {
             Error::RollingPoissonRatioOutOfRange => contensou_status::RollingPoissonRatioOutOfRange,
             Error::RollingAspectOutOfRange => contensou_status::RollingAspectOutOfRange,
             Error::ColumnLengthMismatch => contensou_status::ColumnLengthMismatch,
+            Error::StepNotPositive => contensou_status::StepNotPositive,
+            Error::InverseMassNotSymmetric => contensou_status::InverseMassNotSymmetric,
+            Error::InverseMassNotPositiveSemidefinite => {
+                contensou_status::InverseMassNotPositiveSemidefinite
+            }
+            Error::MassNotPositive => contensou_status::MassNotPositive,
+            Error::InertiaNotPositiveDefinite => contensou_status::InertiaNotPositiveDefinite,
+            Error::BodyIndexInvalid => contensou_status::BodyIndexInvalid,
             _ => contensou_status::UnknownError,
         }
     }
@@ -107,7 +134,7 @@ impl contensou_status {
     /// The message of a raw code (any `u32`: unknown codes get a message too).
     pub fn message_of(code: u32) -> &'static CStr {
         use contensou_status as S;
-        const ALL: [contensou_status; 25] = [
+        const ALL: [contensou_status; 32] = [
             S::Ok,
             S::NonFinite,
             S::EllipticParameterOutOfDomain,
@@ -124,6 +151,12 @@ impl contensou_status {
             S::RollingPoissonRatioOutOfRange,
             S::RollingAspectOutOfRange,
             S::ColumnLengthMismatch,
+            S::StepNotPositive,
+            S::InverseMassNotSymmetric,
+            S::InverseMassNotPositiveSemidefinite,
+            S::MassNotPositive,
+            S::InertiaNotPositiveDefinite,
+            S::BodyIndexInvalid,
             S::NullPointer,
             S::Misaligned,
             S::NotInitialized,
@@ -133,6 +166,7 @@ impl contensou_status {
             S::UnknownName,
             S::Panic,
             S::UnknownError,
+            S::ContactCountOutOfRange,
         ];
         match ALL.into_iter().find(|s| *s as u32 == code) {
             Some(s) => s.message(),
@@ -162,6 +196,14 @@ impl contensou_status {
             }
             S::RollingAspectOutOfRange => error_message!(Error::RollingAspectOutOfRange),
             S::ColumnLengthMismatch => error_message!(Error::ColumnLengthMismatch),
+            S::StepNotPositive => error_message!(Error::StepNotPositive),
+            S::InverseMassNotSymmetric => error_message!(Error::InverseMassNotSymmetric),
+            S::InverseMassNotPositiveSemidefinite => {
+                error_message!(Error::InverseMassNotPositiveSemidefinite)
+            }
+            S::MassNotPositive => error_message!(Error::MassNotPositive),
+            S::InertiaNotPositiveDefinite => error_message!(Error::InertiaNotPositiveDefinite),
+            S::BodyIndexInvalid => error_message!(Error::BodyIndexInvalid),
             S::NullPointer => c_str!("a pointer parameter is NULL"),
             S::Misaligned => c_str!("a pointer parameter is misaligned for its type"),
             S::NotInitialized => {
@@ -175,6 +217,9 @@ impl contensou_status {
             S::UnknownName => c_str!("unknown law or form name"),
             S::Panic => c_str!("panic caught at the C boundary (reserved: cannot happen)"),
             S::UnknownError => c_str!("contensou error unknown to this C API version"),
+            S::ContactCountOutOfRange => {
+                c_str!("contact count outside 1 ... CONTENSOU_STEP_MAX_CONTACTS (8)")
+            }
         }
     }
 

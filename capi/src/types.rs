@@ -5,8 +5,12 @@
 
 use contensou::dynamic::DynContact;
 
+mod jacobian;
 mod rolling;
+mod step;
+pub use jacobian::*;
 pub use rolling::*;
+pub use step::*;
 
 /// The contact columns `P,Q,estar,cd,f,delta` of the contract ([`contensou::dynamic::Spec`]).
 #[repr(C)]

@@ -40,6 +40,12 @@ fn every_library_error_has_its_own_code_and_the_library_message() {
         Error::RollingPoissonRatioOutOfRange,
         Error::RollingAspectOutOfRange,
         Error::ColumnLengthMismatch,
+        Error::StepNotPositive,
+        Error::InverseMassNotSymmetric,
+        Error::InverseMassNotPositiveSemidefinite,
+        Error::MassNotPositive,
+        Error::InertiaNotPositiveDefinite,
+        Error::BodyIndexInvalid,
     ];
     let mut codes: Vec<u32> = all.iter().map(|&e| S::from(e) as u32).collect();
     for (e, &c) in all.iter().zip(&codes) {

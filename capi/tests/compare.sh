@@ -1,13 +1,14 @@
 #!/usr/bin/env bash
 # The C twin (examples/wrench_eval.c, linked to the host staticlib) against the Rust contract
-# (`contact_eval wrench`), bit for bit: the same rows (examples/bits.rs `gen`: every patch
+# (`contact_eval wrench`, and with `jacobian` `contact_eval jacobian`), bit for bit: the same rows (examples/bits.rs `gen`: every patch
 # shape, damping/friction/slip regime, contact loss, valid extremes) through every law × form
 # × precision; every field of both outputs is parsed in the run's precision and must have the
 # same bits. Then the error paths (`bits bad`): both stop at the same row with exit 1 and print
 # the same rows before it. Usage: capi/tests/compare.sh (after capi/build.sh, or it builds).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-[[ -x target/release/wrench_eval && -x target/release/wrench_eval-san && -x target/release/rolling_eval ]] || ./build.sh --no-check
+[[ -x target/release/wrench_eval && -x target/release/wrench_eval-san && -x target/release/rolling_eval &&
+   -x target/release/step_eval && -x target/release/step_eval-san ]] || ./build.sh --no-check
 cargo build --release --quiet --example bits
 bits=target/release/examples/bits
 c=target/release/wrench_eval
@@ -83,15 +84,55 @@ for precision in f32 f64; do
 done
 echo "compare: the C twin is clean under ASan + UBSan (best, both forms and precisions)"
 
+# The Jacobian (contensou_contact_jacobian_*, _jacobian_rolling_*): `wrench_eval jacobian`
+# against `contact_eval jacobian` on the same rows, every field (N, Fx, Fy, Tz and the 20
+# derivatives) bit for bit.
+# same_jacobian FILE ROWS OPTS...: both twins on $work/FILE.csv, ROWS rows bit for bit.
+same_jacobian() {
+    local file="$1" want="$2" n
+    shift 2
+    "$c" jacobian "$@" <"$work/$file.csv" >"$work/c.csv" || { echo "compare: the C twin failed for jacobian $file $*" >&2; exit 1; }
+    ../target/release/contact_eval jacobian "$@" <"$work/$file.csv" >"$work/rust.csv" || { echo "compare: the reference failed for jacobian $file $*" >&2; exit 1; }
+    n="$("$bits" check "${@: -1}" "$work/c.csv" "$work/rust.csv")" || { echo "compare: jacobian FAILED for $file $*" >&2; exit 1; }
+    ((n == want)) || { echo "compare: jacobian: $n of $want rows for $file $*" >&2; exit 1; }
+}
+runs=0
+for precision in f32 f64; do
+    for form in fixed varying; do
+        for law in best simplified pade ellipsoid coulomb table blend fastsim fastsim-16; do
+            same_jacobian rows "$rows" --law "$law" --form "$form" --precision "$precision"
+            runs=$((runs + 1))
+        done
+        for law in table blend fastsim fastsim-16 best; do
+            same_jacobian roll4 "$rrows" --law "$law" --form "$form" --precision "$precision"
+            runs=$((runs + 1))
+        done
+        same_jacobian roll2 "$rrows" --law table --form "$form" --precision "$precision"
+        runs=$((runs + 1))
+    done
+done
+for precision in f32 f64; do
+    target/release/wrench_eval-san jacobian --law table --form varying --precision "$precision" <"$work/roll4.csv" >"$work/san.csv" ||
+        { echo "compare: the sanitized C twin failed on jacobian ($precision)" >&2; exit 1; }
+    "$c" jacobian --law table --form varying --precision "$precision" <"$work/roll4.csv" | cmp -s - "$work/san.csv" ||
+        { echo "compare: the sanitized C twin prints another jacobian ($precision)" >&2; exit 1; }
+done
+echo "compare: jacobian: $rows rows (9 laws) and $rrows rolling rows (G,nu,vrx,vry: 5 laws; vrx,vry: table) × 2 forms × 2 precisions, $runs runs: C = contact_eval jacobian bit for bit; ASan + UBSan clean (table)"
+
 "$bits" bad >"$work/bad.tsv"
 kinds=0
 for kind in $(cut -f1 "$work/bad.tsv" | uniq); do
     { echo "$header"; grep "^$kind"$'\t' "$work/bad.tsv" | cut -f2-; } >"$work/in.csv"
-    for precision in f32 f64; do
+    for precision in f32 f64 jacobian-f32 jacobian-f64; do
+        # jacobian-*: `wrench_eval jacobian` against `contact_eval jacobian`
+        mode=(); ref_mode=("${ref[@]}")
+        if [[ "$precision" == jacobian-* ]]; then
+            precision="${precision#jacobian-}"; mode=(jacobian); ref_mode=(../target/release/contact_eval jacobian)
+        fi
         opts=(--law best --form varying --precision "$precision")
         set +e
-        "$c" "${opts[@]}" <"$work/in.csv" >"$work/c.csv" 2>"$work/c.err"; rc_c=$?
-        "${ref[@]}" "${opts[@]}" <"$work/in.csv" >"$work/rust.csv" 2>"$work/rust.err"; rc_r=$?
+        "$c" "${mode[@]}" "${opts[@]}" <"$work/in.csv" >"$work/c.csv" 2>"$work/c.err"; rc_c=$?
+        "${ref_mode[@]}" "${opts[@]}" <"$work/in.csv" >"$work/rust.csv" 2>"$work/rust.err"; rc_r=$?
         set -e
         if ((rc_c != 1 || rc_r != 1)); then
             echo "compare: bad row '$kind' ($precision): exit $rc_c (C) and $rc_r (Rust), expected 1 and 1" >&2
@@ -118,7 +159,7 @@ for kind in $(cut -f1 "$work/bad.tsv" | uniq); do
     done
     kinds=$((kinds + 1))
 done
-echo "compare: $kinds kinds of bad row: both stop at row 4 with the same message, exit 1, same rows before it"
+echo "compare: $kinds kinds of bad row (wrench and jacobian): both stop at row 4 with the same message, exit 1, same rows before it"
 
 # Bad rolling columns (law table): the same row, column and message from both.
 good="50,50,1.15e11,0,0.1,1e-4,1e-6,0,0.01,0,50,8e10,0.28,2,0"
@@ -193,3 +234,59 @@ for kind in $(cut -f1 "$work/bad.tsv" | uniq); do
     kinds=$((kinds + 1))
 done
 echo "compare: rolling: $kinds kinds of bad row: both stop at row 4 naming the same column, exit 1, same rows before it"
+
+# The step-aware wrench (examples/step_eval.c, contensou_contact_step_*) against
+# `contact_eval step`: every law × form × precision on rows with every optional column (G, nu,
+# vrx, vry and the four free velocities), without the free columns (u_free NULL) and with two
+# of them; bit for bit; clean under ASan + UBSan; the bad rows stop both at the same row with
+# the same message.
+"$bits" step-gen >"$work/step.csv"
+cut -d, -f1-26 "$work/step.csv" >"$work/step-nofree.csv"
+cut -d, -f1-22,28,30 "$work/step.csv" >"$work/step-some.csv"
+srows=$(($(wc -l <"$work/step.csv") - 1))
+runs=0
+for file in step step-nofree step-some; do
+    for precision in f32 f64; do
+        for form in fixed varying; do
+            laws=(best simplified pade ellipsoid coulomb table blend fastsim fastsim-16)
+            [[ "$file" == step ]] || laws=(best table)
+            for law in "${laws[@]}"; do
+                opts=(--law "$law" --form "$form" --precision "$precision")
+                target/release/step_eval "${opts[@]}" <"$work/$file.csv" >"$work/c.csv" || { echo "compare: step_eval failed for $file ${opts[*]}" >&2; exit 1; }
+                ../target/release/contact_eval step "${opts[@]}" <"$work/$file.csv" >"$work/rust.csv" || { echo "compare: contact_eval step failed for $file ${opts[*]}" >&2; exit 1; }
+                n="$("$bits" check "$precision" "$work/c.csv" "$work/rust.csv")" || { echo "compare: step FAILED for $file ${opts[*]}" >&2; exit 1; }
+                ((n == srows)) || { echo "compare: $n of $srows step rows for $file ${opts[*]}" >&2; exit 1; }
+                runs=$((runs + 1))
+            done
+        done
+    done
+done
+for precision in f32 f64; do
+    opts=(--law table --form varying --precision "$precision")
+    target/release/step_eval-san "${opts[@]}" <"$work/step.csv" >"$work/san.csv" ||
+        { echo "compare: the sanitized step twin failed (${opts[*]})" >&2; exit 1; }
+    target/release/step_eval "${opts[@]}" <"$work/step.csv" | cmp -s - "$work/san.csv" ||
+        { echo "compare: the sanitized step twin prints other values (${opts[*]})" >&2; exit 1; }
+done
+echo "compare: step: $srows rows × $runs runs (9 laws × 2 forms × 2 precisions with every optional column; best, table without and with two free columns): C = contact_eval step bit for bit; clean under ASan + UBSan (table)"
+
+"$bits" step-bad >"$work/bad.tsv"
+kinds=0
+for kind in $(cut -f1 "$work/bad.tsv" | uniq); do
+    { head -n 1 "$work/step.csv" | cut -d, -f1-22; grep "^$kind"$'\t' "$work/bad.tsv" | cut -f2-; } >"$work/in.csv"
+    for precision in f32 f64; do
+        set +e
+        target/release/step_eval --precision "$precision" <"$work/in.csv" >"$work/c.csv" 2>"$work/c.err"; rc_c=$?
+        ../target/release/contact_eval step --precision "$precision" <"$work/in.csv" >"$work/rust.csv" 2>"$work/rust.err"; rc_r=$?
+        set -e
+        msg_c="$(sed -e 's/^step_eval: //' -e 's/ (status [0-9]*)$//' -e 's/ = [^:]*:/ = _:/' "$work/c.err")"
+        msg_r="$(sed -e 's/^contact_eval: //' -e 's/ = [^:]*:/ = _:/' "$work/rust.err")"
+        if ((rc_c != 1 || rc_r != 1)) || [[ "$msg_c" != "$msg_r" || "$msg_c" != "row 4: "* ]]; then
+            printf 'compare: bad step row %s (%s): exit %s / %s\n  C:    %s\n  Rust: %s\n' "$kind" "$precision" "$rc_c" "$rc_r" "$msg_c" "$msg_r" >&2
+            exit 1
+        fi
+        "$bits" check "$precision" "$work/c.csv" "$work/rust.csv" >/dev/null
+    done
+    kinds=$((kinds + 1))
+done
+echo "compare: step: $kinds kinds of bad row (dt, W, start state): both stop at row 4 with the same message, exit 1, same rows before it"

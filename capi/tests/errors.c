@@ -47,6 +47,24 @@ int main(void) {
     EXPECT(contensou_contact_wrench_f64(&contact, &step, &w, &column) == CONTENSOU_STATUS_NON_FINITE);
     EXPECT(column == CONTENSOU_COLUMN_OMEGA);
     EXPECT(contensou_contact_wrench_f64(&contact, NULL, &w, NULL) == CONTENSOU_STATUS_NULL_POINTER);
+    {
+        /* The Jacobian: the wrench's errors and column; its wrench is the wrench's. */
+        contensou_jacobian_f64 j;
+        contensou_rolling_step_f64 roll = {2.0, 1.0 / 0.0};
+        EXPECT(contensou_contact_jacobian_f64(&contact, &step, &j, &column) == CONTENSOU_STATUS_NON_FINITE);
+        EXPECT(column == CONTENSOU_COLUMN_OMEGA);
+        EXPECT(contensou_contact_jacobian_f32(&never_initialised, &step32, NULL, NULL) == CONTENSOU_STATUS_NOT_INITIALIZED);
+        EXPECT(contensou_contact_jacobian_f64(&contact, NULL, &j, NULL) == CONTENSOU_STATUS_NULL_POINTER);
+        step.omega = 50.0;
+        EXPECT(contensou_contact_jacobian_f64(&contact, &step, NULL, &column) == CONTENSOU_STATUS_NULL_POINTER);
+        EXPECT(contensou_contact_jacobian_f64(&contact, &step, &j, &column) == CONTENSOU_STATUS_OK);
+        EXPECT(contensou_contact_wrench_f64(&contact, &step, &w, &column) == CONTENSOU_STATUS_OK);
+        EXPECT(memcmp(&j.n, &w.n, sizeof w.n) == 0 && memcmp(&j.tz, &w.tz, sizeof w.tz) == 0 && j.d[0][0] > 0.0);
+        EXPECT(contensou_contact_new_f64(&contact, &spec, CONTENSOU_LAW_TABLE, CONTENSOU_FORM_FIXED, &column) == CONTENSOU_STATUS_OK);
+        EXPECT(contensou_contact_jacobian_rolling_f64(&contact, &step, &roll, &j, &column) == CONTENSOU_STATUS_NON_FINITE);
+        EXPECT(column == CONTENSOU_COLUMN_VRY && strcmp(contensou_column_name(column), "vry") == 0);
+        EXPECT(strcmp(contensou_status_message(CONTENSOU_STATUS_STEP_NOT_POSITIVE), "time step dt must be > 0 (s)") == 0);
+    }
     EXPECT(strcmp(contensou_status_message(CONTENSOU_STATUS_DAMPING_NEGATIVE), "damping coefficient is negative") == 0);
     EXPECT(strcmp(contensou_status_message(4242), "unknown contensou_status code") == 0);
 

@@ -5,6 +5,7 @@
 use core::ffi::CStr;
 use core::ptr::{null, null_mut};
 
+use contensou::friction::rolling::row::RowLaw;
 use contensou::friction::rolling::{
     Blend, Elasticity, Fastsim, FastsimGrid, FullSlip, Linear, Patch, RollingContact, RollingLaw,
     RollingSlip, Table,
@@ -47,6 +48,20 @@ fn law_names_and_columns() {
         );
         assert_eq!(law, code, "{name:?}");
     }
+    // "rolling" names the default rolling law (the library's RowLaw::DEFAULT)
+    let default = std::ffi::CString::new(RowLaw::DEFAULT.name()).unwrap();
+    let [mut by_alias, mut by_name] = [98, 99];
+    for (name, law) in [
+        (c"rolling", &mut by_alias),
+        (default.as_c_str(), &mut by_name),
+    ] {
+        assert_eq!(
+            unsafe { contensou_law_from_name(name.as_ptr(), law) },
+            S::Ok
+        );
+    }
+    assert_eq!(by_alias, by_name);
+    assert_eq!(by_alias, CONTENSOU_LAW_TABLE);
     let names: Vec<&str> = (0..=CONTENSOU_ROLLING_COLUMN_NONE)
         .map(|c| text(contensou_rolling_column_name(c)))
         .collect();

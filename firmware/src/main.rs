@@ -33,6 +33,7 @@ stages! {
     bench_scene,
     bench_rolling,
     bench_jacobian,
+    bench_step,
 }
 
 #[entry]

@@ -4,6 +4,13 @@ that declares it, reset to keyframe 0 and step — no callback code.
     mujoco/build.sh                                    # builds mujoco/build/libcontensou_mujoco.so
     python mujoco/examples/run_models.py               # the scenes: tippe top, ball, rattleback (full slip, rolling) 2 s each
     python mujoco/examples/run_models.py --end 0.1     # a smoke run
+    python mujoco/examples/run_models.py --fine        # the same at the small steps with step = explicit
+
+The model files ship at MuJoCo's default step, 2 ms, with the step-aware contact (`step =
+aware`, integrator implicitfast, `step_point` per model: STEP_POINT); `explicit(name)` gives
+the same model at its small reference step with the plain contact (`step = explicit`: bit for
+bit the Python callback of python/examples/floor_contact.py; FINE), which the agreement tests
+and the speed table's callback rows use.
 
 Prints per scene what the library's own scene reports: the tippe top's t(θ = π/2) and touch-down
 (θ ≥ θ*), the ball's time to pure rolling and spin decay rate (with the analytic values of
@@ -14,6 +21,7 @@ examples/rattleback.rs).
 import argparse
 import math
 import os
+import re
 import time
 from pathlib import Path
 
@@ -34,10 +42,40 @@ def load_plugin(path=PLUGIN):
     mujoco.mj_loadPluginLibrary(str(path))
 
 
-def load(name, key=0, timestep=None):
-    """The model mujoco/models/<name>.xml (its `timestep` replaced if given) and a data at its
+# The model files' step: MuJoCo's default, with step = aware.
+SHIPPED_DT = 0.002
+# step_point θ of each shipped model (where the step-aware contact takes the free velocity
+# within the step; measured, mujoco/README.md).
+STEP_POINT = {"tippe_top": 0.25, "ball": 0.25, "rattleback": 0.5, "rattleback_rolling": 0.6}
+# Each model's small reference step and integrator with step = explicit (the Rust scene's step:
+# tippe top and ball Euler 10 / 20 µs as the Python-callback examples, rattlebacks RK4 0.1 ms).
+FINE = {"tippe_top": (1e-5, "Euler"), "ball": (2e-5, "Euler"), "rattleback": (1e-4, "RK4"),
+        "rattleback_rolling": (1e-4, "RK4")}
+
+
+def explicit(name, text=None):
+    """The MJCF text of model `name` (or of `text`, a model file's text) at its FINE step and
+    integrator with the plain contact: step = explicit, no step_point."""
+    text = text if text is not None else (MODELS / f"{name}.xml").read_text()
+    dt, integrator = FINE[name]
+    text = text.replace('<config key="step" value="aware"/>', '<config key="step" value="explicit"/>')
+    text = re.sub(r'\n\s*<config key="step_point" value="[^"]*"/>', "", text)
+    text = re.sub(r'timestep="[^"]*" integrator="[^"]*"', f'timestep="{dt!r}" integrator="{integrator}"', text, count=1)
+    return text
+
+
+# What load() gives by default: the FINE explicit models (the tests' references); main() runs
+# the files as shipped unless --fine.
+SHIPPED = False
+
+
+def load(name, key=0, timestep=None, shipped=None):
+    """The model mujoco/models/<name>.xml — as shipped if `shipped` (default SHIPPED), else at its
+    FINE step with step = explicit — (its `timestep` replaced if given) and a data at its
     keyframe `key`."""
-    m = mujoco.MjModel.from_xml_path(str(MODELS / f"{name}.xml"))
+    path = MODELS / f"{name}.xml"
+    shipped = SHIPPED if shipped is None else shipped
+    m = mujoco.MjModel.from_xml_path(str(path)) if shipped else mujoco.MjModel.from_xml_string(explicit(name))
     if timestep is not None:
         m.opt.timestep = timestep
     d = mujoco.MjData(m)
@@ -138,7 +176,10 @@ def fmt(x, unit="s", digits=4):
 def main():
     ap = argparse.ArgumentParser(description="the three scenes through the contensou.contact MuJoCo plugin")
     ap.add_argument("--end", type=float, default=2.0, help="end time of each scene (s)")
+    ap.add_argument("--fine", action="store_true", help="the small steps with step = explicit (default: as shipped)")
     args = ap.parse_args()
+    global SHIPPED
+    SHIPPED = not args.fine
     load_plugin()
     print(f"MuJoCo {mujoco.__version__}, plugin {PLUGIN}")
     top = run_tippe_top(args.end)

@@ -6,6 +6,11 @@ the CPU time per simulated second.
     python mujoco/examples/step_sweep.py                          # every model at shipped, 0.5, 1, 2 ms
     python mujoco/examples/step_sweep.py --models ball --dt 0.002 --config step=aware
     python mujoco/examples/step_sweep.py --json                   # one JSON object per run
+    python mujoco/examples/step_sweep.py --config step=explicit --dt shipped,0.0005,0.002   # the plain contact
+
+The model files ship at 2 ms with step = aware (implicitfast); with `--config step=explicit`
+each starts from its small reference step and integrator instead (run_models.explicit), where
+`shipped` means that step.
 
 Per run (`run()`): `stable` — no MuJoCo NaN/instability warning, no body leaving its support
 (its height above the start by more than `LEAVE` m), `energy_max_rise` — the largest rise of
@@ -43,6 +48,10 @@ def load(name, dt, config, integrator=None):
     Euler, RK4, implicit, implicitfast) and the plugin config keys of `config` replaced or
     added."""
     text = (run_models.MODELS / f"{name}.xml").read_text()
+    if config.get("step") == "explicit":
+        # The plain contact: the file at its small reference step (run_models.explicit; `dt`
+        # None keeps that step), step_point dropped.
+        text = run_models.explicit(name, text)
     for key, value in config.items():
         tag = f'<config key="{key}" value="'
         if tag in text:

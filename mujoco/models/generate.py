@@ -26,8 +26,10 @@ import numpy as np
 
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE.parents[1] / "python" / "examples"))
+sys.path.insert(0, str(HERE.parent / "examples"))
 import mujoco_ball as ball  # noqa: E402
 import mujoco_tippe_top as top  # noqa: E402
+import run_models  # noqa: E402
 
 # src/scenes/rattleback.rs, Params::kane_levinson; examples/rattleback.rs.
 RB_AXES = (0.2, 0.03, 0.02)
@@ -69,6 +71,21 @@ def config(**kv):
     return "\n".join(f'        <config key="{k}" value="{v}"/>' for k, v in kv.items())
 
 
+def aware(name):
+    """The step-aware contact's config lines of model `name` (run_models.STEP_POINT)."""
+    return "\n" + config(step="aware", step_point=f(run_models.STEP_POINT[name]))
+
+
+def option(name, gravity):
+    """The <option> line at MuJoCo's default step with the step-aware contact, and its comment."""
+    dt, integrator = run_models.FINE[name]
+    return f"""  <!-- MuJoCo's default step, 2 ms, with the step-aware contact (step = aware): change only
+       `timestep` (1 ms, 0.5 ms: the same file). The plain contact at the reference step, bit for
+       bit the Python callback / the Rust scene: step = explicit (drop step_point), timestep
+       {f(dt)}, integrator {integrator} (mujoco/examples/run_models.py, explicit()). -->
+  <option timestep="{f(run_models.SHIPPED_DT)}" integrator="implicitfast" gravity="0 0 -{f(gravity)}">"""
+
+
 def tippe_top():
     m = top.model(dt=top.DT, integrator=top.INTEGRATOR, native=False)
     import mujoco
@@ -79,12 +96,11 @@ def tippe_top():
   <extension>
     <plugin plugin="contensou.contact">
       <instance name="contact">
-{config(estar=f(top.ESTAR), cd=f(top.CD), f=f(top.F), delta=f(top.DELTA), law="best")}
+{config(estar=f(top.ESTAR), cd=f(top.CD), f=f(top.F), delta=f(top.DELTA), law="best")}{aware("tippe_top")}
       </instance>
     </plugin>
   </extension>
-  <!-- Euler at 10 µs as the Python-callback example: 1/68 of the 1.5 kHz vertical contact period. -->
-  <option timestep="{f(top.DT)}" integrator="{top.INTEGRATOR}" gravity="0 0 -{f(top.G)}">
+{option("tippe_top", top.G)}
 {NO_NATIVE}
   </option>
   <worldbody>
@@ -116,11 +132,11 @@ def ball_model():
   <extension>
     <plugin plugin="contensou.contact">
       <instance name="contact">
-{config(estar=f(ball.ESTAR), cd=f(ball.CD), f=f(ball.F), delta=f(ball.DELTA), law="best")}
+{config(estar=f(ball.ESTAR), cd=f(ball.CD), f=f(ball.F), delta=f(ball.DELTA), law="best")}{aware("ball")}
       </instance>
     </plugin>
   </extension>
-  <option timestep="2e-05" integrator="Euler" gravity="0 0 -{f(ball.G)}">
+{option("ball", ball.G)}
 {NO_NATIVE}
   </option>
   <worldbody>
@@ -225,12 +241,11 @@ def rattleback(rolling=False):
   <extension>
     <plugin plugin="contensou.contact">
       <instance name="contact">
-{law}
+{law}{aware("rattleback_rolling" if rolling else "rattleback")}
       </instance>
     </plugin>
   </extension>
-  <!-- RK4 at 0.1 ms as the Rust scene. -->
-  <option timestep="{f(RB_DT)}" integrator="RK4" gravity="0 0 -{f(RB_G)}">
+{option("rattleback_rolling" if rolling else "rattleback", RB_G)}
 {NO_NATIVE}
   </option>
   <worldbody>

@@ -195,10 +195,6 @@ int read_config(const mjModel* m, int instance, config* c) {
       mju_warning(PLUGIN_NAME ": step = '%s' is no step mode (explicit, aware)", step);
       return -1;
     }
-    if (c->step_aware && !step_available()) {
-      mju_warning(PLUGIN_NAME ": step = 'aware' needs the library's step-aware wrench, not in this build");
-      return -1;
-    }
   }
   if (config_number(m, instance, "step_point", 0, 0.0, &c->step_point)) return -1;
   if (!(c->step_point >= 0.0 && c->step_point <= 1.0)) {

@@ -110,6 +110,11 @@ int pair_geometry_at(const mjModel* m, const mjtNum* geom_xpos, const mjtNum* ge
 void contact_point_velocity(const mjModel* m, const mjData* d, const pair* k, const geometry* g,
                             const double vb[3], const double wb[3], const double* va, const double* wa,
                             double out[3]);
+/* The same with the bodies' origins xpos (3 per body) and the geoms' attitudes geom_xmat (9 per
+ * geom) of another pose (the step-aware path's drifted pose). */
+void contact_point_velocity_at(const mjModel* m, const mjtNum* xpos, const mjtNum* geom_xmat, const pair* k,
+                               const geometry* g, const double vb[3], const double wb[3], const double* va,
+                               const double* wa, double out[3]);
 
 /* inverse_mass.c */
 /* The 4 × nv rows (n, x, y, spin) of the contact velocity u = J q̇ of pair k at geometry g
@@ -129,6 +134,8 @@ typedef struct {
   double* u;        /* 4 per pair taken: (v_n, v_x, v_y, ω) = J q̇ */
   double* u_free;   /* 4 per pair taken: J q̇_free, the end-of-step velocity without the instance */
   double* h_free;   /* per pair taken: the approach at the free end-of-step pose (q drifted by Δt·q̇_free) */
+  double* roll;     /* 2 per pair taken (step_point θ > 0): Kalker's rolling velocity (V_x, V_y) at the
+                       pose drifted by θ·Δt with the free velocities, in that pose's contact frame */
   mjtNum* geom_xpos; /* that pose of every geom, 3 per geom */
   mjtNum* geom_xmat; /* 9 per geom */
   int* done;        /* scratch, per pair */
@@ -152,13 +159,12 @@ void step_work_free(step_work* s);
  * at the free end-of-step pose (h_free > 0); their count. */
 int step_prepare(const mjModel* m, mjData* d, const pair* pairs, int npair, step_work* s);
 
-/* The step-aware wrenches (4 per contact, contact frame) of k contacts sharing W (4k × 4k,
- * row-major) over dt, from their start steps, rolling velocities (NULL: none), free end
- * velocities u_free (4k) and approaches h_free (k); 0, or −1 if the library refused. */
+/* The step-aware wrenches (4 per contact, contact frame) of k ≤ CONTENSOU_STEP_MAX_CONTACTS
+ * contacts sharing W (4k × 4k, row-major) over dt, from their start steps, rolling velocities
+ * (NULL: none), free end velocities u_free (4k) and approaches h_free (k), by
+ * contensou_step_many_f64; 0, or −1 if the library refused. */
 int step_solve(const contensou_contact_f64* const* contacts, int k, double dt, const double* w,
                const contensou_step_f64* steps, const contensou_rolling_step_f64* rolling, const double* u_free,
                const double* h_free, double* out);
-/* Whether this build has the step-aware wrench (step = aware). */
-int step_available(void);
 
 #endif /* CONTENSOU_MUJOCO_H */

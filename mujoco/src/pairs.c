@@ -247,7 +247,13 @@ static void material_velocity(const double v[3], const double w[3], const mjtNum
 void contact_point_velocity(const mjModel* m, const mjData* d, const pair* k, const geometry* g,
                             const double vb[3], const double wb[3], const double* va, const double* wa,
                             double out[3]) {
-  const mjtNum* ob = d->xpos + 3 * k->body_b;
+  contact_point_velocity_at(m, d->xpos, d->geom_xmat, k, g, vb, wb, va, wa, out);
+}
+
+void contact_point_velocity_at(const mjModel* m, const mjtNum* xpos, const mjtNum* geom_xmat, const pair* k,
+                               const geometry* g, const double vb[3], const double wb[3], const double* va,
+                               const double* wa, double out[3]) {
+  const mjtNum* ob = xpos + 3 * k->body_b;
   if (k->kind == SPHERE_PLANE) {
     material_velocity(vb, wb, ob, g->centre, out);
     return;
@@ -255,12 +261,12 @@ void contact_point_velocity(const mjModel* m, const mjData* d, const pair* k, co
   if (k->kind == SPHERE_SPHERE) {
     double ub[3], ua[3] = {0, 0, 0};
     material_velocity(vb, wb, ob, g->centre, ub);
-    if (va) material_velocity(va, wa, d->xpos + 3 * k->body_a, g->centre_a, ua);
+    if (va) material_velocity(va, wa, xpos + 3 * k->body_a, g->centre_a, ua);
     for (int i = 0; i < 3; i++) out[i] = ua[i] + g->ratio * (ub[i] - ua[i]);
     return;
   }
   const mjtNum* a = m->geom_size + 3 * k->geom_b;
-  const mjtNum* r = d->geom_xmat + 9 * k->geom_b; /* geom → world, row-major */
+  const mjtNum* r = geom_xmat + 9 * k->geom_b; /* geom → world, row-major */
   double a2[3] = {a[0] * a[0], a[1] * a[1], a[2] * a[2]};
   double wg[3], du[3];
   for (int i = 0; i < 3; i++) wg[i] = r[i] * wb[0] + r[3 + i] * wb[1] + r[6 + i] * wb[2];

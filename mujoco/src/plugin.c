@@ -363,7 +363,7 @@ static contensou_status plain_wrench(const mjModel* m, const mjData* d, const in
  * wrenches in one call of the library, applied like the plain ones. The sensor reports the
  * step-aware wrench and the patch (a, b) of the plain wrench at the start state.
  */
-#define STEP_GROUP 8
+#define STEP_GROUP CONTENSOU_STEP_MAX_CONTACTS
 /* Block Gauss–Seidel sweeps over the parts of a group larger than STEP_GROUP (fixed count). */
 #define STEP_SWEEPS 6
 
@@ -444,6 +444,10 @@ static void passive_step(const mjModel* m, mjData* d, instance_data* x) {
       contensou_contact_set_curvatures_f64(&p->contact, g->p, g->q, NULL);
     }
     x->rolls[t] = x->rolling ? rolling_velocity(m, d, p, g, &x->kins[t]) : (contensou_rolling_step_f64){0.0, 0.0};
+    if (x->rolling && s->point > 0.0) {
+      /* step_point θ > 0: V at the drifted pose with the free velocities (as u_free). */
+      x->rolls[t] = (contensou_rolling_step_f64){s->roll[2 * t], s->roll[2 * t + 1]};
+    }
     for (int r = 0; r < 4; r++) x->wrench[4 * t + r] = 0.0;
   }
   /* Groups: the taken pairs connected through shared moving bodies (W couples only those). */

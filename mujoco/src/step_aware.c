@@ -46,13 +46,14 @@ int step_work_init(step_work* s, const mjModel* m, int npair, double point) {
   s->u = calloc(rows, sizeof(double));
   s->u_free = calloc(rows, sizeof(double));
   s->h_free = calloc(rows / 4, sizeof(double));
+  s->roll = calloc(rows / 2, sizeof(double));
   s->geom_xpos = calloc((size_t)3 * (size_t)(m->ngeom ? m->ngeom : 1), sizeof(mjtNum));
   s->geom_xmat = calloc((size_t)9 * (size_t)(m->ngeom ? m->ngeom : 1), sizeof(mjtNum));
   s->done = calloc(rows / 4, sizeof(int));
   s->geom = calloc(rows / 4, sizeof(geometry));
   s->index = calloc(rows / 4, sizeof(int));
   if (!s->jac || !s->work || !s->scratch || !s->w || !s->qfrc || !s->qvel || !s->u || !s->u_free || !s->geom ||
-      !s->index || !s->h_free || !s->geom_xpos || !s->geom_xmat || !s->done ||
+      !s->index || !s->h_free || !s->roll || !s->geom_xpos || !s->geom_xmat || !s->done ||
       !s->body_v || !s->body_w || !s->body_p) {
     step_work_free(s);
     return -1;
@@ -70,6 +71,7 @@ void step_work_free(step_work* s) {
   free(s->u);
   free(s->u_free);
   free(s->h_free);
+  free(s->roll);
   free(s->geom_xpos);
   free(s->geom_xmat);
   free(s->done);
@@ -137,25 +139,40 @@ static void drift_pose(const mjModel* m, const mjData* d, step_work* s, double f
 
 /* The free end velocity u = (v_n, v_x, v_y, ω) of pair k at the drifted geometry e: the
  * bodies' free end velocities (origin drifted as in drift_pose) at e's contact point, in e's
- * frame. */
-static void drifted_velocity(const mjModel* m, const step_work* s, const pair* k, const geometry* e, double u[4]) {
-  double v[3] = {0, 0, 0}, w[3] = {0, 0, 0};
+ * frame; and Kalker's rolling velocity there, V = v_P − ½(u_A + u_B) in (x, y) (the velocity
+ * of e's geometric contact point over each surface, averaged: contact_point_velocity_at with
+ * the free velocities, as the Rust scenes take it at their mid-step pose). */
+static void drifted_velocity(const mjModel* m, const step_work* s, const pair* k, const geometry* e, double u[4],
+                             double roll[2]) {
+  double v[3] = {0, 0, 0}, w[3] = {0, 0, 0}, usum[3] = {0, 0, 0};
   const int bodies[2] = {k->body_b, k->body_a};
+  const double* vel[2] = {NULL, NULL};
+  const double* ang[2] = {NULL, NULL};
   for (int side = 0; side < 2; side++) {
     int b = bodies[side];
     if (b <= 0 || m->body_weldid[b] == 0) continue;
     double sign = side == 0 ? 1.0 : -1.0, arm[3], pv[3];
     for (int i = 0; i < 3; i++) arm[i] = e->point[i] - s->body_p[3 * b + i];
     point_velocity(s->body_v + 3 * b, s->body_w + 3 * b, arm, pv);
+    vel[side] = s->body_v + 3 * b;
+    ang[side] = s->body_w + 3 * b;
     for (int i = 0; i < 3; i++) {
       v[i] += sign * pv[i];
       w[i] += sign * s->body_w[3 * b + i];
+      usum[i] += pv[i];
     }
   }
   u[0] = dot3(v, e->n);
   u[1] = dot3(v, e->x);
   u[2] = dot3(v, e->y);
   u[3] = dot3(w, e->n);
+  static const double zero[3] = {0, 0, 0};
+  double vp[3];
+  contact_point_velocity_at(m, s->body_p, s->geom_xmat, k, e, vel[0] ? vel[0] : zero, ang[0] ? ang[0] : zero, vel[1],
+                            ang[1], vp);
+  for (int i = 0; i < 3; i++) vp[i] -= 0.5 * usum[i];
+  roll[0] = dot3(vp, e->x);
+  roll[1] = dot3(vp, e->y);
 }
 
 int step_prepare(const mjModel* m, mjData* d, const pair* pairs, int npair, step_work* s) {
@@ -185,33 +202,35 @@ int step_prepare(const mjModel* m, mjData* d, const pair* pairs, int npair, step
     for (int t = 0; t < k; t++) {
       geometry e;
       pair_geometry_at(m, s->geom_xpos, s->geom_xmat, &pairs[s->index[t]], &e);
-      drifted_velocity(m, s, &pairs[s->index[t]], &e, s->u_free + 4 * t);
+      drifted_velocity(m, s, &pairs[s->index[t]], &e, s->u_free + 4 * t, s->roll + 2 * t);
     }
   }
   if (k > 0) inverse_mass(m, d, s->jac, 4 * k, s->work, s->w);
   return k;
 }
 
-#ifdef CONTENSOU_MUJOCO_PROTO
-/* Prototype build only (not committed to use): the step branch's step_wrenches through a local
- * export, Jacobian by central differences. */
-unsigned contensou_proto_step_many_f64(const contensou_contact_f64* const* contacts, size_t k, double dt,
-                                       const double* w, const contensou_step_f64* steps,
-                                       const contensou_rolling_step_f64* rolling, const double* u_free,
-                                       const double* h_free, double* out);
-int step_available(void) { return 1; }
 int step_solve(const contensou_contact_f64* const* contacts, int k, double dt, const double* w,
                const contensou_step_f64* steps, const contensou_rolling_step_f64* rolling, const double* u_free,
                const double* h_free, double* out) {
-  return contensou_proto_step_many_f64(contacts, (size_t)k, dt, w, steps, rolling, u_free, h_free, out) ? -1 : 0;
+  contensou_step_free_f64 free[CONTENSOU_STEP_MAX_CONTACTS];
+  contensou_step_wrench_f64 wrench[CONTENSOU_STEP_MAX_CONTACTS];
+  if (k < 1 || k > CONTENSOU_STEP_MAX_CONTACTS) return -1;
+  for (int i = 0; i < k; i++) {
+    free[i].u.vn = u_free[4 * i];
+    free[i].u.vx = u_free[4 * i + 1];
+    free[i].u.vy = u_free[4 * i + 2];
+    free[i].u.omega = u_free[4 * i + 3];
+    free[i].h = h_free[i];
+  }
+  if (contensou_step_many_f64(contacts, (size_t)k, steps, rolling, dt, w, free, wrench, NULL, NULL) !=
+      CONTENSOU_STATUS_OK) {
+    return -1;
+  }
+  for (int i = 0; i < k; i++) {
+    out[4 * i] = wrench[i].n;
+    out[4 * i + 1] = wrench[i].fx;
+    out[4 * i + 2] = wrench[i].fy;
+    out[4 * i + 3] = wrench[i].tz;
+  }
+  return 0;
 }
-#else
-/* Not yet in the C API: step = aware is refused at load. */
-int step_available(void) { return 0; }
-int step_solve(const contensou_contact_f64* const* contacts, int k, double dt, const double* w,
-               const contensou_step_f64* steps, const contensou_rolling_step_f64* rolling, const double* u_free,
-               const double* h_free, double* out) {
-  (void)contacts, (void)k, (void)dt, (void)w, (void)steps, (void)rolling, (void)u_free, (void)h_free, (void)out;
-  return -1;
-}
-#endif

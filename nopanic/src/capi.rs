@@ -321,6 +321,56 @@ rolling_probes!(rolling_double: f64, contensou_contact_f64, CONTENSOU_CONTACT_F6
     contensou_contact_new_rolling_f64, contensou_contact_wrench_rolling_f64,
     contensou_contact_wrench_many_rolling_f64, contensou_rolling_new_f64, contensou_rolling_wrench_f64);
 
+/// The wrench's Jacobian (`contensou_contact_jacobian_*`, `…_jacobian_rolling_*`), one module
+/// per precision.
+macro_rules! jacobian_probes {
+    ($m:ident: $T:ty, $storage:ident, $words:expr, $jacobian:ident, $jacobian_rolling:ident) => {
+        pub(crate) mod $m {
+            use super::*;
+
+            fn v(x: f64) -> $T {
+                black_box(x as $T)
+            }
+
+            #[inline(never)]
+            fn probe_capi_contact_jacobian() {
+                let s = $storage {
+                    opaque: black_box([0; $words]),
+                };
+                let step = step::<$T>(v);
+                let roll = contensou_rolling_step::<$T> {
+                    vrx: v(1.0),
+                    vry: v(0.1),
+                };
+                let mut j = contensou_jacobian::<$T>::default();
+                let mut col = black_box(0);
+                let r = unsafe {
+                    (
+                        $jacobian(ptr(&s), ptr(&step), ptr(&mut j), ptr(&mut col)),
+                        $jacobian_rolling(
+                            ptr(&s),
+                            ptr(&step),
+                            ptr(&roll),
+                            ptr(&mut j),
+                            ptr(&mut col),
+                        ),
+                    )
+                };
+                black_box((r, j, col));
+            }
+
+            pub(crate) fn run() {
+                probe_capi_contact_jacobian();
+            }
+        }
+    };
+}
+
+jacobian_probes!(jacobian_single: f32, contensou_contact_f32, CONTENSOU_CONTACT_F32_SIZE / 8,
+    contensou_contact_jacobian_f32, contensou_contact_jacobian_rolling_f32);
+jacobian_probes!(jacobian_double: f64, contensou_contact_f64, CONTENSOU_CONTACT_F64_SIZE / 8,
+    contensou_contact_jacobian_f64, contensou_contact_jacobian_rolling_f64);
+
 #[inline(never)]
 fn probe_capi_any_messages() {
     black_box((
@@ -348,6 +398,8 @@ pub(crate) fn run() {
     double::run();
     rolling_single::run();
     rolling_double::run();
+    jacobian_single::run();
+    jacobian_double::run();
     probe_capi_any_messages();
     probe_capi_any_names();
 }

@@ -9,25 +9,33 @@
 //!   the per-row function (a contact per row; rows that repeat the previous row's contact
 //!   columns reuse its contact).
 //! - `Contact(P, Q, estar, cd, f, delta, *, law, precision, form)`: built once;
-//!   `.wrench(h, hdot, vx, vy, omega)` per step, `.set_curvatures(P, Q)`.
+//!   `.wrench(h, hdot, vx, vy, omega)` per step (`.jacobian(...)`: with its derivatives),
+//!   `.set_curvatures(P, Q)`.
 //!
 //! Both return the dict `{N, Fx, Fy, Tz, a, b, e2}` of arrays of the broadcast shape (f32
 //! arrays for `precision="f32"`; numpy scalars when every argument is a scalar). Bad input is
 //! a `ValueError` naming the argument, the index into the broadcast shape and the reason.
+//! - `jacobian(...)`: `wrench`'s arguments → the wrench and its 20 derivatives
+//!   (`JACOBIAN_OUTPUTS`, `contact_eval jacobian`); `step(..., dt, w_nn, …, w_ww, *, …,
+//!   un_free, …)`: the step-aware wrench (`STEP_OUTPUTS`, `contact_eval step`). Row by row
+//!   (no batch path), bit for bit those commands.
 
 mod columns;
+mod jacobian;
 mod rolling;
 mod rows;
+mod step;
 
 use ::contensou::dynamic::{
     DynContact, Form, INPUTS, Law, OUTPUTS, ROLLING_INPUTS, RollingSpec, RollingStep, Spec, Step,
 };
+use ::contensou::friction::rolling::row::RowLaw;
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
 use columns::{Arg, Column, broadcast_shape};
-use rows::{PerRow, Precision, evaluate_py};
+use rows::{PerRow, Precision, SpecColumns, StepColumns, evaluate_py};
 
 /// The value of `option` called `name` among `all`, or a `ValueError` listing the names.
 fn named<V: Copy>(
@@ -36,9 +44,11 @@ fn named<V: Copy>(
     all: &[V],
     name_of: fn(V) -> &'static str,
 ) -> PyResult<V> {
+    // the alias "rolling" names the default rolling law (resolved by the library)
+    let resolved = RowLaw::resolve(name);
     all.iter()
         .copied()
-        .find(|&v| name_of(v) == name)
+        .find(|&v| name_of(v) == resolved)
         .ok_or_else(|| {
             let names: Vec<_> = all.iter().map(|&v| name_of(v)).collect();
             PyValueError::new_err(format!(
@@ -93,21 +103,29 @@ fn columns_of<'a, T: Precision, const N: usize>(
 fn convert_optional<'py, T: Precision>(
     values: [Option<&Bound<'py, PyAny>>; 4],
 ) -> PyResult<[Option<Arg<'py, T>>; 4]> {
-    let mut out = [None, None, None, None];
+    convert_named_optional(ROLLING_INPUTS, values)
+}
+
+/// Optional arguments called `names` converted to arrays of `T` (`None`: not given).
+fn convert_named_optional<'py, T: Precision, const N: usize>(
+    names: [&'static str; N],
+    values: [Option<&Bound<'py, PyAny>>; N],
+) -> PyResult<[Option<Arg<'py, T>>; N]> {
+    let mut out = [const { None }; N];
     for (k, value) in values.into_iter().enumerate() {
         if let Some(v) = value {
-            out[k] = Some(T::convert(ROLLING_INPUTS[k], v)?);
+            out[k] = Some(T::convert(names[k], v)?);
         }
     }
     Ok(out)
 }
 
 /// The columns of the given optional arguments over `shape`.
-fn optional_columns<'a, T: Precision>(
-    args: &'a [Option<Arg<'_, T>>; 4],
+fn optional_columns<'a, T: Precision, const N: usize>(
+    args: &'a [Option<Arg<'_, T>>; N],
     shape: &[usize],
-) -> PyResult<[Option<Column<'a, T>>; 4]> {
-    let mut out = [None, None, None, None];
+) -> PyResult<[Option<Column<'a, T>>; N]> {
+    let mut out = [const { None }; N];
     for (k, arg) in args.iter().enumerate() {
         if let Some(a) = arg {
             out[k] = Some(Column::new(a, shape)?);
@@ -116,14 +134,18 @@ fn optional_columns<'a, T: Precision>(
     Ok(out)
 }
 
-/// The per-row function in precision `T`.
-fn wrench_in<'py, T: Precision>(
-    py: Python<'py>,
+/// The contract's arguments (the 11 columns, the optional `G, nu, vrx, vry`) as columns over
+/// their broadcast shape, handed to `then` (shape, contact columns, step columns, optional).
+fn with_contract_columns<'py, T: Precision, R>(
     values: [&Bound<'py, PyAny>; 11],
     optional: [Option<&Bound<'py, PyAny>>; 4],
-    law: Law,
-    form: Form,
-) -> PyResult<Bound<'py, PyDict>> {
+    then: impl for<'a> FnOnce(
+        &'a [usize],
+        &'a SpecColumns<'a, T>,
+        &'a StepColumns<'a, T>,
+        &'a [Option<Column<'a, T>>; 4],
+    ) -> PyResult<R>,
+) -> PyResult<R> {
     let args = convert_all::<T, 11>(INPUTS, values)?;
     let extra = convert_optional::<T>(optional)?;
     let mut named: Vec<_> = INPUTS.iter().copied().zip(args.iter()).collect();
@@ -134,17 +156,30 @@ fn wrench_in<'py, T: Precision>(
     }
     let shape = broadcast_shape(&named)?;
     let [p, q, estar, cd, f, delta, h, hdot, vx, vy, omega] = columns_of(&args, &shape)?;
-    let [g, nu, vrx, vry] = optional_columns(&extra, &shape)?;
+    let rolling = optional_columns(&extra, &shape)?;
     let spec = [p, q, estar, cd, f, delta];
     let steps = [h, hdot, vx, vy, omega];
-    let rolling = [g.as_ref(), nu.as_ref(), vrx.as_ref(), vry.as_ref()];
-    let inputs = core::array::from_fn(|k| match k {
-        0..6 => Some(&spec[k]),
-        6..11 => Some(&steps[k - 6]),
-        _ => rolling[k - 11],
-    });
-    let contacts = PerRow::new(&spec, [rolling[0], rolling[1]], law, form);
-    evaluate_py(py, &shape, &steps, contacts, inputs)
+    then(&shape, &spec, &steps, &rolling)
+}
+
+/// The per-row function in precision `T`.
+fn wrench_in<'py, T: Precision>(
+    py: Python<'py>,
+    values: [&Bound<'py, PyAny>; 11],
+    optional: [Option<&Bound<'py, PyAny>>; 4],
+    law: Law,
+    form: Form,
+) -> PyResult<Bound<'py, PyDict>> {
+    with_contract_columns::<T, _>(values, optional, |shape, spec, steps, rolling| {
+        let rolling = rolling.each_ref().map(Option::as_ref);
+        let inputs = core::array::from_fn(|k| match k {
+            0..6 => Some(&spec[k]),
+            6..11 => Some(&steps[k - 6]),
+            _ => rolling[k - 11],
+        });
+        let contacts = PerRow::new(spec, [rolling[0], rolling[1]], law, form);
+        evaluate_py(py, shape, steps, contacts, inputs)
+    })
 }
 
 /// The wrench of the contract, row by row over the broadcast arguments.
@@ -273,13 +308,17 @@ fn build<T: Precision>(
     })
 }
 
-/// One step (or an array of steps) of a built contact in precision `T`.
-fn steps_in<'py, T: Precision>(
-    py: Python<'py>,
-    contact: &DynContact<T>,
+/// A built contact's step arguments (`h, hdot, vx, vy, omega`, the optional `vrx, vry`) as
+/// columns over their broadcast shape, handed to `then` (shape, step columns, `[vrx, vry]`).
+fn with_step_columns<'py, T: Precision, R>(
     values: [&Bound<'py, PyAny>; 5],
     rolling: [Option<&Bound<'py, PyAny>>; 2],
-) -> PyResult<Bound<'py, PyDict>> {
+    then: impl for<'a> FnOnce(
+        &'a [usize],
+        &'a StepColumns<'a, T>,
+        [Option<&'a Column<'a, T>>; 2],
+    ) -> PyResult<R>,
+) -> PyResult<R> {
     let names = [INPUTS[6], INPUTS[7], INPUTS[8], INPUTS[9], INPUTS[10]];
     let args = convert_all::<T, 5>(names, values)?;
     let extra = convert_optional::<T>([None, None, rolling[0], rolling[1]])?;
@@ -292,13 +331,25 @@ fn steps_in<'py, T: Precision>(
     let shape = broadcast_shape(&named)?;
     let steps = columns_of(&args, &shape)?;
     let [_, _, vrx, vry] = optional_columns(&extra, &shape)?;
-    let inputs = core::array::from_fn(|k| match k {
-        6..11 => Some(&steps[k - 6]),
-        13 => vrx.as_ref(),
-        14 => vry.as_ref(),
-        _ => None,
-    });
-    evaluate_py(py, &shape, &steps, contact, inputs)
+    then(&shape, &steps, [vrx.as_ref(), vry.as_ref()])
+}
+
+/// One step (or an array of steps) of a built contact in precision `T`.
+fn steps_in<'py, T: Precision>(
+    py: Python<'py>,
+    contact: &DynContact<T>,
+    values: [&Bound<'py, PyAny>; 5],
+    rolling: [Option<&Bound<'py, PyAny>>; 2],
+) -> PyResult<Bound<'py, PyDict>> {
+    with_step_columns::<T, _>(values, rolling, |shape, steps, [vrx, vry]| {
+        let inputs = core::array::from_fn(|k| match k {
+            6..11 => Some(&steps[k - 6]),
+            13 => vrx,
+            14 => vry,
+            _ => None,
+        });
+        evaluate_py(py, shape, steps, contact, inputs)
+    })
 }
 
 /// A contact of the contract built once (validated, the shape solved for `form="fixed"`),
@@ -356,6 +407,26 @@ impl Contact {
     ) -> PyResult<Bound<'py, PyDict>> {
         let values = [h, hdot, vx, vy, omega];
         each!(&self.built, c => steps_in(py, c, values, [vrx, vry]))
+    }
+
+    /// The wrench and its Jacobian at the step columns (scalars or arrays that broadcast),
+    /// optionally with the rolling velocity `vrx`, `vry`: the dict of `contensou.jacobian`
+    /// (`JACOBIAN_OUTPUTS`), bit for bit.
+    #[pyo3(signature = (h, hdot, vx, vy, omega, vrx = None, vry = None))]
+    #[allow(clippy::too_many_arguments)]
+    fn jacobian<'py>(
+        &self,
+        py: Python<'py>,
+        h: &Bound<'py, PyAny>,
+        hdot: &Bound<'py, PyAny>,
+        vx: &Bound<'py, PyAny>,
+        vy: &Bound<'py, PyAny>,
+        omega: &Bound<'py, PyAny>,
+        vrx: Option<&Bound<'py, PyAny>>,
+        vry: Option<&Bound<'py, PyAny>>,
+    ) -> PyResult<Bound<'py, PyDict>> {
+        let values = [h, hdot, vx, vy, omega];
+        each!(&self.built, c => jacobian::built_in(py, c, values, [vrx, vry]))
     }
 
     /// One scalar step for tight Python loops (a physics engine's callback): Python floats in,
@@ -494,6 +565,21 @@ impl Contact {
 #[pymodule(name = "contensou")]
 fn contensou_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(wrench, m)?)?;
+    m.add_function(wrap_pyfunction!(jacobian::jacobian, m)?)?;
+    m.add_function(wrap_pyfunction!(step::step, m)?)?;
+    m.add("JACOBIAN_OUTPUTS", ::contensou::jacobian::OUTPUTS.to_vec())?;
+    m.add(
+        "STEP_INPUTS",
+        ::contensou::step::contract::STEP_INPUTS.to_vec(),
+    )?;
+    m.add(
+        "FREE_INPUTS",
+        ::contensou::step::contract::FREE_INPUTS.to_vec(),
+    )?;
+    m.add(
+        "STEP_OUTPUTS",
+        ::contensou::step::contract::STEP_OUTPUTS.to_vec(),
+    )?;
     m.add_function(wrap_pyfunction!(rolling::rolling, m)?)?;
     m.add_class::<rolling::RollingContact>()?;
     m.add("ROLLING_INPUTS", ROLLING_INPUTS.to_vec())?;

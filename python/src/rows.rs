@@ -263,8 +263,18 @@ fn to_dict<'py, T: Precision>(
     shape: &[usize],
     outputs: Outputs<T>,
 ) -> PyResult<Bound<'py, PyDict>> {
+    dict_of(py, shape, &OUTPUTS, outputs.columns)
+}
+
+/// The dict `{names[k]: columns[k]}` of arrays of `shape` (numpy scalars for shape `()`).
+fn dict_of<'py, T: Precision, const K: usize>(
+    py: Python<'py>,
+    shape: &[usize],
+    names: &[&str; K],
+    columns: [Vec<T>; K],
+) -> PyResult<Bound<'py, PyDict>> {
     let dict = PyDict::new(py);
-    for (name, column) in OUTPUTS.iter().zip(outputs.columns) {
+    for (name, column) in names.iter().zip(columns) {
         let flat = PyArray1::from_vec(py, column);
         if shape.is_empty() {
             dict.set_item(*name, flat.get_item(0)?)?;
@@ -275,4 +285,45 @@ fn to_dict<'py, T: Precision>(
         }
     }
     Ok(dict)
+}
+
+/// Rows one at a time through `row` (the contact of row i and i → K outputs; the Jacobian and
+/// the step-aware wrench have no batch path), the GIL released: the dict `{names[k]: …}` of
+/// arrays of `shape`, or the first rejected row's `ValueError` — the column, its value when
+/// `named` holds that column (`(name, column)` of every input), the index and the reason.
+pub fn evaluate_each_py<'py, T: Precision, const K: usize>(
+    py: Python<'py>,
+    shape: &[usize],
+    mut contacts: impl Contacts<T> + Send,
+    row: impl Fn(&DynContact<T>, usize) -> Result<[T; K], Invalid> + Send + Sync,
+    names: &[&str; K],
+    named: &[(&str, Option<&Column<'_, T>>)],
+) -> PyResult<Bound<'py, PyDict>> {
+    let rows: usize = shape.iter().product();
+    let result = py.detach(|| {
+        let mut out: [Vec<T>; K] = core::array::from_fn(|_| Vec::with_capacity(rows));
+        for i in 0..rows {
+            let values = contacts.at(i).and_then(|c| row(c, i)).map_err(|e| (i, e))?;
+            for (o, x) in out.iter_mut().zip(values) {
+                o.push(x);
+            }
+        }
+        Ok::<_, (usize, Invalid)>(out)
+    });
+    match result {
+        Ok(out) => dict_of(py, shape, names, out),
+        Err((i, invalid)) => {
+            let value = named
+                .iter()
+                .find(|(n, _)| *n == invalid.column)
+                .and_then(|(_, c)| *c)
+                .map_or(String::new(), |c| format!(" = {}", c.at(i)));
+            Err(PyValueError::new_err(format!(
+                "{}{value} at index {}: {}",
+                invalid.column,
+                index_of(i, shape),
+                invalid.error.as_str()
+            )))
+        }
+    }
 }

@@ -3,7 +3,9 @@ floats, parsed back exactly) and through `contensou.wrench` / `Contact.wrench` g
 bits, for every law, form and precision.
 
 The reference command: $CONTENSOU_WRENCH_CMD if set, else
-`cargo run --release --bin contact_eval -- wrench` in this repository."""
+`cargo run --release --bin contact_eval -- wrench` in this repository. Other subcommands
+(`jacobian`, `step`: test_jacobian_step.py): $CONTENSOU_EVAL_CMD (contact_eval without a
+subcommand) if set, else the same cargo run."""
 
 import os
 import shlex
@@ -23,13 +25,15 @@ DTYPES = {"f32": np.float32, "f64": np.float64}
 UINTS = {"f32": np.uint32, "f64": np.uint64}
 
 
-def reference_command():
-    if os.environ.get("CONTENSOU_WRENCH_CMD"):
+def reference_command(sub="wrench"):
+    if sub == "wrench" and os.environ.get("CONTENSOU_WRENCH_CMD"):
         return shlex.split(os.environ["CONTENSOU_WRENCH_CMD"])
+    if os.environ.get("CONTENSOU_EVAL_CMD"):
+        return shlex.split(os.environ["CONTENSOU_EVAL_CMD"]) + [sub]
     if shutil.which("cargo") is None:
         pytest.skip("cargo not on PATH: no reference command")
     return ["cargo", "run", "--release", "--quiet", "--manifest-path", str(REPO / "Cargo.toml"),
-            "--bin", "contact_eval", "--", "wrench"]
+            "--bin", "contact_eval", "--", sub]
 
 
 def text(x, precision):
@@ -37,29 +41,32 @@ def text(x, precision):
     return str(np.float32(x)) if precision == "f32" else repr(float(x))
 
 
-def reference(rows, law, form, precision, optional=()):
-    """The CLI's outputs on `rows` (the 11 columns, then the optional rolling columns named)."""
+def reference(rows, law, form, precision, optional=(), sub="wrench", inputs=None, outputs=None):
+    """The CLI's outputs on `rows` (the 11 columns — or `inputs` — then the optional columns
+    named), through the subcommand `sub` whose output columns are `outputs`."""
+    inputs = list(contensou.INPUTS) if inputs is None else list(inputs)
+    outputs = list(contensou.OUTPUTS) if outputs is None else list(outputs)
     n = len(rows["P"])
-    columns = list(contensou.INPUTS) + list(optional)
+    columns = inputs + list(optional)
     lines = [",".join(columns)]
     lines += [",".join(text(rows[c][i], precision) for c in columns) for i in range(n)]
-    cmd = reference_command() + ["--law", law, "--form", form, "--precision", precision]
+    cmd = reference_command(sub) + ["--law", law, "--form", form, "--precision", precision]
     run = subprocess.run(cmd, input="\n".join(lines) + "\n", capture_output=True, text=True, cwd=REPO)
     assert run.returncode == 0, run.stderr
     out = run.stdout.strip().split("\n")
     header = out[0].split(",")
-    assert header == columns + list(contensou.OUTPUTS)
+    assert header == columns + outputs
     table = np.array([[float(x) for x in line.split(",")] for line in out[1:]])
     assert table.shape == (n, len(header))
     dtype = DTYPES[precision]
     # The echoed inputs are the bits we sent (the decimal form round-trips).
     for k, c in enumerate(columns):
         assert np.array_equal(table[:, k].astype(dtype).view(UINTS[precision]), rows[c].view(UINTS[precision])), c
-    return {c: table[:, len(columns) + k].astype(dtype) for k, c in enumerate(contensou.OUTPUTS)}
+    return {c: table[:, len(columns) + k].astype(dtype) for k, c in enumerate(outputs)}
 
 
-def assert_same_bits(got, want, precision):
-    for c in contensou.OUTPUTS:
+def assert_same_bits(got, want, precision, outputs=None):
+    for c in contensou.OUTPUTS if outputs is None else outputs:
         g, w = np.asarray(got[c]), np.asarray(want[c])
         assert g.dtype == DTYPES[precision], c
         bad = np.flatnonzero(g.view(UINTS[precision]) != w.view(UINTS[precision]))

@@ -201,3 +201,19 @@ def test_rolling_contact_errors():
         contact.wrench(6e-3, 4e-3, 0.3, 8e4, 30.0, 1e-3, 0.0, np.array([0.0, np.inf]))
     with pytest.raises(ValueError, match=r"^b = -0.004 at index \(\): length must be positive"):
         contact.wrench(6e-3, -4e-3, 0.3, 8e4, 30.0, 1e-3, 0.0, 0.0)
+
+
+def test_rolling_names_the_default_rolling_law():
+    """`law="rolling"` is the default rolling law (the library resolves the alias), bit for bit."""
+    default = contensou.ROLLING_LAWS[0]
+    args = (6e-3, 4e-3, 8e10, 0.28, 0.3, 8e4, 30.0, 1e-3, -2e-4, np.array([0.0, 0.5, 50.0]))
+    alias, named = (contensou.rolling(*args, law=law) for law in ("rolling", default))
+    for k in OUTPUTS:
+        assert np.array_equal(alias[k].view(np.uint64), named[k].view(np.uint64)), k
+    assert contensou.RollingContact(1.5, 8e10, 0.28, law="rolling").law == default
+    spec = {"P": 20.0, "Q": 50.0, "estar": 1.15e11, "cd": 0.0, "f": 0.3, "delta": 1e-4}
+    step = {"h": 1e-6, "hdot": 0.0, "vx": 0.01, "vy": -0.002, "omega": 30.0, "vrx": 1.5, "vry": 0.5}
+    by_alias, by_name = (contensou.wrench(**spec, **step, G=8e10, law=law) for law in ("rolling", default))
+    for k in by_alias:
+        assert np.array_equal(by_alias[k], by_name[k]), k
+    assert contensou.Contact(**spec, law="rolling", G=8e10).law == default

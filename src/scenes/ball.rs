@@ -12,13 +12,14 @@
 
 use super::integrate::Ode;
 use super::rigid::Vec3;
-use super::step_aware::{Candidate, InvInertia, Site, Warm, rigid_w, solve};
+use super::step_aware::{Candidate, InvInertia, Site, Warm, rigid_w, solve_library};
 use crate::contact::Contact;
 use crate::frame::{ContactFrame, WorldAxes, point_velocity};
 use crate::friction::{Friction, FrictionLaw};
 use crate::geometry::Curvatures;
 use crate::normal::{Hertz, Material, Modulus, NormalLaw, Undamped};
 use crate::shape::Newton;
+use crate::step::Scheme;
 use crate::{Error, Real};
 
 /// Number of scalars in the state.
@@ -198,8 +199,16 @@ impl<T: Real, L: FrictionLaw> Ball<T, L> {
             h_pred: self.radius - g_pred.z + dt * (u_pred[0] - u_free[0]),
             u_free,
             rolling: Default::default(),
+            drift: [T::ZERO; 4],
         }];
-        let sol = solve(dt, &wm, &[&self.contact], &cand, warm);
+        let sol = solve_library(
+            dt,
+            &wm,
+            &[&self.contact],
+            &cand,
+            &Scheme::backward_euler(),
+            warm,
+        );
         let (f, t) = site.load(&sol.w[0]);
         let v1 = v_free + f * (dt / self.mass);
         let w1 = w + t * (dt * inv_i);

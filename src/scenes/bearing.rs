@@ -45,7 +45,7 @@
 
 use super::integrate::Ode;
 use super::rigid::{Quat, Vec3};
-use super::step_aware::{Candidate, InvInertia, Site, StepContact, Warm, rigid_w, solve};
+use super::step_aware::{Candidate, InvInertia, Site, StepContact, Warm, rigid_w, solve_library};
 #[cfg(doc)]
 use crate::contact::Contact;
 use crate::frame::{ContactFrame, Frame, MajorAxis, point_velocity};
@@ -53,6 +53,7 @@ use crate::friction::rolling::RollingVelocity;
 use crate::geometry::{Curvatures, Race};
 use crate::jacobian::State as StepState;
 use crate::select::StepRolling;
+use crate::step::Scheme;
 use crate::{Error, Real};
 
 /// Number of balls (the 209 bearing has 9).
@@ -373,6 +374,7 @@ impl<T: Real, C: RaceLaw<T>> Raceway<T, C> {
                 h_pred: h_end,
                 u_free: [0, 1, 2, 3].map(|i| ball_u[i] - ring_u[i]),
                 rolling: RollingVelocity::new(vrx, vry).unwrap_or(RollingVelocity::ZERO),
+                drift: [T::ZERO; 4],
             },
         })
     }
@@ -585,7 +587,14 @@ impl<T: Real, C: RaceLaw<T>> Bearing<T, C> {
                 contact: &self.outer.contact,
                 curvatures: &self.outer.curvatures,
             };
-            let sol = solve(dt, &wm, &[&inner, &outer], &[si.cand, so.cand], wk);
+            let sol = solve_library(
+                dt,
+                &wm,
+                &[&inner, &outer],
+                &[si.cand, so.cand],
+                &Scheme::backward_euler(),
+                wk,
+            );
             let (fi, ti) = si.site.load(&sol.w[0]);
             let (fo, to) = so.site.load(&sol.w[1]);
             let rel_p = p + (v + f_warm * (dt * inv_m) * T::HALF) * half - c_mid + si.site.arm;

@@ -1,8 +1,17 @@
-//! A step-aware contact step for large time steps: the linearly implicit (backward Euler) step
-//! of up to [`MAX_CONTACTS`] contacts on one body, with the normal direction in the solve, the
-//! gap predicted from the free motion, an active set, a slip-reversal rule and a projection.
-//! The scenes' large-step integrators ([`super::ball`], [`super::tippe_top`] and
-//! [`super::rattleback`]'s `step_aware` functions) are built on it.
+//! The scenes' glue to the library's step-aware wrench, and the rigid-body pieces of their
+//! large-step integrators.
+//!
+//! The scenes' `step_aware` integrators ([`super::ball`], [`super::tippe_top`],
+//! [`super::rattleback`], [`super::bearing`]) build each step's [`Candidate`]s (free velocity,
+//! predicted approach, the slip's drift, rolling velocity) and the inverse mass W
+//! ([`rigid_w`]), and call [`solve_library`]: the library's
+//! [`crate::step::step_wrenches_with`] with the integrator's [`crate::step::Scheme`] — the
+//! same wrench a user of [`crate::step`] gets. Also here: the exact torque-free rotation of
+//! the symmetric top ([`symmetric_free`]) and [`rotate_by`].
+//!
+//! [`solve_with`] is the scenes' former private step (central-difference Jacobian, an ellipse
+//! projection), kept only as [`solve_library`]'s fallback for a W or Δt the library refuses
+//! (never reached by the scenes' own W); it is described below.
 //!
 //! # The step
 //!
@@ -54,8 +63,9 @@ use crate::Real;
 use crate::contact::Contact;
 use crate::friction::rolling::RollingVelocity;
 use crate::friction::{FrictionLaw, Slip};
-use crate::jacobian::{Jacobian, State, input};
+use crate::jacobian::{Jacobian, Linearize, State, input};
 use crate::normal::{Damping, NormalLaw};
+use crate::step::{Free, InverseMass as LibInverseMass, Scheme, TimeStep, step_wrenches_with};
 
 use super::rigid::{Quat, Vec3};
 
@@ -170,6 +180,12 @@ pub struct Candidate<T> {
     pub u_free: [T; 4],
     /// The rolling velocity (held over the step; rolling laws only).
     pub rolling: RollingVelocity<T>,
+    /// The free velocity's own change over the second half of the step, from the pose the
+    /// impulse acts at ([`Coupling::pose`]) to the end pose (the contact point running over
+    /// the surface, the body turning): the velocity at the fraction θ of the step is
+    /// u_free + θ·Δt·W·w̄ + (θ − pose)/(1 − pose)·drift — the end velocity (θ = 1)
+    /// u_free + Δt·W·w̄ + drift. Zero when the caller reads u_free where the step ends.
+    pub drift: [T; 4],
 }
 
 /// The result of [`solve`].
@@ -311,6 +327,11 @@ pub struct Coupling<'a, T> {
     /// used while the slip keeps its direction: a contact whose slip or spin would reverse
     /// within the step switches to θ = 1 for that step).
     pub theta: T,
+    /// The fraction of the step at which u_free (and W) are read: the pose the impulse acts
+    /// at (½ for a Strang splitting; 1 when everything is read at the end). A contact's
+    /// [`Candidate::drift`] (the free velocity's change from that pose to the end) enters the
+    /// velocity at θ with the weight (θ − pose)/(1 − pose).
+    pub pose: T,
 }
 
 /// The step-aware wrench of K ≤ [`MAX_CONTACTS`] contacts sharing one inverse mass `w`, over
@@ -328,6 +349,7 @@ pub fn solve<T: Real, C: StepContact<T>, const K: usize>(
         w,
         gap: w,
         theta: T::ONE,
+        pose: T::ONE,
     };
     solve_with(dt, &c, contacts, cand, warm)
 }
@@ -383,10 +405,18 @@ pub fn solve_with<T: Real, C: StepContact<T>, const K: usize>(
                 theta[k] = T::ONE;
             }
             let th = theta[k];
+            // u_θ = u_free + t·Δt·W·w̄ + (2t − 1)·drift, t = 1 for the normal.
             let mut ul = [T::ZERO; 4];
+            let mut shift = [T::ZERO; 4];
             for c in 0..4 {
                 let t = if c == 0 { T::ONE } else { th };
-                ul[c] = free[c] + t * (u[k][c] - free[c]);
+                let dr = cand[k].drift[c];
+                shift[c] = if cp.pose < T::ONE {
+                    (t - cp.pose) / (T::ONE - cp.pose) * dr
+                } else {
+                    dr
+                };
+                ul[c] = free[c] + t * (u[k][c] - dr - free[c]) + shift[c];
             }
             if reversed {
                 (ul[1], ul[2]) = (T::ZERO, T::ZERO);
@@ -414,7 +444,7 @@ pub fn solve_with<T: Real, C: StepContact<T>, const K: usize>(
                 a[k][i] = [d[0], th * d[1], th * d[2], th * d[3]];
                 let mut bi = jac.value[i] + kh[k][i] * (cand[k].h_pred - h_lin[k]);
                 for c in 0..4 {
-                    bi += d[c] * (free[c] - ul[c]);
+                    bi += d[c] * (free[c] + shift[c] - ul[c]);
                 }
                 b[k][i] = bi;
             }
@@ -507,6 +537,97 @@ pub fn solve_with<T: Real, C: StepContact<T>, const K: usize>(
     Solution { w: wbar, u, h }
 }
 
+/// A scene contact as the library's [`Linearize`]: its wrench, and its Jacobian by
+/// [`StepContact::linearize`].
+struct AsLinearize<'a, C>(&'a C);
+
+impl<T: Real, C: StepContact<T>> Linearize<T> for AsLinearize<'_, C> {
+    fn wrench4(&self, s: &State<T>) -> [T; 4] {
+        self.0.wrench4(s)
+    }
+    fn linearize(&self, s: &State<T>) -> Jacobian<T> {
+        self.0.linearize(s)
+    }
+}
+
+/// The step-aware wrench of the library ([`crate::step::step_wrenches_with`]) for K ≤
+/// [`MAX_CONTACTS`] contacts sharing the inverse mass `w` (validated by
+/// [`crate::step::InverseMass::new`]), integrated as `scheme` says ([`Scheme`]: backward Euler,
+/// or a Strang splitting whose gap response is ½W). What the scenes run: the same wrench as a
+/// user of [`crate::step`] gets. `warm` receives the solution (the library starts from its
+/// own normal predictor, not from `warm`). A W or Δt the library refuses (not symmetric
+/// positive semidefinite within its tolerance, Δt ≤ 0) falls back to [`solve_with`].
+pub fn solve_library<T: Real, C: StepContact<T>, const K: usize>(
+    dt: T,
+    w: &InverseMass<T>,
+    contacts: &[&C; K],
+    cand: &[Candidate<T>; K],
+    scheme: &Scheme<T>,
+    warm: &mut Warm<T>,
+) -> Solution<T> {
+    const { assert!(K <= MAX_CONTACTS) };
+    let blocks: [[[[T; 4]; 4]; K]; K] = core::array::from_fn(|i| {
+        core::array::from_fn(|j| {
+            core::array::from_fn(|a| core::array::from_fn(|b| w[4 * i + a][4 * j + b]))
+        })
+    });
+    let frees: [Result<Free<T>, crate::Error>; K] = core::array::from_fn(|k| {
+        Free::new(cand[k].u_free, cand[k].h_pred).and_then(|f| f.with_drift(cand[k].drift))
+    });
+    let (Ok(dts), Ok(wm)) = (TimeStep::new(dt), LibInverseMass::<T, K>::new(blocks)) else {
+        return fallback(dt, w, scheme, contacts, cand, warm);
+    };
+    let mut free = [Free::coasting(dts, &State::default()); K];
+    for k in 0..K {
+        match frees[k] {
+            Ok(f) => free[k] = f,
+            Err(_) => return fallback(dt, w, scheme, contacts, cand, warm),
+        }
+    }
+    let lins: [AsLinearize<'_, C>; K] = core::array::from_fn(|k| AsLinearize(contacts[k]));
+    let dyns: [&dyn Linearize<T>; K] = core::array::from_fn(|k| &lins[k] as &dyn Linearize<T>);
+    let states: [State<T>; K] = core::array::from_fn(|k| State {
+        h: cand[k].h_pred,
+        hdot: -cand[k].u_free[0],
+        slip: Slip::or_rest(cand[k].u_free[1], cand[k].u_free[2], cand[k].u_free[3]),
+        rolling: cand[k].rolling,
+    });
+    let out = step_wrenches_with(dyns, dts, &wm, &states, &free, scheme);
+    let mut sol = Solution::default();
+    for k in 0..K {
+        sol.w[k] = out[k].wrench;
+        sol.u[k] = out[k].u_end;
+        sol.h[k] = out[k].h_end;
+    }
+    warm.w = sol.w;
+    warm.h = sol.h;
+    sol
+}
+
+/// [`solve_with`] with the coupling `scheme` describes (G = γ·W).
+fn fallback<T: Real, C: StepContact<T>, const K: usize>(
+    dt: T,
+    w: &InverseMass<T>,
+    scheme: &Scheme<T>,
+    contacts: &[&C; K],
+    cand: &[Candidate<T>; K],
+    warm: &mut Warm<T>,
+) -> Solution<T> {
+    let mut gap = *w;
+    for row in gap.iter_mut() {
+        for x in row.iter_mut() {
+            *x *= scheme.gap();
+        }
+    }
+    let cp = Coupling {
+        w,
+        gap: &gap,
+        theta: scheme.theta(),
+        pose: T::ONE - scheme.gap(),
+    };
+    solve_with(dt, &cp, contacts, cand, warm)
+}
+
 /// u⁺ = u_free + Δt·W·w̄ and h⁺ = h_pred − Δt²·(G·w̄)ₙ per contact.
 fn end_state<T: Real, const K: usize>(
     dt: T,
@@ -528,7 +649,7 @@ fn end_state<T: Real, const K: usize>(
                     }
                 }
             }
-            u[k][a] = cand[k].u_free[a] + dt * s;
+            u[k][a] = cand[k].u_free[a] + dt * s + cand[k].drift[a];
         }
         h[k] = cand[k].h_pred - dt * dt * g;
     }
@@ -678,6 +799,7 @@ mod tests {
             h_pred: 1e-3,
             u_free: [-0.1, 0.2, 0.0, 3.0],
             rolling: RollingVelocity::default(),
+            drift: [0.0; 4],
         }];
         let s = solve(dt, &w, &[&Linear], &cand, &mut Warm::default());
         let (wn, k, c) = (w[0][0], 1e6, 10.0);

@@ -27,6 +27,7 @@ use contensou::elliptic::{
 };
 use contensou::friction::*;
 use contensou::geometry::{Curvatures, Principal};
+use contensou::jacobian::{Linearize, State};
 use contensou::math::{Backend, Micromath};
 use contensou::normal::{Fitted, Hertz, HertzMicromath, Modulus, NormalLaw, Undamped, Volumetric};
 use contensou::scenes::integrate::{rk4, rk4_step};
@@ -36,6 +37,7 @@ use contensou::select::*;
 use contensou::shape::{
     Eccentricity, HamrockDowson, HamrockDowsonMicromath, Linear, Newton, Ratio, Table,
 };
+use contensou::step::{Free, InverseMass, TimeStep, step_wrenches};
 use cortex_m_rt::entry;
 use panic_semihosting as _;
 
@@ -166,6 +168,33 @@ fn fixed<T: Real, L: FrictionLaw>() {
         circle(),
     ));
     bb(c.wrench(t(1e-6), T::ZERO, slip()));
+}
+/// The step-aware wrench (stage `step`): K contacts sharing bodies (`fixed-best`: K = 1,
+/// `two-contacts-best`: K = 2), W validated by `InverseMass::new`, the free motion coasting.
+fn step_aware<const K: usize>() {
+    let c = bb(Contact::from_parts(
+        hertz::<f32>(),
+        Undamped,
+        friction::<f32, Best>(),
+        circle(),
+    ));
+    let dt = ok(TimeStep::new(t::<f32>(1e-3)));
+    let mut blocks = [[[[0.0_f32; 4]; 4]; K]; K];
+    for (i, row) in blocks.iter_mut().enumerate() {
+        for (a, line) in row[i].iter_mut().enumerate() {
+            line[a] = t(100.0);
+        }
+    }
+    let w = ok(InverseMass::<f32, K>::new(bb(blocks)));
+    let s = State {
+        h: t(1e-6),
+        hdot: 0.0,
+        slip: slip(),
+        rolling: rolling::RollingVelocity::ZERO,
+    };
+    let free = Free::coasting(dt, &s);
+    let contacts: [&dyn Linearize<f32>; K] = [&c; K];
+    bb(step_wrenches(contacts, dt, &w, &[s; K], &[free; K]));
 }
 fn varying<T: Real, L: FrictionLaw>() {
     let c = bb(VaryingContact::new(
@@ -399,6 +428,8 @@ probes! {
     "wrench,fixed,f64" => fixed::<f64, Simplified>();
     "wrench,table_each_step,f32" => varying::<f32, Simplified>();
     "wrench,table_each_step,f64" => varying::<f64, Simplified>();
+    "step,fixed-best,f32" => step_aware::<1>();
+    "step,two-contacts-best,f32" => step_aware::<2>();
     "wrench,fixed-best,f32" => fixed::<f32, Best>();
     "wrench,fixed-best,f64" => fixed::<f64, Best>();
     "wrench,table_each_step-best,f32" => varying::<f32, Best>();

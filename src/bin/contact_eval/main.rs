@@ -31,6 +31,8 @@ mod wrench;
 
 use std::process::ExitCode;
 
+use contensou::friction::rolling::row::RowLaw;
+
 /// Floating-point precision of a run (`--precision f32|f64`, default f64).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Precision {
@@ -122,6 +124,19 @@ pub fn list<'a>(option: &str, entries: impl Iterator<Item = (&'a str, &'a str)>)
         s += &format!("    {name:<22} {about}{default}\n");
     }
     s
+}
+
+/// The `--law` help line of the alias `rolling` ([`RowLaw::ALIAS`]).
+pub fn rolling_alias() -> String {
+    let about = format!("the default rolling law ({})", RowLaw::DEFAULT.name());
+    format!("    {:<22} {about}\n", RowLaw::ALIAS)
+}
+
+/// The `--law` value, the alias `rolling` resolved to the default rolling law's name
+/// ([`RowLaw::resolve`], the library's one place).
+pub fn law_option(args: &mut Args) -> Option<String> {
+    args.take(&["--law"])
+        .map(|v| RowLaw::resolve(&v).to_owned())
 }
 
 /// A subcommand: name, columns, description, help text and run.

@@ -13,19 +13,19 @@ use contensou::Real;
 use contensou::friction::rolling::row::{COLUMNS, OUTPUTS, RowLaw, Rows};
 
 use crate::csv::{message, run_csv, shortest};
-use crate::{Args, Precision, by_name, list};
+use crate::{Args, Precision, by_name, law_option, list, rolling_alias};
 
 /// The help text.
 pub fn help() -> String {
     format!(
         "{}  a along the rolling direction (+x), creepages of body B relative to A, Fx,Fy,Mz on B;\n  V < 0 mirrors (rolling towards -x); V = 0 is the limit V -> 0+ at the given creepages\n",
-        list("--law", RowLaw::ALL.iter().map(|l| (l.name(), l.about())))
+        list("--law", RowLaw::ALL.iter().map(|l| (l.name(), l.about()))) + &rolling_alias()
     )
 }
 
 /// Run the subcommand, or say why the options are wrong.
 pub fn run(mut args: Args) -> Result<ExitCode, String> {
-    let law = by_name("--law", args.take(&["--law"]), &RowLaw::ALL, |l| l.name())?;
+    let law = by_name("--law", law_option(&mut args), &RowLaw::ALL, |l| l.name())?;
     let law = law.copied().unwrap_or_default();
     let precision = args.precision;
     args.finish()?;

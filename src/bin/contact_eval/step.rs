@@ -10,7 +10,7 @@ use contensou::step::contract::{self, FREE_INPUTS, STEP_INPUTS, STEP_OUTPUTS};
 
 use crate::csv::run_csv_optional;
 use crate::wrench::{self, parts, refusal};
-use crate::{Args, Precision, list};
+use crate::{Args, Precision, list, rolling_alias};
 
 const COLUMNS: &str =
     "  columns: those of `wrench` (P,Q,estar,cd,f,delta,h,hdot,vx,vy,omega; SI, contact frame),
@@ -30,7 +30,7 @@ const COLUMNS: &str =
 
 /// The help text.
 pub fn help() -> String {
-    let laws = list("--law", Law::ALL.iter().map(|&l| (l.name(), "")));
+    let laws = list("--law", Law::ALL.iter().map(|&l| (l.name(), ""))) + &rolling_alias();
     let forms = list("--form", Form::ALL.iter().map(|&f| (f.name(), "")));
     format!("{COLUMNS}{laws}{forms}")
 }

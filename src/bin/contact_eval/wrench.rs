@@ -10,7 +10,7 @@ use contensou::dynamic::{
 };
 
 use crate::csv::{message, run_csv_optional, shortest};
-use crate::{Args, Precision, by_name, list};
+use crate::{Args, Precision, by_name, law_option, list, rolling_alias};
 
 /// One line per law for `--help`.
 fn about_law(law: Law) -> &'static str {
@@ -60,6 +60,7 @@ pub fn help() -> String {
 /// The `--law` and `--form` lists (shared with the subcommands of the same contract).
 pub fn help_options() -> String {
     let laws = list("--law", Law::ALL.iter().map(|&l| (l.name(), about_law(l))));
+    let laws = laws + &rolling_alias();
     let forms = list(
         "--form",
         Form::ALL.iter().map(|&f| (f.name(), about_form(f))),
@@ -82,7 +83,7 @@ pub fn run(args: Args) -> Result<ExitCode, String> {
 
 /// The options of the contract's subcommands: `--law`, `--form` and the precision.
 pub fn options(mut args: Args) -> Result<(Law, Form, Precision), String> {
-    let law = by_name("--law", args.take(&["--law"]), &Law::ALL, |l| l.name())?;
+    let law = by_name("--law", law_option(&mut args), &Law::ALL, |l| l.name())?;
     let form = by_name("--form", args.take(&["--form"]), &Form::ALL, |f| f.name())?;
     let (law, form) = (
         law.copied().unwrap_or_default(),

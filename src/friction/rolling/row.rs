@@ -127,10 +127,9 @@ impl<T: fmt::Debug + fmt::Display> core::error::Error for Rejected<T> {}
 
 /// The rolling laws by name at run time, the default first (the names of
 /// `contact_eval rolling --law`).
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum RowLaw {
-    /// [`Table`] (the default).
-    #[default]
+    /// [`Table`] (the default, [`RowLaw::DEFAULT`]).
     Table,
     /// [`Blend`].
     Blend,
@@ -142,6 +141,13 @@ pub enum RowLaw {
     FullSlip,
     /// [`Linear`].
     Linear,
+}
+
+impl Default for RowLaw {
+    /// [`RowLaw::DEFAULT`].
+    fn default() -> Self {
+        Self::DEFAULT
+    }
 }
 
 impl RowLaw {
@@ -167,8 +173,28 @@ impl RowLaw {
         }
     }
 
-    /// The law called `name`, if any.
+    /// The default rolling law: what [`RowLaw::ALIAS`] (`"rolling"`) names in every shell
+    /// (`contact_eval wrench`/`rolling --law rolling`, the C API's `contensou_law_from_name`,
+    /// Python's `law="rolling"`). The one place where the default is chosen.
+    pub const DEFAULT: RowLaw = RowLaw::Table;
+
+    /// The name that stands for [`RowLaw::DEFAULT`], whatever its method is called.
+    pub const ALIAS: &'static str = "rolling";
+
+    /// `name` with the alias [`RowLaw::ALIAS`] replaced by the default law's own name
+    /// ([`RowLaw::DEFAULT`]); any other string unchanged. Every shell's law lookup
+    /// ([`RowLaw::from_name`], [`crate::dynamic::Law::from_name`]) goes through it.
+    pub fn resolve(name: &str) -> &str {
+        if name == Self::ALIAS {
+            Self::DEFAULT.name()
+        } else {
+            name
+        }
+    }
+
+    /// The law called `name` (or [`RowLaw::DEFAULT`] for [`RowLaw::ALIAS`]), if any.
     pub fn from_name(name: &str) -> Option<Self> {
+        let name = Self::resolve(name);
         Self::ALL.into_iter().find(|l| l.name() == name)
     }
 

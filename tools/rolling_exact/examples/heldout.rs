@@ -3,9 +3,11 @@
 //! direction to the patch axes, ν, the direction of the creepages and their magnitude — on no
 //! creep curve of the other reference files and not used to fit anything.
 //!
-//! `nice cargo run --release --example heldout -- [OUT [FIRST [LAST]]]` (from
+//! `nice cargo run --release --example heldout -- [OUT [FIRST [LAST [SEED [ELEMENTS]]]]]` (from
 //! tools/rolling_exact; default `../data/rolling_ref_heldout.csv`, points FIRST..LAST of the
-//! sequence, to split the work; concatenate the rows).
+//! sequence, to split the work; concatenate the rows). Another SEED draws a TRAINING set from
+//! the same distribution (family `train`; the surrogate prototype's, tools/fit_rolling_surrogate.py):
+//! never fit on the held-out seed. ELEMENTS: on the finest grid (default 1,024, the held-out set's).
 //!
 //! Draws per point (splitmix64, seed `SEED`, in this order):
 //! - a₀/b₀ log-uniform in [1/20, 20] (c = √(a₀b₀) = 1; a₀ may be the shorter semi-axis);
@@ -73,6 +75,10 @@ fn main() {
         .unwrap_or("../data/rolling_ref_heldout.csv");
     let first: usize = args.get(1).map_or(0, |s| s.parse().expect("FIRST"));
     let last: usize = args.get(2).map_or(POINTS, |s| s.parse().expect("LAST"));
+    let seed: u64 = args.get(3).map_or(SEED, |s| s.parse().expect("SEED"));
+    let family = if seed == SEED { "heldout" } else { "train" };
+    // elements on the finest grid (the held-out set's 1,024; fewer for a cheaper training set)
+    let elements: usize = args.get(4).map_or(1024, |s| s.parse().expect("ELEMENTS"));
     let started = Instant::now();
     let mut file = std::io::BufWriter::new(std::fs::File::create(out).expect("create csv"));
     let mut line = |text: &str| {
@@ -86,14 +92,15 @@ fn main() {
             "# Exact steady-rolling reference: the held-out set over the whole domain, tools/rolling_exact/examples/heldout.rs",
         );
         line(&format!(
-            "# ({POINTS} points drawn with seed {SEED}; see there). Method, extrapolation, error columns and units as rolling_ref.csv;"
+            "# ({} points drawn with seed {seed}; see there). Method, extrapolation, error columns and units as rolling_ref.csv;",
+            last - first
         ));
         line(
             "# theta_deg: angle from the rolling direction x to the patch's a axis (a/b = a_over_b, c = 1).",
         );
         line("family,a_over_b,theta_deg,nu,nl,xi,eta,phi_c,fx,fy,mz,err_f,err_m,converged,seconds");
     }
-    let mut state = SEED;
+    let mut state = seed;
     for i in 0..last {
         let (aob, theta, nu, xi, eta, phi_c) = draw(&mut state);
         if i < first {
@@ -102,10 +109,10 @@ fn main() {
         let t = Instant::now();
         let (a, b, _) = skew(aob, theta);
         let nm = elements_ratio(a / b);
-        let patch = Patch::skewed_on(aob, theta, nu, NL, finest_k(nm, 1024), nm);
+        let patch = Patch::skewed_on(aob, theta, nu, NL, finest_k(nm, elements), nm);
         let sol = patch.solve(xi, eta, phi_c, true);
         line(&format!(
-            "heldout,{aob:.6},{:.4},{nu:.4},{NL},{xi:e},{eta:e},{phi_c:e},{:.10e},{:.10e},{:.10e},{:.3e},{:.3e},{},{:.2}",
+            "{family},{aob:.6},{:.4},{nu:.4},{NL},{xi:e},{eta:e},{phi_c:e},{:.10e},{:.10e},{:.10e},{:.3e},{:.3e},{},{:.2}",
             theta.to_degrees(),
             sol.totals.fx,
             sol.totals.fy,

@@ -1,0 +1,142 @@
+/*
+ * step_eval: the C twin of `contact_eval step` (the step-aware wrench's row contract,
+ * contensou::step::contract) through contensou_contact_step_*.
+ *
+ *   step_eval [--law NAME] [--form fixed|varying] [--precision f32|f64] < in.csv > out.csv
+ *
+ * stdin: the header row P,Q,estar,cd,f,delta,h,hdot,vx,vy,omega,dt,w_nn,w_nx,w_ny,w_nw,w_xx,
+ * w_xy,w_xw,w_yy,w_yw,w_ww, then any of the optional columns G,nu,vrx,vry,un_free,ux_free,
+ * uy_free,uw_free (each at most once, any order), then one row per step; stdout: the inputs
+ * echoed, then N,Fx,Fy,Tz. A contact is built per row (contensou_contact_new_rolling_*: G, nu
+ * NULL when absent); the rolling velocity is 0 when its columns are absent; the free velocity
+ * is NULL when no free column is given, else each absent one is the start velocity's
+ * (−hdot, vx, vy, omega), as the contract reads absent columns. Floats print with %.9g (f32)
+ * or %.17g (f64). The first bad row stops the run: "step_eval: row K: column = value: message
+ * (status code)" on stderr, exit 1 (the value "?" for the column W as a whole). Usage errors
+ * exit 2. Defaults: best, fixed, f64 (as contact_eval).
+ */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "contensou.h"
+#include "csv_fields.h"
+
+#define COLUMNS 22
+#define OPTIONAL 8
+#define MAX_FIELDS (COLUMNS + OPTIONAL)
+static const char *const INPUT_NAMES =
+    "P,Q,estar,cd,f,delta,h,hdot,vx,vy,omega,dt,w_nn,w_nx,w_ny,w_nw,w_xx,w_xy,w_xw,w_yy,w_yw,w_ww";
+static const char *const OPTIONAL_NAMES[OPTIONAL] = {"G", "nu", "vrx", "vry", "un_free", "ux_free", "uy_free", "uw_free"};
+
+static int usage(const char *why) {
+    fprintf(stderr, "step_eval: %s\nusage: step_eval [--law NAME] [--form fixed|varying] "
+                    "[--precision f32|f64] < in.csv > out.csv\n", why);
+    return 2;
+}
+
+int main(int argc, char **argv) {
+    contensou_law law = CONTENSOU_LAW_BEST;
+    contensou_form form = CONTENSOU_FORM_FIXED;
+    int f32 = 0, i, fields_per_row, has_free = 0;
+    static char line[4096], header[4096];
+    static contensou_contact_f32 c32; /* caller-owned storage: static, no allocation */
+    static contensou_contact_f64 c64;
+    int field_of[OPTIONAL];
+    long row = 0;
+
+    {
+        const char *why = contract_options(argc, argv, &law, &form, &f32);
+        if (why) return usage(why);
+    }
+    if (!fgets(line, sizeof line, stdin)) return usage("missing header row");
+    memcpy(header, trim(line), strlen(trim(line)) + 1);
+    fields_per_row = optional_columns("step_eval", header, INPUT_NAMES, OPTIONAL_NAMES, OPTIONAL, field_of);
+    if (fields_per_row < 0) return 1;
+    for (i = 4; i < OPTIONAL; i++) has_free = has_free || field_of[i] >= 0;
+    printf("%s,N,Fx,Fy,Tz\n", header);
+
+    while (fgets(line, sizeof line, stdin)) {
+        char copy[sizeof line];
+        char *fields[MAX_FIELDS];
+        double v[MAX_FIELDS], out[4] = {0, 0, 0, 0}, opt[OPTIONAL];
+        contensou_column column = CONTENSOU_COLUMN_NONE;
+        contensou_status s;
+        int n, k, bad_field;
+        row++;
+        if (*trim(line) == '\0') continue;
+        memcpy(copy, line, sizeof line);
+        n = split(copy, fields, MAX_FIELDS);
+        if (n != fields_per_row) {
+            fprintf(stderr, "step_eval: row %ld: fields = %d: expected %d (%s)\n", row, n, fields_per_row, header);
+            return 1;
+        }
+        for (k = 0; k < fields_per_row; k++) {
+            const char *why = parse(fields[k], &v[k], f32);
+            if (why) {
+                fprintf(stderr, "step_eval: row %ld: field %d = %s: %s\n", row, k + 1, fields[k], why);
+                return 1;
+            }
+        }
+        for (k = 0; k < OPTIONAL; k++) opt[k] = field_of[k] >= 0 ? v[field_of[k]] : 0.0;
+        /* Absent free columns: the start velocity's (−hdot, vx, vy, omega). */
+        if (field_of[4] < 0) opt[4] = -v[7];
+        for (k = 5; k < OPTIONAL; k++)
+            if (field_of[k] < 0) opt[k] = v[8 + (k - 5)];
+        if (f32) {
+            contensou_spec_f32 spec;
+            contensou_step_f32 step;
+            contensou_rolling_step_f32 roll;
+            contensou_inverse_mass_f32 w;
+            contensou_step_velocity_f32 u;
+            contensou_step_wrench_f32 o = {0, 0, 0, 0};
+            float g = (float)opt[0], nu = (float)opt[1];
+            spec.p = (float)v[0]; spec.q = (float)v[1]; spec.estar = (float)v[2];
+            spec.cd = (float)v[3]; spec.f = (float)v[4]; spec.delta = (float)v[5];
+            step.h = (float)v[6]; step.hdot = (float)v[7]; step.vx = (float)v[8];
+            step.vy = (float)v[9]; step.omega = (float)v[10];
+            roll.vrx = (float)opt[2]; roll.vry = (float)opt[3];
+            w.nn = (float)v[12]; w.nx = (float)v[13]; w.ny = (float)v[14]; w.nw = (float)v[15]; w.xx = (float)v[16];
+            w.xy = (float)v[17]; w.xw = (float)v[18]; w.yy = (float)v[19]; w.yw = (float)v[20]; w.ww = (float)v[21];
+            u.vn = (float)opt[4];
+            u.vx = (float)opt[5]; u.vy = (float)opt[6]; u.omega = (float)opt[7];
+            s = contensou_contact_new_rolling_f32(&c32, &spec, field_of[0] >= 0 ? &g : NULL, field_of[1] >= 0 ? &nu : NULL,
+                                                  law, form, &column);
+            if (s == CONTENSOU_STATUS_OK)
+                s = contensou_contact_step_f32(&c32, &step, &roll, (float)v[11], &w, has_free ? &u : NULL, &o, &column);
+            out[0] = o.n; out[1] = o.fx; out[2] = o.fy; out[3] = o.tz;
+        } else {
+            contensou_spec_f64 spec;
+            contensou_step_f64 step;
+            contensou_rolling_step_f64 roll;
+            contensou_inverse_mass_f64 w;
+            contensou_step_velocity_f64 u;
+            contensou_step_wrench_f64 o = {0, 0, 0, 0};
+            spec.p = v[0]; spec.q = v[1]; spec.estar = v[2]; spec.cd = v[3]; spec.f = v[4]; spec.delta = v[5];
+            step.h = v[6]; step.hdot = v[7]; step.vx = v[8]; step.vy = v[9]; step.omega = v[10];
+            roll.vrx = opt[2]; roll.vry = opt[3];
+            w.nn = v[12]; w.nx = v[13]; w.ny = v[14]; w.nw = v[15]; w.xx = v[16];
+            w.xy = v[17]; w.xw = v[18]; w.yy = v[19]; w.yw = v[20]; w.ww = v[21];
+            u.vn = opt[4]; u.vx = opt[5]; u.vy = opt[6]; u.omega = opt[7];
+            s = contensou_contact_new_rolling_f64(&c64, &spec, field_of[0] >= 0 ? &opt[0] : NULL,
+                                                  field_of[1] >= 0 ? &opt[1] : NULL, law, form, &column);
+            if (s == CONTENSOU_STATUS_OK)
+                s = contensou_contact_step_f64(&c64, &step, &roll, v[11], &w, has_free ? &u : NULL, &o, &column);
+            out[0] = o.n; out[1] = o.fx; out[2] = o.fy; out[3] = o.tz;
+        }
+        if (s != CONTENSOU_STATUS_OK) {
+            bad_field = column < 11 ? (int)column
+                      : column >= CONTENSOU_COLUMN_G && column <= CONTENSOU_COLUMN_VRY ? field_of[column - CONTENSOU_COLUMN_G]
+                      : column == CONTENSOU_COLUMN_DT ? 11
+                      : column >= CONTENSOU_COLUMN_W_NN && column < CONTENSOU_COLUMN_W ? 12 + (int)(column - CONTENSOU_COLUMN_W_NN)
+                      : column >= CONTENSOU_COLUMN_UN_FREE && column < CONTENSOU_COLUMN_H_FREE ? field_of[4 + column - CONTENSOU_COLUMN_UN_FREE]
+                      : -1;
+            fprintf(stderr, "step_eval: row %ld: %s = %s: %s (status %u)\n", row, contensou_column_name(column),
+                    bad_field >= 0 ? fields[bad_field] : "?", contensou_status_message(s), (unsigned)s);
+            return 1;
+        }
+        for (k = 0; k < fields_per_row; k++) printf(f32 ? "%.9g," : "%.17g,", v[k]);
+        for (k = 0; k < 4; k++) printf(f32 ? "%.9g%s" : "%.17g%s", out[k], k + 1 < 4 ? "," : "\n");
+    }
+    return fflush(stdout) == 0 ? 0 : 1;
+}
