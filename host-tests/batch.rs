@@ -154,6 +154,25 @@ fn cast<T: Real>(v: &[f64]) -> Vec<T> {
     v.iter().map(|&x| T::from_f64(x)).collect()
 }
 
+/// The step columns h, ḣ, v_x, v_y, ω as the batch path's [`Steps`].
+fn steps_of<T>(c: &[Vec<T>; 5]) -> Steps<'_, T> {
+    let [h, hdot, vx, vy, omega] = c;
+    Steps {
+        h,
+        hdot,
+        vx,
+        vy,
+        omega,
+    }
+}
+
+impl Rows {
+    /// The step columns h, ḣ, v_x, v_y, ω in precision `T`.
+    fn step_columns<T: Real>(&self) -> [Vec<T>; 5] {
+        [&self.h, &self.hdot, &self.vx, &self.vy, &self.omega].map(|c| cast::<T>(c))
+    }
+}
+
 /// The level cap is process-wide and the tests run on parallel threads: each level's batch call
 /// holds this lock, so that it runs at the level it names.
 static LEVEL: std::sync::Mutex<()> = std::sync::Mutex::new(());
@@ -228,13 +247,8 @@ fn fixed_case<T: Real + BatchReal, D: BatchDamping<T> + Copy, L: BatchLaw>(
         |_, _, h| (if h > 0.0 { a1 * h.sqrt() } else { 0.0 }, m1),
         (p, q),
     );
-    let (h, hdot, vx, vy, omega) = (
-        cast::<T>(&r.h),
-        cast::<T>(&r.hdot),
-        cast::<T>(&r.vx),
-        cast::<T>(&r.vy),
-        cast::<T>(&r.omega),
-    );
+    let cols = r.step_columns::<T>();
+    let [h, hdot, vx, vy, omega] = &cols;
     let mut branches = std::collections::BTreeMap::<String, usize>::new();
     let scalar: Vec<[T; 7]> = (0..ROWS)
         .map(|i| {
@@ -261,13 +275,7 @@ fn fixed_case<T: Real + BatchReal, D: BatchDamping<T> + Copy, L: BatchLaw>(
         common >= wanted,
         "{name} P={p} Q={q} δ={delta}: branches {branches:?}"
     );
-    let steps = Steps {
-        h: &h,
-        hdot: &hdot,
-        vx: &vx,
-        vy: &vy,
-        omega: &omega,
-    };
+    let steps = steps_of(&cols);
     for level in levels() {
         let _held = LEVEL.lock().unwrap_or_else(|e| e.into_inner());
         batch::cap_level(level);
@@ -298,13 +306,8 @@ fn varying_case<T: Real + BatchReal, L: BatchLaw>(name: &str, delta: f64) -> usi
         (40.0, 60.0),
     );
     let (p, q) = (cast::<T>(&r.p), cast::<T>(&r.q));
-    let (h, hdot, vx, vy, omega) = (
-        cast::<T>(&r.h),
-        cast::<T>(&r.hdot),
-        cast::<T>(&r.vx),
-        cast::<T>(&r.vy),
-        cast::<T>(&r.omega),
-    );
+    let cols = r.step_columns::<T>();
+    let [h, hdot, vx, vy, omega] = &cols;
     let scalar: Vec<[T; 7]> = (0..ROWS)
         .map(|i| {
             let curv = Curvatures::ordered(p[i], q[i]).unwrap();
@@ -317,13 +320,7 @@ fn varying_case<T: Real + BatchReal, L: BatchLaw>(name: &str, delta: f64) -> usi
             [w.n, w.fx, w.fy, w.tz, w.patch.a, w.patch.b, w.patch.e2]
         })
         .collect();
-    let steps = Steps {
-        h: &h,
-        hdot: &hdot,
-        vx: &vx,
-        vy: &vy,
-        omega: &omega,
-    };
+    let steps = steps_of(&cols);
     let curvatures = CurvatureColumns { p: &p, q: &q };
     for level in levels() {
         let _held = LEVEL.lock().unwrap_or_else(|e| e.into_inner());

@@ -93,7 +93,10 @@ fn status(r: Result<(), S>) -> S {
 ///
 /// # Safety
 /// `column` is NULL or writable as a `u32`.
-unsafe fn report(column: *mut contensou_column, r: Result<(), (S, contensou_column)>) -> S {
+pub(crate) unsafe fn report(
+    column: *mut contensou_column,
+    r: Result<(), (S, contensou_column)>,
+) -> S {
     let (s, c) = match r {
         Ok(()) => (S::Ok, CONTENSOU_COLUMN_NONE),
         Err(e) => e,
@@ -182,16 +185,26 @@ pub(crate) fn form(form: contensou_form) -> Result<Form, S> {
 /// # Safety
 /// `storage` is NULL or points to a readable `T::Storage`.
 unsafe fn slot<'a, T: Precision>(storage: *const T::Storage) -> Result<&'a Slot<T>, S> {
+    // SAFETY: caller's contract; `Slot` is `repr(C)` with its tag first, aligned for the
+    // storage (8 bytes) and fits in it (asserted in types.rs); only `contact_new` writes the tag,
+    // together with a valid contact.
+    unsafe { tagged(storage, T::TAG) }
+}
+
+/// The `V` in a storage of type `St` whose constructor wrote `tag` in front of it:
+/// `Err(NullPointer | Misaligned | NotInitialized)` otherwise.
+///
+/// # Safety
+/// `storage` is NULL or points to a readable `St`; `V` is `repr(C)` with a `u32` tag first,
+/// fits in an `St` and needs no more alignment; a `V` behind the tag `tag` is valid.
+pub(crate) unsafe fn tagged<'a, St, V>(storage: *const St, tag: u32) -> Result<&'a V, S> {
     check(storage)?;
-    let slot = storage.cast::<Slot<T>>();
-    // SAFETY: aligned for the storage (8 bytes) hence for the slot (≤ 8, asserted in types.rs),
-    // and the slot fits in the storage (asserted). The tag is a plain u32, valid for any bits.
-    let tag = unsafe { core::ptr::addr_of!((*slot).tag).read() };
-    if tag != T::TAG {
+    // SAFETY: non-NULL and aligned (checked); the tag is a plain u32, valid for any bits.
+    if unsafe { storage.cast::<u32>().read() } != tag {
         return Err(S::NotInitialized);
     }
-    // SAFETY: the tag is written only together with a valid contact (`contact_new`).
-    Ok(unsafe { &*slot })
+    // SAFETY: the caller's contract on `V` and `tag`.
+    Ok(unsafe { &*storage.cast::<V>() })
 }
 
 /// `contensou_contact_new_*`.

@@ -7,7 +7,7 @@ use core::ffi::CStr;
 
 use contensou::friction::rolling::row::{Rejected, RowContact, RowLaw, RowState};
 
-use super::{check, read, write, Precision};
+use super::{bare, check, read, report, tagged, write, Precision};
 use crate::cstr::c_str;
 use crate::status::contensou_status as S;
 use crate::types::*;
@@ -74,30 +74,14 @@ pub(crate) fn rolling_column_name(column: contensou_rolling_column) -> *const co
 
 type Failure = (S, contensou_rolling_column);
 
-fn bare(s: S) -> Failure {
-    (s, CONTENSOU_ROLLING_COLUMN_NONE)
-}
-
 /// The status and column of a refused input.
 fn rejected<T>(r: Rejected<T>) -> Failure {
     (r.error.into(), r.column as contensou_rolling_column)
 }
 
-/// Stores the column of an error (or `NONE`) if `column` is usable.
-///
-/// # Safety
-/// `column` NULL or writable.
-unsafe fn report(column: *mut contensou_rolling_column, r: Result<(), Failure>) -> S {
-    let (s, c) = match r {
-        Ok(()) => (S::Ok, CONTENSOU_ROLLING_COLUMN_NONE),
-        Err(e) => e,
-    };
-    if check(column).is_ok() {
-        // SAFETY: non-NULL and aligned; writable by the caller's contract.
-        unsafe { column.write(c) };
-    }
-    s
-}
+// One `report` and one `bare` for both column kinds: their "no column" values are the same
+// number.
+const _: () = assert!(CONTENSOU_ROLLING_COLUMN_NONE == CONTENSOU_COLUMN_NONE);
 
 /// `contensou_rolling_new_*`: the contact of shape `a_over_b` and elasticity (G, ν), law `law`.
 ///
@@ -138,16 +122,10 @@ pub(crate) unsafe fn rolling_new<T: RollingPrecision>(
 unsafe fn rolling_slot<'a, T: RollingPrecision>(
     storage: *const T::RollingStorage,
 ) -> Result<&'a RollingSlot<T>, S> {
-    check(storage)?;
-    let slot = storage.cast::<RollingSlot<T>>();
-    // SAFETY: aligned for the storage (8) hence for the slot (asserted), which fits in it;
-    // the tag is a plain u32.
-    let tag = unsafe { core::ptr::addr_of!((*slot).tag).read() };
-    if tag != T::ROLLING_TAG {
-        return Err(S::NotInitialized);
-    }
-    // SAFETY: the tag is written only together with a valid contact (`rolling_new`).
-    Ok(unsafe { &*slot })
+    // SAFETY: caller's contract; `RollingSlot` is `repr(C)` with its tag first, aligned for the
+    // storage (8) and fits in it (asserted in types/rolling.rs); only `rolling_new` writes the
+    // tag, together with a valid contact.
+    unsafe { tagged(storage, T::ROLLING_TAG) }
 }
 
 /// `contensou_rolling_wrench_*`.
