@@ -733,7 +733,7 @@ def test_step_aware_feet_share_the_weight_at_2ms(nfeet, rest):
     step = aware at 2 ms: the normal forces add up to the weight, every foot carries its share by
     symmetry, no friction, the plate at rest. Six feet: one solve (up to 8 contacts per call);
     ten: two parts of 8 and 2, block Gauss–Seidel over them — approximate: the weight is carried
-    (to 1e-4) but the shares are uneven (0.30–0.87 N for 0.59 N each), balanced friction forces
+    (to 1e-8) but the shares are uneven (0.30–0.87 N for 0.59 N each), balanced friction forces
     stay locked in between the feet (up to 0.07 N) and the plate keeps a
     residual drift (|q̇| 2.8e-7 to 6.4e-5 after 1 s, depending on the library's version);
     without the sweeps the parts each carried the whole weight and the plate hopped at 0.28 m/s."""
@@ -750,12 +750,10 @@ def test_step_aware_feet_share_the_weight_at_2ms(nfeet, rest):
     mujoco.mj_step(m, d, 500)  # 1 s
     rows = run_models.contacts(m, d)
     assert rows.shape == (nfeet, 7)
-    # one solve: the weight to 1e-8; two parts: to 1e-4 (measured 1.9e-5 with `best`'s
-    # dissipation ramp, 1e-8 with the former slip-speed ramp: the locked-in friction moves it)
-    assert rows[:, 0].sum() == pytest.approx(0.6 * 9.81, rel=1e-8 if nfeet <= 8 else 1e-4)
+    assert rows[:, 0].sum() == pytest.approx(0.6 * 9.81, rel=1e-8)
     if nfeet <= 8:
         assert rows[:, 0] == pytest.approx([0.6 * 9.81 / nfeet] * nfeet, rel=1e-3)
         assert np.abs(rows[:, 1:4]).max() < 1e-6
     else:  # locked-in friction between the parts (up to 0.07 N per foot), balanced
-        assert np.abs(rows[:, 1:3].sum(axis=0)).max() < 1e-5  # measured 2.0e-6 (was 1e-7 before the dissipation ramp)
+        assert np.abs(rows[:, 1:3].sum(axis=0)).max() < 1e-6
     assert np.abs(d.qvel).max() < rest
