@@ -44,9 +44,7 @@ areas!(
     wrench,
     rolling,
     rolling_wrench,
-    dynamic_rolling,
-    jacobian,
-    step
+    dynamic_rolling
 );
 
 /// The rolling fuzz target's findings (issue 20), each once, deterministic: every output
