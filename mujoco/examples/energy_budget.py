@@ -1,0 +1,206 @@
+"""Where a shipped model's energy goes over one MuJoCo step with the step-aware contact: the
+change of the mechanical energy split into the work of each generalized force as MuJoCo
+integrates it, and the contact's elastic energy counted two ways.
+
+    mujoco/build.sh
+    python mujoco/examples/energy_budget.py                                  # the four models, 2 ms
+    python mujoco/examples/energy_budget.py --models rattleback --dt 0.001
+    python mujoco/examples/energy_budget.py --models rattleback --config step_point=0
+
+MuJoCo's update (implicitfast without damping or actuators; Euler the same here) is
+semi-implicit Euler: M(q)·Δv = Δt·(f_c − bias), q⁺ = q ⊕ Δt·v⁺, with f_c the plugin's
+generalized contact force (qfrc_passive) and bias = gravity + Coriolis/gyroscopic (mj_rne).
+Hence, exactly,
+
+    ΔT = Δt·v⁺·f_N + Δt·v⁺·f_F − Δt·v⁺·bias_g − Δt·v⁺·bias_c − ½ΔvᵀMΔv + ½v⁺ᵀ(M(q⁺) − M(q))v⁺
+
+with f_N the normal force N·n applied at the patch centre (mj_applyFT) and f_F = f_c − f_N the
+friction force and drilling torque. Columns (per step, relative to the start energy E₀ of
+step_sweep.py: kinetic + gravitational + (2/5)N·h):
+
+- `normal` Δt·v⁺·f_N + ΔU (the normal force's work plus the change of the exact elastic energy
+  U(h) = (2/5)·N_el(h)·h, N_el the Hertz force at the same pose and approach with zero
+  velocity: the plugin with step = explicit on a copy of the state with q̇ = 0), split into
+  `law` ΔU − N·Δh (the normal law against the elastic energy, with the change of U with the
+  pose at a fixed h) and `pose` N·(Δh + Δt·n·v_P⁺) (the gap change of MuJoCo's pose update
+  beyond the contact point's normal velocity: ½(ρ − ℓ)(Δt·ω)² for a body rocking on a bottom
+  of curvature radius ρ about a contact ℓ below its centre of mass);
+- `friction` Δt·v⁺·f_F (≤ 0 if the friction takes energy in the update MuJoCo makes);
+- `rigid` −Δt·v⁺·bias_c − ½ΔvᵀMΔv + the ΔM term: the rigid-body update's own energy error
+  (the explicit gyroscopic term of semi-implicit Euler);
+- `true` ΔT + ΔV + ΔU (the sum of the above, the gravity cancelling exactly), and
+  `reported` the rise step_sweep.py reports, with (2/5)·N·h taken from the step-aware N.
+
+Per model: the largest per-step value of each column and of `true`/`reported`, and the column
+values at the step where `true` peaks.
+"""
+
+import argparse
+import sys
+from pathlib import Path
+
+import mujoco
+import numpy as np
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+import run_models  # noqa: E402
+import step_sweep  # noqa: E402
+
+
+def support_points(m, d, body, normal):
+    """Per sphere/ellipsoid geom of `body` (model order, the plugin's pair order against one
+    plane): the point of the geom deepest along −normal."""
+    sphere, ellipsoid = int(mujoco.mjtGeom.mjGEOM_SPHERE), int(mujoco.mjtGeom.mjGEOM_ELLIPSOID)
+    out = []
+    for g in range(m.body_geomadr[body], m.body_geomadr[body] + m.body_geomnum[body]):
+        if int(m.geom_type[g]) not in (sphere, ellipsoid):
+            continue
+        a = m.geom_size[g] if int(m.geom_type[g]) == ellipsoid else np.full(3, m.geom_size[g][0])
+        r = d.geom_xmat[g].reshape(3, 3)
+        u = r.T @ (-normal)
+        s = np.sqrt(np.sum(a**2 * u**2))
+        out.append(d.geom_xpos[g] + r @ (a**2 * u / s))
+    return out
+
+
+def budget(name, dt, config, end, key=0):
+    m = step_sweep.load(name, dt, config)
+    # The same model with the plain contact: the elastic force N_el(h) at a pose (q̇ = 0).
+    plain = {k: x for k, x in config.items() if k != "step_point"}
+    me = step_sweep.load(name, dt, {**plain, "step": "explicit"})
+    de = mujoco.MjData(me)
+    d = mujoco.MjData(m)
+    mujoco.mj_resetDataKeyframe(m, d, key)
+    nv, body, h = m.nv, 1, m.opt.timestep
+    normal = np.array([0.0, 0.0, 1.0])
+    g_save = m.opt.gravity.copy()
+
+    def state():
+        """Energies and forces at d's state (after mj_forward)."""
+        rows = run_models.contacts(m, d).copy()
+        de.qpos[:] = d.qpos
+        de.qvel[:] = 0
+        mujoco.mj_forward(me, de)
+        rows_el = run_models.contacts(me, de)
+        hp = np.maximum(rows[:, 6], 0.0)
+        return {
+            "T": float(d.energy[1]), "V": float(d.energy[0]),
+            "U_rep": 0.4 * float(np.sum(rows[:, 0] * hp)),
+            "U": 0.4 * float(np.sum(rows_el[:, 0] * hp)),
+            "rows": rows,
+        }
+
+    mujoco.mj_forward(m, d)
+    s = state()
+    e0 = s["T"] + s["V"] + s["U_rep"]
+    cols = ("normal", "law", "pose", "friction", "gyro", "true", "reported", "accounting")
+    peak = {c: -np.inf for c in cols}
+    at_true = None
+    resid = 0.0
+    for _ in range(round(end / h)):
+        mujoco.mj_forward(m, d)
+        s = state()
+        M = np.zeros((nv, nv))
+        mujoco.mj_fullM(m, d, M)
+        v = d.qvel.copy()
+        fc = d.qfrc_passive.copy()
+        bias = d.qfrc_bias.copy()
+        m.opt.gravity[:] = 0
+        coriolis = np.zeros(nv)
+        mujoco.mj_rne(m, d, 0, coriolis)
+        m.opt.gravity[:] = g_save
+        fN = np.zeros(nv)
+        points = support_points(m, d, body, normal)
+        assert len(points) == len(s["rows"]), "one pair per sphere/ellipsoid geom against one plane"
+        for p, row in zip(points, s["rows"]):
+            if row[0] != 0.0:
+                mujoco.mj_applyFT(m, d, row[0] * normal, np.zeros(3), p, body, fN)
+        mujoco.mj_step(m, d)
+        vp = d.qvel.copy()
+        dv = vp - v
+        resid = max(resid, float(np.max(np.abs(M @ dv - h * (fc - bias)))))
+        mujoco.mj_forward(m, d)
+        M1 = np.zeros((nv, nv))
+        mujoco.mj_fullM(m, d, M1)
+        s1 = state()
+        wN = h * vp @ fN
+        wF = h * vp @ (fc - fN)
+        gyro = -h * vp @ coriolis - 0.5 * dv @ M @ dv + 0.5 * vp @ (M1 - M) @ vp
+        true = (s1["T"] + s1["V"] + s1["U"]) - (s["T"] + s["V"] + s["U"])
+        rep = (s1["T"] + s1["V"] + s1["U_rep"]) - (s["T"] + s["V"] + s["U_rep"])
+        dh = s1["rows"][:, 6] - s["rows"][:, 6]
+        n_dh = float(np.sum(s["rows"][:, 0] * dh))
+        row = {"normal": wN + s1["U"] - s["U"], "law": s1["U"] - s["U"] - n_dh, "pose": n_dh + wN, "friction": wF, "gyro": gyro, "true": true, "reported": rep,
+               "accounting": rep - true}
+        row = {k: x / abs(e0) for k, x in row.items()}
+        for c in cols:
+            peak[c] = max(peak[c], row[c])
+        if at_true is None or row["true"] >= max(at_true["true"], -np.inf):
+            at_true = {**row, "t": d.time}
+    return m, peak, at_true, resid
+
+
+def pose_check(name, dt, config, end, key=0):
+    """The `pose` term of an ellipsoid body (the rattlebacks: body frame = the geom's axes, the
+    bottom at −a_z) against ½·N·Δt²·((ρ_x − ℓ)ω_y² + (ρ_y − ℓ)ω_x²), ρ = a²/a_z the bottom's
+    curvature radii, ℓ = a_z − the geom's height over the centre of mass, ω in the body frame:
+    (correlation, median ratio where the estimate exceeds a tenth of its peak, peak pose (J),
+    the estimate there (J))."""
+    m = step_sweep.load(name, dt, config)
+    d = mujoco.MjData(m)
+    mujoco.mj_resetDataKeyframe(m, d, key)
+    g = next(i for i in range(m.ngeom) if int(m.geom_type[i]) == int(mujoco.mjtGeom.mjGEOM_ELLIPSOID))
+    a, h = m.geom_size[g], m.opt.timestep
+    rho_x, rho_y, ell = a[0] ** 2 / a[2], a[1] ** 2 / a[2], a[2] - m.geom_pos[g][2]
+    normal = np.array([0.0, 0.0, 1.0])
+    pose, est = [], []
+    jp, jr = np.zeros((3, m.nv)), np.zeros((3, m.nv))
+    for _ in range(round(end / h)):
+        mujoco.mj_forward(m, d)
+        r0 = run_models.contacts(m, d).copy()
+        mujoco.mj_jac(m, d, jp, jr, support_points(m, d, m.geom_bodyid[g], normal)[0], m.geom_bodyid[g])
+        mujoco.mj_step(m, d)
+        mujoco.mj_forward(m, d)
+        r1 = run_models.contacts(m, d)
+        n = r0[0, 0]
+        pose.append(n * (r1[0, 6] - r0[0, 6] + h * (jp @ d.qvel)[2]))
+        w = d.qvel[3:6]
+        est.append(0.5 * n * h * h * ((rho_x - ell) * w[1] ** 2 + (rho_y - ell) * w[0] ** 2))
+    pose, est = np.array(pose), np.array(est)
+    k, big = int(np.argmax(pose)), est > 0.1 * est.max()
+    return float(np.corrcoef(pose, est)[0, 1]), float(np.median(pose[big] / est[big])), pose[k], est[k]
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--models", default="ball,tippe_top,rattleback,rattleback_rolling")
+    ap.add_argument("--dt", type=float, default=None, help="step (s; default as shipped, 2 ms)")
+    ap.add_argument("--config", action="append", default=[], help="plugin config key=value (repeatable)")
+    ap.add_argument("--end", type=float, default=None, help="simulated time (s; default per model)")
+    ap.add_argument("--pose-check", action="store_true",
+                    help="the rattlebacks' `pose` term against ½N·Δt²·Σ(ρ − ℓ)ω² (pose_check) instead")
+    args = ap.parse_args()
+    run_models.load_plugin()
+    config = dict(c.split("=", 1) for c in args.config)
+    if args.pose_check:
+        for name in ("rattleback", "rattleback_rolling"):
+            c, ratio, p, e = pose_check(name, args.dt, config, args.end or step_sweep.ENDS[name])
+            print(f"{name}: pose vs ½N·Δt²·Σ(ρ − ℓ)ω²: correlation {c:.4f}, median ratio {ratio:.3f}, "
+                  f"at the peak {p:.4e} J against {e:.4e} J")
+        return
+    print("| model | step | max per step: normal (law + pose) | law | pose | friction | rigid | true | reported "
+          "| reported − true | at the true peak (t): law, pose, friction, rigid |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|")
+    for name in args.models.split(","):
+        for key in step_sweep.keys(name):
+            m, peak, at, resid = budget(name, args.dt, config, args.end or step_sweep.ENDS[name], key)
+            label = name + ("" if key == 0 else f" {m.key(key).name}")
+            assert resid < 1e-5, f"MuJoCo's update is not M·Δv = Δt·(f − bias) here (residual {resid:.1e})"
+            print(f"| {label} | {m.opt.timestep * 1e3:g} ms | {peak['normal']:.1e} | {peak['law']:.1e} | "
+                  f"{peak['pose']:.1e} | {peak['friction']:.1e} | {peak['gyro']:.1e} | {peak['true']:.1e} | "
+                  f"{peak['reported']:.1e} | {peak['accounting']:.1e} | {at['t']:.3f} s: {at['law']:.1e}, "
+                  f"{at['pose']:.1e}, {at['friction']:.1e}, {at['gyro']:.1e} |", flush=True)
+
+
+if __name__ == "__main__":
+    main()
