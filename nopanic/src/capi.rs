@@ -371,11 +371,11 @@ jacobian_probes!(jacobian_single: f32, contensou_contact_f32, CONTENSOU_CONTACT_
 jacobian_probes!(jacobian_double: f64, contensou_contact_f64, CONTENSOU_CONTACT_F64_SIZE / 8,
     contensou_contact_jacobian_f64, contensou_contact_jacobian_rolling_f64);
 
-/// The single-contact step-aware wrench (`contensou_contact_step_*`), one module per precision.
-/// (`contensou_step_many_*` is not probed: with it the opt-level z variant keeps a panic path,
-/// not located yet.)
+/// The step-aware wrench: one contact (`contensou_contact_step_*`) and k = 1 … 8 contacts
+/// sharing W (`contensou_step_many_*`, k black-boxed: every K of its dispatch), one module per
+/// precision.
 macro_rules! step_probes {
-    ($m:ident: $T:ty, $storage:ident, $words:expr, $single:ident) => {
+    ($m:ident: $T:ty, $storage:ident, $words:expr, $single:ident, $many:ident) => {
         pub(crate) mod $m {
             use super::*;
 
@@ -427,17 +427,59 @@ macro_rules! step_probes {
                 black_box((r, out, col));
             }
 
+            #[inline(never)]
+            fn probe_capi_step_many() {
+                const M: usize = CONTENSOU_STEP_MAX_CONTACTS;
+                let s = $storage {
+                    opaque: black_box([0; $words]),
+                };
+                let contacts: [*const $storage; M] = [ptr(&s as *const $storage); M];
+                let steps = [step(v); M];
+                let roll = [contensou_rolling_step {
+                    vrx: v(0.1),
+                    vry: v(0.0),
+                }; M];
+                let w = [v(0.0); 16 * M * M];
+                let free = [contensou_step_free {
+                    u: contensou_step_velocity {
+                        vn: v(-1e-2),
+                        vx: v(0.01),
+                        vy: v(0.0),
+                        omega: v(50.0),
+                    },
+                    h: v(1e-6),
+                }; M];
+                let mut out = [contensou_step_wrench::default(); M];
+                let (mut index, mut col) = (black_box(0), black_box(0));
+                let r = unsafe {
+                    $many(
+                        ptr(contacts.as_ptr()),
+                        black_box(3),
+                        ptr(steps.as_ptr()),
+                        ptr(roll.as_ptr()),
+                        v(1e-3),
+                        ptr(w.as_ptr()),
+                        ptr(free.as_ptr()),
+                        ptr(out.as_mut_ptr()),
+                        ptr(&mut index),
+                        ptr(&mut col),
+                    )
+                };
+                black_box((r, out, index, col));
+            }
+
             pub(crate) fn run() {
                 probe_capi_contact_step();
+                probe_capi_step_many();
             }
         }
     };
 }
 
 step_probes!(step_single: f32, contensou_contact_f32, CONTENSOU_CONTACT_F32_SIZE / 8,
-    contensou_contact_step_f32);
+    contensou_contact_step_f32, contensou_step_many_f32);
 step_probes!(step_double: f64, contensou_contact_f64, CONTENSOU_CONTACT_F64_SIZE / 8,
-    contensou_contact_step_f64);
+    contensou_contact_step_f64, contensou_step_many_f64);
 
 #[inline(never)]
 fn probe_capi_any_messages() {

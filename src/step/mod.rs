@@ -458,8 +458,11 @@ pub fn step_wrenches_with<T: Real, const K: usize>(
         let v = states[i].rolling;
         v.vx() != T::ZERO || v.vy() != T::ZERO
     });
-    let gate = |i: usize, wbar: &[[T; 4]; K], u_end: &[[T; 4]; K]| {
-        !coupled[i] || injects_total(dt_, w, free, i, wbar, u_end)
+    // `get`, not `coupled[i]`: i < K at every call, but at opt-level z this closure is not
+    // inlined and the index would keep a bounds check (a panic path; tools/no-panic.sh).
+    let gate = |i: usize, wbar: &[[T; 4]; K], u_end: &[[T; 4]; K]| match coupled.get(i) {
+        Some(true) => injects_total(dt_, w, free, i, wbar, u_end),
+        _ => true,
     };
     for i in 0..K {
         if active[i] && gate(i, &wbar, &u_end) {
