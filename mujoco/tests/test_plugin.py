@@ -716,8 +716,8 @@ def test_step_aware_rattleback_stalls_as_the_rust_scene(dt):
 @pytest.mark.parametrize("dt", [5e-4, 1e-3, 2e-3])
 @pytest.mark.parametrize("key", ["launch", "steady"])
 def test_step_aware_rolling_rattleback_keeps_the_rust_scenes_outcome(dt, key):
-    """step_point 0.6: measured reversal −0.2 % (0.5 ms), +0.2 % (1 ms); steady stall −4.7 %,
-    −8.3 %; at 2 ms the same outcomes (2.022 s, 1.766 s)."""
+    """step_point 0.6: measured reversal −0.2 % (0.5 ms), +0.2 % (1 ms); steady stall −4.6 %,
+    −7.6 %; at 2 ms the same outcomes (2.022 s, 1.764 s)."""
     event, t_rust = RUST_RATTLEBACK_TABLE[key]
     m = mujoco.MjModel.from_xml_path(str(run_models.MODELS / "rattleback_rolling.xml"))
     run = aware_run("rattleback_rolling", dt, m.key(key).id)
@@ -741,6 +741,23 @@ def test_step_aware_rattleback_keeps_semi_implicit_eulers_energy(dt, staggered, 
     assert peak["staggered"] <= staggered
     assert peak["true"] <= true
     assert peak["friction"] <= 1e-12
+
+
+def test_step_aware_normal_force_matches_the_end_gap():
+    """The rolling rattleback spun at +2 rad/s, 1 ms, 3 s (energy_budget.py): where the library's
+    friction projections move the end approach through W's normal–tangential coupling, the
+    plugin re-solves N to the normal law's value there (step_aware.c, step_normal). Without it
+    one step (0.277 s) returned N = 4.2 N for an end approach whose Hertz force is 65 N, and the
+    energy rose by 1.4e-3 of E0 over the next (staggered energy 1.1e-3); with it the largest
+    rise is 6.2e-5 (staggered 4.4e-7) and the stall moves from 1.760 s to 1.775 s (fine step
+    1.920 s)."""
+    import energy_budget
+
+    m = mujoco.MjModel.from_xml_path(str(run_models.MODELS / "rattleback_rolling.xml"))
+    _, peak, _, resid = energy_budget.budget("rattleback_rolling", 1e-3, {}, 3.0, m.key("steady").id)
+    assert resid < 1e-5
+    assert peak["true"] <= 2e-4
+    assert peak["staggered"] <= 1e-5
 
 
 TWO_BALLS = """
