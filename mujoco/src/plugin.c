@@ -515,7 +515,7 @@ static void passive_step(const mjModel* m, mjData* d, instance_data* x) {
       }
     }
   }
-  /* N consistent with the end approach after the library's friction projections. */
+  /* N consistent with the end approach of the wrenches as returned (step_normal). */
   step_normal(x->pairs, s, m->opt.timestep, x->wrench);
   for (int t = 0; t < count; t++) {
     double* out = x->out + NOUT * s->index[t];

@@ -237,13 +237,15 @@ int step_solve(const contensou_contact_f64* const* contacts, int k, double dt, c
 
 /*
  * The normal force made consistent with the end approach (step_normal). The library solves the
- * four rows of a contact together, then moves the friction into the law's limit set and scales
- * it to no power: with W's normal–tangential coupling (a contact point off the body's centre of
- * mass: the rattleback's runs centimetres from it) that moves the end approach
- * h⁺ = h_free − Δt²·(W·w)_n while N stays, and on the step where it happens N can be far from
- * the normal law's value there (measured, rolling rattleback at 1 ms: N = 4.2 N returned where
- * h⁺ = 7.9 µm gives 65 N; the body then sinks and the next step's normal force pushes it out,
- * 1.6e-3 of the energy unpaid). Per pair, with every other row fixed, N is re-solved from
+ * four rows of a contact together from linearisations, then re-linearises a reversing slip and
+ * moves the friction into the law's limit set and scales it to no power: with W's
+ * normal–tangential coupling (a contact point off the body's centre of mass: the rattleback's
+ * runs centimetres from it) the friction it returns moves the end approach
+ * h⁺ = h_free − Δt²·(W·w)_n, and on a rare step N is far from the normal law's value there
+ * (measured, rolling rattleback at 1 ms: N = 4.2 N returned where h⁺ = 7.9 µm gives 65 N, the
+ * friction reversed that step; the body then sinks and the next step's normal force pushes it
+ * out, 1.4e-3 of the energy unpaid; which of the library's stages leaves N behind is not
+ * pinned down). Per pair, with every other row fixed, N is re-solved from
  *
  *   r(N) = N − N_law(h⁺(N), ḣ⁺(N)),   h⁺ = h_free − Δt²·(c₀ + W_nn·N),   ḣ⁺ = −(u_free,n + Δt·(c₀ + W_nn·N))
  *

@@ -745,8 +745,8 @@ def test_step_aware_rattleback_keeps_semi_implicit_eulers_energy(dt, staggered, 
 
 def test_step_aware_normal_force_matches_the_end_gap():
     """The rolling rattleback spun at +2 rad/s, 1 ms, 3 s (energy_budget.py): where the library's
-    friction projections move the end approach through W's normal–tangential coupling, the
-    plugin re-solves N to the normal law's value there (step_aware.c, step_normal). Without it
+    N is not the normal law's value at the end approach its wrench gives (W's normal–tangential
+    coupling: the friction moves that approach), the plugin re-solves N to that value (step_aware.c, step_normal). Without it
     one step (0.277 s) returned N = 4.2 N for an end approach whose Hertz force is 65 N, and the
     energy rose by 1.4e-3 of E0 over the next (staggered energy 1.1e-3); with it the largest
     rise is 6.2e-5 (staggered 4.4e-7) and the stall moves from 1.760 s to 1.775 s (fine step
