@@ -162,6 +162,9 @@ int step_prepare(const mjModel* m, mjData* d, const pair* pairs, int npair, step
 /* Each taken pair's N (wrench: 4 per pair taken) re-solved, the other rows fixed, where it is not
  * the normal law's value at the end approach and velocity the wrenches give (step_aware.c). */
 void step_normal(const pair* pairs, const step_work* s, double dt, double* wrench);
+/* With step_point θ > 0: each taken pair's friction scaled so that it does no work at the end
+ * velocity MuJoCo's update gives the start rows J (step_aware.c). */
+void step_friction_at_start(const mjModel* m, const step_work* s, double* wrench);
 
 /* The step-aware wrenches (4 per contact, contact frame) of k ≤ CONTENSOU_STEP_MAX_CONTACTS
  * contacts sharing W (4k × 4k, row-major) over dt, from their start steps, rolling velocities

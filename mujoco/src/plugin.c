@@ -517,6 +517,12 @@ static void passive_step(const mjModel* m, mjData* d, instance_data* x) {
   }
   /* N consistent with the end approach of the wrenches as returned (step_normal). */
   step_normal(x->pairs, s, m->opt.timestep, x->wrench);
+  if (s->point > 0.0) {
+    /* Friction passive at MuJoCo's own end velocity (the wrench acts through the start rows). */
+    step_friction_at_start(m, s, x->wrench);
+    step_normal(x->pairs, s, m->opt.timestep, x->wrench);
+    step_friction_at_start(m, s, x->wrench);
+  }
   for (int t = 0; t < count; t++) {
     double* out = x->out + NOUT * s->index[t];
     const double* f = x->wrench + 4 * t;

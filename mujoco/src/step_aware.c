@@ -309,29 +309,57 @@ static int normal_row(const contensou_contact_f64* c, const step_work* s, int t,
   return 1;
 }
 
+/* Pair t's friction f = (F_x, F_y, T_z) scaled to no work at its end velocity, free part
+ * `base` (3: the rows x, y, spin of q̇_free) plus Δt·W·w: its power for f scaled by α is
+ * α·a + α²·b, a = f·(base + Δt·W·w without f), b = Δt·f·W_ff·f ≥ 0; if a + b > 0, α = −a/b
+ * (0 if a ≥ 0). 1 if it scaled. */
+static int friction_to_no_work(const step_work* s, int t, const double* base, double dt, double* wrench) {
+  int rows = 4 * s->count, i = 4 * t;
+  double pa = 0.0, pb = 0.0;
+  for (int r = i + 1; r < i + 4; r++) {
+    double u = base[r - i - 1], uf = 0.0;
+    for (int j = 0; j < rows; j++) {
+      if (j > i && j < i + 4) {
+        uf += s->w[r * rows + j] * wrench[j];
+      } else {
+        u += dt * s->w[r * rows + j] * wrench[j];
+      }
+    }
+    pa += wrench[r] * u;
+    pb += dt * wrench[r] * uf;
+  }
+  if (!(pa + pb > 0.0)) return 0;
+  double alpha = pa < 0.0 && pb > 0.0 ? -pa / pb : 0.0;
+  for (int r = i + 1; r < i + 4; r++) wrench[r] *= alpha;
+  return 1;
+}
+
 void step_normal(const pair* pairs, const step_work* s, double dt, double* wrench) {
-  int rows = 4 * s->count;
   for (int t = 0; t < s->count; t++) {
     int i = 4 * t;
     if (!(wrench[i] > 0.0) || !normal_row(&pairs[s->index[t]].contact, s, t, dt, wrench)) continue;
-    /* The friction's power at the new end velocity: α·a + α²·b. */
-    double pa = 0.0, pb = 0.0;
-    for (int r = i + 1; r < i + 4; r++) {
-      double u = s->u_free[r], uf = 0.0;
-      for (int j = 0; j < rows; j++) {
-        if (j > i && j < i + 4) {
-          uf += s->w[r * rows + j] * wrench[j];
-        } else {
-          u += dt * s->w[r * rows + j] * wrench[j];
-        }
-      }
-      pa += wrench[r] * u;
-      pb += dt * wrench[r] * uf;
-    }
-    if (pa + pb > 0.0) {
-      double alpha = pa < 0.0 && pb > 0.0 ? -pa / pb : 0.0;
-      for (int r = i + 1; r < i + 4; r++) wrench[r] *= alpha;
+    if (friction_to_no_work(s, t, s->u_free + i + 1, dt, wrench)) {
       normal_row(&pairs[s->index[t]].contact, s, t, dt, wrench);
     }
+  }
+}
+
+/*
+ * The friction's work in MuJoCo's update (step_friction_at_start). With step_point θ > 0 the
+ * library keeps each pair's friction passive at u_free(θ) + Δt·W·w, u_free read at the pose
+ * drifted by θ·Δt, while MuJoCo applies the wrench through the start rows J, whose end
+ * velocity is J·q̇_free + Δt·W·w: the friction then did work on some steps (up to 2.6e-4 of
+ * the start energy per step, rolling rattleback, θ = 0.6, 2 ms). Per pair, its friction
+ * f = (F_x, F_y, T_z) scaled by α has the power α·a + α²·b at that velocity,
+ * a = f·(J q̇_free + Δt·W·w without f)_f, b = Δt·f·W_ff·f ≥ 0; if a + b > 0 the friction is
+ * scaled to α = −a/b (0 if a ≥ 0): no work over the step. The normal forces are then re-solved
+ * (step_normal) and the check made once more (passive_step).
+ */
+void step_friction_at_start(const mjModel* m, const step_work* s, double* wrench) {
+  int nv = m->nv;
+  for (int t = 0; t < s->count; t++) {
+    double base[3];
+    for (int r = 0; r < 3; r++) base[r] = mju_dot(s->jac + (size_t)(4 * t + 1 + r) * nv, s->qvel, nv);
+    friction_to_no_work(s, t, base, m->opt.timestep, wrench);
   }
 }

@@ -716,8 +716,9 @@ def test_step_aware_rattleback_stalls_as_the_rust_scene(dt):
 @pytest.mark.parametrize("dt", [5e-4, 1e-3, 2e-3])
 @pytest.mark.parametrize("key", ["launch", "steady"])
 def test_step_aware_rolling_rattleback_keeps_the_rust_scenes_outcome(dt, key):
-    """step_point 0.6: measured reversal −0.2 % (0.5 ms), +0.2 % (1 ms); steady stall −4.6 %,
-    −7.6 %; at 2 ms the same outcomes (2.022 s, 1.764 s)."""
+    """step_point 0.55, the friction passive at MuJoCo's end velocity: measured reversal −0.2 %
+    (0.5 ms), −0.5 % (1 ms); steady stall −6.4 %, −9.2 %; at 2 ms the same outcomes (1.846 s,
+    1.610 s)."""
     event, t_rust = RUST_RATTLEBACK_TABLE[key]
     m = mujoco.MjModel.from_xml_path(str(run_models.MODELS / "rattleback_rolling.xml"))
     run = aware_run("rattleback_rolling", dt, m.key(key).id)
@@ -747,10 +748,10 @@ def test_step_aware_normal_force_matches_the_end_gap():
     """The rolling rattleback spun at +2 rad/s, 1 ms, 3 s (energy_budget.py): where the library's
     N is not the normal law's value at the end approach its wrench gives (W's normal–tangential
     coupling: the friction moves that approach), the plugin re-solves N to that value (step_aware.c, step_normal). Without it
-    one step (0.277 s) returned N = 4.2 N for an end approach whose Hertz force is 65 N, and the
-    energy rose by 1.4e-3 of E0 over the next (staggered energy 1.1e-3); with it the largest
-    rise is 6.2e-5 (staggered 4.4e-7) and the stall moves from 1.760 s to 1.775 s (fine step
-    1.920 s)."""
+    the largest rise over a step is 6.8e-4 of E0 (staggered energy 5.2e-4; with θ = 0.6 and
+    before the friction check, one step at 0.277 s returned N = 4.2 N for an end approach whose
+    Hertz force is 65 N: 1.4e-3); with it 3.5e-5 (staggered 1.2e-8), the stall 1.741 → 1.744 s
+    (fine step 1.920 s)."""
     import energy_budget
 
     m = mujoco.MjModel.from_xml_path(str(run_models.MODELS / "rattleback_rolling.xml"))
