@@ -252,12 +252,15 @@ int step_solve(const contensou_contact_f64* const* contacts, int k, double dt, c
  * (c₀ the other rows' part of (W·w)_n), increasing in N (N_law grows with h and ḣ), r(0) ≤ 0:
  * on the bracket [0, N] if r(N) > 0, else [N, N_law(h⁺(N), ḣ⁺(N))], NORMAL_STEPS Illinois
  * steps. Only when |r(N)| > NORMAL_TOLERANCE·N (one law call per pair otherwise: the library's N
- * is consistent to ≈ 1e-5 on the other steps). If the new N makes the pair's friction do work at
+ * is consistent to ≈ 1e-5 on the other steps), pair after pair, NORMAL_SWEEPS sweeps (pairs
+ * sharing a body: a ball on a ball on the floor rests with both contacts at the law's value to
+ * 8e-4 at 2 ms, the upper one 32 % off without). If the new N makes the pair's friction do work at
  * u⁺ (its power α·a + α²·b for the friction scaled by α, b = Δt·f·W_ff·f ≥ 0), the friction is
  * scaled to α = −a/b (0 if a ≥ 0) and N re-solved once more with it.
  */
 #define NORMAL_STEPS 8
 #define NORMAL_TOLERANCE 1e-3
+#define NORMAL_SWEEPS 2
 
 static double normal_residual(const contensou_contact_f64* c, double h_free, double un_free, double dt, double c0,
                               double wnn, double n, double* n_law) {
@@ -335,12 +338,14 @@ static int friction_to_no_work(const step_work* s, int t, const double* base, do
 }
 
 void step_normal(const pair* pairs, const step_work* s, double dt, double* wrench) {
+  for (int sweep = 0; sweep < NORMAL_SWEEPS; sweep++) {
   for (int t = 0; t < s->count; t++) {
     int i = 4 * t;
     if (!(wrench[i] > 0.0) || !normal_row(&pairs[s->index[t]].contact, s, t, dt, wrench)) continue;
     if (friction_to_no_work(s, t, s->u_free + i + 1, dt, wrench)) {
       normal_row(&pairs[s->index[t]].contact, s, t, dt, wrench);
     }
+  }
   }
 }
 
