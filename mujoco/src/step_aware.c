@@ -338,14 +338,18 @@ static int friction_to_no_work(const step_work* s, int t, const double* base, do
 }
 
 void step_normal(const pair* pairs, const step_work* s, double dt, double* wrench) {
-  for (int sweep = 0; sweep < NORMAL_SWEEPS; sweep++) {
-  for (int t = 0; t < s->count; t++) {
-    int i = 4 * t;
-    if (!(wrench[i] > 0.0) || !normal_row(&pairs[s->index[t]].contact, s, t, dt, wrench)) continue;
-    if (friction_to_no_work(s, t, s->u_free + i + 1, dt, wrench)) {
-      normal_row(&pairs[s->index[t]].contact, s, t, dt, wrench);
+  /* A further sweep only if one changed an N and another pair could feel it. */
+  int changed = 1;
+  for (int sweep = 0; sweep < NORMAL_SWEEPS && changed && (sweep == 0 || s->count > 1); sweep++) {
+    changed = 0;
+    for (int t = 0; t < s->count; t++) {
+      int i = 4 * t;
+      if (!(wrench[i] > 0.0) || !normal_row(&pairs[s->index[t]].contact, s, t, dt, wrench)) continue;
+      changed = 1;
+      if (friction_to_no_work(s, t, s->u_free + i + 1, dt, wrench)) {
+        normal_row(&pairs[s->index[t]].contact, s, t, dt, wrench);
+      }
     }
-  }
   }
 }
 
