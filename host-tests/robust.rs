@@ -44,7 +44,9 @@ areas!(
     wrench,
     rolling,
     rolling_wrench,
-    dynamic_rolling
+    dynamic_rolling,
+    jacobian,
+    step
 );
 
 /// The rolling fuzz target's findings (issue 20), each once, deterministic: every output

@@ -62,7 +62,7 @@ impl<V: Lanes> Tr<V> {
 /// The dimensional friction of a few contacts: (fN, a, state) in, (F_x, F_y, T_z) out.
 #[derive(Clone, Copy, Debug)]
 pub struct Scaled<V> {
-    /// fN, ramped below δ for a law with `RAMP_BELOW_DELTA`.
+    /// fN (the ramp below δ comes after the core: [`ramp`]).
     pub fn_: V,
     /// The slip state.
     pub state: State<V>,
@@ -73,24 +73,39 @@ pub struct Scaled<V> {
 /// [v_Px, v_Py, ω].
 #[inline(always)]
 pub(crate) fn scaled<V: Lanes>(
-    ramp: bool,
     [f, delta]: [V; 2],
     a: V,
     n: V,
     [vx, vy, omega]: [V; 3],
 ) -> Scaled<V> {
-    let mut fn_ = f * n;
-    // SlipState::scale_of / from_clamped: aω, then s = |vx| + |vy| + |aω|.
+    let fn_ = f * n;
+    // SlipState::from_clamped: aω, then s = |vx| + |vy| + |aω|.
     let aw = a * omega;
     let s = vx.abs() + vy.abs() + aw.abs();
-    if ramp {
-        // if δ > s { fN·(s/δ) }
-        fn_ = V::select(delta.gt(s), fn_ * (s / delta), fn_);
-    }
     Scaled {
         fn_,
         state: divided(vx, vy, aw, s, delta),
     }
+}
+
+/// The ramp of `Friction::tangential_with` after the core (a law with `RAMP_BELOW_DELTA`):
+/// where d > `P_FLOOR` and d > p, p = −(t_x·x + t_y·y + t_z·w)·`RAMP_GAIN`, fN·(max(p, 0)/d)
+/// (`ramped`);
+/// fN unchanged elsewhere or without a ramp.
+#[inline(always)]
+pub(crate) fn ramp<V: Lanes>(ramp: bool, fn_: V, s: &State<V>, t: &Tr<V>) -> V {
+    if !ramp {
+        return fn_;
+    }
+    let floor = V::splat(V::T::from_f64(crate::friction::law::P_FLOOR));
+    let near = s.d.gt(floor);
+    if !V::any(near) {
+        return fn_;
+    }
+    let p = -(t.fx * s.x + t.fy * s.y + t.tz * s.w)
+        * V::splat(V::T::from_f64(crate::friction::law::RAMP_GAIN));
+    let zero = V::splat(V::T::ZERO);
+    V::select(V::and(near, s.d.gt(p)), fn_ * (p.larger(zero) / s.d), fn_)
 }
 
 /// `SlipState::divided`: by 1/s where s is a positive normal number, else (`unusual`) by the
