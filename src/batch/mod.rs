@@ -491,7 +491,7 @@ impl<T: BatchReal, D: BatchDamping<T>, L: BatchLaw> Kernel<T> for FixedKernel<'_
             let (a, b, n) = hertz.patch(damping, h, hdot);
             let sc = scaled([f, delta], a, n, [vx, vy, omega]);
             let t = L::traction_fixed(&law, &sc.state);
-            let fn_ = ramp(L::RAMP_BELOW_DELTA, sc.fn_, &sc.state, &t);
+            let fn_ = ramp(L::RAMP_BELOW_DELTA, &sc, delta, &t);
             let (fx, fy, tz) = dimensional(fn_, a, t);
             store_outputs(self.out, r, [n, fx, fy, tz, a, b, hertz.e2]);
             r += V::N;
@@ -622,7 +622,7 @@ impl<T: BatchReal, D: BatchDamping<T>, L: BatchLaw> Kernel<T>
             let rows = k.get(..V::N).unwrap_or(&[]);
             let sc = scaled([f, delta], a, n, [vx, vy, omega]);
             let t = L::traction_varying(rows, &sc.state);
-            let fn_ = ramp(L::RAMP_BELOW_DELTA, sc.fn_, &sc.state, &t);
+            let fn_ = ramp(L::RAMP_BELOW_DELTA, &sc, delta, &t);
             let (fx, fy, tz) = dimensional(fn_, a, t);
             store_outputs(self.out, r, [n, fx, fy, tz, a, b, hertz.e2]);
             r += V::N;

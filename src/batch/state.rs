@@ -64,6 +64,8 @@ impl<V: Lanes> Tr<V> {
 pub struct Scaled<V> {
     /// fN (the ramp below δ comes after the core: [`ramp`]).
     pub fn_: V,
+    /// The ℓ¹ slip scale s = |v_Px| + |v_Py| + a|ω| (the ramp's gate and scale).
+    pub s: V,
     /// The slip state.
     pub state: State<V>,
 }
@@ -84,28 +86,35 @@ pub(crate) fn scaled<V: Lanes>(
     let s = vx.abs() + vy.abs() + aw.abs();
     Scaled {
         fn_,
+        s,
         state: divided(vx, vy, aw, s, delta),
     }
 }
 
-/// The ramp of `Friction::tangential_with` after the core (a law with `RAMP_BELOW_DELTA`):
-/// where d > `P_FLOOR` and d > p, p = −(t_x·x + t_y·y + t_z·w)·`RAMP_GAIN`, fN·(max(p, 0)/d)
-/// (`ramped`);
-/// fN unchanged elsewhere or without a ramp.
+/// The ramp of `Friction::tangential_with` after the core (a law with `RAMP_BELOW_DELTA`), the
+/// same arithmetic: where δ > `P_FLOOR`·s and δ > r, r = −(t_x·x + t_y·y + t_z·w)·`RAMP_GAIN`·s
+/// (p/c), fN·(max(r, 0)/δ) (`ramped`); fN unchanged elsewhere or without a ramp.
 #[inline(always)]
-pub(crate) fn ramp<V: Lanes>(ramp: bool, fn_: V, s: &State<V>, t: &Tr<V>) -> V {
+pub(crate) fn ramp<V: Lanes>(ramp: bool, sc: &Scaled<V>, delta: V, t: &Tr<V>) -> V {
+    let fn_ = sc.fn_;
     if !ramp {
         return fn_;
     }
     let floor = V::splat(V::T::from_f64(crate::friction::law::P_FLOOR));
-    let near = s.d.gt(floor);
+    let near = delta.gt(sc.s * floor);
     if !V::any(near) {
         return fn_;
     }
-    let p = -(t.fx * s.x + t.fy * s.y + t.tz * s.w)
+    let st = &sc.state;
+    let p = -(t.fx * st.x + t.fy * st.y + t.tz * st.w)
         * V::splat(V::T::from_f64(crate::friction::law::RAMP_GAIN));
+    let r = p * sc.s;
     let zero = V::splat(V::T::ZERO);
-    V::select(V::and(near, s.d.gt(p)), fn_ * (p.larger(zero) / s.d), fn_)
+    V::select(
+        V::and(near, delta.gt(r)),
+        fn_ * (r.larger(zero) / delta),
+        fn_,
+    )
 }
 
 /// `SlipState::divided`: by 1/s where s is a positive normal number, else (`unusual`) by the

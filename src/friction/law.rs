@@ -41,7 +41,14 @@ pub trait FrictionLaw: Copy + Debug + PartialEq {
     /// sticking contact (p < 3δ/8) keeps |v_P| < 3δ/8 and a|ω| < δ, as under the former ramp
     /// (s < δ); c = 3/8 keeps the ramp's stiffness within −3 … +27 % of the former one's
     /// (κ, κ_T: [`ramp_stiffness`](super::best::ramp_stiffness),
-    /// [`spin_stiffness`](super::best::spin_stiffness)).
+    /// [`spin_stiffness`](super::best::spin_stiffness)). **Why c = 3/8:** in pure spin the
+    /// ramp's torque stiffness is C²·fN·a²/(cδ), the former ramp's C·fN·a²/δ: equal for c = C,
+    /// and c = 3/8 = min C (elongated patches, e² → 1) keeps it there or stiffer, the ramp's
+    /// spin width a|ω| < (c/C)·δ ≤ δ. In translation (p = |v_P|) it is 8/3 × the former fN/δ.
+    /// **δ is a numerical width:** results that depend on it are not physics. Measured on the
+    /// rattleback scene (`crate::scenes::rattleback::BEST_DELTA`): at δ = 1 mm/s the outcome
+    /// depends on the ramp's shape (a stall at 0.8432 s with s/δ, 0.8631 s with this ramp, a
+    /// reversal at 1.92 s with c = 1), at δ ≤ 0.1 mm/s every ramp gives the δ → 0 limit.
     const RAMP_BELOW_DELTA: bool = false;
 
     /// What the law precomputes once per contact shape (e² fixed). For most laws it is the
@@ -230,12 +237,12 @@ impl<T: Real, L: FrictionLaw> Friction<T, L> {
     /// multiplications, an integer range test) and five multiplications: 122 instructions for
     /// `Friction::<f32, Simplified>` on the Cortex-M4F (QEMU stage `friction`, method
     /// `simplified-dimensional`, with the branch; the core alone is 66, without its branch).
-    /// A law with [`FrictionLaw::RAMP_BELOW_DELTA`] adds a compare of d = δ/s with a floor
-    /// after the core (p, its compare and the ramp's division only near rest):
-    /// `Friction::<f32, Best>::tangential_prepared` 160 (146 with the former ramp by the ℓ¹
-    /// slip speed, a compare before the core); the full `Contact::wrench` 199 (184), the
-    /// varying one 521 (521), the Jacobian 1,558 (1,542) — QEMU counts of the firmware's main
-    /// binary.
+    /// A law with [`FrictionLaw::RAMP_BELOW_DELTA`] adds a gate δ > s/2 before the core (a
+    /// multiplication and a compare; p, its compare and the ramp's division only near rest):
+    /// `Friction::<f32, Best>::tangential_prepared` 147 (146 with the former ramp by the ℓ¹
+    /// slip speed); the full `Contact::wrench` 188 (184), the varying one 516 (521), the
+    /// Jacobian 1,587 (1,542) — QEMU counts of the firmware's main binary (the benchmark's
+    /// slips are all outside the ramp, δ = 0).
     #[inline(always)]
     pub fn tangential(
         &self,
@@ -282,14 +289,17 @@ impl<T: Real, L: FrictionLaw> Friction<T, L> {
         } else {
             T::ZERO
         };
-        let state = SlipState::from_clamped(slip, a, self.delta);
-        let (t, branch) = core.eval(&state);
+        let (aw, s) = SlipState::scale_of(slip, a);
         // The ramp min(1, p/(c·δ)) by the law's own dissipation per unit fN,
-        // p = −(F·v_P + T_z·ω)/(fN), c = 3/8: in the state's units p/s = −t·(x, y, w) and
-        // δ/s = d. p/(c·s) ≥ P_FLOOR, so d ≤ P_FLOOR (δ well below the slip scale, the
-        // common case) skips it with one compare.
-        if L::RAMP_BELOW_DELTA && state.d() > T::from_f64(P_FLOOR) {
-            fn_ = ramped(fn_, &t, &state);
+        // p = −(F·v_P + T_z·ω)/(fN), c = 3/8: in the state's units p/(c·s) = −t·(x, y, w)·(8/3)
+        // and δ/s = d. p/(c·s) > P_FLOOR, so δ ≤ P_FLOOR·s (δ well below the slip scale, the
+        // common case) skips it; gated on s before the division (one multiplication and a
+        // compare; d is not formed at all when the core ignores it, as `best`'s does).
+        let near = L::RAMP_BELOW_DELTA && self.delta > s * T::from_f64(P_FLOOR);
+        let state = SlipState::from_scale(slip, aw, s, self.delta);
+        let (t, branch) = core.eval(&state);
+        if near {
+            fn_ = ramped(fn_, &t, &state, s, self.delta);
         }
         Tangential {
             fx: fn_ * t.fx,
@@ -336,20 +346,27 @@ pub(crate) const RAMP_GAIN: f64 = 8.0 / 3.0;
 /// exact law (and `best`, within 1e-4 of it): p ≥ |v_P| (Jensen: the pressure-weighted mean of
 /// |v_M| is at least the norm of the mean v_P) and p ≥ C·a|ω| (p is convex and even in v_P,
 /// smallest at v_P = 0, where it is C·a|ω|, C ≥ 3/8); with s ≤ √2|v_P| + a|ω| this gives
-/// p/s ≥ C/(1 + √2·C) ≥ 0.245, p/(c·s) ≥ 0.65. Taken as 1/2: where d = δ/s ≤ 1/2, p > c·δ
-/// and the ramp does not act.
+/// p/s ≥ C/(1 + √2·C) ≥ 0.245, p/(c·s) ≥ 0.65. Taken as 1/2: where δ ≤ s/2, p > c·δ and the
+/// ramp does not act (the gate, before the core's division: one multiplication, a compare).
 pub(crate) const P_FLOOR: f64 = 0.5;
 
-/// fN·min(1, p/(c·δ)): the ramp below c·δ, in the state's units (p/(c·s) =
-/// −(t_x·x + t_y·y + t_z·w)·(8/3) against d = δ/s; four multiplications, two additions, a
-/// compare), out of line so that it stays off the common path (d ≤ [`P_FLOOR`]). p is
+/// fN·min(1, p/(c·δ)): the ramp below c·δ, from the state's units (p/(c·s) =
+/// −(t_x·x + t_y·y + t_z·w)·(8/3), times the state's scale s: p/c against δ; five
+/// multiplications, two additions, a compare, a division), only where δ > [`P_FLOOR`]·s.
+/// Inline, and without the state's d = δ/s (which `best`'s core does not read, so the common
+/// path does not form it): out of line and with d, it cost 15 M4F instructions per
+/// `Contact::wrench` on the common path (199 against 184 for the former ramp; now 188). p is
 /// clamped at 0 (a rounding below 0 must not reverse the force), so the factor lies in [0, 1].
-#[cold]
-#[inline(never)]
-fn ramped<T: Real>(fn_: T, t: &Traction<T>, s: &SlipState<T>) -> T {
-    let p = -(t.fx * s.x() + t.fy * s.y() + t.tz * s.w()) * T::from_f64(RAMP_GAIN);
-    if s.d() > p {
-        fn_ * (larger(p, T::ZERO) / s.d())
+/// Where s is not a normal number (a slip below 1.2e-38 m/s in f32, 2.2e-308 in f64) the state
+/// is scaled by the largest component m instead (`SlipState`), and p·s/m over-states the
+/// factor by s/m ≤ 3: still in [0, 1], passive, and ≤ 3.6e-38/δ (f32) in absolute terms.
+#[inline(always)]
+fn ramped<T: Real>(fn_: T, t: &Traction<T>, st: &SlipState<T>, s: T, delta: T) -> T {
+    // p/(c·s) in the state's units; the factor p/(c·δ) = (p/(c·s))·s/δ.
+    let p = -(t.fx * st.x() + t.fy * st.y() + t.tz * st.w()) * T::from_f64(RAMP_GAIN);
+    let r = p * s;
+    if delta > r {
+        fn_ * (larger(r, T::ZERO) / delta)
     } else {
         fn_
     }

@@ -126,6 +126,22 @@ impl<T: Real> SlipState<T> {
         Self::normalised(slip.vx, slip.vy, a * slip.omega, delta)
     }
 
+    /// The per-step path in two halves, for a ≥ 0 already checked: (aω, s) first, so that the
+    /// wrapper can gate its ramp on s against δ before the division; then
+    /// [`SlipState::from_scale`].
+    #[inline(always)]
+    pub(crate) fn scale_of(slip: Slip<T>, a: T) -> (T, T) {
+        let aw = a * slip.omega;
+        (aw, l1(slip.vx, slip.vy, aw))
+    }
+
+    /// The state from (aω, s) = [`SlipState::scale_of`]`(slip, a)` and δ ≥ 0: the same as
+    /// [`SlipState::from_clamped`]`(slip, a, delta)`.
+    #[inline(always)]
+    pub(crate) fn from_scale(slip: Slip<T>, aw: T, s: T, delta: T) -> Self {
+        Self::divided(slip.vx, slip.vy, aw, s, delta)
+    }
+
     /// The dimensionless state of the paper's figures: v_P = u·aω·(cos ψ, sin ψ) with ω > 0 and
     /// δ → 0 (no regularization). `u = +∞` is pure translation; a negative `u` means the
     /// direction ψ + π. Errors: [`Error::NonFinite`] (`"psi"` or `"u"`) if ψ is not finite or u
