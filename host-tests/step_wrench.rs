@@ -391,7 +391,10 @@ fn two_contacts_sharing_a_body_use_an_active_set() {
         vz = o[0].u_end[0];
         h = o[0].h_end;
         assert!(o[0].flags.active && o[1].flags.active);
-        assert!((o[0].wrench[0] - o[1].wrench[0]).abs() <= 1e-9 * o[0].wrench[0]);
+        assert!(
+            (o[0].wrench[0] - o[1].wrench[0]).abs() <= 1e-9 * o[0].wrench[0],
+            "{o:?}"
+        );
     }
     let o = step_wrenches(
         [&lin as &dyn Linearize<f64>, &lin],

@@ -157,6 +157,15 @@
 //!    implicit dry friction), then the same for T_z·ω⁺, contact after contact, u⁺ updated after
 //!    each scaling. A last pass zeroes any part still injecting power beyond rounding
 //!    (64 ε of |F|·(|v_free| + Δt·|W·w̄|)) — at most 2K + 1 passes.
+//! 5. **The normal force at the end state.** Steps 3 and 4 change the friction after the
+//!    solve; through W's normal–friction coupling (a contact point off the centre of mass)
+//!    that moves the end approach, and N̄ would no longer be the normal law's value there
+//!    (measured before this step: off by more than 1e-3 on about half the random states of
+//!    `host-tests/step_normal.rs`, up to 100 %). Each active contact's N is re-solved at the
+//!    end state with the other rows fixed (its friction scaling with N), by Newton steps on
+//!    the end approach, then the friction follows (limit set, power) — [`normal`]. Measured:
+//!    within 1e-3 of the law on every state for `coulomb`, on all but 0.7 % for `best` (the
+//!    last projection moving the friction again).
 //!
 //! Flags in [`Outcome`] tell which of these acted.
 //!
@@ -166,7 +175,8 @@
 //! [`project::PATCH_STEPS`] + 2 + 4 (the limit set: its patch, its full-slip points),
 //! [`LINEARISATIONS`] [`Linearize::linearize`] (one more per reversal), a 4 × 4 (or 4K × 4K)
 //! elimination with partial pivoting per solve (at most LINEARISATIONS·2·(K + 1) solves, one
-//! per linearisation in the common case). Fixed: no loop runs on a tolerance. Measured (host
+//! per linearisation in the common case), one more wrench call for step 5's check (and, where
+//! it acts, [`normal::NORMAL_STEPS`] + 2 and a limit set per re-solve, at most two per sweep). Fixed: no loop runs on a tolerance. Measured (host
 //! x86-64, f64, `best`, a ball sliding and spinning at 1 ms, analytic Jacobians): 1.8 µs per
 //! call, 42× the plain wrench (43 ns) — against ≈ 200 plain calls for the ≈ 50 RK4 substeps the
 //! plain path needs over the same millisecond.
@@ -186,6 +196,7 @@
 pub mod bodies;
 pub mod contract;
 pub mod inverse_mass;
+pub mod normal;
 pub mod numeric;
 pub mod project;
 pub mod scheme;
@@ -285,7 +296,7 @@ impl<T: Real> Free<T> {
     }
 }
 
-/// What acted in a step-aware wrench (see the [module docs](self), steps 1–4).
+/// What acted in a step-aware wrench (see the [module docs](self), steps 1–5).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Flags {
     /// The contact was in the final active set (N̄ > 0).
@@ -303,6 +314,9 @@ pub struct Flags {
     /// The linear solve failed (a zero or non-finite pivot): the plain wrench at the
     /// linearisation point was used, then projected.
     pub fallback: bool,
+    /// The normal force was re-solved at the end state of the projected friction (step 5,
+    /// [`normal`]).
+    pub normal_resolved: bool,
 }
 
 /// One contact's step-aware result.
@@ -474,6 +488,22 @@ pub fn step_wrenches_with<T: Real, const K: usize>(
             }
         }
     }
+    // Step 5: N re-solved at the end state of the projected friction, the friction following.
+    normal::settle(
+        contacts,
+        dt_,
+        gamma,
+        w,
+        states,
+        free,
+        &lin,
+        &jac,
+        &coupled,
+        &mut active,
+        &mut wbar,
+        &mut u_end,
+        &mut flags,
+    );
     for _ in 0..(2 * K + 1) {
         let mut clean = true;
         for i in 0..K {
