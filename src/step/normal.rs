@@ -304,21 +304,21 @@ fn follow<T: Real, const K: usize>(
     };
     if !(before[0] > T::ZERO) {
         // Apart at the end of the step: no normal force, no friction.
-        add(dt, w, i, before.map(|x| -x), wbar, u_end);
+        let d = [-before[0], -before[1], -before[2], -before[3]];
+        add(dt, w, i, d, wbar, u_end);
         flags.active = false;
         return before[1] != T::ZERO || before[2] != T::ZERO || before[3] != T::ZERO;
     }
     let mut p = before;
     if super::project::into_limit_set(contact, lin, jac.value[0], &mut p) {
         flags.limited = true;
-        add(
-            dt,
-            w,
-            i,
-            core::array::from_fn(|c| p[c] - before[c]),
-            wbar,
-            u_end,
-        );
+        let d = [
+            p[0] - before[0],
+            p[1] - before[1],
+            p[2] - before[2],
+            p[3] - before[3],
+        ];
+        add(dt, w, i, d, wbar, u_end);
     }
     if !coupled || injects_total(dt, w, free, i, wbar, u_end) {
         if scale_part(dt, w, i, Part::Force, wbar, u_end) {
@@ -328,8 +328,12 @@ fn follow<T: Real, const K: usize>(
             flags.torque_scaled = true;
         }
     }
-    wbar.get(i)
-        .is_some_and(|a| (1..4).any(|c| a[c] != before[c]))
+    // No closure indexing here: at opt-level z it would keep a bounds check (a panic path,
+    // tools/no-panic.sh).
+    match wbar.get(i) {
+        Some(&[_, fx, fy, tz]) => fx != before[1] || fy != before[2] || tz != before[3],
+        None => false,
+    }
 }
 
 /// Step 5 (module docs): every active contact's N re-solved at the end state of its final
