@@ -255,15 +255,15 @@ fn rattleback_step_aware_is_stable_at_2_ms() {
     rattle(&rb, 2e-3, 2.0, 3.0);
 }
 
-#[test]
-fn bearing_creep_at_20_us_matches_the_fine_step_figures() {
+/// The 209 bearing with the creep law `table` stepped `steps` × `dt` by the step-aware
+/// integrator from the start (every state finite, every ball within 0.1 mm of its pitch
+/// circle); means over the last quarter: (ring torque, [Σ|T_z| inner, outer] in N·mm, cage
+/// speed / ω_c).
+fn bearing_means(dt: f64, steps: usize) -> (f64, [f64; 2], f64) {
     use contensou::geometry::Race;
     use contensou::normal::{HuntCrossley, Modulus};
     use contensou::scenes::bearing::{BALLS, Bearing, Geometry};
     use contensou::select::{Elliptic, ExactGrade, Fixed, Rolls, Scene, Select};
-    // README (RK4 h = 0.1 µs, means over 15–20 ms): ring torque −14.8 N·mm, Σ|T_z| 82.6 /
-    // 83.2 N·mm, cage speed +0.769 % over ω_c. Measured at 20 µs: −15.2 (+2.4 %), 84.0 / 84.2
-    // (+1.8 / +1.1 %), cage +0.518 % (the cage speed 0.25 % slower).
     let g = Geometry::<f64>::bearing_209();
     let (estar, damping) = (
         Modulus::new(1.142857e11).unwrap(),
@@ -280,15 +280,21 @@ fn bearing_creep_at_20_us_matches_the_fine_step_figures() {
         .unwrap()
     };
     let b = Bearing::new(&g, race(Race::Inner), race(Race::Outer)).unwrap();
-    let dt = 2e-5;
     let mut y = b.initial_state();
     let mut warm = [Warm::default(); BALLS];
     let (mut n, mut ring, mut sm, mut cage) = (0.0, 0.0, [0.0; 2], 0.0);
-    for i in 0..1000 {
+    for i in 0..steps {
         let (y1, l) = b.step_aware(i as f64 * dt, &y, dt, &mut warm);
         y = y1;
-        assert!(y.iter().all(|v| v.is_finite()));
-        if i >= 750 {
+        assert!(y.iter().all(|v| v.is_finite()), "step {i}");
+        for k in 0..BALLS {
+            let r = y[6 + 9 * k].hypot(y[7 + 9 * k]);
+            assert!(
+                (r - 0.5 * g.pitch_diameter).abs() < 1e-4,
+                "ball {k}, step {i}"
+            );
+        }
+        if 4 * i >= 3 * steps {
             n += 1.0;
             ring += l.ring_torque;
             sm[0] += l.spin_moment[0];
@@ -302,17 +308,35 @@ fn bearing_creep_at_20_us_matches_the_fine_step_figures() {
             cage += orbit / BALLS as f64 / g.cage_speed();
         }
     }
-    let (ring, sm, cage) = (ring / n * 1e3, [sm[0] / n * 1e3, sm[1] / n * 1e3], cage / n);
+    (ring / n * 1e3, [sm[0] / n * 1e3, sm[1] / n * 1e3], cage / n)
+}
+
+/// The spin moments within `tol_sm` and the cage speed within `tol_cage` (relative) of the
+/// README's RK4 figures (h = 0.1 µs, means over 15–20 ms): Σ|T_z| 82.6 / 83.2 N·mm, cage
+/// speed +0.769 % over ω_c.
+fn assert_bearing_figures(sm: [f64; 2], cage: f64, tol_sm: f64, tol_cage: f64) {
+    for (m, r, race) in [(sm[0], 82.6, "inner"), (sm[1], 83.2, "outer")] {
+        assert!((m / r - 1.0).abs() < tol_sm, "{race} spin moment {m} N·mm");
+    }
+    assert!((cage / 1.00769 - 1.0).abs() < tol_cage, "cage {cage}");
+}
+
+#[test]
+fn bearing_creep_at_20_us_matches_the_fine_step_figures() {
+    // README (RK4 h = 0.1 µs, means over 15–20 ms): ring torque −14.8 N·mm, Σ|T_z| 82.6 /
+    // 83.2 N·mm, cage speed +0.769 % over ω_c. Measured at 20 µs: −15.2 (+2.5 %), 84.1 / 84.3
+    // (+1.9 / +1.2 %), cage +0.517 % (the cage speed 0.25 % slower).
+    let (ring, sm, cage) = bearing_means(2e-5, 1000);
     assert!((ring / -14.8 - 1.0).abs() < 0.05, "ring torque {ring} N·mm");
-    assert!(
-        (sm[0] / 82.6 - 1.0).abs() < 0.03,
-        "inner spin moment {}",
-        sm[0]
-    );
-    assert!(
-        (sm[1] / 83.2 - 1.0).abs() < 0.03,
-        "outer spin moment {}",
-        sm[1]
-    );
-    assert!((cage / 1.00769 - 1.0).abs() < 0.005, "cage {cage}");
+    assert_bearing_figures(sm, cage, 0.03, 0.005);
+}
+
+#[test]
+fn bearing_creep_is_stable_at_100_us() {
+    // 200 steps of 100 µs (before the ring's implicit update and the mid-step geometry from
+    // the start velocity alone, the balls left the races after 17 steps). Measured: Σ|T_z|
+    // 82.8 / 82.9 N·mm (+0.3 / −0.4 %), cage speed 0.65 % slow; the ring torque (−11.8 N·mm,
+    // −21 %) is not held at this step and not asserted.
+    let (_, sm, cage) = bearing_means(1e-4, 200);
+    assert_bearing_figures(sm, cage, 0.02, 0.01);
 }

@@ -516,10 +516,14 @@ impl<T: Real, C: RaceLaw<T>> Bearing<T, C> {
     /// One large step of `dt` from (`t`, `y`) ([`super::step_aware`]): each ball's two race
     /// contacts solved together (W of the ball, a sphere, over both contacts; an active set),
     /// with the ring's motion over the step taken as it was (its velocity at the start); the
-    /// geometry at mid-step (the ball moved by half a step with its velocity plus the last
-    /// step's impulse), each gap predicted at the free end pose, backward Euler (θ = 1: the
+    /// geometry at mid-step (the ball moved by half a step with its start velocity), each gap predicted at the free end pose, backward Euler (θ = 1: the
     /// creep law is a stiff damper). Then each ball's kick–drift, and the ring's with the balls'
-    /// reactions of this step and the load: Ṙ⁺ = Ṙ + Δt(F + load(t + Δt))/M, R⁺ = R + Δt·Ṙ⁺.
+    /// reactions F of this step (at the ring's predicted end position R + Δt·Ṙ) and the load,
+    /// linearly implicit in the ring's own displacement:
+    /// (M + Δt²·K)(Ṙ⁺ − Ṙ) = Δt(F + load(t + Δt)), R⁺ = R + Δt·Ṙ⁺, K the balls' solved Hertz
+    /// tangents 3N/(2h), inner and outer in series, along each inner normal (without K the
+    /// ring's radial mode on the balls, ≈ 1.9e4 rad/s for the 209 at 2 kN, is unstable above
+    /// ≈ 60 µs).
     /// `warm` carries each ball's solution ([`Warm::default`] at the start). Also returns
     /// the step's [`StepLoads`] (from the wrenches applied over the step: re-evaluating the
     /// plain wrench at the new state would not give them — a creep force is stiff in the slip).
@@ -541,6 +545,7 @@ impl<T: Real, C: RaceLaw<T>> Bearing<T, C> {
         let (c_mid, c_end) = (c + vr * half, c + vr * dt);
         let mut out = *y;
         let mut ring_force = Vec3::zero();
+        let mut ring_stiffness = RingStiffness::default();
         for (k, (b, ob)) in y[6..]
             .chunks_exact(9)
             .zip(out[6..].chunks_exact_mut(9))
@@ -548,30 +553,25 @@ impl<T: Real, C: RaceLaw<T>> Bearing<T, C> {
         {
             let (p, v, w) = ball(b);
             let wk = &mut warm[k];
-            let (wi, wo) = (wk.w[0], wk.w[1]);
-            let warm_force = |ws: [T; 4], s: Option<&RaceStep<T>>| {
-                s.map_or(Vec3::zero(), |s| s.site.load(&ws).0)
-            };
-            // The last step's impulse predicts the mid-step position.
-            let at = |p_mid: Vec3<T>| {
-                (
-                    self.inner.step_site(
-                        (c_mid, vr, g.omega_inner),
-                        (p_mid, v, w),
-                        rb,
-                        (p + v * dt, c_end),
-                    ),
-                    self.outer.step_site(
-                        (Vec3::zero(), Vec3::zero(), T::ZERO),
-                        (p_mid, v, w),
-                        rb,
-                        (p + v * dt, Vec3::zero()),
-                    ),
-                )
-            };
-            let (si, so) = at(p + v * half);
-            let f_warm = warm_force(wi, si.as_ref()) + warm_force(wo, so.as_ref());
-            let (si, so) = at(p + (v + f_warm * (dt * inv_m) * T::HALF) * half);
+            // The geometry at mid-step from the start velocity alone. (Adding half of the last
+            // step's impulse, as this step did before, extrapolates the ball's stiff normal
+            // force explicitly: Δt²·k/m ≈ 300 at 100 µs, the ball then alternated between its
+            // races and the run diverged after 17 steps.)
+            let p_mid = p + v * half;
+            let (si, so) = (
+                self.inner.step_site(
+                    (c_mid, vr, g.omega_inner),
+                    (p_mid, v, w),
+                    rb,
+                    (p + v * dt, c_end),
+                ),
+                self.outer.step_site(
+                    (Vec3::zero(), Vec3::zero(), T::ZERO),
+                    (p_mid, v, w),
+                    rb,
+                    (p + v * dt, Vec3::zero()),
+                ),
+            );
             let (Some(si), Some(so)) = (si, so) else {
                 // A degenerate geometry (never from a finite state): free flight.
                 let p1 = p + v * dt;
@@ -597,11 +597,12 @@ impl<T: Real, C: RaceLaw<T>> Bearing<T, C> {
             );
             let (fi, ti) = si.site.load(&sol.w[0]);
             let (fo, to) = so.site.load(&sol.w[1]);
-            let rel_p = p + (v + f_warm * (dt * inv_m) * T::HALF) * half - c_mid + si.site.arm;
+            let rel_p = p_mid - c_mid + si.site.arm;
             loads.ring_torque -= rel_p.cross(fi).z + si.site.axes[2].z * sol.w[0][3];
             loads.spin_moment[0] += sol.w[0][3].abs();
             loads.spin_moment[1] += sol.w[1][3].abs();
             ring_force = ring_force - fi;
+            ring_stiffness.add(&sol, si.site.axes[2]);
             let v1 = v + (fi + fo) * (dt * inv_m);
             let w1 = w + (ti + to) * (dt * inv_i);
             let p1 = p + v1 * dt;
@@ -609,10 +610,75 @@ impl<T: Real, C: RaceLaw<T>> Bearing<T, C> {
         }
         let ramp = ((t + dt) / g.ramp).clamp_to(T::ZERO, T::ONE);
         let load = Vec3::new(T::ZERO, -g.radial_load, g.axial_load) * ramp;
-        let vr1 = vr + (ring_force + load) * (dt / g.ring_mass);
+        let vr1 = vr + ring_stiffness.solve(g.ring_mass, dt, (ring_force + load) * dt);
         let c1 = c + vr1 * dt;
         out[..6].copy_from_slice(&[c1.x, c1.y, c1.z, vr1.x, vr1.y, vr1.z]);
         (out, loads)
+    }
+}
+
+/// The stiffness K (3 × 3, world) the balls' solved contacts oppose to a displacement of the
+/// inner ring within the step: per ball whose two race contacts are both active, the two Hertz
+/// tangents k = dN/dh = 3N/(2h) (exact for N ∝ h^{3/2}; at the solved end approach) in series,
+/// along the inner contact's normal n: K = Σ k_i k_o/(k_i + k_o)·n nᵀ (a ball touching one
+/// race only follows the ring: no stiffness). The ring's update
+/// (M + Δt²·K)(Ṙ⁺ − Ṙ) = Δt·F is then backward Euler in the ring's displacement: without it
+/// (Ṙ⁺ = Ṙ + Δt·F/M, F taken at the predicted end position) the ring's radial mode on the
+/// balls (√(K/M) ≈ 1.9e4 rad/s for the 209 at 2 kN) has |λ|² = 1 − (Δt·ω)² per step and is
+/// unstable above Δt·ω ≈ 1.15 (≈ 60 µs). A linearisation (a W-method): the balls' forces
+/// themselves are unchanged, K only sets how the ring's velocity responds, so the step stays
+/// consistent for any K ≥ 0 and the ring's mode is damped, not amplified.
+#[derive(Clone, Copy, Debug, Default)]
+struct RingStiffness<T> {
+    k: [[T; 3]; 3],
+}
+
+impl<T: Real> RingStiffness<T> {
+    /// Adds one ball's series stiffness from its solution (contact 0 inner, 1 outer) along
+    /// the inner contact's normal `n`.
+    fn add(&mut self, sol: &super::step_aware::Solution<T>, n: Vec3<T>) {
+        let tangent = |k: usize| {
+            let (nk, hk) = (sol.w[k][0], sol.h[k]);
+            if nk > T::ZERO && hk > T::ZERO {
+                T::from_f64(1.5) * nk / hk
+            } else {
+                T::ZERO
+            }
+        };
+        let (ki, ko) = (tangent(0), tangent(1));
+        let sum = ki + ko;
+        if !(ki > T::ZERO && ko > T::ZERO && sum.is_finite()) {
+            return;
+        }
+        let ks = ki * (ko / sum);
+        let n = [n.x, n.y, n.z];
+        for (row, &na) in self.k.iter_mut().zip(n.iter()) {
+            for (x, &nb) in row.iter_mut().zip(n.iter()) {
+                *x += ks * na * nb;
+            }
+        }
+    }
+
+    /// Δv with (m·I + Δt²·K)·Δv = `impulse` (Cramer's rule: the matrix is symmetric positive
+    /// definite for m > 0; a non-finite result falls back to impulse/m).
+    fn solve(&self, m: T, dt: T, impulse: Vec3<T>) -> Vec3<T> {
+        let d2 = dt * dt;
+        let a: [[T; 3]; 3] = core::array::from_fn(|i| {
+            core::array::from_fn(|j| d2 * self.k[i][j] + if i == j { m } else { T::ZERO })
+        });
+        let col = |j: usize| Vec3::new(a[0][j], a[1][j], a[2][j]);
+        let (c0, c1, c2) = (col(0), col(1), col(2));
+        let det = c0.dot(c1.cross(c2));
+        let x = Vec3::new(
+            impulse.dot(c1.cross(c2)),
+            c0.dot(impulse.cross(c2)),
+            c0.dot(c1.cross(impulse)),
+        ) * (T::ONE / det);
+        if det > T::ZERO && x.x.is_finite() && x.y.is_finite() && x.z.is_finite() {
+            x
+        } else {
+            impulse * (T::ONE / m)
+        }
     }
 }
 
