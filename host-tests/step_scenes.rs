@@ -256,10 +256,14 @@ fn rattleback_step_aware_is_stable_at_2_ms() {
 }
 
 /// The 209 bearing with the creep law `table` stepped `steps` × `dt` by the step-aware
-/// integrator from the start (every state finite, every ball within 0.1 mm of its pitch
+/// integrator with the ring coupling `coupling` from the start (every state finite, every ball within 0.1 mm of its pitch
 /// circle); means over the last quarter: (ring torque, [Σ|T_z| inner, outer] in N·mm, cage
 /// speed / ω_c).
-fn bearing_means(dt: f64, steps: usize) -> (f64, [f64; 2], f64) {
+fn bearing_means(
+    dt: f64,
+    steps: usize,
+    coupling: contensou::scenes::bearing::RingCoupling,
+) -> (f64, [f64; 2], f64) {
     use contensou::geometry::Race;
     use contensou::normal::{HuntCrossley, Modulus};
     use contensou::scenes::bearing::{BALLS, Bearing, Geometry};
@@ -284,7 +288,7 @@ fn bearing_means(dt: f64, steps: usize) -> (f64, [f64; 2], f64) {
     let mut warm = [Warm::default(); BALLS];
     let (mut n, mut ring, mut sm, mut cage) = (0.0, 0.0, [0.0; 2], 0.0);
     for i in 0..steps {
-        let (y1, l) = b.step_aware(i as f64 * dt, &y, dt, &mut warm);
+        let (y1, l) = b.step_aware_with(i as f64 * dt, &y, dt, &mut warm, coupling);
         y = y1;
         assert!(y.iter().all(|v| v.is_finite()), "step {i}");
         for k in 0..BALLS {
@@ -323,20 +327,26 @@ fn assert_bearing_figures(sm: [f64; 2], cage: f64, tol_sm: f64, tol_cage: f64) {
 
 #[test]
 fn bearing_creep_at_20_us_matches_the_fine_step_figures() {
+    use contensou::scenes::bearing::RingCoupling;
     // README (RK4 h = 0.1 µs, means over 15–20 ms): ring torque −14.8 N·mm, Σ|T_z| 82.6 /
-    // 83.2 N·mm, cage speed +0.769 % over ω_c. Measured at 20 µs: −15.2 (+2.5 %), 84.1 / 84.3
-    // (+1.9 / +1.2 %), cage +0.517 % (the cage speed 0.25 % slower).
-    let (ring, sm, cage) = bearing_means(2e-5, 1000);
+    // 83.2 N·mm, cage speed +0.769 % over ω_c. Measured at 20 µs (the ring seen at its start,
+    // the default): −14.41 (−2.9 %; the mean over five load ramps 4.9–5.1 ms is −0.6 % from
+    // RK4's, whose own spread over them is 10 %), 82.3 / 83.1 (−0.3 / −0.2 %), cage
+    // +0.672 % (the cage speed 0.1 % slower).
+    let (ring, sm, cage) = bearing_means(2e-5, 1000, RingCoupling::Start);
     assert!((ring / -14.8 - 1.0).abs() < 0.05, "ring torque {ring} N·mm");
-    assert_bearing_figures(sm, cage, 0.03, 0.005);
+    assert_bearing_figures(sm, cage, 0.01, 0.002);
 }
 
 #[test]
-fn bearing_creep_is_stable_at_100_us() {
-    // 200 steps of 100 µs (before the ring's implicit update and the mid-step geometry from
-    // the start velocity alone, the balls left the races after 17 steps). Measured: Σ|T_z|
-    // 82.8 / 82.9 N·mm (+0.3 / −0.4 %), cage speed 0.65 % slow; the ring torque (−11.8 N·mm,
-    // −21 %) is not held at this step and not asserted.
-    let (_, sm, cage) = bearing_means(1e-4, 200);
+fn bearing_creep_with_the_predicted_ring_runs_at_100_us() {
+    use contensou::scenes::bearing::RingCoupling;
+    // 200 steps of 100 µs with the ring seen where its start velocity takes it (before the
+    // ring's implicit update and the mid-step geometry from the start velocity alone, the
+    // balls left the races after 17 steps). Measured: Σ|T_z| 82.8 / 82.9 N·mm (+0.3 /
+    // −0.4 %), cage speed 0.65 % slow; the ring torque (−11.8 N·mm, −21 %) is not held at this
+    // step and not asserted. (With the load's ramp at 4.95 ms instead of 5 ms this run
+    // diverges: 100 µs is at the edge.)
+    let (_, sm, cage) = bearing_means(1e-4, 200, RingCoupling::Predicted);
     assert_bearing_figures(sm, cage, 0.02, 0.01);
 }
