@@ -46,12 +46,14 @@
 use super::integrate::Ode;
 use super::rigid::{Quat, Vec3};
 use super::step_aware::{Candidate, InvInertia, Site, StepContact, Warm, rigid_w, solve_library};
-#[cfg(doc)]
-use crate::contact::Contact;
+use crate::contact::{Contact, Rolling, VaryingContact};
 use crate::frame::{ContactFrame, Frame, MajorAxis, point_velocity};
+use crate::friction::Best;
+use crate::friction::rolling::RollingLaw;
 use crate::friction::rolling::RollingVelocity;
 use crate::geometry::{Curvatures, Race};
 use crate::jacobian::State as StepState;
+use crate::jacobian::{Jacobian, LinearDamping, LinearLaw, LinearNormal, Linearize};
 use crate::select::StepRolling;
 use crate::step::Scheme;
 use crate::{Error, Real};
@@ -189,13 +191,50 @@ pub struct RaceContact<T> {
 
 /// A per-step contact law for the races: any contact [`crate::select`] builds, through
 /// [`StepRolling`] — [`Contact`] with any normal law (exact Hertz, the G* shape, the volumetric
-/// law), damping and friction law (full slip: the rolling velocity is ignored), or
-/// [`crate::contact::Rolling`] (what [`crate::select::Rolls`] resolves to: the rolling
-/// velocity drives the creep law). The race's curvatures at contact angle 0 are passed every
-/// step (read by a varying contact only).
-pub trait RaceLaw<T: Real>: StepRolling<T> {}
+/// law), damping and friction law but the reference `Exact` (full slip: the rolling velocity
+/// is ignored), or [`crate::contact::Rolling`] over `best` (what [`crate::select::Rolls`]
+/// resolves to: the rolling velocity drives the creep law), fixed or varying. The race's
+/// curvatures at contact angle 0 are passed every step (read by a varying contact only).
+pub trait RaceLaw<T: Real>: StepRolling<T> {
+    /// The wrench and its Jacobian at `s` and the curvatures `curv` (read by a varying
+    /// contact only): the library's analytic [`Linearize`] (forward-mode dual numbers), what
+    /// the large step ([`Bearing::step_aware`]) linearises with. Zero at h ≤ 0.
+    fn race_linearize(&self, curv: &Curvatures<T>, s: &StepState<T>) -> Jacobian<T>;
+}
 
-impl<T: Real, C: StepRolling<T>> RaceLaw<T> for C {}
+impl<T: Real, N: LinearNormal<T>, D: LinearDamping<T>, L: LinearLaw> RaceLaw<T>
+    for Contact<T, N, D, L>
+{
+    #[inline]
+    fn race_linearize(&self, _: &Curvatures<T>, s: &StepState<T>) -> Jacobian<T> {
+        Linearize::linearize(self, s)
+    }
+}
+
+impl<T: Real, D: LinearDamping<T>, L: LinearLaw> RaceLaw<T> for VaryingContact<T, D, L> {
+    #[inline]
+    fn race_linearize(&self, curv: &Curvatures<T>, s: &StepState<T>) -> Jacobian<T> {
+        self.at(curv).linearize(s)
+    }
+}
+
+impl<T: Real, N: LinearNormal<T>, D: LinearDamping<T>, L: RollingLaw> RaceLaw<T>
+    for Rolling<T, Contact<T, N, D, Best>, L>
+{
+    #[inline]
+    fn race_linearize(&self, _: &Curvatures<T>, s: &StepState<T>) -> Jacobian<T> {
+        Linearize::linearize(self, s)
+    }
+}
+
+impl<T: Real, D: LinearDamping<T>, L: RollingLaw> RaceLaw<T>
+    for Rolling<T, VaryingContact<T, D, Best>, L>
+{
+    #[inline]
+    fn race_linearize(&self, curv: &Curvatures<T>, s: &StepState<T>) -> Jacobian<T> {
+        self.at(curv).linearize(s)
+    }
+}
 
 impl<T: Real, C: RaceLaw<T>> Raceway<T, C> {
     /// For the ball centre at `rel` from the ring's centre: its cylindrical radius ρ, the
@@ -405,6 +444,13 @@ impl<T: Real, C: RaceLaw<T>> StepContact<T> for RaceContactStep<'_, T, C> {
             .contact
             .step_rolling(self.curvatures, s.h, s.hdot, s.slip, s.rolling);
         [w.n, w.fx, w.fy, w.tz]
+    }
+
+    fn linearize(&self, s: &StepState<T>) -> Jacobian<T> {
+        if s.h <= T::ZERO {
+            return Jacobian::default();
+        }
+        self.contact.race_linearize(self.curvatures, s)
     }
 }
 
@@ -638,21 +684,22 @@ impl<T: Real, C: RaceLaw<T>> Bearing<T, C> {
 /// The bearing rings: the ring on the balls' Hertz contacts has lightly damped modes (0.5–3
 /// kHz in the 209 at 2 kN; its 15–20 ms means carry their rectified effect: the spin moments
 /// fall as the slip fluctuates, Contensou's T_z being concave in it). Measured (creep law
-/// `table`, means over 15–20 ms of 20 ms, against RK4 at 0.1 µs; mean over five runs whose
+/// `table`, the races' analytic Jacobians, means over 15–20 ms of 20 ms, against RK4 at
+/// 0.1 µs; mean over five runs whose
 /// load ramp is 4.9, 4.95, 5, 5.05 and 5.1 ms — the RK4 figures themselves spread by 10 %
 /// (ring torque) and 3 % (spin moments) over those five, so one run cannot resolve 2 %):
 ///
 /// | coupling | step | ring torque | Σ\|T_z\| inner / outer | cage speed |
 /// |---|---|---|---|---|
-/// | `Start` | 10 µs | +0.6 % | +0.0 / +0.2 % | −0.08 % |
-/// | `Start` | 20 µs | −0.6 % | −0.1 / +0.2 % | −0.08 % |
-/// | `Start` | 30 µs | −0.7 % | +0.1 / +0.3 % | −0.10 % |
+/// | `Start` | 10 µs | +0.7 % | −0.0 / +0.2 % | −0.08 % |
+/// | `Start` | 20 µs | −0.2 % | −0.0 / +0.2 % | −0.08 % |
+/// | `Start` | 30 µs | +0.4 % | +0.1 / +0.4 % | −0.10 % |
+/// | `Start` | 40 µs | −4.7 % | −1.4 / −1.1 % | −0.09 % |
+/// | `Start` | 50 µs | +1.2 % | −0.5 / −0.1 % | −0.15 % |
 /// | `Predicted` | 20 µs | +5.1 % | +2.1 / +1.6 % | −0.23 % |
-/// | `Predicted` | 50 µs | −0.0 % | +2.6 / +1.7 % | −0.49 % |
+/// | `Predicted` | 50 µs | +0.8 % | +2.6 / +1.7 % | −0.49 % |
 ///
-/// `Start` runs to 30 µs within 1 % of RK4, degrades at 40–50 µs (spin moments −2.5 %, ring
-/// torque −21 % at 50 µs) and diverges at 100 µs; `Predicted` is stable to 100 µs (spin
-/// moments within 0.4 %, cage 0.65 % slow, ring torque −21 % there) and diverges at 200 µs.
+/// Both diverge at 100 µs (the runner reports it: the balls leave the races).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub enum RingCoupling {
     /// At its start position R over the whole step: the balls' reactions are the ring's
@@ -663,8 +710,8 @@ pub enum RingCoupling {
     Start,
     /// Moved with its start velocity (mid-step R + ½Δt·Ṙ for the geometry, R + Δt·Ṙ for the
     /// gaps): the reactions are the ring's at its predicted end position, which damps its modes
-    /// (|λ|² = 1/(1 + Δt²K/M) per step for a linear K) — robust to 100 µs, but the damped
-    /// vibrations bias the means by 2–5 % (table above).
+    /// (|λ|² = 1/(1 + Δt²K/M) per step for a linear K); the damped vibrations bias the means by
+    /// 2–5 % (table above).
     Predicted,
 }
 
