@@ -221,6 +221,29 @@ pub struct Step<T> {
     pub omega: T,
 }
 
+/// The contact and the step of a row of the contract's [`INPUTS`] columns, in that order (the
+/// inverse of reading the fields in order).
+pub fn from_inputs<T: Copy>(row: [T; 11]) -> (Spec<T>, Step<T>) {
+    let [p, q, estar, cd, f, delta, h, hdot, vx, vy, omega] = row;
+    (
+        Spec {
+            p,
+            q,
+            estar,
+            cd,
+            f,
+            delta,
+        },
+        Step {
+            h,
+            hdot,
+            vx,
+            vy,
+            omega,
+        },
+    )
+}
+
 impl<T: Real> Step<T> {
     /// `h, hdot` and the slip, each finite (any NaN or ±∞ is [`Error::NonFinite`] naming the
     /// column).
