@@ -221,8 +221,15 @@ pub struct Step<T> {
     pub omega: T,
 }
 
-/// The contact and the step of a row of the contract's [`INPUTS`] columns, in that order (the
-/// inverse of reading the fields in order).
+/// The contact and the step of a row of the contract's [`INPUTS`] columns, in that order.
+///
+/// ```
+/// use contensou::dynamic::{INPUTS, from_inputs};
+///
+/// let (spec, step) = from_inputs(core::array::from_fn(|i| i as f64));
+/// assert_eq!((INPUTS[0], INPUTS[5], INPUTS[6], INPUTS[10]), ("P", "delta", "h", "omega"));
+/// assert_eq!((spec.p, spec.delta, step.h, step.omega), (0.0, 5.0, 6.0, 10.0));
+/// ```
 pub fn from_inputs<T: Copy>(row: [T; 11]) -> (Spec<T>, Step<T>) {
     let [p, q, estar, cd, f, delta, h, hdot, vx, vy, omega] = row;
     (
