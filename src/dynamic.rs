@@ -517,6 +517,19 @@ pub struct DynContact<T: Real> {
     pub(crate) contact: ByLaw<T>,
 }
 
+/// The friction of law `L` with coefficient `f` and regularization speed `delta`; errors name
+/// `delta` ([`Error::RegularizationSpeedNegative`]) or `f`.
+fn friction_of<T: Real, L: FrictionLaw>(f: T, delta: T) -> Result<Friction<T, L>, Invalid> {
+    Friction::with_law(f, delta).map_err(|error| Invalid {
+        column: if matches!(error, Error::RegularizationSpeedNegative) {
+            "delta"
+        } else {
+            "f"
+        },
+        error,
+    })
+}
+
 impl<T: Real> DynContact<T> {
     /// Validates the contact columns and builds the contact. Errors name the column:
     /// `P`/`Q` ([`Error::NonFinite`], [`Error::CurvaturesNotOrdered`],
@@ -544,28 +557,13 @@ impl<T: Real> DynContact<T> {
         let delta = at("delta", finite(spec.delta, "delta"))?;
         macro_rules! build {
             ($variant:ident) => {{
-                let friction = Friction::with_law(f, delta).map_err(|error| Invalid {
-                    column: if matches!(error, Error::RegularizationSpeedNegative) {
-                        "delta"
-                    } else {
-                        "f"
-                    },
-                    error,
-                })?;
+                let friction = friction_of(f, delta)?;
                 ByLaw::$variant(Formed::new(form, &curvatures, estar, damping, friction)?)
             }};
         }
         macro_rules! roll {
             ($variant:ident) => {{
-                let friction =
-                    Friction::<T, Best>::with_law(f, delta).map_err(|error| Invalid {
-                        column: if matches!(error, Error::RegularizationSpeedNegative) {
-                            "delta"
-                        } else {
-                            "f"
-                        },
-                        error,
-                    })?;
+                let friction = friction_of::<T, Best>(f, delta)?;
                 let elasticity = rolling.elasticity(estar.get())?;
                 ByLaw::$variant(RollingFormed::new(
                     form,
