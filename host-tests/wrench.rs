@@ -166,13 +166,7 @@ fn contact_loss_and_rebound_give_zero_wrench() {
 /// Passivity and finiteness of the full wrench over a seeded random sweep of states, both
 /// precisions, fixed and varying geometry: F·v_P + T_z·ω ≤ 0.
 fn passive_sweep<T: Real, L: FrictionLaw>() {
-    let mut state = 0x9e37_79b9_7f4a_7c15_u64;
-    let mut next = move || {
-        state ^= state << 13;
-        state ^= state >> 7;
-        state ^= state << 17;
-        (state >> 11) as f64 / (1u64 << 53) as f64
-    };
+    let mut next = xorshift64(0x9e37_79b9_7f4a_7c15);
     let friction = Friction::<T, L>::with_law(T::from_f64(0.25), T::from_f64(1e-4)).unwrap();
     let modulus = Modulus::new(T::from_f64(1e11)).unwrap();
     let varying = VaryingContact::new(modulus, Undamped, friction);
