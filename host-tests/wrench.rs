@@ -10,6 +10,10 @@ use contensou::normal::{CompressionDamping, Hertz, Modulus, Undamped};
 use contensou::shape::Newton;
 use std::f64::consts::PI;
 
+#[macro_use]
+#[path = "common/each.rs"]
+mod each;
+
 fn rel(got: f64, want: f64) -> f64 {
     ((got - want) / want).abs()
 }
@@ -199,10 +203,7 @@ fn passive_sweep<T: Real, L: FrictionLaw>() {
 
 #[test]
 fn full_wrench_is_passive_and_finite() {
-    passive_sweep::<f64, Simplified>();
-    passive_sweep::<f32, Simplified>();
-    passive_sweep::<f64, Best>();
-    passive_sweep::<f32, Best>();
+    each!(passive_sweep, [f64, f32], [Simplified, Best]);
 }
 
 include!("../benches/friction_set.rs");
@@ -261,8 +262,9 @@ fn unclamped_step_is_the_clamped_call<T: Real, L: FrictionLaw>() {
 
 #[test]
 fn unclamped_step_equals_the_clamped_call() {
-    unclamped_step_is_the_clamped_call::<f32, Simplified>();
-    unclamped_step_is_the_clamped_call::<f32, Best>();
-    unclamped_step_is_the_clamped_call::<f64, Simplified>();
-    unclamped_step_is_the_clamped_call::<f64, Best>();
+    each!(
+        unclamped_step_is_the_clamped_call,
+        [f32, f64],
+        [Simplified, Best]
+    );
 }
