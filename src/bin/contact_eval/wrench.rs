@@ -72,14 +72,11 @@ pub fn help_options() -> String {
 /// Run the subcommand, or say why the options are wrong.
 pub fn run(args: Args) -> Result<ExitCode, String> {
     let (law, form, precision) = options(args)?;
-    Ok(match precision {
-        Precision::F32 => rows::<f32>(&OUTPUTS, &|c, rs, s, rv| {
+    Ok(
+        per_precision!(precision, T => rows::<T>(&OUTPUTS, &|c, rs, s, rv| {
             dynamic::wrench_rolling(c, rs, law, form, s, rv).map(|o| o.to_array().to_vec())
-        }),
-        Precision::F64 => rows::<f64>(&OUTPUTS, &|c, rs, s, rv| {
-            dynamic::wrench_rolling(c, rs, law, form, s, rv).map(|o| o.to_array().to_vec())
-        }),
-    })
+        })),
+    )
 }
 
 /// The options of the contract's subcommands: `--law`, `--form` and the precision.
