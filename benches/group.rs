@@ -17,6 +17,18 @@ macro_rules! bench_cycling {
     }};
 }
 
+/// `each!(f(args…), [T…], [L…])`: `f::<T, L>(args…)` for each precision `T` and, within it,
+/// each law or method `L`.
+#[allow(unused_macros)] // not every bench runs a grid of precisions × laws
+macro_rules! each {
+    ($f:ident $args:tt, [$($t:ty),*], $ls:tt) => {
+        $(each!(@laws $f $args, $t, $ls);)*
+    };
+    (@laws $f:ident $args:tt, $t:ty, [$($l:ty),*]) => {
+        $($f::<$t, $l> $args;)*
+    };
+}
+
 /// `criterion_group!` of `targets` with the given times and sample size, and `criterion_main!`.
 macro_rules! bench_main {
     ($targets:path, warm_up_ms: $w:expr, measure_ms: $m:expr, samples: $n:expr) => {

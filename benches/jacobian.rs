@@ -38,10 +38,7 @@ fn jacobian<T: Real, L: LinearLaw>(c: &mut Criterion) {
 }
 
 fn benches(c: &mut Criterion) {
-    jacobian::<f32, Best>(c);
-    jacobian::<f32, Simplified>(c);
-    jacobian::<f64, Best>(c);
-    jacobian::<f64, Simplified>(c);
+    each!(jacobian(c), [f32, f64], [Best, Simplified]);
 }
 
 bench_main!(benches, warm_up_ms: 300, measure_ms: 1000, samples: 30);

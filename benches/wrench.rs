@@ -32,10 +32,7 @@ fn wrench<T: Real, L: FrictionLaw>(c: &mut Criterion) {
 }
 
 fn benches(c: &mut Criterion) {
-    wrench::<f32, Simplified>(c);
-    wrench::<f64, Simplified>(c);
-    wrench::<f32, Best>(c);
-    wrench::<f64, Best>(c);
+    each!(wrench(c), [f32, f64], [Simplified, Best]);
 }
 
 bench_main!(benches, warm_up_ms: 300, measure_ms: 1000, samples: 30);
