@@ -90,14 +90,17 @@ impl Worst {
     }
 }
 
-#[test]
-fn matches_the_independent_reference() {
-    let text = include_str!("../tools/data/best_varying_ref.csv");
-    let rows: Vec<Vec<f64>> = text
-        .lines()
+/// The numbers of a reference CSV's rows (its header skipped).
+fn csv_rows(text: &str) -> Vec<Vec<f64>> {
+    text.lines()
         .skip(1)
         .map(|l| l.split(',').map(|v| v.parse().unwrap()).collect())
-        .collect();
+        .collect()
+}
+
+#[test]
+fn matches_the_independent_reference() {
+    let rows = csv_rows(include_str!("../tools/data/best_varying_ref.csv"));
     assert!(rows.len() > 400);
     let (mut w64, mut w32) = (Worst::default(), Worst::default());
     for r in &rows {
@@ -121,12 +124,7 @@ fn matches_the_independent_reference() {
 #[test]
 fn thin_patches_match_the_independent_reference() {
     use contensou::friction::BestContact;
-    let text = include_str!("../tools/data/best_thin_ref.csv");
-    let rows: Vec<Vec<f64>> = text
-        .lines()
-        .skip(1)
-        .map(|l| l.split(',').map(|v| v.parse().unwrap()).collect())
-        .collect();
+    let rows = csv_rows(include_str!("../tools/data/best_thin_ref.csv"));
     assert!(rows.len() > 300);
     let mut w = [
         Worst::default(),
