@@ -8,8 +8,9 @@
 //!
 //! NAME: `tippe-top` (laws `best`, `simplified`, `coulomb`; θ₀ = 0.1 rad, 180 rad/s, f = 0.3,
 //! δ = 1e-4 m/s; default end 2.5 s), `ball` (`best`, `coulomb`; the guide's steel ball,
-//! f = 0.1, δ = 1e-4 m/s; default end 0.9 s), `rattleback` (`best`, `simplified`, `ellipsoid`,
-//! `coulomb`, δ = 1 mm/s, or the rolling laws `table`, `blend`; Kane & Levinson's start,
+//! f = 0.1, δ = 1e-4 m/s; default end 0.9 s), `rattleback` (`best` with δ = 0.1 mm/s, the δ → 0
+//! limit: `BEST_DELTA`; `simplified`, `ellipsoid`, `coulomb`, δ = 1 mm/s; or the rolling laws
+//! `table`, `blend`; Kane & Levinson's start,
 //! `--spin` ω₀ (default −2 rad/s); default end 4 s), `bearing` (`best` full slip, δ = 0.05 m/s,
 //! or the creep laws `table`, `blend`; `--geometry 209|paper`; RK4 only; default end 20 ms).
 //!
@@ -44,7 +45,9 @@ use contensou::normal::{HuntCrossley, Modulus};
 use contensou::scenes::ball::{Ball, BallEvents};
 use contensou::scenes::bearing::{BALLS, Bearing, Geometry, RaceLaw};
 use contensou::scenes::integrate::{Ode, rk4_step};
-use contensou::scenes::rattleback::{Creeping, FloorLaw, Params, Rattleback, SpinEvents};
+use contensou::scenes::rattleback::{
+    BEST_DELTA, Creeping, FloorLaw, Params, Rattleback, SpinEvents,
+};
 use contensou::scenes::step_aware::Warm;
 use contensou::scenes::tippe_top::{Events, Params as TopParams, TippeTop};
 use contensou::select::{Elliptic, ExactGrade, Fixed, Rolls, Scene, Select, rolling_elasticity};
@@ -411,15 +414,15 @@ fn rattle<L: FloorLaw<f64>>(a: &Args, rb: &Rattleback<f64, L>) -> Report {
 fn rattle_law(a: &Args) -> Result<Report, String> {
     let p = Params::<f64>::kane_levinson();
     let sliding = |a: &Args| -> Option<Report> {
-        fn go<L: FrictionLaw>(a: &Args, p: &Params<f64>) -> Report {
-            let rb = Rattleback::new(p, Friction::<f64, L>::with_law(0.3, 1e-3).unwrap()).unwrap();
+        fn go<L: FrictionLaw>(a: &Args, p: &Params<f64>, delta: f64) -> Report {
+            let rb = Rattleback::new(p, Friction::<f64, L>::with_law(0.3, delta).unwrap()).unwrap();
             rattle(a, &rb)
         }
         Some(match a.law.as_str() {
-            "best" => go::<Best>(a, &p),
-            "simplified" => go::<Simplified>(a, &p),
-            "ellipsoid" => go::<Ellipsoid>(a, &p),
-            "coulomb" => go::<Coulomb>(a, &p),
+            "best" => go::<Best>(a, &p, BEST_DELTA),
+            "simplified" => go::<Simplified>(a, &p, 1e-3),
+            "ellipsoid" => go::<Ellipsoid>(a, &p, 1e-3),
+            "coulomb" => go::<Coulomb>(a, &p, 1e-3),
             _ => return None,
         })
     };

@@ -9,7 +9,9 @@ use contensou::friction::rolling::Table;
 use contensou::friction::{Best, Coulomb, Friction, FrictionLaw};
 use contensou::scenes::ball::{Ball, BallEvents};
 use contensou::scenes::integrate::rk4_step;
-use contensou::scenes::rattleback::{Creeping, FloorLaw, Params, Rattleback, SpinEvents};
+use contensou::scenes::rattleback::{
+    BEST_DELTA, Creeping, FloorLaw, Params, Rattleback, SpinEvents,
+};
 use contensou::scenes::step_aware::Warm;
 use contensou::scenes::tippe_top::{Params as TopParams, TippeTop};
 
@@ -17,8 +19,9 @@ use contensou::scenes::tippe_top::{Params as TopParams, TippeTop};
 /// the small sphere's touch-down.
 const TOP_HALF: f64 = 1.11369;
 const TOP_TOUCH: f64 = 1.74371;
-/// The rattleback's fine-step RK4 stalls (h = 0.1 ms, `best`, δ = 1 mm/s): ω₀ = −2, +2 rad/s.
-const RB_STALL: [f64; 2] = [0.84317, 1.21030];
+/// The rattleback's fine-step RK4 stalls (`best`, δ = `BEST_DELTA` = 0.1 mm/s, the δ → 0 limit;
+/// h = 2.5 µs, the same to 1e-9 s at 20 µs): ω₀ = −2, +2 rad/s.
+const RB_STALL: [f64; 2] = [0.836502, 1.173077];
 /// The rattleback's fine-step RK4 reversals at ω₀ = −2 rad/s: `coulomb` (h = 0.1 ms,
 /// δ = 1 mm/s) and the rolling law `table` (h = 50 µs) (bench-results/step-sweep.md).
 const RB_REVERSAL_COULOMB: f64 = 2.43047;
@@ -190,19 +193,19 @@ fn rattle<L: FloorLaw<f64>>(
     events
 }
 
-fn sliding<L: FrictionLaw>() -> Rattleback<f64, L> {
+fn sliding<L: FrictionLaw>(delta: f64) -> Rattleback<f64, L> {
     Rattleback::new(
         &Params::kane_levinson(),
-        Friction::<f64, L>::with_law(0.3, 1e-3).unwrap(),
+        Friction::<f64, L>::with_law(0.3, delta).unwrap(),
     )
     .unwrap()
 }
 
 #[test]
 fn rattleback_best_stalls_on_time_at_large_steps() {
-    // Measured against RK4 0.1 ms: −2 rad/s −0.01 % at 0.1 ms, −0.48 % at 1 ms; +2 rad/s
-    // −0.00 % at 0.1 ms, −0.05 % at 1 ms.
-    let rb = sliding::<Best>();
+    // Measured against RK4 (δ = 0.1 mm/s): −2 rad/s −0.004 % at 0.1 ms, −0.30 % at 1 ms
+    // (−0.73 % at 2 ms); +2 rad/s −0.004 % at 0.1 ms, −0.075 % at 1 ms (−0.93 % at 2 ms).
+    let rb = sliding::<Best>(BEST_DELTA);
     for (k, spin) in [-2.0, 2.0].into_iter().enumerate() {
         for (dt, tol) in [(1e-4, 0.01), (1e-3, 0.02)] {
             let e = rattle(&rb, dt, spin, 1.5);
@@ -217,17 +220,52 @@ fn rattleback_best_stalls_on_time_at_large_steps() {
     }
 }
 
+/// The scene's δ for `best` is the limit δ → 0: at 2δ, δ and δ/2 the step-aware run (0.1 ms)
+/// stalls, never reverses, within 0.2 ms of the fine-step RK4 reference, and RK4 at 20 µs (the
+/// largest step RK4 holds at this δ) gives the reference itself; at δ = 1 mm/s (the scene's
+/// former δ) the stall of the unstable spin is ≥ 10 ms late (measured +26.6 ms; +6.7 ms with the
+/// former ramp by the ℓ¹ slip speed; a reversal with a ramp ending at p = δ) — what makes
+/// δ = 1 mm/s a knob (docs/guide/src/time-stepping.md, "The slip scale δ of the scenes").
+#[test]
+fn rattleback_best_outcome_is_the_delta_to_zero_limit() {
+    for (k, spin) in [-2.0, 2.0].into_iter().enumerate() {
+        for delta in [2.0 * BEST_DELTA, BEST_DELTA, 0.5 * BEST_DELTA] {
+            let e = rattle(&sliding::<Best>(delta), 1e-4, spin, 1.5);
+            let stall = e.stall().expect("stall");
+            assert!(e.reversal().is_none(), "ω₀ = {spin}, δ = {delta}");
+            assert!(
+                (stall - RB_STALL[k]).abs() < 2e-4,
+                "ω₀ = {spin}, δ = {delta}: stall {stall} vs {}",
+                RB_STALL[k]
+            );
+        }
+    }
+    let rb = sliding::<Best>(BEST_DELTA);
+    let (dt, spin) = (2e-5, -2.0);
+    let mut y = rb.initial_state(0.5f64.to_radians(), spin);
+    let mut events = SpinEvents::new(&rb, 0.0, &y, spin, 0.1);
+    for i in 0..(1.0 / dt) as usize {
+        y = rk4_step(&rb, i as f64 * dt, &y, dt);
+        events.update(&rb, (i + 1) as f64 * dt, &y);
+    }
+    let stall = events.stall().expect("RK4 stalls");
+    assert!((stall - RB_STALL[0]).abs() < 1e-5, "RK4 20 µs: {stall}");
+    let e = rattle(&sliding::<Best>(1e-3), 1e-4, -2.0, 1.5);
+    let late = e.stall().expect("stall at 1 mm/s") - RB_STALL[0];
+    assert!(late > 0.01, "δ = 1 mm/s: {late} s late");
+}
+
 #[test]
 fn rattleback_reverses_on_time_with_coulomb_and_the_rolling_law() {
     // Measured against RK4: `coulomb` +0.005 % at 0.1 ms, −0.09 % at 1 ms; `table` −0.01 %
     // at 0.2 ms, −0.25 % at 1 ms.
-    let e = rattle(&sliding::<Coulomb>(), 1e-4, -2.0, 2.6);
+    let e = rattle(&sliding::<Coulomb>(1e-3), 1e-4, -2.0, 2.6);
     let t = e.reversal().expect("coulomb reverses at 0.1 ms");
     assert!(
         (t / RB_REVERSAL_COULOMB - 1.0).abs() < 0.01,
         "coulomb 0.1 ms: {t}"
     );
-    let e = rattle(&sliding::<Coulomb>(), 1e-3, -2.0, 2.6);
+    let e = rattle(&sliding::<Coulomb>(1e-3), 1e-3, -2.0, 2.6);
     let t = e.reversal().expect("coulomb reverses at 1 ms");
     assert!(
         (t / RB_REVERSAL_COULOMB - 1.0).abs() < 0.02,
@@ -246,8 +284,8 @@ fn rattleback_reverses_on_time_with_coulomb_and_the_rolling_law() {
 #[test]
 fn rattleback_step_aware_is_stable_at_2_ms() {
     // Finite, energy never rising (beyond 5e-5 of E₀), for a sliding law and the creep law.
-    rattle(&sliding::<Best>(), 2e-3, -2.0, 3.0);
-    rattle(&sliding::<Coulomb>(), 2e-3, -2.0, 3.0);
+    rattle(&sliding::<Best>(BEST_DELTA), 2e-3, -2.0, 3.0);
+    rattle(&sliding::<Coulomb>(1e-3), 2e-3, -2.0, 3.0);
     let p = Params::kane_levinson();
     let f = Friction::<f64, Best>::with_law(0.3, 1e-3).unwrap();
     let rb = Rattleback::<f64, Creeping<Table>>::rolling(&p, f, p.elasticity().unwrap()).unwrap();
