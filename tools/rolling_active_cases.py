@@ -10,10 +10,12 @@ Modes (own seeds, never the held-out set's 29):
   [1/20, 20], one in three aligned, else θ uniform in [0°, 180°); ν uniform in [0, ½]); direction
   uniform on the sphere in the creep matrix' normalisation ((d₁/K₁₁, d₂/K₂₂, d₃/(abs(K₃₂) + K₃₃/20)));
   NPER magnitudes per direction with ρ log-uniform in [RMIN, RMAX].
+- `aligned-long SEED N NPER RMIN RMAX OUT`: aligned patches (θ = 0) with abs(ln a/b) in [ln 5, ln 20], the
+  prototype's worst family (long along the rolling direction, translation-dominated, ρ 2–5).
 - `thin SEED N NPER RMIN RMAX OUT`: the same but abs(ln a/b) ≥ ln 5 for 60 % of the shapes and the spin
   component of the direction ×2.5 for half of them.
 
-Committed: `general 7001 1000 3 0.5 40` and `thin 7002 1000 3 0.7 15` (the first points of their
+Committed: `general 7001 1000 3 0.5 40`, `thin 7002 1000 3 0.7 15` and `aligned-long 7003 200 3 0.8 12` (the first points of their
 interleaved halves were solved: tools/data/rolling_ref_train_active.csv says how many).
 """
 import pathlib
@@ -32,6 +34,12 @@ def main():
     if mode == "general":
         aob = np.exp(np.log(20) * (2 * rng.random(n) - 1))
         theta = np.where(rng.random(n) < 1 / 3, 0.0, np.pi * rng.random(n))
+        nu = 0.5 * rng.random(n)
+        d = rng.normal(size=(n, 3))
+    elif mode == "aligned-long":
+        lr = np.log(5) + (np.log(20) - np.log(5)) * rng.random(n)
+        aob = np.exp(np.where(rng.random(n) < 0.5, lr, -lr))
+        theta = np.zeros(n)
         nu = 0.5 * rng.random(n)
         d = rng.normal(size=(n, 3))
     else:
