@@ -155,6 +155,37 @@ impl Patch {
     }
 }
 
+/// One case of a skewed patch (a₀/b₀ = `aob`, c = 1, its a₀ axis at `theta` rad from the rolling
+/// direction x), solved on the three grids with `elements` on the finest, as one CSV row of the
+/// held-out file's format: `family,a_over_b,theta_deg,nu,nl,xi,eta,phi_c,fx,fy,mz,err_f,err_m,converged,seconds`.
+pub fn skewed_row(
+    family: &str,
+    aob: f64,
+    theta: f64,
+    nu: f64,
+    nl: f64,
+    creepage: [f64; 3],
+    elements: usize,
+) -> String {
+    let [xi, eta, phi_c] = creepage;
+    let t = Instant::now();
+    let (a, b, _) = skew(aob, theta);
+    let nm = elements_ratio(a / b);
+    let patch = Patch::skewed_on(aob, theta, nu, nl, finest_k(nm, elements), nm);
+    let sol = patch.solve(xi, eta, phi_c, true);
+    format!(
+        "{family},{aob:.6},{:.4},{nu:.4},{nl},{xi:e},{eta:e},{phi_c:e},{:.10e},{:.10e},{:.10e},{:.3e},{:.3e},{},{:.2}",
+        theta.to_degrees(),
+        sol.totals.fx,
+        sol.totals.fy,
+        sol.totals.mz,
+        sol.err_f,
+        sol.err_m,
+        u8::from(sol.converged),
+        t.elapsed().as_secs_f64()
+    )
+}
+
 /// Extrapolated totals (÷ fN, ÷ fNc), their error estimates and the per-grid results.
 pub struct Solution {
     /// Every grid's Gauss–Seidel met its tolerance (else it stopped at the sweep limit).
