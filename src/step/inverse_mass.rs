@@ -16,11 +16,20 @@
 //! - symmetric: |W_ab − W_ba| ≤ [`SYMMETRY_TOLERANCE`]·√(W_aa·W_bb) (relative to the
 //!   diagonal, so that W may mix units: 1/kg against 1/(kg·m²)); a zero diagonal entry (a
 //!   direction no impulse moves, e.g. both bodies fixed there) needs its row and column exactly
-//!   zero ([`Error::InverseMassNotSymmetric`]). The stored matrix is (W + Wᵀ)/2.
+//!   zero: W_ab ≠ W_ba there is [`Error::InverseMassNotSymmetric`], W_ab = W_ba ≠ 0 breaks
+//!   W_ab² ≤ W_aa·W_bb ([`Error::InverseMassNotPositiveSemidefinite`]). The stored matrix is (W + Wᵀ)/2. A W assembled as
+//!   L·Lᵀ (or J·M⁻¹·Jᵀ) in floating point is positive semidefinite as rounded only if its
+//!   diagonal does not underflow: with entries below √`T::MIN_POSITIVE` relative to the others
+//!   (f32: 1.1e-19) a diagonal entry can round to 0 or lose its digits while its row keeps
+//!   them, and W is refused as not positive semidefinite — scale the units (the fuzz target
+//!   `step` accepts every L·Lᵀ whose factors are 0 or within [1e-6, 1e6] in magnitude).
 //! - positive semidefinite: the LDLᵀ factorisation of the diagonally scaled matrix
-//!   S = D^{-1/2} W D^{-1/2} (unit diagonal; D = diag W) with a pivot floor: a pivot below
-//!   −[`PSD_TOLERANCE`] is an error, a pivot within ±[`PSD_TOLERANCE`] is taken as zero (its
-//!   column must then vanish to the same tolerance), else it factorises. n = 4K rows: n³/6
+//!   S = D^{-1/2} W D^{-1/2} (unit diagonal; D = diag W) with a pivot floor: pivot j below
+//!   −t_j is an error, within ±t_j it is taken as zero (its column must then vanish to √t_j),
+//!   else it factorises; t_j = [`PSD_TOLERANCE`]·ε·(1 + Σ_k<j |L_jk|)², what an entrywise
+//!   rounding of S of 256 ε moves pivot j by (to first order): so W is accepted when it is
+//!   positive semidefinite up to such a rounding — a rank-deficient W = L·Lᵀ whose rows
+//!   nearly repeat an ill-conditioned combination included. n = 4K rows: n³/6
 //!   multiply-adds, no branch on the data beyond the pivot tests.
 
 use crate::error::finite;
@@ -32,7 +41,8 @@ use crate::{Error, Real};
 pub const SYMMETRY_TOLERANCE: f64 = 64.0;
 
 /// Pivot tolerance of the positive-semidefinite check on the unit-diagonal scaled matrix, in
-/// units of machine epsilon: 256·ε (`f32` 3.1e-5, `f64` 5.7e-14).
+/// units of machine epsilon: 256·ε (`f32` 3.1e-5, `f64` 5.7e-14), times (1 + Σ_k<j |L_jk|)²
+/// for pivot j (module docs).
 pub const PSD_TOLERANCE: f64 = 256.0;
 
 fn symmetry_tolerance<T: Real>() -> T {
@@ -115,8 +125,15 @@ impl<T: Real, const K: usize> InverseMass<T, K> {
                 let (a, b) = (w.get(r, c), w.get(c, r));
                 let scale = (w.get(r, r) * w.get(c, c)).sqrt();
                 if scale == T::ZERO {
-                    if a != T::ZERO || b != T::ZERO {
+                    // A zero diagonal entry with a non-zero entry in its row: no tolerance
+                    // scales there, so W_ab ≠ W_ba is the asymmetry; W_ab = W_ba ≠ 0 breaks
+                    // W_ab² ≤ W_aa·W_bb = 0, not positive semidefinite (a W = L·Lᵀ whose
+                    // diagonal entry underflowed to 0 while its row did not, as rounded).
+                    if a != b {
                         return Err(Error::InverseMassNotSymmetric);
+                    }
+                    if a != T::ZERO {
+                        return Err(Error::InverseMassNotPositiveSemidefinite);
                     }
                 } else if (a - b).abs() > tol * scale {
                     return Err(Error::InverseMassNotSymmetric);
@@ -202,12 +219,19 @@ impl<T: Real, const K: usize> InverseMass<T, K> {
             }
         }
         for j in 0..n {
-            // d_j = S_jj − Σ_k<j L_jk² d_k
+            // d_j = S_jj − Σ_k<j L_jk² d_k; its tolerance tol·(1 + Σ_k<j |L_jk|)²: an entrywise
+            // perturbation η of S (W's own rounding, the scaling's) moves the pivot by up to
+            // ≈ η·(1 + Σ|L_jk|)² — large where row j nearly repeats an ill-conditioned
+            // combination of the rows before it (a rank-deficient W = L·Lᵀ: f64 pivot
+            // −2.1e-13 at |L_jk| ≈ 33, a fuzz finding).
             let mut d = s.get(j, j);
+            let mut growth = T::ONE;
             for k in 0..j {
                 let l = s.get(j, k);
                 d -= l * l * s.get(k, k);
+                growth += l.abs();
             }
+            let tol = tol * growth * growth;
             if d < -tol {
                 return false;
             }
