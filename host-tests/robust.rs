@@ -353,7 +353,8 @@ mod jacobian_step_findings {
             0x3d, 0xb4, 0xb4,
         ];
         // a rank-deficient f64 W = L·Lᵀ with a nearly repeated row (|L_21| ≈ 33 in the
-        // scaled factorisation): pivot −2.1e-13 against the former fixed floor 5.7e-14
+        // scaled factorisation): pivot −2.1e-13 against the fixed floor 5.7e-14 — refused as
+        // not positive semidefinite, documented (the check's box now needs L of full rank)
         let c = [
             0xfd, 0x3d, 0xfd, 0x3d, 0xfd, 0xb5, 0x3d, 0xdd, 0x3d, 0x3d, 0x70, 0xdd, 0xb5, 0x3d,
             0x3d, 0x3d, 0x70, 0xc1, 0xc1, 0xad, 0xad, 0xad, 0xad, 0xad, 0x3f, 0x86, 0x23, 0x2a,

@@ -61,7 +61,7 @@ pub enum Error {
     /// An inverse-mass matrix W ([`crate::step::InverseMass`]) is not positive semidefinite
     /// within the stated tolerance (a negative diagonal entry, W_ij = W_ji ≠ 0 in the row of a
     /// zero diagonal entry, or an LDLᵀ pivot of the diagonally scaled matrix below
-    /// −[`crate::step::PSD_TOLERANCE`]·ε·(1 + Σ_k<j |L_jk|)², the factor's growth).
+    /// −[`crate::step::PSD_TOLERANCE`]·ε).
     InverseMassNotPositiveSemidefinite,
     /// A body's mass ([`crate::step::Body`]) is ≤ 0.
     MassNotPositive,

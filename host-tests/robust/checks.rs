@@ -1250,7 +1250,16 @@ pub fn step<T: Fz>(inp: &mut Input<'_>) {
         // of tiny entries rounding to 0 can make it indefinite in floating point)
         && raw
             .iter()
-            .all(|x| *x == T::ZERO || Box::within(x.abs(), 1e-6, 1e6));
+            .all(|x| *x == T::ZERO || Box::within(x.abs(), 1e-6, 1e6))
+        // and L of full rank, its diagonal ≥ 0.1 of its largest entry: a rank-deficient W
+        // whose dependent row repeats an ill-conditioned combination of the others can be
+        // refused by its own rounding (the pivot floor 256 ε is absolute; documented)
+        && {
+            let big = raw.iter().fold(0.0f64, |m, x| m.max(x.to_f64().abs()));
+            [0usize, 2, 5, 9]
+                .iter()
+                .all(|&k| raw[k].to_f64().abs() >= 0.1 * big)
+        };
     let out = if !dt.is_finite() {
         assert_eq!(
             got.map_err(|e| (e.column, e.error)),

@@ -24,12 +24,13 @@
 //!   them, and W is refused as not positive semidefinite — scale the units (the fuzz target
 //!   `step` accepts every L·Lᵀ whose factors are 0 or within [1e-6, 1e6] in magnitude).
 //! - positive semidefinite: the LDLᵀ factorisation of the diagonally scaled matrix
-//!   S = D^{-1/2} W D^{-1/2} (unit diagonal; D = diag W) with a pivot floor: pivot j below
-//!   −t_j is an error, within ±t_j it is taken as zero (its column must then vanish to √t_j),
-//!   else it factorises; t_j = [`PSD_TOLERANCE`]·ε·(1 + Σ_k<j |L_jk|)², what an entrywise
-//!   rounding of S of 256 ε moves pivot j by (to first order): so W is accepted when it is
-//!   positive semidefinite up to such a rounding — a rank-deficient W = L·Lᵀ whose rows
-//!   nearly repeat an ill-conditioned combination included. n = 4K rows: n³/6
+//!   S = D^{-1/2} W D^{-1/2} (unit diagonal; D = diag W) with a pivot floor: a pivot below
+//!   −[`PSD_TOLERANCE`] is an error, a pivot within ±[`PSD_TOLERANCE`] is taken as zero (its
+//!   column must then vanish to the same tolerance), else it factorises. The floor is
+//!   absolute: a rank-deficient W whose dependent row repeats an ill-conditioned combination
+//!   of the rows before it can be refused by its own rounding (f64 W = L·Lᵀ with |L_jk| ≈ 33
+//!   in the scaled factor: pivot −2.1e-13 against 5.7e-14; a floor growing as
+//!   (1 + Σ_k |L_jk|)² accepts it but changes which W the scenes' fallback sees — not done). n = 4K rows: n³/6
 //!   multiply-adds, no branch on the data beyond the pivot tests.
 
 use crate::error::finite;
@@ -41,8 +42,7 @@ use crate::{Error, Real};
 pub const SYMMETRY_TOLERANCE: f64 = 64.0;
 
 /// Pivot tolerance of the positive-semidefinite check on the unit-diagonal scaled matrix, in
-/// units of machine epsilon: 256·ε (`f32` 3.1e-5, `f64` 5.7e-14), times (1 + Σ_k<j |L_jk|)²
-/// for pivot j (module docs).
+/// units of machine epsilon: 256·ε (`f32` 3.1e-5, `f64` 5.7e-14).
 pub const PSD_TOLERANCE: f64 = 256.0;
 
 fn symmetry_tolerance<T: Real>() -> T {
@@ -219,19 +219,12 @@ impl<T: Real, const K: usize> InverseMass<T, K> {
             }
         }
         for j in 0..n {
-            // d_j = S_jj − Σ_k<j L_jk² d_k; its tolerance tol·(1 + Σ_k<j |L_jk|)²: an entrywise
-            // perturbation η of S (W's own rounding, the scaling's) moves the pivot by up to
-            // ≈ η·(1 + Σ|L_jk|)² — large where row j nearly repeats an ill-conditioned
-            // combination of the rows before it (a rank-deficient W = L·Lᵀ: f64 pivot
-            // −2.1e-13 at |L_jk| ≈ 33, a fuzz finding).
+            // d_j = S_jj − Σ_k<j L_jk² d_k
             let mut d = s.get(j, j);
-            let mut growth = T::ONE;
             for k in 0..j {
                 let l = s.get(j, k);
                 d -= l * l * s.get(k, k);
-                growth += l.abs();
             }
-            let tol = tol * growth * growth;
             if d < -tol {
                 return false;
             }
