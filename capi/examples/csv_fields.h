@@ -44,6 +44,44 @@ static const char *parse(const char *field, double *out, int f32) {
     return *out == *out ? NULL : "not a number (NaN)";
 }
 
+/* The name of field k of a row for a message (`ctx`: the twin's), or NULL for "field k+1". */
+typedef const char *(*field_name_fn)(int k, const void *ctx);
+
+/* Row number `row` in `line` (stripped in place) read into `v`: its fields split from `copy`
+ * (a copy of the `size` bytes of `line`) into `fields` (the first `max` kept). 0 for a blank
+ * line (skipped), 1 for a row of `expected` numbers, −1 after a message on stderr naming
+ * `program`, the row and why: another field count (the header `header` named), or a field
+ * that is not a number (named by `name`). */
+static int read_row(const char *program, long row, char *line, char *copy, size_t size, char **fields, int max,
+                    int expected, const char *header, double *v, int f32, field_name_fn name, const void *ctx) {
+    int n, k;
+    if (*trim(line) == '\0') return 0;
+    memcpy(copy, line, size);
+    n = split(copy, fields, max);
+    if (n != expected) {
+        fprintf(stderr, "%s: row %ld: fields = %d: expected %d (%s)\n", program, row, n, expected, header);
+        return -1;
+    }
+    for (k = 0; k < expected; k++) {
+        const char *why = parse(fields[k], &v[k], f32);
+        if (why) {
+            const char *field = name(k, ctx);
+            if (field) fprintf(stderr, "%s: row %ld: %s = %s: %s\n", program, row, field, fields[k], why);
+            else fprintf(stderr, "%s: row %ld: field %d = %s: %s\n", program, row, k + 1, fields[k], why);
+            return -1;
+        }
+    }
+    return 1;
+}
+
+/* A row's `n` inputs `v` then its `outputs` results `out`, comma-separated: %.9g (f32) or
+ * %.17g (f64), so that they read back to the same bits. */
+static void print_row(const double *v, int n, const double *out, int outputs, int f32) {
+    int k;
+    for (k = 0; k < n; k++) printf(f32 ? "%.9g," : "%.17g,", v[k]);
+    for (k = 0; k < outputs; k++) printf(f32 ? "%.9g%s" : "%.17g%s", out[k], k + 1 < outputs ? "," : "\n");
+}
+
 #ifdef CONTENSOU_H
 /* The options of the wrench contract's twins (wrench_eval, step_eval): --law (a law of the
  * contract: not full-slip or linear), --form, --precision; NULL, or why they are wrong. */

@@ -35,6 +35,13 @@ static int usage(const char *why) {
     return 2;
 }
 
+/* Fields are named by number in a parse error. */
+static const char *field_number(int k, const void *ctx) {
+    (void)k;
+    (void)ctx;
+    return NULL;
+}
+
 int main(int argc, char **argv) {
     contensou_law law = CONTENSOU_LAW_BEST;
     contensou_form form = CONTENSOU_FORM_FIXED;
@@ -62,22 +69,12 @@ int main(int argc, char **argv) {
         double v[MAX_FIELDS], out[4] = {0, 0, 0, 0}, opt[OPTIONAL];
         contensou_column column = CONTENSOU_COLUMN_NONE;
         contensou_status s;
-        int n, k, bad_field;
+        int k, bad_field;
         row++;
-        if (*trim(line) == '\0') continue;
-        memcpy(copy, line, sizeof line);
-        n = split(copy, fields, MAX_FIELDS);
-        if (n != fields_per_row) {
-            fprintf(stderr, "step_eval: row %ld: fields = %d: expected %d (%s)\n", row, n, fields_per_row, header);
-            return 1;
-        }
-        for (k = 0; k < fields_per_row; k++) {
-            const char *why = parse(fields[k], &v[k], f32);
-            if (why) {
-                fprintf(stderr, "step_eval: row %ld: field %d = %s: %s\n", row, k + 1, fields[k], why);
-                return 1;
-            }
-        }
+        k = read_row("step_eval", row, line, copy, sizeof line, fields, MAX_FIELDS, fields_per_row, header, v, f32,
+                     field_number, NULL);
+        if (k == 0) continue;
+        if (k < 0) return 1;
         for (k = 0; k < OPTIONAL; k++) opt[k] = field_of[k] >= 0 ? v[field_of[k]] : 0.0;
         /* Absent free columns: the start velocity's (−hdot, vx, vy, omega). */
         if (field_of[4] < 0) opt[4] = -v[7];
@@ -135,8 +132,7 @@ int main(int argc, char **argv) {
                     bad_field >= 0 ? fields[bad_field] : "?", contensou_status_message(s), (unsigned)s);
             return 1;
         }
-        for (k = 0; k < fields_per_row; k++) printf(f32 ? "%.9g," : "%.17g,", v[k]);
-        for (k = 0; k < 4; k++) printf(f32 ? "%.9g%s" : "%.17g%s", out[k], k + 1 < 4 ? "," : "\n");
+        print_row(v, fields_per_row, out, 4, f32);
     }
     return fflush(stdout) == 0 ? 0 : 1;
 }

@@ -53,6 +53,15 @@ static int usage(const char *why) {
     return 2;
 }
 
+/* The name of field k: a contract column, or the optional column `field_of` puts there. */
+static const char *field_name(int k, const void *field_of) {
+    const char *name = k < COLUMNS ? contensou_column_name((contensou_column)k) : "";
+    int j;
+    for (j = 0; j < OPTIONAL; j++)
+        if (((const int *)field_of)[j] == k) name = OPTIONAL_NAMES[j];
+    return name;
+}
+
 static int fail_row(long row, const char *column, const char *value, contensou_status s) {
     fprintf(stderr, "wrench_eval: row %ld: %s = %s: %s (status %u)\n", row, column, value,
             contensou_status_message(s), (unsigned)s);
@@ -92,26 +101,12 @@ int main(int argc, char **argv) {
         double v[MAX_FIELDS], out[MAX_OUTPUTS], opt[OPTIONAL];
         contensou_column column = CONTENSOU_COLUMN_NONE;
         contensou_status s;
-        int n, k, same_but_curvatures, bad_field;
+        int k, same_but_curvatures, bad_field;
         row++;
-        if (*trim(line) == '\0') continue;
-        memcpy(copy, line, sizeof line);
-        n = split(copy, fields, MAX_FIELDS);
-        if (n != fields_per_row) {
-            fprintf(stderr, "wrench_eval: row %ld: fields = %d: expected %d (%s)\n", row, n, fields_per_row, header);
-            return 1;
-        }
-        for (k = 0; k < fields_per_row; k++) {
-            const char *why = parse(fields[k], &v[k], f32);
-            if (why) {
-                const char *name = k < COLUMNS ? contensou_column_name((contensou_column)k) : "";
-                int j;
-                for (j = 0; j < OPTIONAL; j++)
-                    if (field_of[j] == k) name = OPTIONAL_NAMES[j];
-                fprintf(stderr, "wrench_eval: row %ld: %s = %s: %s\n", row, name, fields[k], why);
-                return 1;
-            }
-        }
+        k = read_row("wrench_eval", row, line, copy, sizeof line, fields, MAX_FIELDS, fields_per_row, header, v, f32,
+                     field_name, field_of);
+        if (k == 0) continue;
+        if (k < 0) return 1;
         for (k = 0; k < OPTIONAL; k++) opt[k] = field_of[k] >= 0 ? v[field_of[k]] : 0.0;
         same_but_curvatures = have_prev && form == CONTENSOU_FORM_VARYING;
         for (k = CONTENSOU_COLUMN_ESTAR; k <= CONTENSOU_COLUMN_DELTA; k++)
@@ -182,8 +177,7 @@ int main(int argc, char **argv) {
         }
         memcpy(prev, v, sizeof v);
         have_prev = 1;
-        for (k = 0; k < fields_per_row; k++) printf(f32 ? "%.9g," : "%.17g,", v[k]);
-        for (k = 0; k < outputs; k++) printf(f32 ? "%.9g%s" : "%.17g%s", out[k], k + 1 < outputs ? "," : "\n");
+        print_row(v, fields_per_row, out, outputs, f32);
     }
     return fflush(stdout) == 0 ? 0 : 1;
 }
