@@ -47,31 +47,47 @@ static const char *parse(const char *field, double *out, int f32) {
 /* The name of field k of a row for a message (`ctx`: the twin's), or NULL for "field k+1". */
 typedef const char *(*field_name_fn)(int k, const void *ctx);
 
-/* Row number `row` in `line` (stripped in place) read into `v`: its fields split from `copy`
- * (a copy of the `size` bytes of `line`) into `fields` (the first `max` kept). 0 for a blank
- * line (skipped), 1 for a row of `expected` numbers, −1 after a message on stderr naming
- * `program`, the row and why: another field count (the header `header` named), or a field
- * that is not a number (named by `name`). */
-static int read_row(const char *program, long row, char *line, char *copy, size_t size, char **fields, int max,
-                    int expected, const char *header, double *v, int f32, field_name_fn name, const void *ctx) {
-    int n, k;
-    if (*trim(line) == '\0') return 0;
-    memcpy(copy, line, size);
-    n = split(copy, fields, max);
-    if (n != expected) {
-        fprintf(stderr, "%s: row %ld: fields = %d: expected %d (%s)\n", program, row, n, expected, header);
-        return -1;
-    }
-    for (k = 0; k < expected; k++) {
-        const char *why = parse(fields[k], &v[k], f32);
-        if (why) {
-            const char *field = name(k, ctx);
-            if (field) fprintf(stderr, "%s: row %ld: %s = %s: %s\n", program, row, field, fields[k], why);
-            else fprintf(stderr, "%s: row %ld: field %d = %s: %s\n", program, row, k + 1, fields[k], why);
+/* The rows after the header on stdin, read as contact_eval reads them. */
+typedef struct {
+    const char *program; /* the twin, named in every message */
+    const char *header;  /* named in a field-count message */
+    int expected;        /* fields per row */
+    field_name_fn name;  /* names field k in a parse message */
+    const void *ctx;     /* name's */
+    long row;            /* rows read, blank ones included (row K is line K + 1) */
+    char line[4096];     /* the row as read */
+    char copy[4096];     /* the row split in place: `fields` point into it */
+    char *fields[64];    /* the row's trimmed fields */
+} csv_rows;
+
+/* The next row (blank lines skipped) into `v` (room for `expected` values), each field parsed
+ * in the run's precision: 1 for a row, 0 at the end of the input, −1 after a message on stderr
+ * naming the program, the row and why (another field count, or a field that is not a
+ * number). */
+static int next_row(csv_rows *r, double *v, int f32) {
+    while (fgets(r->line, sizeof r->line, stdin)) {
+        int n, k;
+        r->row++;
+        if (*trim(r->line) == '\0') continue;
+        memcpy(r->copy, r->line, sizeof r->line);
+        n = split(r->copy, r->fields, 64);
+        if (n != r->expected) {
+            fprintf(stderr, "%s: row %ld: fields = %d: expected %d (%s)\n", r->program, r->row, n, r->expected,
+                    r->header);
             return -1;
         }
+        for (k = 0; k < n; k++) {
+            const char *why = parse(r->fields[k], &v[k], f32);
+            if (why) {
+                const char *field = r->name(k, r->ctx);
+                if (field) fprintf(stderr, "%s: row %ld: %s = %s: %s\n", r->program, r->row, field, r->fields[k], why);
+                else fprintf(stderr, "%s: row %ld: field %d = %s: %s\n", r->program, r->row, k + 1, r->fields[k], why);
+                return -1;
+            }
+        }
+        return 1;
     }
-    return 1;
+    return 0;
 }
 
 /* A row's `n` inputs `v` then its `outputs` results `out`, comma-separated: %.9g (f32) or

@@ -52,7 +52,9 @@ int main(int argc, char **argv) {
     static contensou_rolling_f64 c64;
     double prev[COLUMNS];
     int have_prev = 0;
-    long row = 0;
+    static csv_rows rows;
+    double v[COLUMNS];
+    int got;
 
     for (i = 1; i < argc; i += 2) {
         const char *opt = argv[i], *val = i + 1 < argc ? argv[i + 1] : NULL;
@@ -76,18 +78,17 @@ int main(int argc, char **argv) {
     }
     printf("%s,%s\n", INPUT_NAMES, OUTPUT_NAMES);
 
-    while (fgets(line, sizeof line, stdin)) {
-        char copy[sizeof line];
-        char *fields[COLUMNS];
-        double v[COLUMNS], out[OUTPUTS];
+    rows.program = "rolling_eval";
+    rows.header = INPUT_NAMES;
+    rows.expected = COLUMNS;
+    rows.name = field_name;
+    while ((got = next_row(&rows, v, f32)) > 0) {
+        long row = rows.row;
+        char **fields = rows.fields;
+        double out[OUTPUTS];
         contensou_rolling_column column = CONTENSOU_ROLLING_COLUMN_NONE;
         contensou_status s = CONTENSOU_STATUS_OK;
-        int k, same_contact;
-        row++;
-        k = read_row("rolling_eval", row, line, copy, sizeof line, fields, COLUMNS, COLUMNS, INPUT_NAMES, v, f32,
-                     field_name, NULL);
-        if (k == 0) continue;
-        if (k < 0) return 1;
+        int same_contact;
         /* a, b, G, nu the previous row's: the same contact (same a/b, G, nu bits) */
         same_contact = have_prev && memcmp(v, prev, 4 * sizeof v[0]) == 0;
         have_prev = 0;
@@ -115,5 +116,6 @@ int main(int argc, char **argv) {
         have_prev = 1;
         print_row(v, COLUMNS, out, OUTPUTS, f32);
     }
+    if (got < 0) return 1;
     return fflush(stdout) == 0 ? 0 : 1;
 }

@@ -50,7 +50,9 @@ int main(int argc, char **argv) {
     static contensou_contact_f32 c32; /* caller-owned storage: static, no allocation */
     static contensou_contact_f64 c64;
     int field_of[OPTIONAL];
-    long row = 0;
+    static csv_rows rows;
+    double v[MAX_FIELDS];
+    int got;
 
     {
         const char *why = contract_options(argc, argv, &law, &form, &f32);
@@ -63,18 +65,16 @@ int main(int argc, char **argv) {
     for (i = 4; i < OPTIONAL; i++) has_free = has_free || field_of[i] >= 0;
     printf("%s,N,Fx,Fy,Tz\n", header);
 
-    while (fgets(line, sizeof line, stdin)) {
-        char copy[sizeof line];
-        char *fields[MAX_FIELDS];
-        double v[MAX_FIELDS], out[4] = {0, 0, 0, 0}, opt[OPTIONAL];
+    rows.program = "step_eval";
+    rows.header = header;
+    rows.expected = fields_per_row;
+    rows.name = field_number;
+    while ((got = next_row(&rows, v, f32)) > 0) {
+        char **fields = rows.fields;
+        double out[4] = {0, 0, 0, 0}, opt[OPTIONAL];
         contensou_column column = CONTENSOU_COLUMN_NONE;
         contensou_status s;
         int k, bad_field;
-        row++;
-        k = read_row("step_eval", row, line, copy, sizeof line, fields, MAX_FIELDS, fields_per_row, header, v, f32,
-                     field_number, NULL);
-        if (k == 0) continue;
-        if (k < 0) return 1;
         for (k = 0; k < OPTIONAL; k++) opt[k] = field_of[k] >= 0 ? v[field_of[k]] : 0.0;
         /* Absent free columns: the start velocity's (−hdot, vx, vy, omega). */
         if (field_of[4] < 0) opt[4] = -v[7];
@@ -128,11 +128,12 @@ int main(int argc, char **argv) {
                       : column >= CONTENSOU_COLUMN_W_NN && column < CONTENSOU_COLUMN_W ? 12 + (int)(column - CONTENSOU_COLUMN_W_NN)
                       : column >= CONTENSOU_COLUMN_UN_FREE && column < CONTENSOU_COLUMN_H_FREE ? field_of[4 + column - CONTENSOU_COLUMN_UN_FREE]
                       : -1;
-            fprintf(stderr, "step_eval: row %ld: %s = %s: %s (status %u)\n", row, contensou_column_name(column),
+            fprintf(stderr, "step_eval: row %ld: %s = %s: %s (status %u)\n", rows.row, contensou_column_name(column),
                     bad_field >= 0 ? fields[bad_field] : "?", contensou_status_message(s), (unsigned)s);
             return 1;
         }
         print_row(v, fields_per_row, out, 4, f32);
     }
+    if (got < 0) return 1;
     return fflush(stdout) == 0 ? 0 : 1;
 }

@@ -80,7 +80,9 @@ int main(int argc, char **argv) {
     int have_prev = 0, fields_per_row = COLUMNS, has_contact_option = 0, has_step_option = 0;
     /* field_of[k]: the field holding optional column k, or -1 */
     int field_of[OPTIONAL] = {-1, -1, -1, -1};
-    long row = 0;
+    static csv_rows rows;
+    double v[MAX_FIELDS];
+    int got;
 
     {
         /* `jacobian` takes argv[1]: the options start after it */
@@ -95,18 +97,17 @@ int main(int argc, char **argv) {
     has_step_option = field_of[2] >= 0 || field_of[3] >= 0;
     printf("%s,%s\n", header, jacobian ? JACOBIAN_NAMES : OUTPUT_NAMES);
 
-    while (fgets(line, sizeof line, stdin)) {
-        char copy[sizeof line];
-        char *fields[MAX_FIELDS];
-        double v[MAX_FIELDS], out[MAX_OUTPUTS], opt[OPTIONAL];
+    rows.program = "wrench_eval";
+    rows.header = header;
+    rows.expected = fields_per_row;
+    rows.name = field_name;
+    rows.ctx = field_of;
+    while ((got = next_row(&rows, v, f32)) > 0) {
+        char **fields = rows.fields;
+        double out[MAX_OUTPUTS], opt[OPTIONAL];
         contensou_column column = CONTENSOU_COLUMN_NONE;
         contensou_status s;
         int k, same_but_curvatures, bad_field;
-        row++;
-        k = read_row("wrench_eval", row, line, copy, sizeof line, fields, MAX_FIELDS, fields_per_row, header, v, f32,
-                     field_name, field_of);
-        if (k == 0) continue;
-        if (k < 0) return 1;
         for (k = 0; k < OPTIONAL; k++) opt[k] = field_of[k] >= 0 ? v[field_of[k]] : 0.0;
         same_but_curvatures = have_prev && form == CONTENSOU_FORM_VARYING;
         for (k = CONTENSOU_COLUMN_ESTAR; k <= CONTENSOU_COLUMN_DELTA; k++)
@@ -173,11 +174,12 @@ int main(int argc, char **argv) {
             bad_field = column < COLUMNS ? (int)column
                       : column >= CONTENSOU_COLUMN_G && column <= CONTENSOU_COLUMN_VRY ? field_of[column - CONTENSOU_COLUMN_G]
                       : -1;
-            return fail_row(row, contensou_column_name(column), bad_field >= 0 ? fields[bad_field] : fields[0], s);
+            return fail_row(rows.row, contensou_column_name(column), bad_field >= 0 ? fields[bad_field] : fields[0], s);
         }
         memcpy(prev, v, sizeof v);
         have_prev = 1;
         print_row(v, fields_per_row, out, outputs, f32);
     }
+    if (got < 0) return 1;
     return fflush(stdout) == 0 ? 0 : 1;
 }

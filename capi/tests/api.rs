@@ -10,17 +10,9 @@ use contensou::Error;
 use contensou_capi::*;
 
 mod common;
-use common::{assert_storage, each_null, spec_in, storage32, storage64, text, SPEC};
+use common::{assert_storage, each_null, spec_in, storage32, storage64, text, SPEC, STEP};
 
 type S = contensou_status;
-
-const STEP: contensou_step<f64> = contensou_step {
-    h: 1e-6,
-    hdot: 0.01,
-    vx: 0.01,
-    vy: -0.002,
-    omega: 50.0,
-};
 
 #[test]
 fn every_library_error_has_its_own_code_and_the_library_message() {

@@ -35,6 +35,27 @@ same() {
     ((n == want)) || { echo "compare: $n of $want rows: ${twin[*]} on $file $*" >&2; exit 1; }
 }
 
+# sweep ROWS FIRST_LAWS OTHER_LAWS FILE...: `same` on every FILE (ROWS rows) × precision × form
+# × law — the first FILE through FIRST_LAWS, the others through OTHER_LAWS; the runs add to
+# $runs.
+sweep() {
+    local want="$1" first="$2" other="$3" file precision form law laws
+    shift 3
+    for file in "$@"; do
+        read -ra laws <<<"$other"
+        [[ "$file" == "$1" ]] && read -ra laws <<<"$first"
+        for precision in f32 f64; do
+            for form in fixed varying; do
+                for law in "${laws[@]}"; do
+                    same "$file" "$want" "$precision" --law "$law" --form "$form" --precision "$precision"
+                    runs=$((runs + 1))
+                done
+            done
+        done
+    done
+}
+all_laws="best simplified pade ellipsoid coulomb table blend fastsim fastsim-16"
+
 # clean FILE OPTS...: the twin built with ASan + UBSan (build.sh: NAME-san) runs clean on
 # $work/FILE.csv and prints what the plain twin prints.
 clean() {
@@ -61,14 +82,7 @@ refused() {
 "$bits" gen >"$work/rows.csv"
 rows=$(($(wc -l <"$work/rows.csv") - 1))
 runs=0
-for precision in f32 f64; do
-    for form in fixed varying; do
-        for law in best simplified pade ellipsoid coulomb table blend fastsim fastsim-16; do
-            same rows "$rows" "$precision" --law "$law" --form "$form" --precision "$precision"
-            runs=$((runs + 1))
-        done
-    done
-done
+sweep "$rows" "$all_laws" "" rows
 echo "compare: $rows rows × $runs runs (9 laws × 2 forms × 2 precisions): C = Rust bit for bit"
 
 # The optional rolling columns (G, nu, vrx, vry): all four, vrx/vry only (G, nu
@@ -79,18 +93,7 @@ cut -d, -f1-11,14,15 "$work/roll4.csv" >"$work/roll2.csv"
 awk -F, -v OFS=, '{ s = $1; for (k = 2; k <= 11; k++) s = s OFS $k; print s, $15, $13 }' "$work/roll4.csv" >"$work/rollswap.csv"
 rrows=$(($(wc -l <"$work/roll4.csv") - 1))
 runs=0
-for file in roll4 roll2 rollswap; do
-    for precision in f32 f64; do
-        for form in fixed varying; do
-            laws=(table blend fastsim fastsim-16 best)
-            [[ "$file" == roll4 ]] || laws=(table)
-            for law in "${laws[@]}"; do
-                same "$file" "$rrows" "$precision" --law "$law" --form "$form" --precision "$precision"
-                runs=$((runs + 1))
-            done
-        done
-    done
-done
+sweep "$rrows" "table blend fastsim fastsim-16 best" table roll4 roll2 rollswap
 for precision in f32 f64; do
     clean roll4 --law table --form varying --precision "$precision"
 done
@@ -111,20 +114,8 @@ echo "compare: the C twin is clean under ASan + UBSan (best, both forms and prec
 twin=("$c" jacobian)
 ref=(../target/release/contact_eval jacobian)
 runs=0
-for precision in f32 f64; do
-    for form in fixed varying; do
-        for law in best simplified pade ellipsoid coulomb table blend fastsim fastsim-16; do
-            same rows "$rows" "$precision" --law "$law" --form "$form" --precision "$precision"
-            runs=$((runs + 1))
-        done
-        for law in table blend fastsim fastsim-16 best; do
-            same roll4 "$rrows" "$precision" --law "$law" --form "$form" --precision "$precision"
-            runs=$((runs + 1))
-        done
-        same roll2 "$rrows" "$precision" --law table --form "$form" --precision "$precision"
-        runs=$((runs + 1))
-    done
-done
+sweep "$rows" "$all_laws" "" rows
+sweep "$rrows" "table blend fastsim fastsim-16 best" table roll4 roll2
 for precision in f32 f64; do
     clean roll4 --law table --form varying --precision "$precision"
 done
@@ -236,18 +227,7 @@ cut -d, -f1-22,28,30 "$work/step.csv" >"$work/step-some.csv"
 srows=$(($(wc -l <"$work/step.csv") - 1))
 twin=(target/release/step_eval); ref=(../target/release/contact_eval step)
 runs=0
-for file in step step-nofree step-some; do
-    for precision in f32 f64; do
-        for form in fixed varying; do
-            laws=(best simplified pade ellipsoid coulomb table blend fastsim fastsim-16)
-            [[ "$file" == step ]] || laws=(best table)
-            for law in "${laws[@]}"; do
-                same "$file" "$srows" "$precision" --law "$law" --form "$form" --precision "$precision"
-                runs=$((runs + 1))
-            done
-        done
-    done
-done
+sweep "$srows" "$all_laws" "best table" step step-nofree step-some
 for precision in f32 f64; do
     clean step --law table --form varying --precision "$precision"
 done

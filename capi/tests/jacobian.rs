@@ -7,17 +7,9 @@ use contensou::dynamic::{DynContact, Form, Law, RollingSpec, RollingStep, Spec, 
 use contensou_capi::*;
 
 mod common;
-use common::{each_null, spec_in, storage32, storage64, SPEC};
+use common::{each_null, spec_in, storage32, storage64, SPEC, STEP};
 
 type S = contensou_status;
-
-const STEP: contensou_step<f64> = contensou_step {
-    h: 1e-6,
-    hdot: 0.01,
-    vx: 0.01,
-    vy: -0.002,
-    omega: 50.0,
-};
 
 const ROLL: contensou_rolling_step<f64> = contensou_rolling_step { vrx: 2.0, vry: 0.3 };
 

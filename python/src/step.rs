@@ -38,21 +38,8 @@ fn step_in<'py, T: Precision>(
     form: Form,
 ) -> PyResult<Bound<'py, PyDict>> {
     with_columns(REQUIRED, values, OPTIONAL, optional, |shape, c, extra| {
-        let [
-            p,
-            q,
-            estar,
-            cd,
-            f,
-            delta,
-            h,
-            hdot,
-            vx,
-            vy,
-            omega,
-            dt,
-            w @ ..,
-        ] = c;
+        let [p, q, estar, cd, f, delta, rest @ ..] = c;
+        let [h, hdot, vx, vy, omega, dt, w @ ..] = rest;
         let [g, nu, vrx, vry, free @ ..] = extra;
         let spec = [p, q, estar, cd, f, delta];
         let steps = [h, hdot, vx, vy, omega];

@@ -84,6 +84,15 @@ pub const SPEC: contensou_spec<f64> = contensou_spec {
     delta: 1e-4,
 };
 
+/// A step of the reference contact: pressed in, compressing, sliding and spinning.
+pub const STEP: contensou_step<f64> = contensou_step {
+    h: 1e-6,
+    hdot: 0.01,
+    vx: 0.01,
+    vy: -0.002,
+    omega: 50.0,
+};
+
 /// [`SPEC`] in another precision, each value converted by `to`.
 pub fn spec_in<T>(to: fn(f64) -> T) -> contensou_spec<T> {
     contensou_spec {
