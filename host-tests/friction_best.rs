@@ -454,9 +454,9 @@ fn below_the_contract() {
     }
 }
 
-/// Regularization near rest (δ > 0): below the slip scale S = |v_Px| + |v_Py| + a|ω| = δ the
-/// traction is the unregularized one times S/δ (continuous at S = δ, passive, zero at rest);
-/// at S ≥ δ it is unchanged. Both forms, f64.
+/// Regularization near rest (δ > 0): below the full-slip dissipation p = −(F·v_P + T_z·ω)/(fN)
+/// = 3δ/8 the traction is the unregularized one times p/(3δ/8) (continuous there, passive,
+/// zero at rest); at p ≥ 3δ/8 it is unchanged. Both forms, f64.
 #[test]
 fn regularization_ramps_linearly_below_delta() {
     use contensou::friction::{Friction, FrictionLaw, Slip};
@@ -471,11 +471,13 @@ fn regularization_ramps_linearly_below_delta() {
         (0.0, 0.0, 0.5),
         (-2e-4, 4e-4, -0.2),
     ] {
-        let s = f64::abs(vx) + f64::abs(vy) + a * f64::abs(om);
+        // the ramp's variable: the full-slip law's dissipation per unit fN (degree one)
+        let full = sharp.tangential(&k, a, n, Slip::new(vx, vy, om).unwrap());
+        let p = -(full.fx * vx + full.fy * vy + full.tz * om) / (f * n);
         for scale in [1e-3, 0.1, 0.5, 0.999_999, 1.0, 1.000_001, 3.0] {
-            let k_s = scale * delta / s;
+            // the ramp ends at p = 3δ/8
+            let k_s = scale * 0.375 * delta / p;
             let slip = Slip::new(vx * k_s, vy * k_s, om * k_s).unwrap();
-            let ramp = scale.min(1.0);
             for (r, u) in [
                 (
                     soft.tangential(&k, a, n, slip),
@@ -486,6 +488,13 @@ fn regularization_ramps_linearly_below_delta() {
                     sharp.tangential_prepared(&b, a, n, slip),
                 ),
             ] {
+                // each form's own dissipation (the two forms differ by their fit, ≈ 1e-5)
+                let p_u = -(u.fx * slip.vx() + u.fy * slip.vy() + u.tz * slip.omega()) / (f * n);
+                let ramp = (p_u / (0.375 * delta)).min(1.0);
+                assert!(
+                    (ramp - scale.min(1.0)).abs() < 1e-4,
+                    "scale {scale}: ramp {ramp}"
+                );
                 for (got, want) in [
                     (r.fx, u.fx * ramp),
                     (r.fy, u.fy * ramp),

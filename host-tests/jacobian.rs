@@ -305,7 +305,8 @@ fn min_eigenvalue(m: [[f64; 3]; 3]) -> f64 {
 /// The damping block −∂(F_x, F_y, T_z/a)/∂(v_x, v_y, aω) (N·s/m throughout: ω scaled by the
 /// major semi-axis a, T_z divided by it): its symmetric part's smallest eigenvalue over its
 /// largest |entry|, the worst over `n` random states of a sliding law (both forms; states from
-/// rest-adjacent to fast slip, δ = 0 and δ > 0, one state in eight inside the ramp s < δ).
+/// rest-adjacent to fast slip, δ = 0 and δ > 0, one state in eight shrunk towards rest, most
+/// of them inside `best`'s ramp p < δ, p the full-slip dissipation per unit fN).
 /// Returns (worst outside the ramp, worst inside it).
 fn damping_block(law: Law, n: usize) -> (f64, f64) {
     let mut rng = Rng(1000 + law as u64);
@@ -337,8 +338,11 @@ fn damping_block(law: Law, n: usize) -> (f64, f64) {
             .fold(0.0, f64::max);
         if big > 0.0 {
             let e = min_eigenvalue(m) / big;
-            let s = st.vx.abs() + st.vy.abs() + a * st.omega.abs();
-            if s < sp.delta {
+            // the ramp's variable, the full-slip dissipation per unit fN, p: the ramped wrench
+            // dissipates fN·min(p, p²/δ), below δ·fN exactly when p < δ
+            let fn_ = sp.f * out.n;
+            let p = -(out.fx * st.vx + out.fy * st.vy + out.tz * st.omega) / fn_;
+            if p < sp.delta {
                 inside = inside.min(e);
             } else {
                 outside = outside.min(e);
@@ -353,17 +357,18 @@ fn damping_blocks(n: usize) {
     for law in Law::SLIDING {
         let (outside, inside) = damping_block(law, n);
         println!(
-            "{:>10}: damping block, min eigenvalue / max |entry|: {outside:.3e} for s ≥ δ, {inside:.3e} in the ramp s < δ ({n} states)",
+            "{:>10}: damping block, min eigenvalue / max |entry|: {outside:.3e} for p ≥ δ, {inside:.3e} for p < δ ({n} states)",
             law.name()
         );
         // Measured bounds (module docs of `contensou::jacobian`): positive semidefinite
         // within the eigenvalue formula's precision (≈ √ε at a double eigenvalue) for the
-        // gradient laws `ellipsoid` and `coulomb`, within `best`'s table approximation for
-        // s ≥ δ; `best`'s ramp below δ (min(1, s/δ), s the ℓ¹ slip speed) and the paper's
-        // `simplified` and `pade` are passive but not gradients: indefinite, by these margins.
+        // gradient laws `ellipsoid` and `coulomb`, and for `best` within its table
+        // approximation of the exact (gradient) law, its ramp below δ included (the ramp by the
+        // law's own dissipation, min(1, p/δ), keeps it a gradient); the paper's `simplified`
+        // and `pade` are passive but not gradients: indefinite, by these margins.
         let (out_bound, in_bound) = match law {
             Law::Ellipsoid | Law::Coulomb => (-1e-7, -1e-7),
-            Law::Best => (-5e-6, -0.3),
+            Law::Best => (-2e-6, -2e-6),
             Law::Simplified => (-0.7, -0.7),
             _ => (-0.65, -0.65),
         };

@@ -173,10 +173,13 @@ fn contensou_drilling_torque_stalls_the_spin_without_reversal() {
 }
 
 /// The stall of the default law is located between steps: the same time whatever the output
-/// sampling (2 ms or 10 ms), 26 ms before the first 10 ms sample past the threshold (the spin
-/// wobbles with the rocking and first dips below 10 % between samples), and it converges with
-/// the step. Measured (after issue 21's `Best`): h = 0.2 ms 0.843404 s (first 10 ms sample
-/// 0.870 s), 0.1 ms 0.843168 s (−0.24 ms), 0.05 ms 0.843169 s (1 µs; the example).
+/// sampling (2 ms or 10 ms), before the first 10 ms sample past the threshold, and it converges
+/// with the step. Measured (the ramp by the law's own dissipation, below 3δ/8): h = 0.2 ms
+/// 0.863057 s (first 10 ms sample 0.870 s), 0.1 ms 0.863084 s (+0.03 ms). With the former
+/// ramp by the ℓ¹ slip speed: 0.843404 s (0.2 ms), 0.843168 s (0.1 ms); the limit δ → 0
+/// (reached at δ ≤ 0.5 mm/s with either ramp): 0.836502 s — so δ = 1 mm/s delays the stall by
+/// 3.2 % now (0.8 % before); the scene's runner and `step_scenes` use δ = 0.1 mm/s
+/// (`BEST_DELTA`), this test keeps 1 mm/s for RK4's cost in debug CI.
 #[test]
 fn stall_is_located_between_steps_whatever_the_sampling_and_converges_with_the_step() {
     let p = Params::kane_levinson();
@@ -194,13 +197,19 @@ fn stall_is_located_between_steps_whatever_the_sampling_and_converges_with_the_s
             .map(|r| r.0)
             .unwrap()
     };
-    assert!(sampled(&rows10) - stall > 0.02, "{}", sampled(&rows10));
+    println!(
+        "stall {stall}, first 2 ms sample {}, first 10 ms sample {}",
+        sampled(&rows2),
+        sampled(&rows10)
+    );
+    assert!(sampled(&rows10) - stall > 0.005, "{}", sampled(&rows10));
     assert!(sampled(&rows2) >= stall && sampled(&rows10) >= sampled(&rows2));
     // Halving the step moves it by well under a millisecond.
     let (_, fine) = run_with::<Best>(&p, -2.0, 1.0, H / 2.0, 50);
     let by_step = (fine.stall().unwrap() - stall).abs();
+    println!("h/2: {:?}", fine.stall());
     assert!(by_step < 5e-4, "{stall} vs {:?}", fine.stall());
-    assert!((0.835..0.855).contains(&stall), "{stall}");
+    assert!((0.855..0.870).contains(&stall), "{stall}");
 }
 
 /// 0.2 s of f32 RK4 at h = 0.1 ms from the unstable start: finite, N near mg, no energy gain.

@@ -44,7 +44,9 @@ areas!(
     wrench,
     rolling,
     rolling_wrench,
-    dynamic_rolling
+    dynamic_rolling,
+    jacobian,
+    step
 );
 
 /// The rolling fuzz target's findings (issue 20), each once, deterministic: every output
@@ -314,5 +316,31 @@ mod rolling_findings {
         let (x, y, p) = s.creepages().unwrap();
         assert_eq!((x, p), (0.0, 0.0));
         assert!((y - 1e10).abs() < 1e-3 * 1e10);
+    }
+}
+
+/// The `jacobian` and `step` fuzz targets' findings, replayed byte for byte through the
+/// shared checks (f32 then f64 on the same bytes, as the targets run them).
+mod jacobian_step_findings {
+    use super::checks::{self, Input};
+
+    /// W = L·Lᵀ with entries underflowing.
+    #[test]
+    fn step_w_from_tiny_factors() {
+        let a = [
+            0xfd, 0x3f, 0xfd, 0x3d, 0xc1, 0xc1, 0xc1, 0x3d, 0xfd, 0x3f, 0xfd, 0x3d, 0xc1, 0xc1,
+            0xc1, 0xc9, 0xc1, 0xc1, 0x3d, 0x3d, 0x68, 0xc1, 0xc9, 0x7d, 0x3d, 0x89, 0x89, 0x3d,
+            0xc1, 0xc1, 0xc1, 0xc9, 0x32,
+        ];
+        let b = [
+            0xfd, 0x3d, 0xfd, 0x3d, 0xc1, 0x23, 0xc5, 0xc1, 0x3d, 0x3d, 0xf5, 0xcf, 0xc2, 0xfd,
+            0xd0, 0xfd, 0x3d, 0xc1, 0x23, 0xc5, 0xc1, 0x3d, 0x3d, 0xf5, 0xcf, 0xc2, 0xfd, 0xd0,
+            0x3d, 0xb4, 0xb4,
+        ];
+        for data in [&a[..], &b[..]] {
+            let mut i = Input::new(data);
+            checks::step::<f32>(&mut i);
+            checks::step::<f64>(&mut i);
+        }
     }
 }

@@ -429,7 +429,7 @@ fn stable_step_edge_cases_are_total() {
 
 #[test]
 fn best_ramp_stiffness_bounds_the_maximisation() {
-    // κ(e²) against tools/gen_best_stiffness.py (mpmath): never below, at most 0.35 % above
+    // κ(e²) against tools/gen_ramp_stiffness.py (mpmath)
     let (mut lo, mut hi) = (f64::INFINITY, 0.0f64);
     let (mut lo32, mut hi32) = (f64::INFINITY, 0.0f64);
     for [m1, a, b, kappa] in best_stiffness_rows() {
@@ -452,22 +452,22 @@ fn best_ramp_stiffness_bounds_the_maximisation() {
     }
     println!("kappa/ref f64 {lo} … {hi}, f32 {lo32} … {hi32}");
     assert!(
-        lo >= 1.0 - 1e-12 && hi <= 1.0035,
+        lo >= 1.0 - 1e-12 && hi <= 1.0 + 1e-12,
         "f64 kappa/ref in [{lo}, {hi}]"
     );
     assert!(
-        lo32 >= 1.0 - 1e-6 && hi32 <= 1.0035,
+        lo32 >= 1.0 - 1e-6 && hi32 <= 1.0 + 1e-6,
         "f32 kappa/ref in [{lo32}, {hi32}]"
     );
 }
 
 #[test]
 fn best_stiffness_is_largest_inside_the_ramp_and_the_ellipse() {
-    // Scan the whole direction sphere |v_x| + |v_y| + a|ω| = s (first octant: the law's
-    // symmetries mirror the rest) just inside the ramp (s = 0.999δ) and just past it
-    // (s = 1.001δ, where the stiffness is fN/s times the core's): the Jacobian's largest
-    // eigenvalue (Euler's |λ|²/Re λ for a complex pair) never exceeds κ, for the exact law and
-    // for `best`. The maximisation of the generator covers only the IC inside the ellipse.
+    // Scan the whole direction sphere (first octant: the law's symmetries mirror the rest)
+    // just inside the ramp (dissipation p = 0.999·3δ/8) and just past it (p = 1.001·3δ/8,
+    // where the stiffness is fN/p times the core's): the Jacobian's largest eigenvalue (Euler's
+    // |λ|²/Re λ for a complex pair) never exceeds κ, for the exact law and for `best`, and the
+    // scan comes within 1 % of it. The maximisation covers only the IC inside the ellipse.
     let delta = 1.0;
     // through the thin patches to the contract's end (P/Q = 1e-4: m₁ = 1.70e-5; issue 21)
     for e2 in [0.0, 0.5, 0.9, 0.99, 0.999, 0.9999, 1.0 - 1.7014448227e-5] {
@@ -478,11 +478,12 @@ fn best_stiffness_is_largest_inside_the_ramp_and_the_ellipse() {
         let n = 24;
         let mut worst = [0.0f64; 2];
         for scale in [0.999, 1.001] {
-            for (x, y, w) in shared::octant(n, scale) {
+            for (x, y, w) in shared::octant(n, 1.0) {
+                let r = scale * 0.375 * delta / shared::dissipation(p, [x, y, w]);
+                let (x, y, w) = (r * x, r * y, r * w);
                 let ramped = |vx: f64, vy: f64| {
-                    let s = vx.abs() + vy.abs() + w;
                     let t = exact::traction(p, vx, vy, w);
-                    let r = (s / delta).min(1.0);
+                    let r = (shared::dissipation(p, [vx, vy, w]) / (0.375 * delta)).min(1.0);
                     [r * t.fx, r * t.fy]
                 };
                 let h = 1e-7;
@@ -501,11 +502,12 @@ fn best_stiffness_is_largest_inside_the_ramp_and_the_ellipse() {
             worst[0], worst[1]
         );
         assert!(
-            worst[0] <= kappa && worst[1] <= kappa,
-            "e2 {e2}: {worst:?} > {kappa}"
+            worst[0] <= kappa && worst[1] <= kappa * (1.0 + 1e-6) && worst[0] >= 0.99 * kappa,
+            "e2 {e2}: {worst:?} vs {kappa}"
         );
-        // and the naive guess max(√2, A) is not an upper bound
-        assert!(worst[0] > 1.2 * k.slope_x().max(2f64.sqrt()));
+        // neither pure translation (8/3) nor rest with spin ((8/3)·C·A) is the maximum
+        let gain = 8.0 / 3.0;
+        assert!(worst[0] > gain && worst[0] > gain * k.spin_torque() * k.slope_x());
     }
 }
 
@@ -556,9 +558,10 @@ fn best_stable_step_is_conservative_and_tight() {
     for (name, ratio, vs_pred) in &all {
         println!("{name}: measured/h* {ratio:.4}, measured/predicted {vs_pred:.4}");
         // conservative, and loose at most by κ over the case's own stiffness (largest: the
-        // circle with aω = 3δ, where the ramp is inactive and the stiffness is A·fN/(aω))
+        // circle with aω = 3δ, where the ramp is inactive and the stiffness is A·fN/(aω):
+        // κ/(A/3) = 8.16)
         assert!(
-            *ratio >= 1.0 && *ratio <= 6.5,
+            *ratio >= 1.0 && *ratio <= 8.3,
             "{name}: measured/h* = {ratio}"
         );
         // the Jacobian at the probe predicts the measured step
@@ -604,7 +607,7 @@ fn best_stable_step_edge_cases_are_total() {
     for m1 in [1.0, 0.5, 1e-3, 5.960464477539063e-8] {
         let k = Constants::from_parameter(Parameter::<f32>::from_complement(m1).unwrap());
         let kappa = ramp_stiffness(&k);
-        assert!(kappa.is_finite() && kappa >= 2.5, "f32 m1 {m1}: {kappa}");
+        assert!(kappa.is_finite() && kappa >= 3.2, "f32 m1 {m1}: {kappa}");
     }
     let k = Constants::from_parameter(Parameter::<f64>::from_complement(1e-12).unwrap());
     assert!(ramp_stiffness(&k).is_finite());
@@ -614,7 +617,7 @@ fn best_stable_step_edge_cases_are_total() {
 
 #[test]
 fn spin_stiffness_matches_the_maximisation() {
-    // κ_T(e²) against tools/gen_spin_stiffness.py (mpmath)
+    // κ_T(e²) against tools/gen_ramp_stiffness.py (mpmath)
     let (mut worst, mut worst32) = (0.0f64, 0.0f64);
     for [m1, c, kappa_t, _, _] in spin_stiffness_rows() {
         let k = Constants::from_parameter(Parameter::from_complement(m1).unwrap());
@@ -633,10 +636,10 @@ fn spin_stiffness_matches_the_maximisation() {
 
 #[test]
 fn spin_stiffness_is_largest_inside_the_ramp_and_the_ellipse() {
-    // −∂T_z/∂ω (δ/(fN·a²) units, a = δ = 1) on the whole direction sphere
-    // |v_x| + |v_y| + a|ω| = s, first octant, just inside (s = 0.999δ) and past (1.001δ) the
-    // ramp: never above κ_T for the exact law and for `best`, never above 2/5 for `simplified`
-    // (which it approaches); the scan comes within 3 % of κ_T.
+    // −∂T_z/∂ω (δ/(fN·a²) units, a = δ = 1) on the whole direction sphere, first octant,
+    // just inside (dissipation p = 0.999·3δ/8) and past (1.001·3δ/8) `best`'s ramp: never above κ_T
+    // for the exact law and for `best`, never above 2/5 for `simplified` (which it
+    // approaches); the scan comes within 3 % of κ_T.
     for e2 in [0.0, 0.5, 0.9, 0.99, 0.999, 0.9999, 1.0 - 1.7014448227e-5] {
         let p = Parameter::from_complement(1.0 - e2).unwrap();
         let k = Constants::from_parameter(p);
@@ -644,10 +647,12 @@ fn spin_stiffness_is_largest_inside_the_ramp_and_the_ellipse() {
         let n = 24;
         let mut worst = [0.0f64; 3];
         for scale in [0.999, 1.001] {
-            for (x, y, w) in shared::octant(n, scale) {
+            for (x, y, w) in shared::octant(n, 1.0) {
+                let r = scale * 0.375 / shared::dissipation(p, [x, y, w]);
+                let (x, y, w) = (r * x, r * y, r * w);
                 let ramped = |w: f64| {
-                    let s = x + y + w;
-                    (s.min(1.0)) * exact::traction(p, x, y, w).tz
+                    let p_w = shared::dissipation(p, [x, y, w]) / 0.375;
+                    (p_w.min(1.0)) * exact::traction(p, x, y, w).tz
                 };
                 let h = 1e-7;
                 worst[0] = worst[0].max(-(ramped(w + h) - ramped(w)) / h);
@@ -662,7 +667,7 @@ fn spin_stiffness_is_largest_inside_the_ramp_and_the_ellipse() {
             worst[0], worst[1], worst[2]
         );
         assert!(
-            worst[0] <= kappa_t && worst[1] <= kappa_t && worst[0] >= 0.97 * kappa_t,
+            worst[0] <= kappa_t && worst[1] <= kappa_t * (1.0 + 1e-6) && worst[0] >= 0.97 * kappa_t,
             "e2 {e2}: {worst:?} vs {kappa_t}"
         );
         assert!(
@@ -713,10 +718,10 @@ fn spin_stable_step_is_conservative_and_tight() {
                         )
                     };
                     let predicted = scheme.limit() * inertia * delta / (lam * f * n);
-                    // the derivation's stiffness at the probe: C (best) or 1/5 in pure spin,
+                    // the derivation's stiffness at the probe: (8/3)·C² (best) or 1/5 in pure spin,
                     // κ_T or 0.999·2/5 at the stiffest slip
                     let derived = match (is_best, probe.name) {
-                        (true, "pure spin") => Some(c),
+                        (true, "pure spin") => Some(8.0 / 3.0 * c * c),
                         (true, "stiffest") => Some(kappa_t),
                         (false, "pure spin") => Some(0.2),
                         (false, "stiffest") => Some(0.999 * 0.4),
@@ -741,10 +746,10 @@ fn spin_stable_step_is_conservative_and_tight() {
         );
         // conservative everywhere: h* ≤ the bisected threshold, which lies within the
         // bisection's resolution (15.5·h*/2²⁴ = 9.2e-7·h*) above `measured`; in pure spin loose
-        // by 2 (simplified) or κ_T/C ≤ 1.98 (best)
+        // by 2 (simplified) or κ_T/((8/3)·C²) ≤ 2.03 (best)
         assert!(*ratio >= 1.0 - 9.3e-7, "{name}: measured/h* = {ratio}");
         if name.ends_with("pure spin") {
-            assert!(*ratio <= 2.001, "{name}: measured/h* = {ratio}");
+            assert!(*ratio <= 2.04, "{name}: measured/h* = {ratio}");
         }
         // the stiffness at the probe predicts the measured step
         assert!(
@@ -903,7 +908,7 @@ fn stable_steps_have_one_signature_and_come_from_a_contact() {
         contact.stable_spin_step(1e-4, 2.0, 3.0, e),
         law.stable_spin_step(&shape, 1e-4, 2.0, 3.0, e)
     );
-    assert!(contact.stable_step(2.0, 3.0, e) < 2.785 * 2.0 * 1e-4 / (0.3 * 3.0 * 2.52));
+    assert!(contact.stable_step(2.0, 3.0, e) < 2.785 * 2.0 * 1e-4 / (0.3 * 3.0 * 3.2));
 }
 
 // ---- best's per-step form (flash table, what VaryingContact calls) under the ramp ----------

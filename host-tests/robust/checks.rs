@@ -1101,3 +1101,247 @@ pub fn dynamic_rolling<T: Fz>(inp: &mut Input<'_>) {
         law.name()
     );
 }
+
+/// A run-time contact of the contract from the fuzzer's bytes (any law, either form, the
+/// optional rolling columns), its start step and rolling columns; `None` when the contract
+/// refuses the contact (its errors are `dynamic_rolling`'s to check). Also whether the
+/// contact and step lie in the physical box.
+#[allow(clippy::type_complexity)]
+fn contract_row<T: Fz>(
+    inp: &mut Input<'_>,
+) -> Option<(
+    contensou::dynamic::DynContact<T>,
+    contensou::dynamic::Step<T>,
+    contensou::dynamic::RollingStep<T>,
+    bool,
+)> {
+    use contensou::dynamic::{DynContact, Form, Law, RollingSpec, RollingStep, Spec, Step};
+    let [p, q, estar, cd, f, delta]: [T; 6] = core::array::from_fn(|_| inp.val());
+    let pick = inp.byte();
+    let law = Law::ALL[usize::from(pick) % Law::ALL.len()];
+    let form = Form::ALL[usize::from(pick / 16 % 2)];
+    let spec = Spec {
+        p,
+        q,
+        estar,
+        cd,
+        f,
+        delta,
+    };
+    let contact = if law.is_rolling() {
+        DynContact::new_rolling(&spec, &RollingSpec::default(), law, form)
+    } else {
+        DynContact::new(&spec, law, form)
+    }
+    .ok()?;
+    let [h, hdot, vx, vy, omega, vrx, vry]: [T; 7] = core::array::from_fn(|_| inp.val());
+    let step = Step {
+        h,
+        hdot,
+        vx,
+        vy,
+        omega,
+    };
+    let rolling = RollingStep { vrx, vry };
+    let boxed = Box::within(p.min(q), 1e-6, 1e9)
+        && Box::within(p.max(q), 1e-6, 1e9)
+        && Box::within(estar, 1e3, 1e13)
+        && cd.to_f64() <= 1e6
+        && delta.to_f64() <= 1e6
+        && step_box(true, f, h, hdot).unwrap_or(false)
+        && [vx, vy, omega, vrx, vry]
+            .iter()
+            .all(|x| Box::small(*x, 1e6));
+    Some((contact, step, rolling, boxed))
+}
+
+/// The wrench's Jacobian through the run-time contract (`DynContact::jacobian_rolling`, every
+/// law and form): a non-finite step column is refused naming the same column as the wrench;
+/// otherwise every derivative is finite (saturated at ±MAX, never NaN: the documented rule)
+/// and the value is the wrench bit for bit (NaN only where the wrench itself is).
+pub fn jacobian<T: Fz>(inp: &mut Input<'_>) {
+    let Some((contact, step, rolling, boxed)) = contract_row::<T>(inp) else {
+        return;
+    };
+    let j = contact.jacobian_rolling(&step, &rolling);
+    let w = contact.wrench_rolling(&step, &rolling);
+    let (j, w) = match (j, w) {
+        (Err(a), Err(b)) => {
+            assert_eq!(a, b, "jacobian vs wrench refusal");
+            return;
+        }
+        (Ok(j), Ok(w)) => (j, w),
+        (j, w) => panic!("jacobian {j:?} vs wrench {w:?}"),
+    };
+    let name = contact.law().name();
+    for (i, x) in j.d.iter().flatten().enumerate() {
+        assert!(
+            x.is_finite(),
+            "{name}: derivative {i} = {:?} at {step:?}",
+            x.to_f64()
+        );
+    }
+    for (got, want) in j.value.iter().zip([w.n, w.fx, w.fy, w.tz]) {
+        assert!(
+            got.to_f64().to_bits() == want.to_f64().to_bits(),
+            "{name}: value {:?} vs wrench {:?} at {step:?}",
+            got.to_f64(),
+            want.to_f64()
+        );
+        if boxed {
+            fin(*got, name);
+        }
+    }
+}
+
+/// The step-aware wrench through the run-time contract (`step::contract::step_row`): Δt, W's
+/// upper triangle (raw, or built positive semidefinite as L·Lᵀ), optional free velocities.
+/// Errors as documented, naming the column (`dt`: `NonFinite`, `StepNotPositive`; a W entry:
+/// `NonFinite`; W: `InverseMassNotPositiveSemidefinite`, never for an L·Lᵀ within the box); accepted
+/// rows never give NaN, and inside the box the wrench is finite, N ≥ 0 and friction injects no
+/// power over the step (F·v⁺ ≤ 0 and T_z·ω⁺ ≤ 0 up to rounding, u⁺ = u_free + Δt·W·w).
+#[allow(clippy::needless_range_loop)]
+pub fn step<T: Fz>(inp: &mut Input<'_>) {
+    use contensou::step::contract::step_row;
+    let Some((contact, step, rolling, boxed)) = contract_row::<T>(inp) else {
+        return;
+    };
+    let dt: T = inp.val();
+    let how = inp.byte();
+    let raw: [T; 10] = core::array::from_fn(|_| inp.val());
+    // W's upper triangle, row-major over (n, x, y, w): the raw entries, or L·Lᵀ with L the
+    // lower triangle of the same entries (positive semidefinite by construction).
+    let built = how & 1 != 0;
+    let w_upper = if built {
+        let mut l = [[T::ZERO; 4]; 4];
+        let mut k = 0;
+        for (r, row) in l.iter_mut().enumerate() {
+            for x in row.iter_mut().take(r + 1) {
+                *x = raw[k];
+                k += 1;
+            }
+        }
+        let mut u = [T::ZERO; 10];
+        let mut k = 0;
+        for r in 0..4 {
+            for c in r..4 {
+                u[k] = (0..4).fold(T::ZERO, |acc, m| acc + l[r][m] * l[c][m]);
+                k += 1;
+            }
+        }
+        u
+    } else {
+        raw
+    };
+    let free: [Option<T>; 4] = core::array::from_fn(|k| {
+        let v = inp.val();
+        (how & (2 << k) != 0).then_some(v)
+    });
+    let got = step_row(&contact, &step, &rolling, dt, w_upper, free);
+    let name = contact.law().name();
+    // the start state first, as the wrench refuses it
+    if let Err(e) = contact.wrench_rolling(&step, &rolling) {
+        assert_eq!(got, Err(e), "{name}: step_row vs the wrench's refusal");
+        return;
+    }
+    let w_box = w_upper.iter().all(|x| Box::small(*x, 1e12))
+        && built
+        // L's entries 0 or of moderate size: L·Lᵀ then has no underflowed entry (a product
+        // of tiny entries rounding to 0 can make it indefinite in floating point)
+        && raw
+            .iter()
+            .all(|x| *x == T::ZERO || Box::within(x.abs(), 1e-6, 1e6));
+    let out = if !dt.is_finite() {
+        assert_eq!(
+            got.map_err(|e| (e.column, e.error)),
+            Err(("dt", Error::NonFinite("dt")))
+        );
+        return;
+    } else if !(dt > T::ZERO) {
+        assert_eq!(
+            got.map_err(|e| (e.column, e.error)),
+            Err(("dt", Error::StepNotPositive))
+        );
+        return;
+    } else if let Some(k) = w_upper.iter().position(|x| !x.is_finite()) {
+        let e = got.expect_err("a non-finite W entry");
+        assert_eq!(
+            e.column,
+            contensou::step::contract::STEP_INPUTS[k + 1],
+            "{e:?}"
+        );
+        assert!(matches!(e.error, Error::NonFinite(_)), "{e:?}");
+        return;
+    } else {
+        match got {
+            Ok(o) => o,
+            Err(e) if e.column == "W" => {
+                assert!(
+                    matches!(
+                        e.error,
+                        Error::InverseMassNotPositiveSemidefinite | Error::InverseMassNotSymmetric
+                    ),
+                    "{e:?}"
+                );
+                assert!(!w_box, "{name}: L·Lᵀ refused: {e:?} for {w_upper:?}");
+                return;
+            }
+            Err(e) => {
+                // a free velocity that is not finite, by its column
+                let k = contensou::step::contract::FREE_INPUTS
+                    .iter()
+                    .position(|c| *c == e.column)
+                    .unwrap_or_else(|| panic!("{name}: unexpected refusal {e:?}"));
+                // or h_free = h − Δt·un_free overflowing for finite inputs
+                assert!(
+                    free[k].is_some_and(|x| !x.is_finite())
+                        || (k == 0 && e.error == Error::NonFinite("h_free")),
+                    "{e:?}"
+                );
+                return;
+            }
+        }
+    };
+    for x in out {
+        not_nan(x, name);
+    }
+    let free_box = free.iter().flatten().all(|x| Box::small(*x, 1e6));
+    if !(boxed && w_box && free_box && dt.to_f64() <= 1.0) {
+        return;
+    }
+    for x in out {
+        fin(x, name);
+    }
+    assert!(out[0] >= T::ZERO, "{name}: N = {:?}", out[0].to_f64());
+    // u⁺ = u_free + Δt·W·w (in f64)
+    let u0 = [-step.hdot, step.vx, step.vy, step.omega];
+    let u: [f64; 4] = core::array::from_fn(|k| free[k].unwrap_or(u0[k]).to_f64());
+    let mut wm = [[0.0; 4]; 4];
+    let mut k = 0;
+    for r in 0..4 {
+        for c in r..4 {
+            wm[r][c] = w_upper[k].to_f64();
+            wm[c][r] = wm[r][c];
+            k += 1;
+        }
+    }
+    let o: [f64; 4] = out.map(|x| x.to_f64());
+    let dt = dt.to_f64();
+    let du: [f64; 4] = core::array::from_fn(|r| dt * (0..4).map(|c| wm[r][c] * o[c]).sum::<f64>());
+    let up: [f64; 4] = core::array::from_fn(|r| u[r] + du[r]);
+    let eps = T::EPSILON.to_f64();
+    let tiny = 4.0 * T::MIN_POSITIVE.to_f64();
+    let fmag = o[1].hypot(o[2]);
+    let fp = o[1] * up[1] + o[2] * up[2];
+    let fscale = fmag * (u[1].hypot(u[2]) + du[1].hypot(du[2]));
+    assert!(
+        fp <= 1e3 * eps * fscale + tiny,
+        "{name}: F·v⁺ = {fp:e} (scale {fscale:e}): {o:?} at {step:?}, dt {dt}, W {wm:?}, u {u:?}"
+    );
+    let tp = o[3] * up[3];
+    let tscale = o[3].abs() * (u[3].abs() + du[3].abs());
+    assert!(
+        tp <= 1e3 * eps * tscale + tiny,
+        "{name}: T·ω⁺ = {tp:e} (scale {tscale:e}): {o:?} at {step:?}, dt {dt}, W {wm:?}, u {u:?}"
+    );
+}

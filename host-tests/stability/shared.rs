@@ -269,6 +269,13 @@ pub fn bisect((mut lo, mut hi): (f64, f64), halvings: usize, stable: impl Fn(f64
     lo
 }
 
+/// The exact law's dissipation per unit fN, p = −(F·v_P + T_z·ω)/(fN), at (v_Px, v_Py, aω)
+/// (the `best` ramp's variable; degree one).
+pub fn dissipation(p: Parameter<f64>, v: [f64; 3]) -> f64 {
+    let t = contensou::friction::exact::traction(p, v[0], v[1], v[2]);
+    -(t.fx * v[0] + t.fy * v[1] + t.tz * v[2])
+}
+
 /// The first octant of the direction sphere |v_x| + |v_y| + a|ω| = `scale` on an
 /// (n + 1) × (n + 1) grid: (v_x, v_y, aω), all ≥ 0.
 pub fn octant(n: usize, scale: f64) -> impl Iterator<Item = (f64, f64, f64)> {
@@ -328,8 +335,8 @@ pub fn probe_speeds(case: &BestCase, delta: f64, probes: usize) -> Vec<f64> {
 /// steps per trial; a 1e-6·δ perturbation at ψ + 1 rad (generic: not an eigenvector of the
 /// stiffness at rest), or along ψ without spin. Returns (measured step, h* = `stable_step`, the stiffness in fN/δ
 /// predicted at the probe that set the measured step: the Jacobian's largest eigenvalue, or
-/// |cos ψ| + |sin ψ| without spin, where the ramped law is linear on the ray with a double
-/// eigenvalue that differences resolve poorly).
+/// 8/3 without spin, where the ramped law is F = −(8/3)·fN·v_P/δ, with a double eigenvalue that
+/// differences resolve poorly).
 #[allow(clippy::too_many_arguments)]
 pub fn best_case_step(
     case: &BestCase,
@@ -368,7 +375,8 @@ pub fn best_case_step(
         );
         if h < best.0 {
             let lam = if case.spin == 0.0 {
-                c.abs() + s.abs()
+                // F = −(8/3)·fN·v_P/δ: the ramp by the dissipation p = |v_P| is linear here
+                8.0 / 3.0
             } else {
                 block.stiffness(v_eq)
             };
@@ -522,7 +530,8 @@ pub struct SpinProbe {
 /// The spin probes of a law at one e² (δ given, a = 1): pure spin from rest, a generic slip,
 /// and the derivation's stiffest slip — for `simplified` just below the switch from its
 /// hyperbola to its plateau (a|ω| = 0.999·5Cv, v_P = (δ/2, 0)), for `best` the maximiser of
-/// `tools/data/spin_stiffness.csv` scaled into the ramp (s = δ/2).
+/// `tools/data/spin_stiffness.csv` scaled into the ramp (its dissipation p = 3δ/16, half the
+/// ramp's width).
 pub fn spin_probes(best: bool, e2: f64, m1: f64, delta: f64) -> Vec<SpinProbe> {
     let k = Constants::from_parameter(Parameter::new(e2).unwrap());
     let generic = SpinProbe {
@@ -532,7 +541,10 @@ pub fn spin_probes(best: bool, e2: f64, m1: f64, delta: f64) -> Vec<SpinProbe> {
     };
     let stiffest = if best {
         let (_, _, [x, y]) = spin_stiffness_row(m1).unwrap();
-        let w = 0.5 * delta / (1.0 + x + y);
+        // the ramp's dissipation p = aω·Ψ(X, Y) (exact law at aω = 1) set to half the ramp's
+        // width, 3δ/16
+        let p = dissipation(Parameter::new(e2).unwrap(), [y, -x, 1.0]);
+        let w = 0.1875 * delta / p;
         // IC (X, Y) = (−v_Py, v_Px)/(aω)
         SpinProbe {
             name: "stiffest",

@@ -159,6 +159,13 @@ void step_work_free(step_work* s);
  * at the free end-of-step pose (h_free > 0); their count. */
 int step_prepare(const mjModel* m, mjData* d, const pair* pairs, int npair, step_work* s);
 
+/* Each taken pair's N (wrench: 4 per pair taken) re-solved, the other rows fixed, where it is not
+ * the normal law's value at the end approach and velocity the wrenches give (step_aware.c). */
+void step_normal(const pair* pairs, const step_work* s, double dt, double* wrench);
+/* With step_point θ > 0: each taken pair's friction scaled so that it does no work at the end
+ * velocity MuJoCo's update gives the start rows J (step_aware.c). */
+void step_friction_at_start(const mjModel* m, const step_work* s, double* wrench);
+
 /* The step-aware wrenches (4 per contact, contact frame) of k ≤ CONTENSOU_STEP_MAX_CONTACTS
  * contacts sharing W (4k × 4k, row-major) over dt, from their start steps, rolling velocities
  * (NULL: none), free end velocities u_free (4k) and approaches h_free (k), by

@@ -92,7 +92,7 @@ use crate::shape::{self, Eccentricity, Ratio};
 use crate::{Error, Real};
 use lanes::{Lanes, MAX_LANES, One};
 pub use normal::BatchDamping;
-use state::{State, Tr, scaled};
+use state::{State, Tr, ramp, scaled};
 
 /// The input columns of a batch (every slice the same length; see the [module docs](self)).
 #[derive(Clone, Copy, Debug)]
@@ -489,9 +489,10 @@ impl<T: BatchReal, D: BatchDamping<T>, L: BatchLaw> Kernel<T> for FixedKernel<'_
         let mut r = 0;
         while let Some([h, hdot, vx, vy, omega]) = load_steps::<V>(self.steps, r) {
             let (a, b, n) = hertz.patch(damping, h, hdot);
-            let sc = scaled(L::RAMP_BELOW_DELTA, [f, delta], a, n, [vx, vy, omega]);
+            let sc = scaled([f, delta], a, n, [vx, vy, omega]);
             let t = L::traction_fixed(&law, &sc.state);
-            let (fx, fy, tz) = dimensional(sc.fn_, a, t);
+            let fn_ = ramp(L::RAMP_BELOW_DELTA, &sc, delta, &t);
+            let (fx, fy, tz) = dimensional(fn_, a, t);
             store_outputs(self.out, r, [n, fx, fy, tz, a, b, hertz.e2]);
             r += V::N;
         }
@@ -619,9 +620,10 @@ impl<T: BatchReal, D: BatchDamping<T>, L: BatchLaw> Kernel<T>
             let hertz = normal::HertzLanes::<V>::of(&coef);
             let (a, b, n) = hertz.patch(damping, h, hdot);
             let rows = k.get(..V::N).unwrap_or(&[]);
-            let sc = scaled(L::RAMP_BELOW_DELTA, [f, delta], a, n, [vx, vy, omega]);
+            let sc = scaled([f, delta], a, n, [vx, vy, omega]);
             let t = L::traction_varying(rows, &sc.state);
-            let (fx, fy, tz) = dimensional(sc.fn_, a, t);
+            let fn_ = ramp(L::RAMP_BELOW_DELTA, &sc, delta, &t);
+            let (fx, fy, tz) = dimensional(fn_, a, t);
             store_outputs(self.out, r, [n, fx, fy, tz, a, b, hertz.e2]);
             r += V::N;
         }

@@ -62,8 +62,10 @@ impl<V: Lanes> Tr<V> {
 /// The dimensional friction of a few contacts: (fN, a, state) in, (F_x, F_y, T_z) out.
 #[derive(Clone, Copy, Debug)]
 pub struct Scaled<V> {
-    /// fN, ramped below δ for a law with `RAMP_BELOW_DELTA`.
+    /// fN (the ramp below δ comes after the core: [`ramp`]).
     pub fn_: V,
+    /// The ℓ¹ slip scale s = |v_Px| + |v_Py| + a|ω| (the ramp's gate and scale).
+    pub s: V,
     /// The slip state.
     pub state: State<V>,
 }
@@ -73,24 +75,46 @@ pub struct Scaled<V> {
 /// [v_Px, v_Py, ω].
 #[inline(always)]
 pub(crate) fn scaled<V: Lanes>(
-    ramp: bool,
     [f, delta]: [V; 2],
     a: V,
     n: V,
     [vx, vy, omega]: [V; 3],
 ) -> Scaled<V> {
-    let mut fn_ = f * n;
-    // SlipState::scale_of / from_clamped: aω, then s = |vx| + |vy| + |aω|.
+    let fn_ = f * n;
+    // SlipState::from_clamped: aω, then s = |vx| + |vy| + |aω|.
     let aw = a * omega;
     let s = vx.abs() + vy.abs() + aw.abs();
-    if ramp {
-        // if δ > s { fN·(s/δ) }
-        fn_ = V::select(delta.gt(s), fn_ * (s / delta), fn_);
-    }
     Scaled {
         fn_,
+        s,
         state: divided(vx, vy, aw, s, delta),
     }
+}
+
+/// The ramp of `Friction::tangential_with` after the core (a law with `RAMP_BELOW_DELTA`), the
+/// same arithmetic: where δ > `P_FLOOR`·s and δ > r, r = −(t_x·x + t_y·y + t_z·w)·`RAMP_GAIN`·s
+/// (p/c), fN·(max(r, 0)/δ) (`ramped`); fN unchanged elsewhere or without a ramp.
+#[inline(always)]
+pub(crate) fn ramp<V: Lanes>(ramp: bool, sc: &Scaled<V>, delta: V, t: &Tr<V>) -> V {
+    let fn_ = sc.fn_;
+    if !ramp {
+        return fn_;
+    }
+    let floor = V::splat(V::T::from_f64(crate::friction::law::P_FLOOR));
+    let near = delta.gt(sc.s * floor);
+    if !V::any(near) {
+        return fn_;
+    }
+    let st = &sc.state;
+    let p = -(t.fx * st.x + t.fy * st.y + t.tz * st.w)
+        * V::splat(V::T::from_f64(crate::friction::law::RAMP_GAIN));
+    let r = p * sc.s;
+    let zero = V::splat(V::T::ZERO);
+    V::select(
+        V::and(near, delta.gt(r)),
+        fn_ * (r.larger(zero) / delta),
+        fn_,
+    )
 }
 
 /// `SlipState::divided`: by 1/s where s is a positive normal number, else (`unusual`) by the

@@ -63,7 +63,9 @@
 //! the error outside grows: measured 4.4e-3 fN / 2.0e-4 fNa at m₁ = 5e-6, 1.7e-2 / 6.6e-4 at
 //! m₁ = 1e-8 (`below_the_contract` in `host-tests/friction_best.rs`). |F| is scaled back onto
 //! |F| ≤ 1 where rounding (or, below the contract, the fit) would overshoot it. The dimensionless core ignores δ; the dimensional
-//! wrapper ramps it to zero below the slip scale δ ([`FrictionLaw::RAMP_BELOW_DELTA`]). Rest
+//! wrapper ramps it to zero below δ by the law's own dissipation p = −(F·v_P + T_z·ω)/(fN)
+//! ([`FrictionLaw::RAMP_BELOW_DELTA`]: a gradient law stays one, its damping matrix symmetric
+//! positive semidefinite). Rest
 //! gives zero, pure translation −v_P/|v_P| exactly, pure spin −C·sgn ω exactly.
 //! Exact (to rounding) inside the ellipse, on its boundary and as u → ∞; continuous across the
 //! boundary and between the cubic pieces (to a few rounding steps); symmetries bit-exact;

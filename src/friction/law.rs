@@ -4,7 +4,7 @@
 use core::fmt::Debug;
 use core::marker::PhantomData;
 
-use super::{Constants, Slip, SlipState, Traction};
+use super::{Constants, Slip, SlipState, Traction, larger};
 use crate::error::finite;
 use crate::{Error, Real};
 
@@ -22,11 +22,33 @@ pub trait FrictionLaw: Copy + Debug + PartialEq {
     type Branch: Copy + Debug + PartialEq;
 
     /// Whether the dimensional wrapper regularizes the law near rest: for δ > 0 it scales the
-    /// traction by min(1, S/δ), S = |v_Px| + |v_Py| + a|ω| (S/δ = 1/d of the normalised
-    /// [`SlipState`]). A non-negative factor keeps passivity, |F| ≤ fN, continuity and every
-    /// symmetry; δ = 0 (or S ≥ δ) changes nothing. It replaces dry friction's jump at rest by
-    /// a ramp of width δ, for laws whose core ignores δ (`best`); laws with their own g_δ
-    /// switch (`simplified`, `coulomb`) leave it `false`.
+    /// traction by min(1, p/(c·δ)), p = −(F·v_P + T_z·ω)/(fN) the full-slip law's own
+    /// dissipation per unit fN (m/s; for the exact law the pressure-weighted mean slip speed
+    /// over the patch, ∫σ|v_M| dA/N), c = 3/8. A non-negative factor keeps passivity,
+    /// |F| ≤ fN, continuity and every symmetry; δ = 0 (or p ≥ c·δ) changes nothing. It replaces
+    /// dry friction's jump at rest by a ramp, for laws whose core ignores δ (`best`); laws with
+    /// their own g_δ switch (`simplified`, `coulomb`) leave it `false`.
+    ///
+    /// **Why p and not a slip speed:** a law that is the gradient of a convex, degree-one
+    /// dissipation D (the exact integrals: F = −fN·∇D, p = D) stays a gradient, of the convex
+    /// fN·φ(D) with φ′ = min(1, D/(cδ)) (Huber), so its damping matrix
+    /// −∂(F, T_z/a)/∂(v_P, aω) = fN·(φ″∇D∇Dᵀ + φ′∇²D) stays symmetric positive semidefinite
+    /// in the ramp as well (a large-step solver's Newton matrix; see [`crate::jacobian`]). A
+    /// ramp by another speed (the ℓ¹ slip speed s = |v_Px| + |v_Py| + a|ω|, this wrapper's
+    /// former min(1, s/δ)) is passive but not monotone. **What δ means:** the stick speed of
+    /// every slip component. Since p ≥ |v_P| (Jensen) and p ≥ C·a|ω| (p is convex and even in
+    /// v_P; C = (3/8)E(e²) ≥ 3/8, the mean point speed of a pure spin being C·a|ω|), a
+    /// sticking contact (p < 3δ/8) keeps |v_P| < 3δ/8 and a|ω| < δ, as under the former ramp
+    /// (s < δ); c = 3/8 keeps the ramp's stiffness within −3 … +27 % of the former one's
+    /// (κ, κ_T: [`ramp_stiffness`](super::best::ramp_stiffness),
+    /// [`spin_stiffness`](super::best::spin_stiffness)). **Why c = 3/8:** in pure spin the
+    /// ramp's torque stiffness is C²·fN·a²/(cδ), the former ramp's C·fN·a²/δ: equal for c = C,
+    /// and c = 3/8 = min C (elongated patches, e² → 1) keeps it there or stiffer, the ramp's
+    /// spin width a|ω| < (c/C)·δ ≤ δ. In translation (p = |v_P|) it is 8/3 × the former fN/δ.
+    /// **δ is a numerical width:** results that depend on it are not physics. Measured on the
+    /// rattleback scene (`crate::scenes::rattleback::BEST_DELTA`): at δ = 1 mm/s the outcome
+    /// depends on the ramp's shape (a stall at 0.8432 s with s/δ, 0.8631 s with this ramp, a
+    /// reversal at 1.92 s with c = 1), at δ ≤ 0.1 mm/s every ramp gives the δ → 0 limit.
     const RAMP_BELOW_DELTA: bool = false;
 
     /// What the law precomputes once per contact shape (e² fixed). For most laws it is the
@@ -215,8 +237,12 @@ impl<T: Real, L: FrictionLaw> Friction<T, L> {
     /// multiplications, an integer range test) and five multiplications: 122 instructions for
     /// `Friction::<f32, Simplified>` on the Cortex-M4F (QEMU stage `friction`, method
     /// `simplified-dimensional`, with the branch; the core alone is 66, without its branch).
-    /// A law with [`FrictionLaw::RAMP_BELOW_DELTA`] adds a compare of s with δ (the ramp's
-    /// division only below δ): `Friction::<f32, Best>::tangential_prepared` 144.
+    /// A law with [`FrictionLaw::RAMP_BELOW_DELTA`] adds a gate δ > s/2 before the core (a
+    /// multiplication and a compare; p, its compare and the ramp's division only near rest):
+    /// `Friction::<f32, Best>::tangential_prepared` 147 (146 with the former ramp by the ℓ¹
+    /// slip speed); the full `Contact::wrench` 188 (184), the varying one 516 (521), the
+    /// Jacobian 1,587 (1,542) — QEMU counts of the firmware's main binary (the benchmark's
+    /// slips are all outside the ramp, δ = 0).
     #[inline(always)]
     pub fn tangential(
         &self,
@@ -263,18 +289,18 @@ impl<T: Real, L: FrictionLaw> Friction<T, L> {
         } else {
             T::ZERO
         };
-        let state = if L::RAMP_BELOW_DELTA {
-            let (aw, s) = SlipState::scale_of(slip, a);
-            // The ramp min(1, s/δ), tested before the division (δ > s ⇔ d > 1 up to
-            // rounding).
-            if self.delta > s {
-                fn_ = ramped(fn_, s, self.delta);
-            }
-            SlipState::from_scale(slip, aw, s, self.delta)
-        } else {
-            SlipState::from_clamped(slip, a, self.delta)
-        };
+        let (aw, s) = SlipState::scale_of(slip, a);
+        // The ramp min(1, p/(c·δ)) by the law's own dissipation per unit fN,
+        // p = −(F·v_P + T_z·ω)/(fN), c = 3/8: in the state's units p/(c·s) = −t·(x, y, w)·(8/3)
+        // and δ/s = d. p/(c·s) > P_FLOOR, so δ ≤ P_FLOOR·s (δ well below the slip scale, the
+        // common case) skips it; gated on s before the division (one multiplication and a
+        // compare; d is not formed at all when the core ignores it, as `best`'s does).
+        let near = L::RAMP_BELOW_DELTA && self.delta > s * T::from_f64(P_FLOOR);
+        let state = SlipState::from_scale(slip, aw, s, self.delta);
         let (t, branch) = core.eval(&state);
+        if near {
+            fn_ = ramped(fn_, &t, &state, s, self.delta);
+        }
         Tangential {
             fx: fn_ * t.fx,
             fy: fn_ * t.fy,
@@ -311,12 +337,39 @@ impl<T: Real, L: FrictionLaw> Core<T, L> for PerContact<'_, T, L> {
     }
 }
 
-/// fN·s/δ for s < δ: the ramp below δ, out of line so that its division is not hoisted onto
-/// the common path (s ≥ δ). 0 ≤ s < δ, so the factor lies in [0, 1).
-#[cold]
-#[inline(never)]
-fn ramped<T: Real>(fn_: T, s: T, delta: T) -> T {
-    fn_ * (s / delta)
+/// 1/c: the ramp ends at p = c·δ, c = 3/8 = min C over every patch shape (C = (3/8)E(e²),
+/// the pure-spin torque), so that a sticking contact keeps every slip component below δ:
+/// |v_P| ≤ p < 3δ/8 and a|ω| ≤ p/C < δ (see [`FrictionLaw::RAMP_BELOW_DELTA`]).
+pub(crate) const RAMP_GAIN: f64 = 8.0 / 3.0;
+
+/// A lower bound of p/(c·s), the ramp's variable over its width and the ℓ¹ slip scale, for the
+/// exact law (and `best`, within 1e-4 of it): p ≥ |v_P| (Jensen: the pressure-weighted mean of
+/// |v_M| is at least the norm of the mean v_P) and p ≥ C·a|ω| (p is convex and even in v_P,
+/// smallest at v_P = 0, where it is C·a|ω|, C ≥ 3/8); with s ≤ √2|v_P| + a|ω| this gives
+/// p/s ≥ C/(1 + √2·C) ≥ 0.245, p/(c·s) ≥ 0.65. Taken as 1/2: where δ ≤ s/2, p > c·δ and the
+/// ramp does not act (the gate, before the core's division: one multiplication, a compare).
+pub(crate) const P_FLOOR: f64 = 0.5;
+
+/// fN·min(1, p/(c·δ)): the ramp below c·δ, from the state's units (p/(c·s) =
+/// −(t_x·x + t_y·y + t_z·w)·(8/3), times the state's scale s: p/c against δ; five
+/// multiplications, two additions, a compare, a division), only where δ > [`P_FLOOR`]·s.
+/// Inline, and without the state's d = δ/s (which `best`'s core does not read, so the common
+/// path does not form it): out of line and with d, it cost 15 M4F instructions per
+/// `Contact::wrench` on the common path (199 against 184 for the former ramp; now 188). p is
+/// clamped at 0 (a rounding below 0 must not reverse the force), so the factor lies in [0, 1].
+/// Where s is not a normal number (a slip below 1.2e-38 m/s in f32, 2.2e-308 in f64) the state
+/// is scaled by the largest component m instead (`SlipState`), and p·s/m over-states the
+/// factor by s/m ≤ 3: still in [0, 1], passive, and ≤ 3.6e-38/δ (f32) in absolute terms.
+#[inline(always)]
+fn ramped<T: Real>(fn_: T, t: &Traction<T>, st: &SlipState<T>, s: T, delta: T) -> T {
+    // p/(c·s) in the state's units; the factor p/(c·δ) = (p/(c·s))·s/δ.
+    let p = -(t.fx * st.x() + t.fy * st.y() + t.tz * st.w()) * T::from_f64(RAMP_GAIN);
+    let r = p * s;
+    if delta > r {
+        fn_ * (larger(r, T::ZERO) / delta)
+    } else {
+        fn_
+    }
 }
 
 /// An explicit one-step integrator, for [`Friction::stable_step`]: its stability limit on the
@@ -366,7 +419,7 @@ impl<T: Real, L: FrictionLaw> Friction<T, L> {
     /// | law | κ |
     /// |---|---|
     /// | `Coulomb`, `Simplified` | 1 (the ramp F = −fN·v_P/δ) |
-    /// | `Best` (default) | [`ramp_stiffness`](super::best::ramp_stiffness)`(k)`: 2.52 for a circle, 3.49 at e² = 0.9, 5.19 at 0.99 |
+    /// | `Best` (default) | [`ramp_stiffness`](super::best::ramp_stiffness)`(k)`: 3.205 for a circle, 3.755 at e² = 0.9, 5.317 at 0.99 |
     /// | `Pade`, `Ellipsoid`, `Exact` | none: they ignore δ (Coulomb's sign law at rest) → 0 |
     ///
     /// # The effective mass
@@ -387,10 +440,10 @@ impl<T: Real, L: FrictionLaw> Friction<T, L> {
     /// past h*/2. The step shrinks ∝ δ: as δ → 0 the law becomes Coulomb's sign law, for which
     /// no explicit step is stable. `simplified`'s spin only widens its ramp (width aω/A, aω/B
     /// where that exceeds δ), so κ = 1 holds for every ω. `best`'s core ignores δ; the wrapper
-    /// ramps it below the slip scale s = |v_Px| + |v_Py| + a|ω| < δ
-    /// ([`FrictionLaw::RAMP_BELOW_DELTA`]); the stiffness there is fN/δ times a matrix that
-    /// depends on the slip direction and spin ratio only, largest (κ) in between rest with spin
-    /// (diag(A, B)) and pure translation (≤ √2), derivation in [`ramp_stiffness`](super::best::ramp_stiffness). So h* holds
+    /// ramps it below its own dissipation p < 3δ/8 ([`FrictionLaw::RAMP_BELOW_DELTA`]); the
+    /// stiffness there is fN/δ times a symmetric positive semidefinite matrix that depends on
+    /// the slip direction and spin ratio only, largest (κ) in between rest with spin
+    /// ((8/3)·C·diag(A, B)) and pure translation (8/3), derivation in [`ramp_stiffness`](super::best::ramp_stiffness). So h* holds
     /// for every slip direction and every fixed spin; it is conservative by the ratio of κ to
     /// the stiffness where a given motion settles. The spin has its own limit,
     /// [`Friction::stable_spin_step`]. Not covered: the coupling of translation and spin when

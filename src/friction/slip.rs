@@ -127,7 +127,8 @@ impl<T: Real> SlipState<T> {
     }
 
     /// The per-step path in two halves, for a ≥ 0 already checked: (aω, s) first, so that the
-    /// wrapper can test s against δ before the division; then [`SlipState::from_scale`].
+    /// wrapper can gate its ramp on s against δ before the division; then
+    /// [`SlipState::from_scale`].
     #[inline(always)]
     pub(crate) fn scale_of(slip: Slip<T>, a: T) -> (T, T) {
         let aw = a * slip.omega;

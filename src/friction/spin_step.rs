@@ -27,7 +27,7 @@ impl<T: Real, L: FrictionLaw> Friction<T, L> {
     /// |---|---|
     /// | `Coulomb` | 0: no torque, no limit (`T::MAX`) |
     /// | `Simplified` | 2/5, independent of e² |
-    /// | `Best` (default) | [`spin_stiffness`](super::best::spin_stiffness)`(k)`: 1.141 for a circle, 0.963 at e² = 0.5, 0.810 at 0.9, 0.752 at 0.99 |
+    /// | `Best` (default) | [`spin_stiffness`](super::best::spin_stiffness)`(k)`: 1.226 for a circle, 1.029 at e² = 0.5, 0.842 at 0.9, 0.775 at 0.99 |
     /// | `Pade`, `Ellipsoid`, `Exact` | none: no ramp → 0 |
     ///
     /// `inertia` is the effective one: 1/(1/I_A + 1/I_B) about the normal when both bodies
@@ -40,16 +40,19 @@ impl<T: Real, L: FrictionLaw> Friction<T, L> {
     /// −C·fNa·sgn ω ramped, T_z = −fN·a²·ω/(5δ); with a translation the ramped hyperbola's
     /// slope reaches 2fN·a²/(5δ) just below the switch to the plateau, and past the ramp it is
     /// smaller, so κ_T = 2/5 bounds every slip (conservative by 2× in pure spin). `best` ramps
-    /// its core below the slip scale s = |v_Px| + |v_Py| + a|ω| < δ: the torque's stiffness is
-    /// fN·a²/δ times a function of the slip direction, C in pure spin and largest (κ_T ≈
-    /// 1.9–2·C) with the instantaneous centre inside the patch at ≈ 0.75–0.85 of the way to
-    /// its edge (derivation in [`spin_stiffness`](super::best::spin_stiffness)); conservative
-    /// by κ_T/C ≈ 1.9–2 in pure spin. Not covered: the coupling with the translational degrees
-    /// of freedom (F depends on ω, T_z on v_P): when v_P and ω both move, the smaller of this
-    /// and [`Friction::stable_step`] is a guide, not a bound — the joint limit can be shorter
-    /// than both (by ≈ 16 % for a circle with m·a²/I ≈ 2.5, where the two limits are close, in
-    /// an exploratory scan of the 3 × 3 Jacobian, `tools/explore_coupled_step.py`; ≤ 4 %
-    /// elsewhere on that scan).
+    /// its core below its own dissipation p < 3δ/8 (p = C·a|ω| in pure spin): the torque's
+    /// stiffness is fN·a²/δ times a function of the slip direction, (8/3)·C² in pure spin and
+    /// largest (κ_T ≈ 1.3–2.03× that) with the instantaneous centre inside the patch at ≈
+    /// 0.76–0.81 of the way to its edge (derivation in
+    /// [`spin_stiffness`](super::best::spin_stiffness)); conservative by that ratio in pure
+    /// spin.
+    /// **When v_P and ω both move** (F depends on ω, T_z on v_P): `best`'s ramped stiffness is
+    /// a symmetric positive semidefinite 3 × 3 matrix (the Hessian of a convex potential, see
+    /// [`ramp_stiffness`](super::best::ramp_stiffness)), so in the mass metric its largest
+    /// eigenvalue is at most the sum of its diagonal blocks' — the joint step is at least
+    /// 1/(1/h*_v + 1/h*_ω) with h*_v from [`Friction::stable_step`] and h*_ω from this (a
+    /// bound, ≥ half the smaller of the two); `simplified`'s ramp is not symmetric and has no
+    /// such bound.
     ///
     /// # Edge cases and accuracy
     ///

@@ -91,7 +91,7 @@
 //! | where | derivative returned |
 //! |---|---|
 //! | h ≤ 0 (apart, h = 0 included) | all zero: the side h < 0 (for h → 0⁺, ∂N/∂h = 1.5·N/h → 0 too, but ∂a/∂h ∝ 1/√h grows without bound) |
-//! | a branch switch of a law (`best` inside/outside the ellipse and its table pieces in z, `simplified`'s and `coulomb`'s ramp knee at v = δ, `best`'s ramp at s = δ, the rolling laws' knees and FASTSIM's adhesion/slip cells, a clamp N ≥ 0 of a damped rebound) | that of the branch the value takes (its test reads the value only), i.e. the side of the switch where the state lies; at the switch itself the side whose test includes equality |
+//! | a branch switch of a law (`best` inside/outside the ellipse and its table pieces in z, `simplified`'s and `coulomb`'s ramp knee at v = δ, `best`'s ramp at p = δ, the rolling laws' knees and FASTSIM's adhesion/slip cells, a clamp N ≥ 0 of a damped rebound) | that of the branch the value takes (its test reads the value only), i.e. the side of the switch where the state lies; at the switch itself the side whose test includes equality |
 //! | a zero slip component (the ℓ¹ slip speed's \|v_x\|, \|v_y\|, a\|ω\|) | the side of its sign bit (+0: the right side) |
 //! | exact rest v_P = 0, ω = 0, δ > 0, a law with a ramp (`best`, `simplified`, `coulomb`) | the slip columns are the law's slopes along each axis, w(η·eⱼ)/η with η = δ/4 inside the ramp (ω: η/a), where the law is homogeneous of degree one: the derivative itself for `coulomb` and `simplified`, for `best` (not differentiable at rest: its slope depends on the direction) the slope along each axis — which central differences along that axis also give (F is odd); three plain wrench calls, at rest only |
 //! | exact rest with δ = 0, or a law without a ramp (`pade`, `ellipsoid`) | zero slip block (dry friction's jump) |
@@ -115,23 +115,31 @@
 //! B = −∂(F_x, F_y, T_z/a)/∂(v_x, v_y, aω) (N·s/m throughout: ω scaled by the major
 //! semi-axis a and T_z divided by it, so the entries share a unit). A law that is the gradient
 //! of a convex dissipation potential — the exact integrals are, −(F, T_z/a) = ∇ of
-//! ∫σ|v_M| dA — has B symmetric positive semidefinite. Measured smallest eigenvalue of B's
-//! symmetric part over its largest |entry|, 1e5 random states per law (one in eight inside
-//! the ramp s < δ):
+//! ∫σ|v_M| dA — has B symmetric positive semidefinite, and so has its ramp below δ by the
+//! law's own dissipation p = −(F·v_P + T_z·ω)/(fN) (`best`'s,
+//! [`FrictionLaw::RAMP_BELOW_DELTA`](crate::friction::FrictionLaw::RAMP_BELOW_DELTA): the
+//! gradient of the convex fN·φ(p), φ′ = min(1, p/δ)). Measured smallest eigenvalue of B's
+//! symmetric part over its largest |entry|, 1e5 random states per law (one in eight shrunk
+//! towards rest; split by p ≥ δ and p < δ):
 //!
-//! | law | s ≥ δ | ramp s < δ |
+//! | law | p ≥ δ | p < δ (in the ramp for `best`, `coulomb`, `simplified`) |
 //! |---|---|---|
 //! | `ellipsoid` | −8.1e-16 (PSD) | −6.4e-16 (PSD) |
-//! | `coulomb` | −1.5e-8 (PSD: the eigenvalue formula's √ε at a double zero) | −2.0e-16 (PSD) |
-//! | `best` | −1.3e-6 (PSD within its table approximation) | **−0.23** |
+//! | `coulomb` | −1.5e-8 (PSD: the eigenvalue formula's √ε at a double zero) | −2.1e-16 (PSD) |
+//! | `best` | −1.3e-6 (PSD within its table approximation of the exact law) | −2.7e-7 (PSD: its ramp ends at p = 3δ/8; with the ramp ending at p = δ, +1.5e-3) |
 //! | `simplified` | **−0.62** | −0.54 |
 //! | `pade` | **−0.55** | −0.55 |
 //!
-//! `simplified` and `pade` (the paper's model and its approximants) are passive but not
-//! gradients; `best`'s ramp below δ scales the law by min(1, s/δ) with the ℓ¹ slip speed s,
-//! passive but not a gradient either: a large-step solver should not count on B ⪰ 0 there
-//! (a ramp by the law's own dissipation, min(1, p/δ) with p = −(F·v_P + T_zω)/(fN), would be
-//! the gradient of −(fN/2δ)·p² and keep B ⪰ 0; not done: it changes the wrench below δ).
+//! `best` was ramped by the ℓ¹ slip speed before (min(1, s/δ), s = |v_x| + |v_y| + a|ω|):
+//! passive but not a gradient, B down to −0.23 in its ramp. `simplified` and `pade` (the
+//! paper's model and its approximant) are passive but not gradients, and a law homogeneous of
+//! degree 0 in the slip cannot have B ⪰ 0 unless it is one (B·v = 0 along the slip v, so
+//! vᵀ·sym(B)·v = 0, and sym(B) ⪰ 0 would need Bᵀ·v = 0 too: F = ∇(F·v)). Their blocks are
+//! indefinite at almost every state (98–100 % of a (ψ, u) grid; most negative −0.17 … −0.57
+//! for `simplified` over e² ∈ [0, 0.99], −0.55 for `pade`) — a documented exception: making
+//! them gradients would make them other laws. The step-aware wrench ([`crate::step`]) does
+//! not rely on B ⪰ 0: its limit-set projection and power check keep them passive at any Δt
+//! (`host-tests/step_wrench.rs`, random steps to 10 ms; fuzz target `step`).
 //!
 //! # Cost (fixed)
 //!

@@ -73,6 +73,19 @@ use crate::step::Scheme;
 use crate::{Error, Real};
 use core::marker::PhantomData;
 
+/// The slip scale δ (m/s) for runs of this scene with `Best` (the default law): 0.1 mm/s, small
+/// enough that the outcome and the event times are those of the limit δ → 0, whatever the
+/// shape of the law's ramp below δ. Kane & Levinson's start at ω₀ = ∓2 rad/s: stall at
+/// 0.83650 s / 1.17308 s (fine-step RK4), the same to 4 digits at δ = 0.5 … 0.02 mm/s with the
+/// ramp by the ℓ¹ slip speed min(1, s/δ) or by the dissipation min(1, p/(3δ/8)) (the library's),
+/// and at δ ≤ 0.1 mm/s with min(1, p/δ). At δ = 1 mm/s the ramp is a knob: the stall comes
+/// 0.8432 s, 0.8631 s or, with p/δ, a reversal at 1.92 s (table and reason:
+/// docs/guide/src/time-stepping.md, "The slip scale δ of the scenes"). The stall is at
+/// |ω| = 0.2 rad/s; the ramp only acts below a|ω| ≈ δ (a ≈ 3 mm), so for δ ≲ 0.5 mm/s it does
+/// not reach the event. RK4 needs h ≤ 20 µs at this δ (the ramp's stiffness fN/δ);
+/// the step-aware integrator ([`Rattleback::step_aware`]) holds to 2 ms.
+pub const BEST_DELTA: f64 = 1e-4;
+
 /// Number of scalars in the state.
 pub const N: usize = 13;
 
