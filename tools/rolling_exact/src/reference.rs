@@ -120,6 +120,37 @@ impl Patch {
         }
     }
 
+    /// The three grids, coarse to fine, as `NxM` (elements along x by along y).
+    pub fn grid_dims(&self) -> Vec<String> {
+        self.levels
+            .iter()
+            .map(|l| format!("{}x{}", l.grid.n, l.grid.m))
+            .collect()
+    }
+
+    /// The comment line of a reference file naming this patch's grids:
+    /// `# a/b = …, nu = …, nl = …: grids (x by y elements) n×m, …`.
+    pub fn grids_comment(&self) -> String {
+        let dims = self.grid_dims();
+        format!(
+            "# a/b = {}, nu = {}, nl = {}: grids (x by y elements) {}",
+            self.aob,
+            self.nu,
+            self.nl,
+            dims.join(", ")
+        )
+    }
+
+    /// The reference row (columns [`CSV_COLUMNS`]) of `family` at the creepages (ξ, η, cφ)
+    /// solved as `sol`.
+    pub fn csv_row(&self, family: &str, [xi, eta, phi_c]: [f64; 3], sol: &Solution) -> String {
+        let (aob, nu, nl, t) = (self.aob, self.nu, self.nl, &sol.totals);
+        format!(
+            "{family},{aob},{nu},{nl},{xi:e},{eta:e},{phi_c:e},{:.10e},{:.10e},{:.10e},{:.3e},{:.3e}",
+            t.fx, t.fy, t.mz, sol.err_f, sol.err_m
+        )
+    }
+
     /// Solves one case on the three grids and extrapolates. `phi_c` = φ·c; `coulomb = false`:
     /// full adhesion (linear theory).
     pub fn solve(&self, xi: f64, eta: f64, phi_c: f64, coulomb: bool) -> Solution {
@@ -184,6 +215,15 @@ pub fn skewed_row(
         u8::from(sol.converged),
         t.elapsed().as_secs_f64()
     )
+}
+
+/// The columns of a reference file (tools/data/rolling_ref.csv's).
+pub const CSV_COLUMNS: &str = "family,a_over_b,nu,nl,xi,eta,phi_c,fx,fy,mz,err_f,err_m";
+
+/// A reference file: the `header` comment lines, the patches' grid comments `grids`, the
+/// generator's time, the columns and the `rows`.
+pub fn csv_file(header: &str, grids: &str, seconds: f64, rows: &str) -> String {
+    format!("{header}{grids}# total generator time {seconds:.1} s\n{CSV_COLUMNS}\n{rows}")
 }
 
 /// Extrapolated totals (÷ fN, ÷ fNc), their error estimates and the per-grid results.
