@@ -11,7 +11,7 @@ use std::hint::black_box;
 
 use contensou::Real;
 use contensou::batch::{self, BatchLaw, BatchReal, CurvatureColumns, Steps, Wrenches};
-use contensou::contact::{Contact, VaryingContact};
+use contensou::contact::{Contact, VaryingContact, Wrench};
 use contensou::friction::{Best, Coulomb, Ellipsoid, Friction, Pade, Simplified, Slip};
 use contensou::geometry::Curvatures;
 use contensou::normal::{Hertz, HuntCrossley, Modulus};
@@ -45,96 +45,79 @@ fn law<T: Real + BatchReal, L: BatchLaw>(c: &mut Criterion) {
     };
     let curvatures = CurvatureColumns { p: &p, q: &q };
 
-    let mut g = c.benchmark_group(format!("batch/{}/fixed/{}", L::NAME, T::NAME));
-    g.throughput(Throughput::Elements(ROWS as u64));
-    g.bench_function("scalar", |b| {
-        b.iter(|| {
-            for i in 0..ROWS {
-                let slip = Slip::new(vx[i], vy[i], omega[i]).unwrap();
-                let w = fixed.wrench(h[i], hdot[i], slip);
-                let row = [w.n, w.fx, w.fy, w.tz, w.patch.a, w.patch.b, w.patch.e2];
-                for (c, v) in out.iter_mut().zip(row) {
-                    c[i] = v;
-                }
-            }
-            black_box(&mut out);
-        })
-    });
-    g.bench_function("batch", |b| {
-        b.iter(|| {
-            let [n, fx, fy, tz, a, b_, e2] = &mut out;
-            let mut w = Wrenches {
-                n,
-                fx,
-                fy,
-                tz,
-                a,
-                b: b_,
-                e2,
-            };
-            fixed.wrench_many(black_box(&steps), &mut w).unwrap();
-            black_box(&mut out);
-        })
-    });
-    g.finish();
-
-    let mut g = c.benchmark_group(format!("batch/{}/varying/{}", L::NAME, T::NAME));
-    g.throughput(Throughput::Elements(ROWS as u64));
-    g.bench_function("scalar", |b| {
-        b.iter(|| {
-            for i in 0..ROWS {
-                let curv = Curvatures::ordered(p[i], q[i]).unwrap();
-                let slip = Slip::new(vx[i], vy[i], omega[i]).unwrap();
-                let w = varying.wrench(&curv, h[i], hdot[i], slip);
-                let row = [w.n, w.fx, w.fy, w.tz, w.patch.a, w.patch.b, w.patch.e2];
-                for (c, v) in out.iter_mut().zip(row) {
-                    c[i] = v;
-                }
-            }
-            black_box(&mut out);
-        })
-    });
-    g.bench_function("batch", |b| {
-        b.iter(|| {
-            let [n, fx, fy, tz, a, b_, e2] = &mut out;
-            let mut w = Wrenches {
-                n,
-                fx,
-                fy,
-                tz,
-                a,
-                b: b_,
-                e2,
-            };
+    scalar_and_batch::<T, L>(
+        c,
+        "fixed",
+        &mut out,
+        |i| {
+            let slip = Slip::new(vx[i], vy[i], omega[i]).unwrap();
+            row(fixed.wrench(h[i], hdot[i], slip))
+        },
+        |w| fixed.wrench_many(black_box(&steps), w).unwrap(),
+    );
+    scalar_and_batch::<T, L>(
+        c,
+        "varying",
+        &mut out,
+        |i| {
+            let curv = Curvatures::ordered(p[i], q[i]).unwrap();
+            let slip = Slip::new(vx[i], vy[i], omega[i]).unwrap();
+            row(varying.wrench(&curv, h[i], hdot[i], slip))
+        },
+        |w| {
             varying
-                .wrench_many(black_box(&curvatures), black_box(&steps), &mut w)
-                .unwrap();
-            black_box(&mut out);
-        })
-    });
-    g.finish();
-
+                .wrench_many(black_box(&curvatures), black_box(&steps), w)
+                .unwrap()
+        },
+    );
     // The varying form at one pair of curvatures for every row (`wrench_many_at`: the shape
     // solved once; the path of DynContact, the C API and Python).
     let at = Curvatures::ordered(T::from_f64(40.0), T::from_f64(60.0)).unwrap();
-    let mut g = c.benchmark_group(format!("batch/{}/varying_at/{}", L::NAME, T::NAME));
+    scalar_and_batch::<T, L>(
+        c,
+        "varying_at",
+        &mut out,
+        |i| {
+            let slip = Slip::new(vx[i], vy[i], omega[i]).unwrap();
+            row(varying.wrench(black_box(&at), h[i], hdot[i], slip))
+        },
+        |w| {
+            varying
+                .wrench_many_at(black_box(&at), black_box(&steps), w)
+                .unwrap()
+        },
+    );
+}
+
+/// The seven outputs of a wrench, in the batch's column order.
+fn row<T: Copy, B>(w: Wrench<T, B>) -> [T; 7] {
+    [w.n, w.fx, w.fy, w.tz, w.patch.a, w.patch.b, w.patch.e2]
+}
+
+/// Group `batch/<law>/<form>/<precision>`: `scalar` stores `wrench(i)`'s seven outputs for
+/// every row into `out`, `batch` fills `out` by `many`.
+fn scalar_and_batch<T: Real, L: BatchLaw>(
+    c: &mut Criterion,
+    form: &str,
+    out: &mut [Vec<T>; 7],
+    mut wrench: impl FnMut(usize) -> [T; 7],
+    mut many: impl FnMut(&mut Wrenches<'_, T>),
+) {
+    let mut g = c.benchmark_group(format!("batch/{}/{form}/{}", L::NAME, T::NAME));
     g.throughput(Throughput::Elements(ROWS as u64));
     g.bench_function("scalar", |b| {
         b.iter(|| {
             for i in 0..ROWS {
-                let slip = Slip::new(vx[i], vy[i], omega[i]).unwrap();
-                let w = varying.wrench(black_box(&at), h[i], hdot[i], slip);
-                let row = [w.n, w.fx, w.fy, w.tz, w.patch.a, w.patch.b, w.patch.e2];
-                for (c, v) in out.iter_mut().zip(row) {
+                for (c, v) in out.iter_mut().zip(wrench(i)) {
                     c[i] = v;
                 }
             }
-            black_box(&mut out);
+            black_box(&mut *out);
         })
     });
     g.bench_function("batch", |b| {
         b.iter(|| {
-            let [n, fx, fy, tz, a, b_, e2] = &mut out;
+            let [n, fx, fy, tz, a, b_, e2] = &mut *out;
             let mut w = Wrenches {
                 n,
                 fx,
@@ -144,10 +127,8 @@ fn law<T: Real + BatchReal, L: BatchLaw>(c: &mut Criterion) {
                 b: b_,
                 e2,
             };
-            varying
-                .wrench_many_at(black_box(&at), black_box(&steps), &mut w)
-                .unwrap();
-            black_box(&mut out);
+            many(&mut w);
+            black_box(&mut *out);
         })
     });
     g.finish();

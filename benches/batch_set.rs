@@ -2,15 +2,11 @@
 // the contract's contact columns P = 40, Q in 60…120 1/m, rows in contact (h 1e-7…1e-5 m),
 // mixed slips (inside and outside `best`'s ellipse), 20 % without spin.
 
+include!("xorshift.rs");
+
 /// Columns P, Q, h, hdot, vx, vy, omega (a fixed pseudo-random set).
 fn columns<T: Real>(rows: usize) -> [Vec<T>; 7] {
-    let mut s = 0x2545_f491_4f6c_dd1du64;
-    let mut unit = move || {
-        s ^= s << 13;
-        s ^= s >> 7;
-        s ^= s << 17;
-        (s >> 11) as f64 / (1u64 << 53) as f64
-    };
+    let mut unit = xorshift64(0x2545_f491_4f6c_dd1d);
     let mut cols: [Vec<T>; 7] = Default::default();
     for _ in 0..rows {
         let sign = |u: f64| if u < 0.5 { -1.0 } else { 1.0 };

@@ -217,6 +217,13 @@ fn main() {
     let mut csv = String::from(
         "# cargo bench --bench friction: ns per call of the dimensionless core (patch constants given; host CPU, criterion mean), max error vs the exact integrals over e2 in [0,0.99] (34 values), psi in [0,pi/2] (49; symmetries cover the rest), u in {0} + 1e-4..1e4 (100/decade) + {inf} + every knee (1/A, 1/B, u_z*, u_b) and 1e-9 either side, delta = 0; circle = e2 = 0 only; worst point as e2 psi u\nmodel,precision,ns_per_call,max_force_error_fN,max_torque_error_fNa,circle_force_error_fN,circle_torque_error_fNa,worst_force_at,worst_torque_at\n",
     );
+    // A row per law (in order), f32 then f64.
+    macro_rules! rows {
+        ($($l:ty),*) => {$(
+            row!(f32, $l);
+            row!(f64, $l);
+        )*};
+    }
     macro_rules! row {
         ($t:ty, $l:ty) => {{
             let ns =
@@ -237,18 +244,7 @@ fn main() {
             );
         }};
     }
-    row!(f32, Simplified);
-    row!(f64, Simplified);
-    row!(f32, Pade);
-    row!(f64, Pade);
-    row!(f32, Ellipsoid);
-    row!(f64, Ellipsoid);
-    row!(f32, Coulomb);
-    row!(f64, Coulomb);
-    row!(f32, Exact);
-    row!(f64, Exact);
-    row!(f32, Best);
-    row!(f64, Best);
+    rows!(Simplified, Pade, Ellipsoid, Coulomb, Exact, Best);
     let out = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("bench-results/friction.csv");
     let _ = std::fs::create_dir_all(out.parent().unwrap());
     std::fs::write(&out, csv).unwrap();

@@ -11,6 +11,8 @@ use contensou::normal::{Fitted, Hertz, Modulus, NormalLaw, Volumetric};
 use contensou::shape::{Eccentricity, HamrockDowson, Linear, Newton, Ratio, Table};
 use criterion::Criterion;
 
+include!("group.rs");
+
 /// The 209 bearing's inner-race contact (P, Q in 1/m), steel E*, a few approaches.
 fn inputs<T: Real>() -> (T, T, Modulus<T>, [T; 4]) {
     (
@@ -81,14 +83,11 @@ fn construct_as<T: Real, M: Eccentricity>(c: &mut Criterion, id: &str) {
 fn benches(c: &mut Criterion) {
     per_step::<f32>(c);
     per_step::<f64>(c);
-    construct::<f32, Newton>(c);
-    construct::<f64, Newton>(c);
-    construct::<f32, Table>(c);
-    construct::<f64, Table>(c);
-    construct::<f32, Linear>(c);
-    construct::<f64, Linear>(c);
-    construct::<f32, HamrockDowson>(c);
-    construct::<f64, HamrockDowson>(c);
+    each!(
+        construct(c),
+        [f32, f64],
+        [Newton, Table, Linear, HamrockDowson]
+    );
     #[cfg(feature = "micromath")]
     {
         use contensou::normal::HertzMicromath;
@@ -105,5 +104,4 @@ fn benches(c: &mut Criterion) {
     }
 }
 
-include!("group.rs");
 bench_main!(benches, warm_up_ms: 300, measure_ms: 1000, samples: 20);

@@ -14,6 +14,7 @@ use contensou::shape::Newton;
 use criterion::Criterion;
 
 include!("friction_set.rs");
+include!("group.rs");
 include!("wrench_set.rs");
 
 fn jacobian<T: Real, L: LinearLaw>(c: &mut Criterion) {
@@ -25,40 +26,19 @@ fn jacobian<T: Real, L: LinearLaw>(c: &mut Criterion) {
         rolling: RollingVelocity::ZERO,
     });
     let at = varying.at(&curv);
-    let mut i = 0;
     let name = |what: &str, form: &str| format!("jacobian/{what}/{form}/{}/{}", L::NAME, T::NAME);
-    c.bench_function(&name("wrench", "fixed"), |b| {
-        b.iter(|| {
-            i = (i + 1) % SET;
-            black_box(contact.wrench4(black_box(&states[i])))
-        })
-    });
-    c.bench_function(&name("linearize", "fixed"), |b| {
-        b.iter(|| {
-            i = (i + 1) % SET;
-            black_box(contact.linearize(black_box(&states[i])))
-        })
-    });
-    c.bench_function(&name("wrench", "table_each_step"), |b| {
-        b.iter(|| {
-            i = (i + 1) % SET;
-            black_box(at.wrench4(black_box(&states[i])))
-        })
-    });
-    c.bench_function(&name("linearize", "table_each_step"), |b| {
-        b.iter(|| {
-            i = (i + 1) % SET;
-            black_box(at.linearize(black_box(&states[i])))
-        })
-    });
+    bench_cycling!(c, &name("wrench", "fixed"), SET, |i| contact
+        .wrench4(black_box(&states[i])));
+    bench_cycling!(c, &name("linearize", "fixed"), SET, |i| contact
+        .linearize(black_box(&states[i])));
+    bench_cycling!(c, &name("wrench", "table_each_step"), SET, |i| at
+        .wrench4(black_box(&states[i])));
+    bench_cycling!(c, &name("linearize", "table_each_step"), SET, |i| at
+        .linearize(black_box(&states[i])));
 }
 
 fn benches(c: &mut Criterion) {
-    jacobian::<f32, Best>(c);
-    jacobian::<f32, Simplified>(c);
-    jacobian::<f64, Best>(c);
-    jacobian::<f64, Simplified>(c);
+    each!(jacobian(c), [f32, f64], [Best, Simplified]);
 }
 
-include!("group.rs");
 bench_main!(benches, warm_up_ms: 300, measure_ms: 1000, samples: 30);

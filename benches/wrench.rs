@@ -12,39 +12,27 @@ use contensou::shape::Newton;
 use criterion::Criterion;
 
 include!("friction_set.rs");
+include!("group.rs");
 include!("wrench_set.rs");
 
 fn wrench<T: Real, L: FrictionLaw>(c: &mut Criterion) {
     let (curv, contact, varying, h, slips) = wrench_scene::<T, L>();
-    let mut i = 0;
-    c.bench_function(&format!("wrench/fixed/{}/{}", L::NAME, T::NAME), |b| {
-        b.iter(|| {
-            i = (i + 1) % SET;
-            black_box(contact.wrench(black_box(h), T::ZERO, black_box(slips[i])))
-        })
-    });
-    c.bench_function(
-        &format!("wrench/table_each_step/{}/{}", L::NAME, T::NAME),
-        |b| {
-            b.iter(|| {
-                i = (i + 1) % SET;
-                black_box(varying.wrench(
-                    black_box(&curv),
-                    black_box(h),
-                    T::ZERO,
-                    black_box(slips[i]),
-                ))
-            })
-        },
-    );
+    let name = |form: &str| format!("wrench/{form}/{}/{}", L::NAME, T::NAME);
+    bench_cycling!(c, &name("fixed"), SET, |i| contact.wrench(
+        black_box(h),
+        T::ZERO,
+        black_box(slips[i])
+    ));
+    bench_cycling!(c, &name("table_each_step"), SET, |i| varying.wrench(
+        black_box(&curv),
+        black_box(h),
+        T::ZERO,
+        black_box(slips[i])
+    ));
 }
 
 fn benches(c: &mut Criterion) {
-    wrench::<f32, Simplified>(c);
-    wrench::<f64, Simplified>(c);
-    wrench::<f32, Best>(c);
-    wrench::<f64, Best>(c);
+    each!(wrench(c), [f32, f64], [Simplified, Best]);
 }
 
-include!("group.rs");
 bench_main!(benches, warm_up_ms: 300, measure_ms: 1000, samples: 30);

@@ -10,75 +10,18 @@
 //! Near m = 1 every method gets m₁ = 1 − m exactly (`Parameter::from_complement`); `ellip`
 //! takes m (exact in f64 for these rows).
 use contensou::Real;
-use contensou::elliptic::{Agm, Integrals, Method, Parameter, Table, Theta, paper_k_e};
+use contensou::elliptic::{Agm, Method, Table, Theta, paper_k_e};
 
-/// One reference row: inputs as f64 (exact) and K, E, B, D.
-struct Row {
-    m: f64,
-    m1: f64,
-    want: [f64; 4],
-}
-
-fn reference() -> Vec<Row> {
-    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/tools/data/elliptic_ref.csv");
-    let text = std::fs::read_to_string(path).unwrap_or_else(|e| panic!("{path}: {e}"));
-    text.lines()
-        .skip(1)
-        .map(|l| {
-            let f: Vec<f64> = l.split(',').map(|x| x.parse().expect("number")).collect();
-            Row {
-                m: f[0],
-                m1: f[1],
-                want: [f[2], f[3], f[4], f[5]],
-            }
-        })
-        .collect()
-}
-
-/// The parameter a careful caller builds (m up to ½, m₁ above), if the row is exact in `T`
-/// and in `T`'s domain.
-fn param<T: Real>(r: &Row) -> Option<Parameter<T>> {
-    let (x, from_m) = if r.m <= 0.5 {
-        (r.m, true)
-    } else {
-        (r.m1, false)
-    };
-    let t = T::from_f64(x);
-    if t.to_f64() != x {
-        return None;
-    }
-    if from_m {
-        Parameter::new(t).ok()
-    } else {
-        Parameter::from_complement(t).ok()
-    }
-}
+#[path = "../host-tests/common/elliptic_ref.rs"]
+mod elliptic_ref;
+use elliptic_ref::{Row, max_errors, param, reference, values};
 
 fn rel(got: f64, want: f64) -> f64 {
     ((got - want) / want).abs()
 }
 
-fn arr<T: Real>(i: Integrals<T>) -> [f64; 4] {
-    [i.k.to_f64(), i.e.to_f64(), i.b.to_f64(), i.d.to_f64()]
-}
-
-/// Max relative error of K, E, B, D over the rows `eval` accepts, and the row count.
-fn max_err(rows: &[Row], eval: &dyn Fn(&Row) -> Option<[f64; 4]>) -> ([f64; 4], usize) {
-    let mut w = [0.0f64; 4];
-    let mut n = 0;
-    for r in rows {
-        if let Some(g) = eval(r) {
-            n += 1;
-            for j in 0..4 {
-                w[j] = w[j].max(rel(g[j], r.want[j]));
-            }
-        }
-    }
-    (w, n)
-}
-
 fn ours<T: Real, M: Method>(r: &Row) -> Option<[f64; 4]> {
-    param::<T>(r).map(|p| arr(M::integrals(p)))
+    param::<T>(r).map(|p| values(M::integrals(p)))
 }
 
 /// `ellip` (Boost's piecewise polynomials): K, E and D; B = K − D. m as given (exact here).
@@ -112,7 +55,7 @@ fn summary(rows: &[Row]) {
     println!("| method | precision | rows | K | E | B | D |");
     println!("|---|---|---|---|---|---|---|");
     for (name, prec, eval) in lines {
-        let (w, n) = max_err(rows, &eval);
+        let (w, _, n) = max_errors(rows, eval);
         println!(
             "| {name} | {prec} | {n} | {:.1e} | {:.1e} | {:.1e} | {:.1e} |",
             w[0], w[1], w[2], w[3]

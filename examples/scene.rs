@@ -3,7 +3,8 @@
 //!
 //! ```sh
 //! cargo run --release --features scenes --example scene -- NAME --law L --dt H \
-//!     [--integrator rk4|step-aware] [--end T] [--spin ±2] [--geometry 209|paper]
+//!     [--integrator rk4|step-aware] [--end T] [--spin ±2] [--geometry 209|paper] \
+//!     [--ring start|predicted] [--ramp T]
 //! ```
 //!
 //! NAME: `tippe-top` (laws `best`, `simplified`, `coulomb`; θ₀ = 0.1 rad, 180 rad/s, f = 0.3,
@@ -12,7 +13,10 @@
 //! limit: `BEST_DELTA`; `simplified`, `ellipsoid`, `coulomb`, δ = 1 mm/s; or the rolling laws
 //! `table`, `blend`; Kane & Levinson's start,
 //! `--spin` ω₀ (default −2 rad/s); default end 4 s), `bearing` (`best` full slip, δ = 0.05 m/s,
-//! or the creep laws `table`, `blend`; `--geometry 209|paper`; RK4 only; default end 20 ms).
+//! or the creep laws `table`, `blend`; `--geometry 209|paper`; the step-aware integrator's
+//! `--ring start|predicted` (where the balls see the inner ring within a step, default `start`:
+//! `RingCoupling`); `--ramp T` the load's ramp time (default 5 ms: the reference's own
+//! sensitivity); default end 20 ms).
 //!
 //! Output keys: `scene`, `law`, `integrator`, `dt`, `end`, `steps`, `stable`, `reason` (null
 //! when stable), `energy_max_rise`, `events`, `cpu_s` (the run's thread CPU time; per simulated
@@ -43,7 +47,7 @@ use contensou::friction::{Best, Coulomb, Ellipsoid, Friction, FrictionLaw, Simpl
 use contensou::geometry::Race;
 use contensou::normal::{HuntCrossley, Modulus};
 use contensou::scenes::ball::{Ball, BallEvents};
-use contensou::scenes::bearing::{BALLS, Bearing, Geometry, RaceLaw};
+use contensou::scenes::bearing::{BALLS, Bearing, Geometry, RaceLaw, RingCoupling};
 use contensou::scenes::integrate::{Ode, rk4_step};
 use contensou::scenes::rattleback::{
     BEST_DELTA, Creeping, FloorLaw, Params, Rattleback, SpinEvents,
@@ -76,11 +80,13 @@ struct Args {
     end: Option<f64>,
     spin: f64,
     geometry: String,
+    ring: RingCoupling,
+    ramp: Option<f64>,
 }
 
 fn parse() -> Result<Args, String> {
     let mut it = std::env::args().skip(1);
-    let name = it.next().ok_or("usage: scene NAME --law L --dt H [--integrator rk4|step-aware] [--end T] [--spin ±2] [--geometry 209|paper]")?;
+    let name = it.next().ok_or("usage: scene NAME --law L --dt H [--integrator rk4|step-aware] [--end T] [--spin ±2] [--geometry 209|paper] [--ring start|predicted] [--ramp T]")?;
     let mut a = Args {
         name,
         law: "best".into(),
@@ -89,6 +95,8 @@ fn parse() -> Result<Args, String> {
         end: None,
         spin: -2.0,
         geometry: "209".into(),
+        ring: RingCoupling::Start,
+        ramp: None,
     };
     while let Some(k) = it.next() {
         let v = it.next().ok_or(format!("{k} needs a value"))?;
@@ -99,6 +107,14 @@ fn parse() -> Result<Args, String> {
             "--end" => a.end = Some(num()?),
             "--spin" => a.spin = num()?,
             "--geometry" => a.geometry = v.clone(),
+            "--ramp" => a.ramp = Some(num()?),
+            "--ring" => {
+                a.ring = match v.as_str() {
+                    "start" => RingCoupling::Start,
+                    "predicted" => RingCoupling::Predicted,
+                    _ => return Err(format!("unknown ring coupling {v}")),
+                }
+            }
             "--integrator" => {
                 a.integrator = match v.as_str() {
                     "rk4" => Integrator::Rk4,
@@ -465,7 +481,7 @@ fn bearing_run<C: RaceLaw<f64>>(a: &Args, b: &Bearing<f64, C>) -> Report {
                 None
             }
             Integrator::StepAware => {
-                let (y1, l) = b.step_aware(t1 - a.dt, &y, a.dt, &mut warm);
+                let (y1, l) = b.step_aware_with(t1 - a.dt, &y, a.dt, &mut warm, a.ring);
                 y = y1;
                 Some(l)
             }
@@ -562,11 +578,17 @@ fn bearing_run<C: RaceLaw<f64>>(a: &Args, b: &Bearing<f64, C>) -> Report {
 }
 
 fn bearing(a: &Args) -> Result<Report, String> {
-    let g = match a.geometry.as_str() {
+    let mut g = match a.geometry.as_str() {
         "209" => Geometry::<f64>::bearing_209(),
         "paper" => Geometry::paper_e2(),
         x => return Err(format!("unknown geometry {x}")),
     };
+    if let Some(r) = a.ramp {
+        if !(r > 0.0 && r.is_finite()) {
+            return Err("--ramp must be a positive time (s)".into());
+        }
+        g.ramp = r;
+    }
     let estar = Modulus::new(1.142857e11).unwrap();
     let damping = HuntCrossley::new(0.3).unwrap();
     let best = |race| {

@@ -680,7 +680,7 @@ fn spin_chart() -> (Chart, String) {
             rows,
         },
         format!(
-            "h* = limit·Iδ/(κ_T·fN·a²), κ_T = 2/5 (`simplified`, every e²) or `spin_stiffness` = {:.3} (circle) … {:.3} (e² = 0.999) for `best` (≈ 1.9–2·C, C·fN·a²/δ being the pure-spin ramp); measured for m₁ = 1 … 1e-3 (pure spin, a generic slip, the derivation's stiffest slip), both schemes: every step ≥ h* (min {below:.6}·h*), the stiffest probe within {:.2} % of h*; pure spin {:.3}–{:.3}·h*. Not covered: a body whose v_P and ω both move (the 3 × 3 coupled Jacobian)",
+            "h* = limit·Iδ/(κ_T·fN·a²), κ_T = 2/5 (`simplified`, every e²) or `spin_stiffness` = {:.3} (circle) … {:.3} (e² = 0.999) for `best` (1.3–2.03× the pure-spin ramp's (8/3)·C²); measured for m₁ = 1 … 1e-3 (pure spin, a generic slip, the derivation's stiffest slip), both schemes: every step ≥ h* (min {below:.6}·h*), the stiffest probe within {:.2} % of h*; pure spin {:.3}–{:.3}·h*. Not covered: a body whose v_P and ω both move (the 3 × 3 coupled Jacobian)",
             kt[0],
             kt[kt.len() - 1],
             (tight - 1.0) * 100.0,
@@ -762,9 +762,9 @@ fn main() {
         (
             "`best` law's ramp below δ (`Friction::<T, Best>`, the default law)",
             format!(
-                "δ → 0 (stiffness κ(e²)·fN/δ: the ℓ¹ ramp times the core's slope, largest with spin and slip together) — {s_best} (chart `best_step`)"
+                "δ → 0 (stiffness κ(e²)·fN/δ: the ramp by the law's own dissipation p < 3δ/8, a symmetric positive semidefinite matrix, largest with spin and slip together) — {s_best} (chart `best_step`)"
             ),
-            "`Friction::<T, Best>::stable_step(&Constants, mass, n, Explicit)`: limit·mδ/(κfN), κ = `friction::best::ramp_stiffness` (closed form on the major axis × fitted off-axis factor, ≤ 0.35 % above the mpmath maximisation `tools/gen_best_stiffness.py`); 0 for δ = 0",
+            "`Friction::<T, Best>::stable_step(&Constants, mass, n, Explicit)`: limit·mδ/(κfN), κ = `friction::best::ramp_stiffness` (within 1e-12 of the mpmath maximisation `tools/gen_ramp_stiffness.py`); 0 for δ = 0",
             "best_ramp_stiffness_bounds_the_maximisation, best_stiffness_is_largest_inside_the_ramp_and_the_ellipse, best_stable_step_is_conservative_and_tight, best_stable_step_edge_cases_are_total",
         ),
         (
@@ -778,7 +778,7 @@ fn main() {
             format!(
                 "δ → 0 (torque stiffness κ_T·fN·a²/δ, largest with spin and slip together) — {s_spin} (chart `spin_step`)"
             ),
-            "`Friction::<T, Simplified>::stable_spin_step(&Constants, a, inertia, n, Explicit)`: limit·5Iδ/(2fN·a²); `Friction::<T, Best>::stable_spin_step(&Constants, a, inertia, n, Explicit)`: limit·Iδ/(κ_T·fN·a²), κ_T = `friction::best::spin_stiffness` (maximised on the exact quartic, within 1e-13 of the mpmath maximisation `tools/gen_spin_stiffness.py`); `Coulomb`: no torque, `T::MAX`; 0 for δ = 0",
+            "`Friction::<T, Simplified>::stable_spin_step(&Constants, a, inertia, n, Explicit)`: limit·5Iδ/(2fN·a²); `Friction::<T, Best>::stable_spin_step(&Constants, a, inertia, n, Explicit)`: limit·Iδ/(κ_T·fN·a²), κ_T = `friction::best::spin_stiffness` (maximised on the exact quartic, within 1e-12 of the mpmath maximisation `tools/gen_ramp_stiffness.py`); `Coulomb`: no torque, `T::MAX`; 0 for δ = 0",
             "spin_stiffness_matches_the_maximisation, spin_stiffness_is_largest_inside_the_ramp_and_the_ellipse, spin_stable_step_is_conservative_and_tight, spin_stable_step_edge_cases_are_total",
         ),
     ];
@@ -800,8 +800,7 @@ fn main() {
         md,
         "\nReferences: mpmath (`tools/gen_stability_ref.py` → `tools/data/stability_*.csv`), the \
          crate's exact friction integrals (themselves checked against mpmath), \
-         `tools/gen_best_stiffness.py` (mpmath: κ of the `best` ramp), \
-         `tools/gen_spin_stiffness.py` (mpmath: κ_T of its torque), and block \
+         `tools/gen_ramp_stiffness.py` (mpmath: κ and κ_T of the `best` ramp), and block \
          integrations bisected for the stable step. Charts: `docs/report/stability/*.csv`."
     )
     .unwrap();

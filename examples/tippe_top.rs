@@ -24,18 +24,20 @@
 use std::fmt::Write as _;
 use std::time::Instant;
 
-use contensou::friction::{Best, Coulomb, Friction, FrictionLaw, Simplified};
-use contensou::scenes::integrate::{Tolerance, dopri45, rk4};
-use contensou::scenes::tippe_top::{Events, N, Params, Probe, TippeTop};
+use contensou::friction::{Best, Coulomb, FrictionLaw, Simplified};
+use contensou::scenes::integrate::{dopri45, rk4};
+use contensou::scenes::tippe_top::{Events, Probe};
+
+/// The paper's top as the tests start it (θ₀, spin, f; the adaptive tolerance).
+#[path = "../host-tests/common/paper_top.rs"]
+mod paper_top;
+use paper_top::{F, SPIN, THETA0, paper_top, tolerance};
 
 /// The report's chart renderer (plotters with the committed font); only `lines` is used here.
 #[path = "report/plot.rs"]
 #[allow(dead_code)]
 mod plot;
 
-const THETA0: f64 = 0.1;
-const SPIN: f64 = 180.0;
-const F: f64 = 0.3;
 const T_END: f64 = 8.0;
 /// `name` (s) from the environment, or `default`.
 fn env_or(name: &str, default: f64) -> f64 {
@@ -87,12 +89,7 @@ impl Run {
 }
 
 fn fixed<L: FrictionLaw>(name: &'static str, delta: f64) -> Run {
-    let top = TippeTop::new(
-        &Params::paper(),
-        Friction::<f64, L>::with_law(F, delta).unwrap(),
-    )
-    .unwrap();
-    let y0 = top.initial_state(THETA0, SPIN);
+    let (top, y0) = paper_top::<f64, L>(delta);
     let steps = (T_END / step()).round() as usize;
     let every = ((sample() / step()).round() as usize).max(1);
     let mut rows = vec![(0.0, top.probe(&y0))];
@@ -157,12 +154,7 @@ fn main() {
 
     // The MCU's configuration: f32, fixed step. How long may the step be?
     for h in [1e-5f32, 2e-5, 4e-5, 8e-5] {
-        let top = TippeTop::new(
-            &Params::<f32>::paper(),
-            Friction::<f32, Simplified>::with_law(0.3, 1e-4).unwrap(),
-        )
-        .unwrap();
-        let y0 = top.initial_state(0.1, 180.0);
+        let (top, y0) = paper_top::<f32, Simplified>(1e-4);
         let mut events = Events::new(&top, 0.0, &y0);
         let y = rk4(&top, 0.0, y0, h, (4.0 / h).round() as usize, |_, t, y| {
             events.update(&top, t, y)
@@ -206,17 +198,8 @@ const RTOL: f64 = 1e-6;
 
 /// Adaptive run to T_COST: (rhs evaluations, wall seconds).
 fn adaptive<L: FrictionLaw>(name: &str, delta: f64) -> (usize, f64) {
-    let top = TippeTop::new(
-        &Params::paper(),
-        Friction::<f64, L>::with_law(F, delta).unwrap(),
-    )
-    .unwrap();
-    let y0 = top.initial_state(THETA0, SPIN);
-    let mut atol = [1e-9; N];
-    atol[3..6].fill(1e-6);
-    atol[6..10].fill(1e-8);
-    atol[10..13].fill(1e-4);
-    let tol = Tolerance { rtol: RTOL, atol };
+    let (top, y0) = paper_top::<f64, L>(delta);
+    let tol = tolerance(RTOL);
     let start = Instant::now();
     let (t, y, s) = dopri45(
         &top,

@@ -3,7 +3,7 @@
 //! without the optional free velocity; a bad `dt` or W is refused naming the column; `--help`.
 
 use contensou::Real;
-use contensou::dynamic::{DynContact, Form, INPUTS, Law, RollingSpec, RollingStep, Spec, Step};
+use contensou::dynamic::{DynContact, Form, INPUTS, Law, RollingSpec, RollingStep, from_inputs};
 use contensou::step::contract::{FREE_INPUTS, STEP_INPUTS, STEP_OUTPUTS, step_row};
 
 #[allow(dead_code)] // the binary's runners only
@@ -23,21 +23,7 @@ fn parse<T: Real>(s: &str) -> Vec<T> {
 }
 
 fn library<T: Real>(law: Law, form: Form, r: &[T], u_free: [Option<T>; 4]) -> [T; 4] {
-    let spec = Spec {
-        p: r[0],
-        q: r[1],
-        estar: r[2],
-        cd: r[3],
-        f: r[4],
-        delta: r[5],
-    };
-    let step = Step {
-        h: r[6],
-        hdot: r[7],
-        vx: r[8],
-        vy: r[9],
-        omega: r[10],
-    };
+    let (spec, step) = from_inputs(core::array::from_fn(|i| r[i]));
     let c = DynContact::new_rolling(&spec, &RollingSpec::default(), law, form).unwrap();
     let mut w = [T::ZERO; 10];
     w.copy_from_slice(&r[12..22]);

@@ -7,117 +7,52 @@
 #![allow(clippy::excessive_precision)]
 
 use contensou::Error;
-use contensou::elliptic::{Agm, Integrals, Method, Parameter, Table, Theta, paper_k_e};
+use contensou::elliptic::{Agm, Method, Parameter, Table, Theta, paper_k_e};
 
-struct Row {
-    m: f64,
-    m1: f64,
-    want: [f64; 4],
-}
+#[path = "common/elliptic_ref.rs"]
+mod elliptic_ref;
+use elliptic_ref::{Row, max_errors, param, reference, values};
 
-fn reference() -> Vec<Row> {
-    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/tools/data/elliptic_ref.csv");
-    let text = std::fs::read_to_string(path).unwrap();
-    let mut lines = text.lines();
-    assert_eq!(lines.next().unwrap(), "m,m1,K,E,B,D");
-    let rows: Vec<Row> = lines
-        .map(|l| {
-            let f: Vec<f64> = l.split(',').map(|x| x.parse().unwrap()).collect();
-            Row {
-                m: f[0],
-                m1: f[1],
-                want: [f[2], f[3], f[4], f[5]],
-            }
-        })
-        .collect();
-    assert!(rows.len() > 300);
-    rows
-}
-
-/// The parameter a careful caller builds: from m up to ½, from m₁ above.
+/// The f64 parameter of every row.
 fn param64(r: &Row) -> Parameter<f64> {
-    if r.m <= 0.5 {
-        Parameter::new(r.m).unwrap()
-    } else {
-        Parameter::from_complement(r.m1).unwrap()
-    }
-}
-
-/// f32 rows: those whose defining input (m up to ½, m₁ above) is exact in f32 and in domain.
-fn param32(r: &Row) -> Option<Parameter<f32>> {
-    if r.m <= 0.5 {
-        let m = r.m as f32;
-        (m as f64 == r.m).then(|| Parameter::new(m).unwrap())
-    } else {
-        let m1 = r.m1 as f32;
-        (m1 as f64 == r.m1 && m1 >= Parameter::<f32>::min_complement())
-            .then(|| Parameter::from_complement(m1).unwrap())
-    }
-}
-
-fn as_array<T: contensou::Real>(i: Integrals<T>) -> [f64; 4] {
-    [i.k.to_f64(), i.e.to_f64(), i.b.to_f64(), i.d.to_f64()]
-}
-
-/// Max relative error of K, E, B, D over the rows, and the m where each occurs.
-fn max_errors(
-    rows: &[Row],
-    eval: impl Fn(&Row) -> Option<[f64; 4]>,
-) -> ([f64; 4], [f64; 4], usize) {
-    let mut worst = [0.0f64; 4];
-    let mut at = [0.0f64; 4];
-    let mut n = 0;
-    for r in rows {
-        let Some(got) = eval(r) else { continue };
-        n += 1;
-        for j in 0..4 {
-            assert!(got[j].is_finite(), "non-finite at m = {}", r.m);
-            let err = ((got[j] - r.want[j]) / r.want[j]).abs();
-            if err > worst[j] {
-                worst[j] = err;
-                at[j] = r.m;
-            }
-        }
-    }
-    (worst, at, n)
+    param(r).unwrap()
 }
 
 fn fmt(w: [f64; 4]) -> String {
     w.map(|x| format!("{x:.2e}")).join(" ")
 }
 
+/// Method `M`'s worst errors on every row in f64 and on the rows exact in f32 (more than 150),
+/// within each precision's bound.
 fn check<M: Method>(bound64: f64, bound32: f64) {
     let rows = reference();
-    let (w, at, n) = max_errors(&rows, |r| Some(as_array(M::integrals(param64(r)))));
-    println!(
-        "{} f64 ({n} rows): K,E,B,D max rel err {} at m = {at:?}",
-        M::NAME,
-        fmt(w)
-    );
-    for (j, name) in ["K", "E", "B", "D"].iter().enumerate() {
-        assert!(
-            w[j] <= bound64,
-            "{} f64 {name}: {:.3e} at m = {}",
+    for (precision, (w, at, n), bound) in [
+        (
+            "f64",
+            max_errors(&rows, |r| Some(values(M::integrals(param64(r))))),
+            bound64,
+        ),
+        (
+            "f32",
+            max_errors(&rows, |r| param::<f32>(r).map(|p| values(M::integrals(p)))),
+            bound32,
+        ),
+    ] {
+        println!(
+            "{} {precision} ({n} rows): K,E,B,D max rel err {} at m = {at:?}",
             M::NAME,
-            w[j],
-            at[j]
+            fmt(w)
         );
-    }
-    let (w, at, n) = max_errors(&rows, |r| param32(r).map(|p| as_array(M::integrals(p))));
-    println!(
-        "{} f32 ({n} rows): K,E,B,D max rel err {} at m = {at:?}",
-        M::NAME,
-        fmt(w)
-    );
-    assert!(n > 150, "too few f32 rows: {n}");
-    for (j, name) in ["K", "E", "B", "D"].iter().enumerate() {
-        assert!(
-            w[j] <= bound32,
-            "{} f32 {name}: {:.3e} at m = {}",
-            M::NAME,
-            w[j],
-            at[j]
-        );
+        assert!(n > 150, "too few {precision} rows: {n}");
+        for (j, name) in ["K", "E", "B", "D"].iter().enumerate() {
+            assert!(
+                w[j] <= bound,
+                "{} {precision} {name}: {:.3e} at m = {}",
+                M::NAME,
+                w[j],
+                at[j]
+            );
+        }
     }
 }
 

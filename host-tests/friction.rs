@@ -20,6 +20,9 @@ const PATHS: usize = 20_000;
 
 #[path = "common/rng.rs"]
 mod rng;
+#[macro_use]
+#[path = "common/each.rs"]
+mod each;
 use rng::SplitMix as Rng;
 
 impl Rng {
@@ -39,30 +42,23 @@ trait Step: Real {
     fn up(self) -> Self;
     fn down(self) -> Self;
 }
-impl Step for f32 {
-    fn up(self) -> Self {
-        f32::from_bits(if self >= 0.0 {
-            self.to_bits() + 1
-        } else {
-            self.to_bits() - 1
-        })
-    }
-    fn down(self) -> Self {
-        -(-self).up()
-    }
+macro_rules! step_impl {
+    ($($t:ty),*) => {$(
+        impl Step for $t {
+            fn up(self) -> Self {
+                <$t>::from_bits(if self >= 0.0 {
+                    self.to_bits() + 1
+                } else {
+                    self.to_bits() - 1
+                })
+            }
+            fn down(self) -> Self {
+                -(-self).up()
+            }
+        }
+    )*};
 }
-impl Step for f64 {
-    fn up(self) -> Self {
-        f64::from_bits(if self >= 0.0 {
-            self.to_bits() + 1
-        } else {
-            self.to_bits() - 1
-        })
-    }
-    fn down(self) -> Self {
-        -(-self).up()
-    }
-}
+step_impl!(f32, f64);
 
 /// A random dimensionless slip (vx, vy, aω, δ) in f64, covering rest, pure translation, pure
 /// spin, both spin signs, u over 1e-6 … 1e6, overall scales from `tiny` to `huge`.
@@ -605,14 +601,7 @@ fn extremes<T: Real, L: FrictionLaw>() {
 
 #[test]
 fn extreme_inputs_stay_finite_passive_and_bounded() {
-    extremes::<f64, Simplified>();
-    extremes::<f32, Simplified>();
-    extremes::<f64, Pade>();
-    extremes::<f32, Pade>();
-    extremes::<f64, Ellipsoid>();
-    extremes::<f32, Ellipsoid>();
-    extremes::<f64, Coulomb>();
-    extremes::<f32, Coulomb>();
+    each!(extremes, [f64, f32], [Simplified, Pade, Ellipsoid, Coulomb]);
 }
 
 /// The exact integrals as a law: passive (to rounding), |F| ≤ 1, symmetric, on random states
@@ -717,54 +706,23 @@ fn max_error_against_exact_within_documented_bounds() {
             "{name}: {got:?} > {doc:?}"
         );
     };
-    check(
-        "simplified f64",
-        max_error::<f64, Simplified>(&grid),
-        Simplified::ERROR,
-        (0.393, 0.355),
-    );
-    check(
-        "simplified f32",
-        max_error::<f32, Simplified>(&grid),
-        Simplified::ERROR,
-        (0.393, 0.355),
-    );
-    check(
-        "pade f64",
-        max_error::<f64, Pade>(&grid),
-        Pade::ERROR,
-        (0.410, 0.355),
-    );
-    check(
-        "pade f32",
-        max_error::<f32, Pade>(&grid),
-        Pade::ERROR,
-        (0.410, 0.355),
-    );
-    check(
-        "ellipsoid f64",
-        max_error::<f64, Ellipsoid>(&grid),
-        Ellipsoid::ERROR,
-        (0.228, 0.134),
-    );
-    check(
-        "ellipsoid f32",
-        max_error::<f32, Ellipsoid>(&grid),
-        Ellipsoid::ERROR,
-        (0.228, 0.134),
-    );
-    check(
-        "coulomb f64",
-        max_error::<f64, Coulomb>(&grid),
-        Coulomb::ERROR,
-        (1.0, 0.590),
-    );
-    check(
-        "coulomb f32",
-        max_error::<f32, Coulomb>(&grid),
-        Coulomb::ERROR,
-        (1.0, 0.590),
-    );
+    // Each law in f64 and f32: its documented error and the bound asserted.
+    macro_rules! laws {
+        ($($law:ident: $bound:expr;)*) => {$(
+            for (precision, got) in [
+                ("f64", max_error::<f64, $law>(&grid)),
+                ("f32", max_error::<f32, $law>(&grid)),
+            ] {
+                check(&format!("{} {precision}", $law::NAME), got, $law::ERROR, $bound);
+            }
+        )*};
+    }
+    laws! {
+        Simplified: (0.393, 0.355);
+        Pade: (0.410, 0.355);
+        Ellipsoid: (0.228, 0.134);
+        Coulomb: (1.0, 0.590);
+    }
     // The exact law in f32 is the rounded f64 one.
     let (ef, et) = max_error::<f32, Exact>(&grid);
     assert!(ef <= 2e-7 && et <= 2e-7, "exact f32: {ef:e} {et:e}");

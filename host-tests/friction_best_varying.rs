@@ -11,6 +11,8 @@
 #[path = "best_switch/mod.rs"]
 mod best_switch;
 use best_switch::switch_jump;
+#[path = "common/rng.rs"]
+mod rng;
 
 use contensou::Real;
 use contensou::elliptic::Parameter;
@@ -88,14 +90,17 @@ impl Worst {
     }
 }
 
-#[test]
-fn matches_the_independent_reference() {
-    let text = include_str!("../tools/data/best_varying_ref.csv");
-    let rows: Vec<Vec<f64>> = text
-        .lines()
+/// The numbers of a reference CSV's rows (its header skipped).
+fn csv_rows(text: &str) -> Vec<Vec<f64>> {
+    text.lines()
         .skip(1)
         .map(|l| l.split(',').map(|v| v.parse().unwrap()).collect())
-        .collect();
+        .collect()
+}
+
+#[test]
+fn matches_the_independent_reference() {
+    let rows = csv_rows(include_str!("../tools/data/best_varying_ref.csv"));
     assert!(rows.len() > 400);
     let (mut w64, mut w32) = (Worst::default(), Worst::default());
     for r in &rows {
@@ -119,12 +124,7 @@ fn matches_the_independent_reference() {
 #[test]
 fn thin_patches_match_the_independent_reference() {
     use contensou::friction::BestContact;
-    let text = include_str!("../tools/data/best_thin_ref.csv");
-    let rows: Vec<Vec<f64>> = text
-        .lines()
-        .skip(1)
-        .map(|l| l.split(',').map(|v| v.parse().unwrap()).collect())
-        .collect();
+    let rows = csv_rows(include_str!("../tools/data/best_thin_ref.csv"));
     assert!(rows.len() > 300);
     let mut w = [
         Worst::default(),
@@ -290,34 +290,22 @@ fn continuous_in_e2_across_the_nodes() {
     assert!(j32 <= 1e-4, "{j32}");
 }
 
-struct Rng(u64);
-
-impl Rng {
-    fn unit(&mut self) -> f64 {
-        self.0 = self
-            .0
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        (self.0 >> 11) as f64 / (1u64 << 53) as f64
-    }
-}
-
 /// Random states over the whole domain and past it (m₁ down to 1e-7): finite, each component
 /// opposing its own velocity, |F| ≤ 1.
 fn passive<T: Real>(seed: u64) {
-    let mut rng = Rng(seed);
+    let mut rng = rng::Lcg(seed);
     for i in 0..40_000 {
         let p = if i % 5 == 0 {
-            Parameter::from_complement(T::from_f64(10f64.powf(-7.0 + 5.0 * rng.unit()))).unwrap()
+            Parameter::from_complement(T::from_f64(10f64.powf(-7.0 + 5.0 * rng.next()))).unwrap()
         } else {
-            Parameter::new(T::from_f64(0.99 * rng.unit())).unwrap()
+            Parameter::new(T::from_f64(0.99 * rng.next())).unwrap()
         };
         let k = Constants::from_parameter(p);
-        let psi = 2.0 * std::f64::consts::PI * rng.unit();
+        let psi = 2.0 * std::f64::consts::PI * rng.next();
         let u = match i % 10 {
             0 => 0.0,
             1 => f64::INFINITY,
-            _ => (rng.unit() * 10.0 - 5.0).exp(),
+            _ => (rng.next() * 10.0 - 5.0).exp(),
         };
         let s = SlipState::<T>::from_polar(T::from_f64(psi), T::from_f64(u)).unwrap();
         let t = Best::traction(&k, &s).0;

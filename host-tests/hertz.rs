@@ -10,6 +10,9 @@ use contensou::normal::{
 use contensou::shape::{Eccentricity, HamrockDowson, Linear, Newton, Ratio, Shape, Table};
 use contensou::{Error, Real};
 
+#[path = "common/rng.rs"]
+mod rng;
+
 /// One reference row: inputs P, Q, E*, h; outputs c, m1, K, E, B, D, a, b, N, p0.
 #[derive(Clone, Debug)]
 struct Row {
@@ -93,49 +96,39 @@ fn errors<T: Real, M: Eccentricity>(filter: impl Fn(&Row) -> bool, absolute_c: b
     worst
 }
 
-fn report(label: &str, worst: &[f64; 10]) {
+/// Prints the worst errors `worst` under `label` and asserts each within its bound.
+fn within(label: &str, worst: &[f64; 10], bounds: [f64; 10]) {
     let cols: Vec<String> = NAMES
         .iter()
         .zip(worst)
         .map(|(n, e)| format!("{n} {e:.2e}"))
         .collect();
     println!("{label}: {}", cols.join(", "));
+    for (k, (e, bound)) in worst.iter().zip(bounds).enumerate() {
+        assert!(*e <= bound, "{label} {}: {e:e}", NAMES[k]);
+    }
 }
 
 fn all(_: &Row) -> bool {
     true
 }
 
-#[test]
-fn newton_exact_path_f64() {
-    let w = errors::<f64, Newton>(all, false);
-    report("newton f64", &w);
-    for (k, e) in w.iter().enumerate() {
-        assert!(*e <= 1e-12, "newton f64 {}: {e:e}", NAMES[k]);
+/// The Newton path's and the per-step shape table's worst relative errors over the rows
+/// selected by `filter`, each precision against its bound, under `label`.
+fn exact_paths(label: &str, filter: impl Fn(&Row) -> bool + Copy) {
+    for (path, w, bound) in [
+        ("newton f64", errors::<f64, Newton>(filter, false), 1e-12),
+        ("newton f32", errors::<f32, Newton>(filter, false), 2e-5),
+        ("table f64", errors::<f64, Table>(filter, false), 1e-11),
+        ("table f32", errors::<f32, Table>(filter, false), 2e-6),
+    ] {
+        within(&format!("{label}{path}"), &w, [bound; 10]);
     }
 }
 
 #[test]
-fn newton_exact_path_f32() {
-    let w = errors::<f32, Newton>(all, false);
-    report("newton f32", &w);
-    for (k, e) in w.iter().enumerate() {
-        assert!(*e <= 2e-5, "newton f32 {}: {e:e}", NAMES[k]);
-    }
-}
-
-#[test]
-fn table_stated_errors() {
-    let w = errors::<f64, Table>(all, false);
-    report("table f64", &w);
-    for (k, e) in w.iter().enumerate() {
-        assert!(*e <= 1e-11, "table f64 {}: {e:e}", NAMES[k]);
-    }
-    let w = errors::<f32, Table>(all, false);
-    report("table f32", &w);
-    for (k, e) in w.iter().enumerate() {
-        assert!(*e <= 2e-6, "table f32 {}: {e:e}", NAMES[k]);
-    }
+fn newton_and_table_stated_errors() {
+    exact_paths("", all);
 }
 
 /// The thin band g = P/Q ∈ [1e-4, 1e-3] (issue 21: e² from 0.99978 to the contract's end
@@ -148,68 +141,36 @@ fn thin_band_errors() {
     let thin = |r: &Row| r.input[0] / r.input[1] <= 1e-3 * (1.0 + 1e-9);
     let n = rows().iter().filter(|r| thin(r)).count();
     assert!(n >= 300, "{n} rows in the thin band");
-    for (label, w, bound) in [
-        (
-            "thin band newton f64",
-            errors::<f64, Newton>(thin, false),
-            1e-12,
-        ),
-        (
-            "thin band newton f32",
-            errors::<f32, Newton>(thin, false),
-            2e-5,
-        ),
-        (
-            "thin band table f64",
-            errors::<f64, Table>(thin, false),
-            1e-11,
-        ),
-        (
-            "thin band table f32",
-            errors::<f32, Table>(thin, false),
-            2e-6,
-        ),
-    ] {
-        report(&format!("{label} ({n} rows)"), &w);
-        for (k, e) in w.iter().enumerate() {
-            assert!(*e <= bound, "{label} {}: {e:e}", NAMES[k]);
-        }
-    }
+    exact_paths(&format!("thin band ({n} rows) "), thin);
 }
 
-/// Stated maxima over g ∈ [1e-4, 1] (bench-results/hertz.md): absolute on c, m₁; relative
-/// on K, E, B, D, a, b, N, p0.
-fn check_stated<T: Real, M: Eccentricity>(bounds: [f64; 10]) {
-    let w = errors::<T, M>(all, true);
-    report(&format!("{} {}", M::NAME, T::NAME), &w);
-    for k in 0..10 {
-        assert!(
-            w[k] <= bounds[k],
-            "{} {} {}: {:e}",
-            M::NAME,
-            T::NAME,
-            NAMES[k],
-            w[k]
-        );
-    }
+/// Stated maxima over g ∈ [1e-4, 1] (bench-results/hertz.md) of the eccentricity `M`, in
+/// f64 and in f32: absolute on c, m₁; relative on K, E, B, D, a, b, N, p0.
+fn check_stated<M: Eccentricity>(bounds: [f64; 10]) {
+    within(
+        &format!("{} f64", M::NAME),
+        &errors::<f64, M>(all, true),
+        bounds,
+    );
+    within(
+        &format!("{} f32", M::NAME),
+        &errors::<f32, M>(all, true),
+        bounds,
+    );
 }
 
 #[test]
 fn linear_stated_errors() {
-    let bounds = [
+    check_stated::<Linear>([
         0.055, 0.055, 0.124, 0.035, 0.019, 0.156, 0.022, 1.22, 0.123, 0.49,
-    ];
-    check_stated::<f64, Linear>(bounds);
-    check_stated::<f32, Linear>(bounds);
+    ]);
 }
 
 #[test]
 fn hamrock_dowson_stated_errors() {
-    let bounds = [
+    check_stated::<HamrockDowson>([
         0.0162, 0.0162, 0.055, 0.0075, 0.0039, 0.064, 0.0044, 0.309, 0.048, 0.372,
-    ];
-    check_stated::<f64, HamrockDowson>(bounds);
-    check_stated::<f32, HamrockDowson>(bounds);
+    ]);
 }
 
 #[test]
@@ -326,6 +287,28 @@ fn volumetric_force_error_over_g() {
     assert!((at(0.01) + 0.303).abs() < 0.001, "{}", at(0.01));
 }
 
+/// Principal curvatures `[k1, k2]` (f64) in `T`.
+fn principal<T: Real>(k: [f64; 2]) -> Principal<T> {
+    Principal {
+        k1: T::from_f64(k[0]),
+        k2: T::from_f64(k[1]),
+    }
+}
+
+/// The gap z(x, y) = z_A + z_B between body A (principal curvatures `ka` along x, y) and body
+/// B (`kb`, its first direction at angle `w` from x): its quadratic form has the eigenvalue P
+/// along the major axis.
+fn gap(ka: [f64; 2], kb: [f64; 2], w: f64, x: f64, y: f64) -> f64 {
+    let s = |k: [f64; 2], phi: f64| {
+        let (u, v) = (
+            x * phi.cos() + y * phi.sin(),
+            -x * phi.sin() + y * phi.cos(),
+        );
+        0.5 * (k[0] * u * u + k[1] * v * v)
+    };
+    s(ka, 0.0) + s(kb, w)
+}
+
 #[test]
 fn geometry_general_and_constructors() {
     // Crossed cylinders R1 = 0.01, R2 = 0.02 at 90°: P = 1/(2·0.02), Q = 1/(2·0.01).
@@ -337,35 +320,14 @@ fn geometry_general_and_constructors() {
     assert!((c.major_angle().abs() - core::f64::consts::FRAC_PI_2).abs() < 1e-12);
     // General angle: P + Q and Q − P from the closed form.
     let (ka, kb, w) = ([30.0, -5.0], [80.0, 20.0], 0.3f64);
-    let c = Curvatures::from_bodies(
-        Principal {
-            k1: ka[0],
-            k2: ka[1],
-        },
-        Principal {
-            k1: kb[0],
-            k2: kb[1],
-        },
-        w,
-    )
-    .unwrap();
+    let c = Curvatures::from_bodies(principal(ka), principal(kb), w).unwrap();
     let sum = 0.5 * (ka[0] + ka[1] + kb[0] + kb[1]);
     let (da, db) = (ka[0] - ka[1], kb[0] - kb[1]);
     let diff = 0.5 * (da * da + db * db + 2.0 * da * db * (2.0 * w).cos()).sqrt();
     assert!(rel(c.p() + c.q(), sum) < 1e-14 && rel(c.q() - c.p(), diff) < 1e-13);
     // The major axis direction is an eigenvector for P of the gap form.
     let t = c.major_angle();
-    let z = |x: f64, y: f64| {
-        let s = |k: [f64; 2], phi: f64| {
-            let (u, v) = (
-                x * phi.cos() + y * phi.sin(),
-                -x * phi.sin() + y * phi.cos(),
-            );
-            0.5 * (k[0] * u * u + k[1] * v * v)
-        };
-        s(ka, 0.0) + s(kb, w)
-    };
-    assert!(rel(z(t.cos(), t.sin()), c.p()) < 1e-13);
+    assert!(rel(gap(ka, kb, w, t.cos(), t.sin()), c.p()) < 1e-13);
     // Sphere in a spherical cup (internal contact) and sphere–sphere.
     let c = Curvatures::sphere_sphere(0.01, -0.02).unwrap();
     assert!(rel(c.p(), 25.0) < 1e-14 && c.p() == c.q() && c.major_angle() == 0.0);
@@ -465,22 +427,14 @@ fn bad_inputs_are_typed_errors() {
     );
     assert_eq!(Principal::sphere(0.0f64), Err(LengthNotPositive));
     let race = |d: f64, rg: f64, dm: f64, r: Race| Curvatures::ball_race(d, rg, dm, 0.0, r);
-    assert_eq!(
-        race(0.0127, 0.006, 0.065, Race::Inner),
-        Err(CurvatureNotPositive)
-    );
-    assert_eq!(
-        race(0.0127, 0.0066, 0.01, Race::Inner),
-        Err(CurvatureNotPositive)
-    );
-    assert_eq!(
-        race(0.0, 0.0066, 0.065, Race::Outer),
-        Err(LengthNotPositive)
-    );
-    assert_eq!(
-        race(0.0127, -1.0, 0.065, Race::Outer),
-        Err(LengthNotPositive)
-    );
+    for (d, rg, dm, r, e) in [
+        (0.0127, 0.006, 0.065, Race::Inner, CurvatureNotPositive),
+        (0.0127, 0.0066, 0.01, Race::Inner, CurvatureNotPositive),
+        (0.0, 0.0066, 0.065, Race::Outer, LengthNotPositive),
+        (0.0127, -1.0, 0.065, Race::Outer, LengthNotPositive),
+    ] {
+        assert_eq!(race(d, rg, dm, r), Err(e), "{d} {rg} {dm}");
+    }
     assert!(matches!(
         Curvatures::ball_race(0.0127, 0.0066, 0.065, nan, Race::Outer),
         Err(NonFinite(_))
@@ -561,13 +515,8 @@ fn fitted_law_stated_errors() {
 /// eigenvector for P of the gap form; (cos, sin) need not be normalised.
 #[test]
 fn geometry_from_cos_sin_matches_from_bodies() {
-    let mut seed = 7u64;
-    let mut unit = || {
-        seed = seed
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        (seed >> 11) as f64 / (1u64 << 53) as f64
-    };
+    let mut rng = rng::Lcg(7);
+    let mut unit = || rng.next();
     let mut worst = (0.0f64, 0.0f64, 0.0f64);
     let mut n = 0;
     for _ in 0..20_000 {
@@ -575,16 +524,7 @@ fn geometry_from_cos_sin_matches_from_bodies() {
         let ka = [k(unit()), k(unit()) * if unit() < 0.2 { -0.3 } else { 1.0 }];
         let kb = [k(unit()), if unit() < 0.1 { 0.0 } else { k(unit()) }];
         let w = (unit() - 0.5) * 7.0;
-        let (a, b) = (
-            Principal {
-                k1: ka[0],
-                k2: ka[1],
-            },
-            Principal {
-                k1: kb[0],
-                k2: kb[1],
-            },
-        );
+        let (a, b) = (principal(ka), principal(kb));
         let scale = 0.5 + 3.0 * unit();
         let c64 = Curvatures::from_bodies_cos_sin(a, b, scale * w.cos(), scale * w.sin());
         let r64 = Curvatures::from_bodies(a, b, w);
@@ -601,28 +541,14 @@ fn geometry_from_cos_sin_matches_from_bodies() {
         let (ct, st) = c64.major_axis();
         assert!((ct * ct + st * st - 1.0).abs() < 1e-14 && ct >= 0.0);
         // eigenvector for P of the gap form (when the patch is not a circle)
-        let z = |x: f64, y: f64| {
-            let s = |k: [f64; 2], phi: f64| {
-                let (u, v) = (
-                    x * phi.cos() + y * phi.sin(),
-                    -x * phi.sin() + y * phi.cos(),
-                );
-                0.5 * (k[0] * u * u + k[1] * v * v)
-            };
-            s(ka, 0.0) + s(kb, w)
-        };
         if rel(c64.p(), c64.q()) > 1e-6 {
-            worst.0 = worst.0.max(rel(z(ct, st), c64.p()) * c64.p() / c64.q());
+            worst.0 = worst
+                .0
+                .max(rel(gap(ka, kb, w, ct, st), c64.p()) * c64.p() / c64.q());
         }
         let c32 = Curvatures::<f32>::from_bodies_cos_sin(
-            Principal {
-                k1: ka[0] as f32,
-                k2: ka[1] as f32,
-            },
-            Principal {
-                k1: kb[0] as f32,
-                k2: kb[1] as f32,
-            },
+            principal(ka),
+            principal(kb),
             (scale * w.cos()) as f32,
             (scale * w.sin()) as f32,
         );

@@ -5,6 +5,9 @@
 //! them a node of the tables), and its structure: the axes, the mirror image, totality.
 use contensou::friction::rolling::{CreepMatrix, Kalker, creep_matrix};
 
+#[path = "common/rng.rs"]
+mod rng;
+
 /// (own a/b, θ (rad) from the rolling direction to the patch's a axis, ν, K, max error estimate)
 type Row = (f64, f64, f64, [[f64; 3]; 3], f64);
 
@@ -142,13 +145,8 @@ fn mirror_image_flips_the_couplings() {
 /// Finite for any valid input, f64 and f32 (shape, direction, ν over their domains).
 #[test]
 fn total() {
-    let mut s = 1u64;
-    let mut u = || {
-        s = s
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        (s >> 11) as f64 / (1u64 << 53) as f64
-    };
+    let mut rng = rng::Lcg(1);
+    let mut u = || rng.next();
     for _ in 0..20_000 {
         let r = 100f64.powf(u());
         let b = 1e-3 * 1e6f64.powf(u());

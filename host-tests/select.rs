@@ -28,176 +28,72 @@ where
     assert_eq!(TypeId::of::<LawOf<S>>(), TypeId::of::<L>());
 }
 
+/// A table of `resolves` checks, a row each (under its optional `cfg`):
+/// `geometry motion spin budget precision, damping => contact type, law;`.
+macro_rules! resolve {
+    ($($(#[$m:meta])* $p:ident $g:ident $s:ident $b:ident $t:ty, $d:ty => $c:ty, $l:ty;)*) => {
+        $($(#[$m])* resolves::<Scene<$p, $g, $s, $b, $t>, $d, $c, $l>();)*
+    };
+}
+
+/// Every declaration resolves to the contact and law its table row names.
 #[test]
 fn declarations_resolve_to_the_tabled_types() {
     type U = Undamped;
-    // Sphere on plane: circular Hertz, fixed contact.
-    resolves::<
-        Scene<Circular, Fixed, Spin, Coarse, f32>,
-        U,
-        Contact<f32, Hertz<f32>, U, Ellipsoid>,
-        Ellipsoid,
-    >();
-    resolves::<
-        Scene<Circular, Fixed, Spin, ExactGrade, f64>,
-        U,
-        Contact<f64, Hertz<f64>, U, Best>,
-        Best,
-    >();
-    resolves::<
-        Scene<Circular, Fixed, NoSpin, Coarse, f32>,
-        U,
-        Contact<f32, Hertz<f32>, U, Coulomb>,
-        Coulomb,
-    >();
-    resolves::<
-        Scene<Circular, Fixed, NoSpin, ExactGrade, f32>,
-        U,
-        Contact<f32, Hertz<f32>, U, Coulomb>,
-        Coulomb,
-    >();
-    // Ball–race: fixed elliptic contact.
-    resolves::<
-        Scene<Elliptic, Fixed, Spin, Coarse, f64>,
-        U,
-        Contact<f64, Hertz<f64>, U, Ellipsoid>,
-        Ellipsoid,
-    >();
-    resolves::<
-        Scene<Elliptic, Fixed, Spin, ExactGrade, f32>,
-        U,
-        Contact<f32, Hertz<f32>, U, Best>,
-        Best,
-    >();
-    resolves::<
-        Scene<Elliptic, Fixed, NoSpin, ExactGrade, f64>,
-        U,
-        Contact<f64, Hertz<f64>, U, Coulomb>,
-        Coulomb,
-    >();
-    // Varying geometry: the table-per-step contact.
-    resolves::<
-        Scene<Elliptic, Varying, Spin, Coarse, f32>,
-        U,
-        VaryingContact<f32, U, Ellipsoid>,
-        Ellipsoid,
-    >();
-    resolves::<
-        Scene<Elliptic, Varying, Spin, ExactGrade, f64>,
-        U,
-        VaryingContact<f64, U, Best>,
-        Best,
-    >();
-    resolves::<
-        Scene<Elliptic, Varying, NoSpin, Coarse, f32>,
-        U,
-        VaryingContact<f32, U, Coulomb>,
-        Coulomb,
-    >();
-    // The damping law passes through.
     type H = HuntCrossley<f32>;
-    resolves::<
-        Scene<Elliptic, Fixed, Spin, Coarse, f32>,
-        H,
-        Contact<f32, Hertz<f32>, H, Ellipsoid>,
-        Ellipsoid,
-    >();
-    resolves::<
-        Scene<Elliptic, Varying, Spin, ExactGrade, f32>,
-        H,
-        VaryingContact<f32, H, VaryingBestF32>,
-        VaryingBestF32,
-    >();
-}
-
-/// `Rough` resolves to `Coarse`'s types where no micromath twin applies: `f64`, varying
-/// geometry, and `f32` without the feature.
-#[test]
-fn rough_without_a_twin_is_coarse() {
-    type U = Undamped;
-    resolves::<
-        Scene<Circular, Fixed, Spin, Rough, f64>,
-        U,
-        Contact<f64, Hertz<f64>, U, Ellipsoid>,
-        Ellipsoid,
-    >();
-    resolves::<
-        Scene<Elliptic, Fixed, NoSpin, Rough, f64>,
-        U,
-        Contact<f64, Hertz<f64>, U, Coulomb>,
-        Coulomb,
-    >();
-    resolves::<
-        Scene<Elliptic, Varying, Spin, Rough, f32>,
-        U,
-        VaryingContact<f32, U, Ellipsoid>,
-        Ellipsoid,
-    >();
-    #[cfg(not(feature = "micromath"))]
-    {
-        resolves::<
-            Scene<Circular, Fixed, Spin, Rough, f32>,
-            U,
-            Contact<f32, Hertz<f32>, U, Ellipsoid>,
-            Ellipsoid,
-        >();
-        resolves::<
-            Scene<Elliptic, Fixed, NoSpin, Rough, f32>,
-            U,
-            Contact<f32, Hertz<f32>, U, Coulomb>,
-            Coulomb,
-        >();
+    type Vb = VaryingBestF32;
+    #[cfg(feature = "micromath")]
+    type M = HertzMicromath<f32>;
+    resolve! {
+        // Sphere on plane: circular Hertz, fixed contact.
+        Circular Fixed Spin Coarse f32, U => Contact<f32, Hertz<f32>, U, Ellipsoid>, Ellipsoid;
+        Circular Fixed Spin ExactGrade f64, U => Contact<f64, Hertz<f64>, U, Best>, Best;
+        Circular Fixed NoSpin Coarse f32, U => Contact<f32, Hertz<f32>, U, Coulomb>, Coulomb;
+        Circular Fixed NoSpin ExactGrade f32, U => Contact<f32, Hertz<f32>, U, Coulomb>, Coulomb;
+        // Ball–race: fixed elliptic contact.
+        Elliptic Fixed Spin Coarse f64, U => Contact<f64, Hertz<f64>, U, Ellipsoid>, Ellipsoid;
+        Elliptic Fixed Spin ExactGrade f32, U => Contact<f32, Hertz<f32>, U, Best>, Best;
+        Elliptic Fixed NoSpin ExactGrade f64, U => Contact<f64, Hertz<f64>, U, Coulomb>, Coulomb;
+        // Varying geometry: the table-per-step contact.
+        Elliptic Varying Spin Coarse f32, U => VaryingContact<f32, U, Ellipsoid>, Ellipsoid;
+        Elliptic Varying Spin ExactGrade f64, U => VaryingContact<f64, U, Best>, Best;
+        Elliptic Varying NoSpin Coarse f32, U => VaryingContact<f32, U, Coulomb>, Coulomb;
+        // A varying exact-grade contact takes `Best` with or without the feature `micromath`
+        // (its per-step form calls no `ln`), as a fixed one does.
+        Elliptic Varying Spin ExactGrade f32, U => VaryingContact<f32, U, Vb>, Vb;
+        Elliptic Varying NoSpin ExactGrade f32, U => VaryingContact<f32, U, Coulomb>, Coulomb;
+        // The damping law passes through.
+        Elliptic Fixed Spin Coarse f32, H => Contact<f32, Hertz<f32>, H, Ellipsoid>, Ellipsoid;
+        Elliptic Varying Spin ExactGrade f32, H => VaryingContact<f32, H, Vb>, Vb;
+        // `Rough` resolves to `Coarse`'s types where no micromath twin applies: `f64`, varying
+        // geometry, and `f32` without the feature.
+        Circular Fixed Spin Rough f64, U => Contact<f64, Hertz<f64>, U, Ellipsoid>, Ellipsoid;
+        Elliptic Fixed NoSpin Rough f64, U => Contact<f64, Hertz<f64>, U, Coulomb>, Coulomb;
+        Elliptic Varying Spin Rough f32, U => VaryingContact<f32, U, Ellipsoid>, Ellipsoid;
+        #[cfg(not(feature = "micromath"))]
+        Circular Fixed Spin Rough f32, U => Contact<f32, Hertz<f32>, U, Ellipsoid>, Ellipsoid;
+        #[cfg(not(feature = "micromath"))]
+        Elliptic Fixed NoSpin Rough f32, U => Contact<f32, Hertz<f32>, U, Coulomb>, Coulomb;
+        // With the feature, `Rough` fixed `f32` contacts take micromath's √h in Hertz.
+        #[cfg(feature = "micromath")]
+        Circular Fixed Spin Rough f32, U => Contact<f32, M, U, Ellipsoid>, Ellipsoid;
+        #[cfg(feature = "micromath")]
+        Circular Fixed NoSpin Rough f32, U => Contact<f32, M, U, Coulomb>, Coulomb;
+        #[cfg(feature = "micromath")]
+        Elliptic Fixed Spin Rough f32, U => Contact<f32, M, U, Ellipsoid>, Ellipsoid;
+        #[cfg(feature = "micromath")]
+        Elliptic Fixed NoSpin Rough f32, U => Contact<f32, M, U, Coulomb>, Coulomb;
     }
 }
 
-/// A varying exact-grade contact takes `Best` with or without the feature `micromath` (its
-/// per-step form calls no `ln`), as a fixed one does.
-#[test]
-fn varying_exact_law_by_feature() {
-    type U = Undamped;
-    resolves::<
-        Scene<Elliptic, Varying, Spin, ExactGrade, f32>,
-        U,
-        VaryingContact<f32, U, VaryingBestF32>,
-        VaryingBestF32,
-    >();
-    resolves::<
-        Scene<Elliptic, Varying, Spin, ExactGrade, f64>,
-        U,
-        VaryingContact<f64, U, Best>,
-        Best,
-    >();
-    resolves::<
-        Scene<Elliptic, Fixed, Spin, ExactGrade, f32>,
-        U,
-        Contact<f32, Hertz<f32>, U, Best>,
-        Best,
-    >();
-    resolves::<
-        Scene<Elliptic, Varying, NoSpin, ExactGrade, f32>,
-        U,
-        VaryingContact<f32, U, Coulomb>,
-        Coulomb,
-    >();
-}
-
-/// With the feature, `Rough` fixed `f32` contacts take micromath's √h in Hertz.
+/// With the feature, `Rough` fixed `f32` contacts take micromath's √h in Hertz (the contact
+/// rows above) and name it as their normal law.
 #[cfg(feature = "micromath")]
 #[test]
 fn rough_f32_takes_micromath_hertz() {
-    type U = Undamped;
-    type M = HertzMicromath<f32>;
-    resolves::<Scene<Circular, Fixed, Spin, Rough, f32>, U, Contact<f32, M, U, Ellipsoid>, Ellipsoid>(
-    );
-    resolves::<Scene<Circular, Fixed, NoSpin, Rough, f32>, U, Contact<f32, M, U, Coulomb>, Coulomb>(
-    );
-    resolves::<Scene<Elliptic, Fixed, Spin, Rough, f32>, U, Contact<f32, M, U, Ellipsoid>, Ellipsoid>(
-    );
-    resolves::<Scene<Elliptic, Fixed, NoSpin, Rough, f32>, U, Contact<f32, M, U, Coulomb>, Coulomb>(
-    );
     assert_eq!(
         TypeId::of::<NormalOf<Scene<Circular, Fixed, Spin, Rough, f32>>>(),
-        TypeId::of::<M>()
+        TypeId::of::<HertzMicromath<f32>>()
     );
 }
 
@@ -308,24 +204,14 @@ mod rolls {
     #[test]
     fn rolls_resolves_to_the_default_rolling_law() {
         type U = Undamped;
-        resolves::<
-            Scene<Elliptic, Fixed, Rolls, ExactGrade, f64>,
-            U,
-            Rolling<f64, Contact<f64, Hertz<f64>, U, Best>, Table>,
-            Best,
-        >();
-        resolves::<
-            Scene<Circular, Fixed, Rolls, Coarse, f32>,
-            U,
-            Rolling<f32, Contact<f32, Hertz<f32>, U, Best>, Table>,
-            Best,
-        >();
-        resolves::<
-            Scene<Elliptic, Varying, Rolls, Rough, f32>,
-            U,
-            Rolling<f32, VaryingContact<f32, U, Best>, Table>,
-            Best,
-        >();
+        resolve! {
+            Elliptic Fixed Rolls ExactGrade f64, U
+                => Rolling<f64, Contact<f64, Hertz<f64>, U, Best>, Table>, Best;
+            Circular Fixed Rolls Coarse f32, U
+                => Rolling<f32, Contact<f32, Hertz<f32>, U, Best>, Table>, Best;
+            Elliptic Varying Rolls Rough f32, U
+                => Rolling<f32, VaryingContact<f32, U, Best>, Table>, Best;
+        }
         type S = Scene<Elliptic, Fixed, Rolls, Coarse, f64>;
         assert_eq!(<S as Select>::GEOMETRY, "ball-race");
         const { assert!(<S as Select>::SPINS) };

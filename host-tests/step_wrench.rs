@@ -136,7 +136,34 @@ fn bad_step_and_bad_w_are_typed_errors() {
     assert!(InverseMass::single(z).is_ok());
     z[0][1] = 1e-20;
     z[1][0] = 1e-20;
+    // symmetric, but W_01² > W_00·W_11 = 0 (what an underflowed L·Lᵀ diagonal gives)
+    assert_eq!(
+        InverseMass::single(z),
+        Err(Error::InverseMassNotPositiveSemidefinite)
+    );
+    z[1][0] = 0.0; // asymmetric: no tolerance scales at a zero diagonal entry
     assert_eq!(InverseMass::single(z), Err(Error::InverseMassNotSymmetric));
+    // W = L·Lᵀ built in f32 from factors 1e-30 and 1: W_00 = 1e-60 underflows to 0, W_01 =
+    // 1e-30 does not — refused as not positive semidefinite (as rounded, it is not), by
+    // `from_upper` too (never as not symmetric: symmetric by construction)
+    let l = [1e-30f32, 1.0];
+    let u = [
+        l[0] * l[0],
+        l[0] * l[1],
+        0.0,
+        0.0,
+        l[1] * l[1],
+        0.0,
+        0.0,
+        1.0,
+        0.0,
+        1.0,
+    ];
+    assert_eq!(u[0], 0.0);
+    assert_eq!(
+        InverseMass::from_upper(u),
+        Err(Error::InverseMassNotPositiveSemidefinite)
+    );
     // Within the symmetry tolerance (64 ε·√(W_aa W_bb)): accepted and symmetrised.
     let mut w = w_ball();
     w[1][0] = 1e-15 * w[1][1];

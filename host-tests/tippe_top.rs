@@ -3,8 +3,12 @@
 //! Coulomb friction on the big sphere, and the f32 RK4 step stays finite.
 
 use contensou::friction::{Constants, Coulomb, Friction, FrictionLaw, Simplified};
-use contensou::scenes::integrate::{Tolerance, dopri45, rk4};
-use contensou::scenes::tippe_top::{Events, N, Params, Probe, TippeTop};
+use contensou::scenes::integrate::{dopri45, rk4};
+use contensou::scenes::tippe_top::{Events, Params, Probe, TippeTop};
+
+#[path = "common/paper_top.rs"]
+mod paper_top;
+use paper_top::{paper_top, tolerance};
 
 /// Adaptive run of the paper's top to `t_end`: the probes after every accepted step.
 fn run<L: FrictionLaw>(delta: f64, t_end: f64) -> Vec<(f64, Probe<f64>)> {
@@ -13,17 +17,8 @@ fn run<L: FrictionLaw>(delta: f64, t_end: f64) -> Vec<(f64, Probe<f64>)> {
 
 /// [`run`] and the events located between its accepted steps.
 fn run_events<L: FrictionLaw>(delta: f64, t_end: f64) -> (Vec<(f64, Probe<f64>)>, Events<f64>) {
-    let top = TippeTop::new(
-        &Params::paper(),
-        Friction::<f64, L>::with_law(0.3, delta).unwrap(),
-    )
-    .unwrap();
-    let y0 = top.initial_state(0.1, 180.0);
-    let mut atol = [1e-9; N];
-    atol[3..6].fill(1e-6);
-    atol[6..10].fill(1e-8);
-    atol[10..13].fill(1e-4);
-    let tol = Tolerance { rtol: 1e-6, atol };
+    let (top, y0) = paper_top::<f64, L>(delta);
+    let tol = tolerance(1e-6);
     let mut out = vec![(0.0, top.probe(&y0))];
     let mut events = Events::new(&top, 0.0, &y0);
     let (t, _, s) = dopri45(&top, 0.0, y0, t_end, 1e-6, 1e-3, &tol, 1_000_000, |t, y| {
@@ -103,12 +98,7 @@ fn steep_coulomb_does_not_invert_and_keeps_jellett() {
 
 #[test]
 fn f32_rk4_with_a_40us_step_inverts_like_f64() {
-    let top = TippeTop::new(
-        &Params::<f32>::paper(),
-        Friction::<f32, Simplified>::with_law(0.3, 1e-4).unwrap(),
-    )
-    .unwrap();
-    let y0 = top.initial_state(0.1, 180.0);
+    let (top, y0) = paper_top::<f32, Simplified>(1e-4);
     let mut events = Events::new(&top, 0.0, &y0);
     rk4(&top, 0.0, y0, 4e-5, 50_000, |_, t, y| {
         events.update(&top, t, y)
@@ -123,12 +113,7 @@ fn f32_rk4_with_a_40us_step_inverts_like_f64() {
 
 #[test]
 fn f32_rk4_resolves_the_contact_and_stays_finite() {
-    let top = TippeTop::new(
-        &Params::<f32>::paper(),
-        Friction::<f32, Simplified>::with_law(0.3, 1e-4).unwrap(),
-    )
-    .unwrap();
-    let y0 = top.initial_state(0.1, 180.0);
+    let (top, y0) = paper_top::<f32, Simplified>(1e-4);
     let e0 = top.probe(&y0).energy;
     let mut n_max = 0.0f32;
     let y = rk4(&top, 0.0, y0, 1e-5, 2_000, |_, _, y| {

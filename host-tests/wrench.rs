@@ -10,6 +10,10 @@ use contensou::normal::{CompressionDamping, Hertz, Modulus, Undamped};
 use contensou::shape::Newton;
 use std::f64::consts::PI;
 
+#[macro_use]
+#[path = "common/each.rs"]
+mod each;
+
 fn rel(got: f64, want: f64) -> f64 {
     ((got - want) / want).abs()
 }
@@ -166,13 +170,7 @@ fn contact_loss_and_rebound_give_zero_wrench() {
 /// Passivity and finiteness of the full wrench over a seeded random sweep of states, both
 /// precisions, fixed and varying geometry: F·v_P + T_z·ω ≤ 0.
 fn passive_sweep<T: Real, L: FrictionLaw>() {
-    let mut state = 0x9e37_79b9_7f4a_7c15_u64;
-    let mut next = move || {
-        state ^= state << 13;
-        state ^= state >> 7;
-        state ^= state << 17;
-        (state >> 11) as f64 / (1u64 << 53) as f64
-    };
+    let mut next = xorshift64(0x9e37_79b9_7f4a_7c15);
     let friction = Friction::<T, L>::with_law(T::from_f64(0.25), T::from_f64(1e-4)).unwrap();
     let modulus = Modulus::new(T::from_f64(1e11)).unwrap();
     let varying = VaryingContact::new(modulus, Undamped, friction);
@@ -205,10 +203,7 @@ fn passive_sweep<T: Real, L: FrictionLaw>() {
 
 #[test]
 fn full_wrench_is_passive_and_finite() {
-    passive_sweep::<f64, Simplified>();
-    passive_sweep::<f32, Simplified>();
-    passive_sweep::<f64, Best>();
-    passive_sweep::<f32, Best>();
+    each!(passive_sweep, [f64, f32], [Simplified, Best]);
 }
 
 include!("../benches/friction_set.rs");
@@ -267,8 +262,9 @@ fn unclamped_step_is_the_clamped_call<T: Real, L: FrictionLaw>() {
 
 #[test]
 fn unclamped_step_equals_the_clamped_call() {
-    unclamped_step_is_the_clamped_call::<f32, Simplified>();
-    unclamped_step_is_the_clamped_call::<f32, Best>();
-    unclamped_step_is_the_clamped_call::<f64, Simplified>();
-    unclamped_step_is_the_clamped_call::<f64, Best>();
+    each!(
+        unclamped_step_is_the_clamped_call,
+        [f32, f64],
+        [Simplified, Best]
+    );
 }

@@ -35,20 +35,35 @@ STEPS = contensou.INPUTS[6:]
 DTYPE = {"f32": np.float32, "f64": np.float64}
 
 
-def best_time(call, budget):
-    """Minimum CPU time of `call()` over repeats filling `budget` seconds (at least 2 calls,
-    one if a call exceeds the budget)."""
+def best_time(call, budget, clock=time.thread_time):
+    """Minimum time of `call()` on `clock` (default: the calling thread's CPU time) over
+    repeats filling `budget` seconds (at least 2 calls, one if a call exceeds the budget)."""
     times = []
     spent = 0.0
     while len(times) < 2 or spent < budget:
-        t0 = time.thread_time()
+        t0 = clock()
         call()
-        dt = time.thread_time() - t0
+        dt = clock() - t0
         times.append(dt)
         spent += dt
         if dt > budget:
             break
     return min(times)
+
+
+def numpy_beside_contensou(sizes, budget):
+    """Pure numpy's simplified law beside contensou's simplified and best on `CIRCLE` (a Contact
+    built once), for each size and precision (rows from steps_of, seed 3): yields (rows,
+    precision, the step columns, numpy's time, {law: (contensou's time, its result)})."""
+    for n in sizes:
+        for precision in ["f64", "f32"]:
+            _, st = steps_of(n, precision, seed=3)
+            t_np = best_time(lambda: numpy_simplified(CIRCLE, *st), budget)
+            res = {}
+            for law in ["simplified", "best"]:
+                c = contensou.Contact(**CIRCLE, law=law, precision=precision)
+                res[law] = (best_time(lambda: c.wrench(*st), budget), c.wrench(*st))
+            yield n, precision, st, t_np, res
 
 
 def numpy_simplified(spec, h, hdot, vx, vy, omega):
@@ -190,25 +205,18 @@ def main():
     out("")
     out("| rows | precision | numpy simplified | contensou simplified | contensou best | numpy max dev F / T_z |")
     out("|---:|---|---:|---:|---:|---|")
-    for n in sizes:
-        for precision in ["f64", "f32"]:
-            _, st = steps_of(n, precision, seed=3)
-            t_np = best_time(lambda: numpy_simplified(CIRCLE, *st), budget)
-            got = numpy_simplified(CIRCLE, *st)
-            res = {}
-            for law in ["simplified", "best"]:
-                c = contensou.Contact(**CIRCLE, law=law, precision=precision)
-                res[law] = (best_time(lambda: c.wrench(*st), budget), c.wrench(*st))
-            ref = res["simplified"][1]
-            touch = ref["N"] > 0
-            g = {k: v[touch].astype(np.float64) for k, v in got.items()}
-            r = {k: v[touch].astype(np.float64) for k, v in ref.items()}
-            fn = CIRCLE["f"] * r["N"]
-            dev_f = np.max(np.hypot(g["Fx"] - r["Fx"], g["Fy"] - r["Fy"]) / fn)
-            dev_t = np.max(np.abs(g["Tz"] - r["Tz"]) / (fn * r["a"]))
-            out(f"| {n:,} | {precision} | {fmt(rate(n, t_np))} | {fmt(rate(n, res['simplified'][0]))} "
-                f"| {fmt(rate(n, res['best'][0]))} | {dev_f:.1e} / {dev_t:.1e} |")
-        print(f"numpy {n}", file=sys.stderr)
+    for n, precision, st, t_np, res in numpy_beside_contensou(sizes, budget):
+        got = numpy_simplified(CIRCLE, *st)
+        ref = res["simplified"][1]
+        touch = ref["N"] > 0
+        g = {k: v[touch].astype(np.float64) for k, v in got.items()}
+        r = {k: v[touch].astype(np.float64) for k, v in ref.items()}
+        fn = CIRCLE["f"] * r["N"]
+        dev_f = np.max(np.hypot(g["Fx"] - r["Fx"], g["Fy"] - r["Fy"]) / fn)
+        dev_t = np.max(np.abs(g["Tz"] - r["Tz"]) / (fn * r["a"]))
+        out(f"| {n:,} | {precision} | {fmt(rate(n, t_np))} | {fmt(rate(n, res['simplified'][0]))} "
+            f"| {fmt(rate(n, res['best'][0]))} | {dev_f:.1e} / {dev_t:.1e} |")
+        print(f"numpy {n} {precision}", file=sys.stderr)
     out("")
     text = "\n".join(lines) + "\n"
     if args.out == "-":

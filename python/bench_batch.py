@@ -22,18 +22,12 @@ import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 import contensou  # noqa: E402
-from bench import CIRCLE, best_time, numpy_simplified, steps_of  # noqa: E402
+from bench import CIRCLE, best_time, numpy_beside_contensou, steps_of  # noqa: E402
 
 
 def wall(call, budget):
-    times, spent = [], 0.0
-    while len(times) < 2 or spent < budget:
-        t0 = time.perf_counter()
-        call()
-        dt = time.perf_counter() - t0
-        times.append(dt)
-        spent += dt
-    return min(times)
+    """Minimum wall-clock time of `call()` (bench.best_time on time.perf_counter)."""
+    return best_time(call, budget, clock=time.perf_counter)
 
 
 def main():
@@ -49,16 +43,10 @@ def main():
     print()
     print("| rows | precision | numpy simplified | contensou simplified | contensou best | best / numpy |")
     print("|---:|---|---:|---:|---:|---:|")
-    for n in sizes:
-        for precision in ["f64", "f32"]:
-            _, st = steps_of(n, precision, seed=3)
-            t_np = best_time(lambda: numpy_simplified(CIRCLE, *st), budget)
-            t = {}
-            for law in ["simplified", "best"]:
-                c = contensou.Contact(**CIRCLE, law=law, precision=precision)
-                t[law] = best_time(lambda: c.wrench(*st), budget)
-            print(f"| {n:,} | {precision} | {n / t_np / 1e6:.1f} M | {n / t['simplified'] / 1e6:.1f} M "
-                  f"| {n / t['best'] / 1e6:.1f} M | {t_np / t['best']:.2f}× |")
+    for n, precision, _, t_np, res in numpy_beside_contensou(sizes, budget):
+        t = {law: time for law, (time, _) in res.items()}
+        print(f"| {n:,} | {precision} | {n / t_np / 1e6:.1f} M | {n / t['simplified'] / 1e6:.1f} M "
+              f"| {n / t['best'] / 1e6:.1f} M | {t_np / t['best']:.2f}× |")
     print()
     n = sizes[-1]
     cores = os.cpu_count() or 1

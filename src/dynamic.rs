@@ -221,6 +221,36 @@ pub struct Step<T> {
     pub omega: T,
 }
 
+/// The contact and the step of a row of the contract's [`INPUTS`] columns, in that order.
+///
+/// ```
+/// use contensou::dynamic::{INPUTS, from_inputs};
+///
+/// let (spec, step) = from_inputs(core::array::from_fn(|i| i as f64));
+/// assert_eq!((INPUTS[0], INPUTS[5], INPUTS[6], INPUTS[10]), ("P", "delta", "h", "omega"));
+/// assert_eq!((spec.p, spec.delta, step.h, step.omega), (0.0, 5.0, 6.0, 10.0));
+/// ```
+pub fn from_inputs<T: Copy>(row: [T; 11]) -> (Spec<T>, Step<T>) {
+    let [p, q, estar, cd, f, delta, h, hdot, vx, vy, omega] = row;
+    (
+        Spec {
+            p,
+            q,
+            estar,
+            cd,
+            f,
+            delta,
+        },
+        Step {
+            h,
+            hdot,
+            vx,
+            vy,
+            omega,
+        },
+    )
+}
+
 impl<T: Real> Step<T> {
     /// `h, hdot` and the slip, each finite (any NaN or ±∞ is [`Error::NonFinite`] naming the
     /// column).
@@ -487,6 +517,19 @@ pub struct DynContact<T: Real> {
     pub(crate) contact: ByLaw<T>,
 }
 
+/// The friction of law `L` with coefficient `f` and regularization speed `delta`; errors name
+/// `delta` ([`Error::RegularizationSpeedNegative`]) or `f`.
+fn friction_of<T: Real, L: FrictionLaw>(f: T, delta: T) -> Result<Friction<T, L>, Invalid> {
+    Friction::with_law(f, delta).map_err(|error| Invalid {
+        column: if matches!(error, Error::RegularizationSpeedNegative) {
+            "delta"
+        } else {
+            "f"
+        },
+        error,
+    })
+}
+
 impl<T: Real> DynContact<T> {
     /// Validates the contact columns and builds the contact. Errors name the column:
     /// `P`/`Q` ([`Error::NonFinite`], [`Error::CurvaturesNotOrdered`],
@@ -514,28 +557,13 @@ impl<T: Real> DynContact<T> {
         let delta = at("delta", finite(spec.delta, "delta"))?;
         macro_rules! build {
             ($variant:ident) => {{
-                let friction = Friction::with_law(f, delta).map_err(|error| Invalid {
-                    column: if matches!(error, Error::RegularizationSpeedNegative) {
-                        "delta"
-                    } else {
-                        "f"
-                    },
-                    error,
-                })?;
+                let friction = friction_of(f, delta)?;
                 ByLaw::$variant(Formed::new(form, &curvatures, estar, damping, friction)?)
             }};
         }
         macro_rules! roll {
             ($variant:ident) => {{
-                let friction =
-                    Friction::<T, Best>::with_law(f, delta).map_err(|error| Invalid {
-                        column: if matches!(error, Error::RegularizationSpeedNegative) {
-                            "delta"
-                        } else {
-                            "f"
-                        },
-                        error,
-                    })?;
+                let friction = friction_of::<T, Best>(f, delta)?;
                 let elasticity = rolling.elasticity(estar.get())?;
                 ByLaw::$variant(RollingFormed::new(
                     form,

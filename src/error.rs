@@ -56,11 +56,12 @@ pub enum Error {
     StepNotPositive,
     /// An inverse-mass matrix W ([`crate::step::InverseMass`]) is not symmetric within the
     /// stated tolerance: |W_ij − W_ji| > [`crate::step::SYMMETRY_TOLERANCE`]·ε·√(W_ii·W_jj), or
-    /// W_ij ≠ 0 in the row of a zero diagonal entry.
+    /// W_ij ≠ W_ji in the row of a zero diagonal entry.
     InverseMassNotSymmetric,
     /// An inverse-mass matrix W ([`crate::step::InverseMass`]) is not positive semidefinite
-    /// within the stated tolerance (a negative diagonal entry, or an LDLᵀ pivot of the
-    /// diagonally scaled matrix below −[`crate::step::PSD_TOLERANCE`]·ε).
+    /// within the stated tolerance (a negative diagonal entry, W_ij = W_ji ≠ 0 in the row of a
+    /// zero diagonal entry, or an LDLᵀ pivot of the diagonally scaled matrix below
+    /// −[`crate::step::PSD_TOLERANCE`]·ε).
     InverseMassNotPositiveSemidefinite,
     /// A body's mass ([`crate::step::Body`]) is ≤ 0.
     MassNotPositive,

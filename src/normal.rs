@@ -533,20 +533,32 @@ impl<T: Real> From<Hertz<T>> for HertzMicromath<T> {
     }
 }
 
-#[cfg(feature = "micromath")]
-#[cfg_attr(docsrs, doc(cfg(feature = "micromath")))]
-impl<T: Real> NormalLaw<T> for HertzMicromath<T> {
-    const NON_NEGATIVE: bool = true;
+/// `NormalLaw` for a law that is a [`Hertz`] (its field `.0`) built another way: the patch
+/// by `Hertz::patch_with` over the square root's backend `$backend`, the stiffness k_H.
+macro_rules! over_hertz {
+    ($(#[$m:meta])* $law:ident, $backend:ty) => {
+        $(#[$m])*
+        impl<T: Real> NormalLaw<T> for $law<T> {
+            const NON_NEGATIVE: bool = true;
 
-    #[inline]
-    fn patch(&self, h: T) -> Patch<T> {
-        self.0.patch_with::<crate::math::Micromath>(h)
-    }
-    #[inline(always)]
-    fn stiffness(&self) -> T {
-        self.0.k_h
-    }
+            #[inline]
+            fn patch(&self, h: T) -> Patch<T> {
+                self.0.patch_with::<$backend>(h)
+            }
+            #[inline(always)]
+            fn stiffness(&self) -> T {
+                self.0.k_h
+            }
+        }
+    };
 }
+
+over_hertz!(
+    #[cfg(feature = "micromath")]
+    #[cfg_attr(docsrs, doc(cfg(feature = "micromath")))]
+    HertzMicromath,
+    crate::math::Micromath
+);
 
 /// The volumetric (eccentricity-free) law — **not** Hertz for P ≠ Q: the Hertz circle with
 /// the Gaussian radius R_e = 1/(2√(PQ)) (a law built only from the overlap volume
@@ -599,18 +611,7 @@ impl<T: Real> Volumetric<T> {
     }
 }
 
-impl<T: Real> NormalLaw<T> for Volumetric<T> {
-    const NON_NEGATIVE: bool = true;
-
-    #[inline]
-    fn patch(&self, h: T) -> Patch<T> {
-        self.0.patch(h)
-    }
-    #[inline(always)]
-    fn stiffness(&self) -> T {
-        self.0.k_h
-    }
-}
+over_hertz!(Volumetric, Libm);
 
 /// A fitted, eccentricity-free Hertz law: no eccentricity solve, no elliptic integral, no
 /// table — three fixed polynomials in y = 1 − g^{1/8} (g = P/Q), fitted to exact Hertz.
@@ -677,15 +678,4 @@ impl<T: Real> Fitted<T> {
     }
 }
 
-impl<T: Real> NormalLaw<T> for Fitted<T> {
-    const NON_NEGATIVE: bool = true;
-
-    #[inline]
-    fn patch(&self, h: T) -> Patch<T> {
-        self.0.patch(h)
-    }
-    #[inline(always)]
-    fn stiffness(&self) -> T {
-        self.0.k_h
-    }
-}
+over_hertz!(Fitted, Libm);

@@ -158,9 +158,30 @@ pub trait Real:
     }
 }
 
+/// `Real` constructors `name(x: From) -> Self` that convert with `as` into `$t`.
+macro_rules! from_as {
+    ($t:ident: $($name:ident($from:ty)),*) => {$(
+        #[inline(always)]
+        fn $name(x: $from) -> Self {
+            x as $t
+        }
+    )*};
+}
+
+/// `Real` methods that forward to a libm function: `name(argument) -> return = function;`
+/// (the argument, if any, is a second `Self`).
+macro_rules! libm_forward {
+    ($($name:ident($($arg:ident)?) -> $ret:ty = $f:ident;)*) => {$(
+        #[inline(always)]
+        fn $name(self $(, $arg: Self)?) -> $ret {
+            libm::$f(self $(, $arg)?)
+        }
+    )*};
+}
+
 macro_rules! impl_real {
     ($t:ident, $bits:ident, $name:literal, $own:tt, $sqrt:path,
-     $abs:ident, $fmin:ident, $fmax:ident, $copysign:ident, $ln:ident, $exp:ident, $sin:ident,
+     $abs:ident, $copysign:ident, $ln:ident, $exp:ident, $sin:ident,
      $cos:ident, $sincos:ident, $atan2:ident, $cbrt:ident, $hypot:ident, $floor:ident) => {
         impl Real for $t {
             const NAME: &'static str = $name;
@@ -188,21 +209,10 @@ macro_rules! impl_real {
             fn from_base(x: Self) -> Self {
                 x
             }
-            #[inline(always)]
-            fn from_f64(x: f64) -> Self {
-                x as $t
-            }
-            #[inline(always)]
-            fn from_f32(x: f32) -> Self {
-                x as $t
-            }
+            from_as!($t: from_f64(f64), from_f32(f32), from_usize(usize));
             #[inline(always)]
             fn to_f64(self) -> f64 {
                 self as f64
-            }
-            #[inline(always)]
-            fn from_usize(i: usize) -> Self {
-                i as $t
             }
             #[inline(always)]
             fn trunc_usize(self) -> usize {
@@ -211,10 +221,6 @@ macro_rules! impl_real {
             #[inline(always)]
             fn sqrt(self) -> Self {
                 $sqrt(self)
-            }
-            #[inline(always)]
-            fn abs(self) -> Self {
-                libm::$abs(self)
             }
             #[inline(always)]
             fn min(self, other: Self) -> Self {
@@ -233,45 +239,18 @@ macro_rules! impl_real {
                     self
                 }
             }
-            #[inline(always)]
-            fn copysign(self, sign: Self) -> Self {
-                libm::$copysign(self, sign)
-            }
-            #[inline(always)]
-            fn ln(self) -> Self {
-                libm::$ln(self)
-            }
-            #[inline(always)]
-            fn exp(self) -> Self {
-                libm::$exp(self)
-            }
-            #[inline(always)]
-            fn sin(self) -> Self {
-                libm::$sin(self)
-            }
-            #[inline(always)]
-            fn cos(self) -> Self {
-                libm::$cos(self)
-            }
-            #[inline(always)]
-            fn sin_cos(self) -> (Self, Self) {
-                libm::$sincos(self)
-            }
-            #[inline(always)]
-            fn atan2(self, x: Self) -> Self {
-                libm::$atan2(self, x)
-            }
-            #[inline(always)]
-            fn cbrt(self) -> Self {
-                libm::$cbrt(self)
-            }
-            #[inline(always)]
-            fn hypot(self, other: Self) -> Self {
-                libm::$hypot(self, other)
-            }
-            #[inline(always)]
-            fn floor(self) -> Self {
-                libm::$floor(self)
+            libm_forward! {
+                abs() -> Self = $abs;
+                copysign(sign) -> Self = $copysign;
+                ln() -> Self = $ln;
+                exp() -> Self = $exp;
+                sin() -> Self = $sin;
+                cos() -> Self = $cos;
+                sin_cos() -> (Self, Self) = $sincos;
+                atan2(x) -> Self = $atan2;
+                cbrt() -> Self = $cbrt;
+                hypot(other) -> Self = $hypot;
+                floor() -> Self = $floor;
             }
             #[inline(always)]
             fn is_finite(self) -> bool {
@@ -295,8 +274,6 @@ impl_real!(
     0,
     crate::hw_sqrt::sqrtf,
     fabsf,
-    fminf,
-    fmaxf,
     copysignf,
     logf,
     expf,
@@ -315,8 +292,6 @@ impl_real!(
     1,
     libm::sqrt,
     fabs,
-    fmin,
-    fmax,
     copysign,
     log,
     exp,

@@ -314,37 +314,31 @@ pub trait Budget {
     type VaryingSpinLaw<T: Precision>: FrictionLaw;
 }
 
-impl Budget for Rough {
-    const NAME: &'static str = "rough";
-    const NORMAL: f64 = ROUGH_NORMAL_BOUND;
-    const FORCE: f64 = 0.25;
-    const TORQUE: f64 = 0.17;
-    const NOSPIN: f64 = ROUGH_NORMAL_BOUND;
-    type Normal<T: Precision> = T::FastHertz;
-    type SpinLaw = Ellipsoid;
-    type VaryingSpinLaw<T: Precision> = Ellipsoid;
+/// The budgets' rows: `Budget { NAME, NORMAL, FORCE, TORQUE, NOSPIN, Normal<T>, SpinLaw,
+/// VaryingSpinLaw<T> }` (each named in the trait above).
+macro_rules! budgets {
+    ($($b:ident: $name:literal, $normal:expr, $force:expr, $torque:expr, $nospin:expr,
+        $fixed:ty, $spin:ty, $varying:ty;)*) => {$(
+        impl Budget for $b {
+            const NAME: &'static str = $name;
+            const NORMAL: f64 = $normal;
+            const FORCE: f64 = $force;
+            const TORQUE: f64 = $torque;
+            const NOSPIN: f64 = $nospin;
+            type Normal<T: Precision> = $fixed;
+            type SpinLaw = $spin;
+            type VaryingSpinLaw<T: Precision> = $varying;
+        }
+    )*};
 }
 
-impl Budget for Coarse {
-    const NAME: &'static str = "coarse";
-    const NORMAL: f64 = NORMAL_BOUND;
-    const FORCE: f64 = 0.25;
-    const TORQUE: f64 = 0.15;
-    const NOSPIN: f64 = NOSPIN_BOUND;
-    type Normal<T: Precision> = Hertz<T>;
-    type SpinLaw = Ellipsoid;
-    type VaryingSpinLaw<T: Precision> = Ellipsoid;
-}
-
-impl Budget for ExactGrade {
-    const NAME: &'static str = "exact";
-    const NORMAL: f64 = NORMAL_BOUND;
-    const FORCE: f64 = 5e-4;
-    const TORQUE: f64 = 5e-4;
-    const NOSPIN: f64 = NOSPIN_BOUND;
-    type Normal<T: Precision> = Hertz<T>;
-    type SpinLaw = Best;
-    type VaryingSpinLaw<T: Precision> = T::FastBest;
+budgets! {
+    Rough: "rough", ROUGH_NORMAL_BOUND, 0.25, 0.17, ROUGH_NORMAL_BOUND,
+        T::FastHertz, Ellipsoid, Ellipsoid;
+    Coarse: "coarse", NORMAL_BOUND, 0.25, 0.15, NOSPIN_BOUND,
+        Hertz<T>, Ellipsoid, Ellipsoid;
+    ExactGrade: "exact", NORMAL_BOUND, 5e-4, 5e-4, NOSPIN_BOUND,
+        Hertz<T>, Best, T::FastBest;
 }
 
 /// Whether the contact spins: [`Spin`] takes the budget's law, [`NoSpin`] plain Coulomb.

@@ -17,27 +17,15 @@ W_lin and W_fs come from the library itself
 import csv, io, itertools, math, pathlib, sys
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
-from rolling_ref import evaluate, patch, read, root  # noqa: E402
+from rolling_ref import creep_coefficients, normalised, read, root  # noqa: E402
 
 rows = read(root / "tools/data/rolling_ref.csv")
 
 shapes = sorted({(r[1], r[2]) for r in rows})
-unit = []
-for aob, nu in shapes:
-    a, b = patch(aob)
-    unit += [(a, b, 1, nu, 1, 1, 1, 1, 0, 0), (a, b, 1, nu, 1, 1, 1, 0, 1, 0), (a, b, 1, nu, 1, 1, 1, 0, 0, 1)]
-lin = evaluate("linear", unit)
-coef = {}
-for k, key in enumerate(shapes):
-    x, y, p = lin[3 * k: 3 * k + 3]
-    coef[key] = (-x[0], -y[1], -p[1], -p[2])  # C11, C22, C23, C33
+coef = creep_coefficients(shapes)  # C11, C22, C23, C33
 
 creep = [r for r in rows if r[0] in ("xi", "eta", "phi", "combined", "fullslip")]
-inputs = []
-for fam, aob, nu, nl, xi, eta, phic, *_ in creep:
-    a, b = patch(aob)
-    inputs.append((a, b, 1, nu, 1, nl, 1, xi, eta, phic))
-fs = [tuple(v / r[3] for v in w) for w, r in zip(evaluate("full-slip", inputs), creep)]
+fs = normalised("full-slip", creep)
 
 SH = [0.2, 0.5, 1.0, 2.0, 5.0]
 

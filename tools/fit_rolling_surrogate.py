@@ -143,6 +143,22 @@ def fit_base(lin, fs, ref):
     return min(fits, key=lambda r: r.fun).x
 
 
+def spin_share(d):
+    """σ = φ²/(φ² + R²φ²) = 1/(1 + R²), R the elliptic radius of the spin pole (the point where the rigid
+    slip (ξ − φy, η + φx) vanishes: x = −η/φ, y = ξ/φ) in the patch's own axes (R = 1 on the patch's edge):
+    1 for pure spin, ½ with the pole on the edge, → 0 without spin. With the pole inside the patch a stuck
+    zone around it survives any creepage and the wrench approaches full slip slowly (a 1/ρ tail); with
+    the pole outside the patch translation-like creep saturates at a finite ρ ≈ 3."""
+    s = d["s"]
+    a0 = np.sqrt(d["aob"])
+    ct, st = np.cos(d["theta"]), np.sin(d["theta"])
+    x, y = -s[:, 1], s[:, 0]  # the pole times φ
+    u, v = x * ct + y * st, -x * st + y * ct
+    q = u * u / a0 ** 2 + v * v * a0 ** 2
+    phi2 = s[:, 2] ** 2
+    return phi2 / np.maximum(phi2 + q, 1e-300)
+
+
 def features(d, lin, rho, fs):
     """x: the correction's features; fac: the factor that keeps both limits."""
     r = np.where(d["aob"] >= 1.0, d["aob"], 1.0 / d["aob"])
@@ -153,6 +169,8 @@ def features(d, lin, rho, fs):
                          u[:, 0], u[:, 1], u[:, 2], tau])
     if "--fs-features" in sys.argv:  # + the full slip's wrench
         x = np.column_stack([x, fs])
+    if "--sigma" in sys.argv:  # + the spin pole's share 2σ − 1 (see spin_share)
+        x = np.column_stack([x, 2.0 * spin_share(d) - 1.0])
     if "--no-full-slip-factor" in sys.argv:  # diagnostic only: not exact at full slip
         return x, tau ** 2
     return x, tau ** 2 * (1.0 - tau)
@@ -278,6 +296,37 @@ def family_tables(ho, laws):
     return out
 
 
+def diagnose(path, prm):
+    """The creep curves of a family file (tools/data/rolling_diag_families.csv: magnitudes along one
+    held-out point's direction): per point ρ, the exact wrench and the base's, |W|/|W_fs| (the exact
+    wrench's length in units of the full slip's: > 1 is an overshoot past |W_fs|), its angle to W_fs
+    and the linear wrench's, and the exact part perpendicular to W_fs over the linear one's (h)."""
+    fam = read([path])
+    tags = [l.split(",")[0] for l in pathlib.Path(path).read_text().splitlines()
+            if l and l[0] != "#" and not l.startswith("family")]
+    p = prepare(fam)
+    finish(fam, p, prm)
+    sig = spin_share(fam)
+    out, cur = [], None
+    ang = lambda u, v: math.degrees(math.acos(max(-1.0, min(1.0, u @ v / np.linalg.norm(u) / np.linalg.norm(v)))))
+    for i, tag in enumerate(tags):
+        name = tag.split("_")[0]
+        ref, b, fs, lin = fam["ref"][i], p["base"][i], p["fs"][i], p["lin"][i]
+        mf = np.linalg.norm(fs)
+        uf = fs / mf
+        if name != cur:
+            cur = name
+            out += ["", f"{name}: a/b = {fam['aob'][i]:.2f}, θ = {math.degrees(fam['theta'][i]):.0f}°, ν = {fam['nu'][i]:.2f}, "
+                    f"σ = {sig[i]:.2f}, W_fs = ({fs[0]:+.3f}, {fs[1]:+.3f}, {fs[2]:+.3f}), angle(W_lin, W_fs) = {ang(lin, fs):.0f}°", "",
+                    "| ρ | exact F_x, F_y, M_z | base | ΔF / ΔM (base) | exact abs(W)/abs(W_fs) | exact ∠W_fs (°) | h |",
+                    "|---|---|---|---|---|---|---|"]
+        pl, pe = lin - (lin @ uf) * uf, ref - (ref @ uf) * uf
+        out.append(f"| {p['rho'][i]:.2f} | {ref[0]:+.3f}, {ref[1]:+.3f}, {ref[2]:+.3f} | {b[0]:+.3f}, {b[1]:+.3f}, {b[2]:+.3f} | "
+                   f"{math.hypot(*(ref - b)[:2]):.3f} / {abs(ref[2] - b[2]):.3f} | {np.linalg.norm(ref) / mf:.3f} | "
+                   f"{ang(ref, fs):.1f} | {np.linalg.norm(pe) / max(np.linalg.norm(pl), 1e-300):.4f} |")
+    return out
+
+
 def committed_laws(n):
     """The library's laws on the held-out points (tools/data/rolling_heldout_laws.csv)."""
     rows = [l.split(",") for l in (root / "tools/data/rolling_heldout_laws.csv").read_text().splitlines()
@@ -338,6 +387,9 @@ def main():
         laws = committed_laws(len(ho["aob"]))
         laws.update({"base": pho["base"], "prototype": fit_ho})
         lines += family_tables(ho, laws)
+    if "--diagnose" in sys.argv:
+        lines += ["", "## Creep curves through the worst held-out points of the base (diagnosis; never fitted on)"]
+        lines += diagnose((args("--diagnose", []) or [str(root / "tools/data/rolling_diag_families.csv")])[0], prm)
     print("\n".join(lines))
     if "--md" in sys.argv:
         title = ["# Rolling surrogate prototype against the held-out set", "",

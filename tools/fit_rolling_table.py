@@ -43,7 +43,7 @@ ratios) and the full-slip family. All from tools/rolling_exact (examples `midpoi
 import math, pathlib, sys
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
-from rolling_ref import evaluate, patch, read, root  # noqa: E402
+from rolling_ref import creep_coefficients, evaluate, law_inputs, normalised, read, root  # noqa: E402
 
 out_rs = root / "src/friction/rolling/table_data.rs"
 data = root / "tools/data"
@@ -77,23 +77,11 @@ sets = {
 }
 
 shapes = sorted({(r[1], r[2]) for r in ref})
-unit = []
-for aob, nu in shapes:
-    a, b = patch(aob)
-    unit += [(a, b, 1, nu, 1, 1, 1, 1, 0, 0), (a, b, 1, nu, 1, 1, 1, 0, 1, 0), (a, b, 1, nu, 1, 1, 1, 0, 0, 1)]
-lin = evaluate("linear", unit)
-coef = {}
-for k, key in enumerate(shapes):
-    x, y, p = lin[3 * k: 3 * k + 3]
-    coef[key] = (-x[0], -y[1], -p[1])  # C11, C22, C23
+coef = {key: c[:3] for key, c in creep_coefficients(shapes).items()}  # C11, C22, C23
 
 
 def with_blend(rows):
-    inputs = []
-    for fam, aob, nu, nl, xi, eta, phic, *_ in rows:
-        a, b = patch(aob)
-        inputs.append((a, b, 1, nu, 1, nl, 1, xi, eta, phic))
-    return [(r, tuple(v / r[3] for v in w)) for r, w in zip(rows, evaluate("blend", inputs))]
+    return list(zip(rows, normalised("blend", rows)))
 
 
 blended = {k: with_blend(v) for k, v in sets.items()}
@@ -461,11 +449,7 @@ def compare_laws():
     print("law        set        " + " ".join(f"{f:>13s}" for f in cols))
     for law_name in laws:
         for set_name, rows in groups.items():
-            inputs = []
-            for fam, aob, nu, nl, xi, eta, phic, *_ in rows:
-                a, b = patch(aob)
-                inputs.append((a, b, 1, nu, 1, nl, 1, xi, eta, phic))
-            got = evaluate("table" if law_name == "table-old" else law_name, inputs,
+            got = evaluate("table" if law_name == "table-old" else law_name, law_inputs(rows),
                            exe if law_name == "table-old" else None)
             err = {}
             for r, w in zip(rows, got):

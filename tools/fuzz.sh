@@ -9,7 +9,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 secs="${1:-10}"
-targets=(elliptic geometry normal friction wrench rolling rolling_wrench)
+targets=(elliptic geometry normal friction wrench rolling rolling_wrench jacobian step)
 command -v cargo-fuzz >/dev/null || cargo install cargo-fuzz --locked
 logs=fuzz/target/logs
 mkdir -p "$logs"

@@ -42,7 +42,8 @@ elf="target/thumbv7em-none-eabihf/release/contensou-firmware"
 # The main firmware, then the `scenes` binary (stage `scene` rows of contensou::select's
 # configurations; a binary of its own so the main firmware's code and counts are unaffected),
 # then `tippe` (row scene,tippe_top_8s,f32: 8 s of the tippe top, ≈2e8 instructions), then
-# `step_scenes` (rows scene-step,<scene>,f32: one step-aware step of each scene), then the
+# `step_scenes` (rows scene-step,<scene>,f32: one step-aware step of each scene), then
+# `step_bearing` (row scene-step,bearing,f32: the bearing's step, a binary of its own), then the
 # C image under the same QEMU command as the Rust runner (.cargo/config.toml).
 runner="$(sed -n 's/^runner *= *"\(.*\)"/\1/p' .cargo/config.toml)"
 run() {
@@ -51,6 +52,7 @@ run() {
         cargo run --release --locked --quiet --bin scenes
         cargo run --release --locked --quiet --bin tippe
         cargo run --release --locked --quiet --bin step_scenes
+        cargo run --release --locked --quiet --bin step_bearing
         $runner "$c_bench"
     } | tr -d '\r'
 }
@@ -71,14 +73,14 @@ qemu=(timeout 1800 ${qemu% -kernel})
 tmp="$(mktemp -d)"
 trap 'rm -rf "$tmp"' EXIT
 dir="target/thumbv7em-none-eabihf/release"
-for bin in contensou-firmware scenes tippe step_scenes c-bench; do
+for bin in contensou-firmware scenes tippe step_scenes step_bearing c-bench; do
     bin_elf="$dir/$bin"
     [[ $bin != c-bench ]] || bin_elf="$c_bench"
     python3 "$root/tools/cycle_model.py" --elf "$bin_elf" --csv "$tmp/cycles.csv" \
         --mix "$tmp/mix.csv" $([[ $bin != contensou-firmware ]] || echo --mix-header) \
         --stdout "$tmp/traced-$bin.txt" -- "${qemu[@]}"
 done
-if [[ "$first" != "$(cat "$tmp"/traced-{contensou-firmware,scenes,tippe,step_scenes,c-bench}.txt | tr -d '\r')" ]]; then
+if [[ "$first" != "$(cat "$tmp"/traced-{contensou-firmware,scenes,tippe,step_scenes,step_bearing,c-bench}.txt | tr -d '\r')" ]]; then
     echo "qemu-bench: the traced run's counts differ from the plain run's" >&2
     exit 1
 fi

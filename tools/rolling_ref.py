@@ -31,3 +31,34 @@ def patch(aob):
     """Semi-axes (a, b) with c = √(ab) = 1 for a/b = aob."""
     s = math.sqrt(aob)
     return s, 1 / s
+
+
+def law_inputs(rows):
+    """The `contact_eval rolling` rows of reference rows: (a, b) of c = 1, G = 1, f = 1, N = nl,
+    V = 1 and the row's creepages (ξ, η, cφ)."""
+    inputs = []
+    for fam, aob, nu, nl, xi, eta, phic, *_ in rows:
+        a, b = patch(aob)
+        inputs.append((a, b, 1, nu, 1, nl, 1, xi, eta, phic))
+    return inputs
+
+
+def normalised(law, rows):
+    """Fx, Fy, Mz of `contact_eval rolling --law LAW` on reference rows, each over the row's nl
+    (the reference's normalisation)."""
+    return [tuple(v / r[3] for v in w) for w, r in zip(evaluate(law, law_inputs(rows)), rows)]
+
+
+def creep_coefficients(shapes):
+    """Kalker's (C11, C22, C23, C33) per (a/b, ν) of `shapes`, from the library's linear law at
+    unit creepages (c = 1, G = 1, N = 1)."""
+    unit = []
+    for aob, nu in shapes:
+        a, b = patch(aob)
+        unit += [(a, b, 1, nu, 1, 1, 1, 1, 0, 0), (a, b, 1, nu, 1, 1, 1, 0, 1, 0), (a, b, 1, nu, 1, 1, 1, 0, 0, 1)]
+    lin = evaluate("linear", unit)
+    coef = {}
+    for k, key in enumerate(shapes):
+        x, y, p = lin[3 * k: 3 * k + 3]
+        coef[key] = (-x[0], -y[1], -p[1], -p[2])
+    return coef

@@ -13,21 +13,32 @@ import sys
 
 RUNNER = "target/release/examples/scene"
 
-# (scene, law, spin, end, reference RK4 step, [RK4 steps], [step-aware steps], extra args)
+# (scene, law, spin, end, reference RK4 step (None: the group's reference comes from another
+# entry), [RK4 steps], [step-aware steps], extra args (shown with the integrator's name))
 PLAN = [
     ("ball", "best", None, 0.9, 2e-5, [1e-4, 2e-4, 1e-3], [1e-4, 1e-3, 2e-3, 5e-3, 1e-2], []),
     ("tippe-top", "best", None, 2.5, 1e-5, [1e-4, 2e-4, 3e-4, 1e-3],
      [1e-4, 5e-4, 1e-3, 1.5e-3, 2e-3], []),
 ]
 for law in ["best", "coulomb", "table"]:
-    # The creep law's reference at 50 µs: at 0.1 ms RK4 does not follow its stall (README).
-    ref, rk = (5e-5, [1e-4, 2e-4, 5e-4, 1e-3]) if law == "table" else (1e-4, [2e-4, 5e-4, 1e-3])
+    # The creep law's reference at 50 µs: at 0.1 ms RK4 does not follow its stall (README);
+    # `best` (δ = 0.1 mm/s: scenes::rattleback::BEST_DELTA) at 10 µs: from 20 µs (spin +2) the
+    # friction ramp's mode exceeds RK4's step.
+    ref, rk = {"table": (5e-5, [1e-4, 2e-4, 5e-4, 1e-3]),
+               "best": (1e-5, [2e-5, 1e-4, 5e-4, 1e-3])}.get(law, (1e-4, [2e-4, 5e-4, 1e-3]))
     for spin in [-2, 2]:
         PLAN.append(("rattleback", law, spin, 3.0, ref, rk,
                      [5e-5, 1e-4, 2e-4, 5e-4, 1e-3, 2e-3], []))
 PLAN.append(("bearing", "best", None, 0.02, 5e-7, [1e-6, 2e-6, 5e-6], [2e-5], []))
+PLAN.append(("bearing", "best", None, 0.02, None, [], [2e-5, 1e-4], ["--ring", "predicted"]))
 PLAN.append(("bearing", "table", None, 0.02, 1e-7, [2.5e-7, 1e-6],
-             [2e-6, 5e-6, 2e-5, 5e-5, 1e-4], []))
+             [2e-6, 5e-6, 1e-5, 2e-5, 3e-5, 4e-5, 5e-5, 1e-4], []))
+PLAN.append(("bearing", "table", None, 0.02, None, [], [2e-5, 5e-5, 1e-4],
+             ["--ring", "predicted"]))
+# The reference's own sensitivity: RK4 at the reference step with the load's ramp 2 % shorter
+# and longer (a physically negligible change; the bearing's 15–20 ms means move by several %).
+for ramp in ["4.9e-3", "5.1e-3"]:
+    PLAN.append(("bearing", "table", None, 0.02, None, [1e-7], [], ["--ramp", ramp]))
 
 EVENTS = {
     "tippe-top": ["half", "touch"],
@@ -50,21 +61,24 @@ def run(scene, law, spin, end, dt, integrator, extra):
 def main():
     rows = []
     for scene, law, spin, end, ref, rk, sa, extra in PLAN:
-        for integ, steps in [("rk4", [ref] + rk), ("step-aware", sa)]:
+        for integ, steps in [("rk4", ([] if ref is None else [ref]) + rk), ("step-aware", sa)]:
             for dt in steps:
                 r = run(scene, law, spin, end, dt, integ, extra)
                 r["spin"] = spin
                 r["reference"] = integ == "rk4" and dt == ref
+                r["label"] = " ".join([integ] + extra)
                 rows.append(r)
                 print(scene, law, spin, integ, dt, r["stable"], r["events"], file=sys.stderr)
     with open("bench-results/step-sweep.csv", "w", newline="") as f:
         w = csv.writer(f)
-        w.writerow(["scene", "law", "spin", "integrator", "dt", "end", "reference", "stable",
+        w.writerow(["scene", "law", "spin", "integrator", "options", "dt", "end", "reference",
+                    "stable",
                     "energy_max_rise"] + ALL_EVENTS + ["cpu_s", "cpu_per_sim_s", "reason"])
         for r in rows:
             ev = r["events"] or {}
             w.writerow([r["scene"], r["law"], "" if r["spin"] is None else r["spin"],
-                        r["integrator"], r["dt"], r["end"], int(r["reference"]),
+                        r["integrator"], r["label"][len(r["integrator"]):].strip(), r["dt"],
+                        r["end"], int(r["reference"]),
                         int(r["stable"]),
                         "" if r["energy_max_rise"] is None else f"{r['energy_max_rise']:.3e}"]
                        + ["" if ev.get(e) is None else f"{ev[e]:.6g}" for e in ALL_EVENTS]
@@ -77,7 +91,11 @@ def main():
           "spin (for the bearing's `cage` = ω/ω_c − 1: the deviation of the cage speed "
           "itself); an outcome in bold differs from the reference. Units: s (events), rad/s "
           "(peak_reversed), rad/s² (spin_rate), N·m (ring torque, spin moments). CPU: the "
-          "runner's thread CPU time per simulated second on the shared 2-core sweep machine.",
+          "runner's thread CPU time per simulated second on the shared 2-core sweep machine. "
+          "Bearing: `--ring start` (default) / `predicted` is where the balls see the inner "
+          "ring within a step (`scenes::bearing::RingCoupling`); the `--ramp` rows are RK4 at "
+          "the reference step with the load's ramp 2 % shorter / longer: how far the 15–20 ms "
+          "means move by themselves (a deviation within theirs is not resolved by one run).",
           ""]
     groups = {}
     for r in rows:
@@ -109,7 +127,7 @@ def main():
                     cells.append(f"{v:.5g} ({100 * (v / rv - 1):+.2f} %)")
             stable = "yes" if r["stable"] else f"**no**: {r['reason']}"
             rise = "" if r["energy_max_rise"] is None else f"{r['energy_max_rise']:.1e}"
-            md.append(f"| {r['integrator']}{' (ref)' if r['reference'] else ''} | "
+            md.append(f"| {r['label']}{' (ref)' if r['reference'] else ''} | "
                       f"{r['dt'] * 1e3:g} ms | {stable} | " + " | ".join(cells)
                       + f" | {rise} | {r['cpu_s'] / r['end']:.3g} |")
         md.append("")
@@ -118,7 +136,8 @@ def main():
         f.write("\n".join(md))
 
 
-# The M4F rows (bench-results/cycles.csv, tools/qemu-bench.sh: firmware/src/bin/step_scenes.rs)
+# The M4F rows (bench-results/cycles.csv, tools/qemu-bench.sh: firmware/src/bin/step_scenes.rs,
+# step_bearing.rs)
 # and the sweep run each scene's largest holding step is read from: (M4F row, scene, law, spin,
 # step).
 HOLDING = [
@@ -127,7 +146,7 @@ HOLDING = [
     ("tippe-top-two-contacts", None, None, None, 2e-3),
     ("rattleback", "rattleback", "best", -2, 2e-3),
     ("rattleback-table", "rattleback", "table", -2, 1e-3),
-    (None, "bearing", "table", None, 5e-5),
+    ("bearing", "bearing", "table", None, 3e-5),
 ]
 
 
@@ -151,8 +170,8 @@ def real_time(rows):
     for m4f, scene, law, spin, dt in HOLDING:
         host = "—"
         for r in rows:
-            if (r["scene"], r["law"], r["spin"], r["integrator"]) == (scene, law, spin,
-                                                                    "step-aware") \
+            if (r["scene"], r["law"], r["spin"], r["label"]) == (scene, law, spin,
+                                                               "step-aware") \
                     and abs(r["dt"] - dt) < 1e-12 and r["cpu_s"] > 0:
                 host = f"{r['end'] / r['cpu_s']:.3g}×"
         ins, cyc = cycles.get(m4f, (None, None))

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The tools' own Python environment, on any machine: prints the path of a Python interpreter
-# that has tools/requirements.txt (numpy, mpmath, matplotlib, maturin), creating or updating
+# that has tools/requirements.txt (numpy, mpmath, matplotlib, maturin, scipy), creating or updating
 # the venv target/tools-venv/ (git-ignored, reused by later runs: pip runs only when
 # tools/requirements.txt is newer than the venv's stamp).
 #

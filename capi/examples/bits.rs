@@ -352,6 +352,14 @@ fn step_generate() {
     }
 }
 
+/// For each `(kind, line)` of `cases`: a file of rows `kind<TAB>row` — valid rows (`good`;
+/// an empty line too), then the bad `line`, then a valid one — for an error path.
+fn print_bad<L: std::fmt::Display>(good: &str, cases: impl IntoIterator<Item = (&'static str, L)>) {
+    for (kind, line) in cases {
+        println!("{kind}\t{good}\n{kind}\t\n{kind}\t{good}\n{kind}\t{line}\n{kind}\t{good}");
+    }
+}
+
 /// Valid step rows, then one bad row (`kind<TAB>line`), for the step's error paths.
 fn step_bad() {
     let c = "50,50,1.15e11,0,0.1,1e-4,7.6e-8,0,0.5,0,0";
@@ -379,9 +387,7 @@ fn step_bad() {
             format!("60,50,1.15e11,0,0.1,1e-4,7.6e-8,0,0.5,0,0,1e-3,{w}"),
         ),
     ];
-    for (kind, line) in cases {
-        println!("{kind}\t{good}\n{kind}\t\n{kind}\t{good}\n{kind}\t{line}\n{kind}\t{good}");
-    }
+    print_bad(&good, cases);
 }
 
 /// Valid rows, then one bad row (`kind<TAB>line`), for the rolling error paths.
@@ -400,9 +406,7 @@ fn rolling_bad() {
         ("text", "6e-3,4e-3,8e10,0.28,0.3,8e4,30,abc,0,1"),
         ("fields", "6e-3,4e-3,8e10,0.28,0.3,8e4,30,1e-3,0"),
     ];
-    for (kind, line) in cases {
-        println!("{kind}\t{good}\n{kind}\t\n{kind}\t{good}\n{kind}\t{line}\n{kind}\t{good}");
-    }
+    print_bad(good, cases);
 }
 
 /// Files with valid rows, then one bad row (`kind<TAB>line`), for the error paths.
@@ -425,9 +429,7 @@ fn bad() {
         ("empty", "50,50,1.15e11,0,0.1,,1e-6,0,0.01,0,50"),
         ("fields", "50,50,1.15e11,0,0.1,1e-4,1e-6,0,0.01,0"),
     ];
-    for (kind, line) in cases {
-        println!("{kind}\t{good}\n{kind}\t\n{kind}\t{good}\n{kind}\t{line}\n{kind}\t{good}");
-    }
+    print_bad(good, cases);
 }
 
 fn parse_all<T: FromStr + Real>(line: &str) -> Result<Vec<u64>, String> {

@@ -44,6 +44,60 @@ static const char *parse(const char *field, double *out, int f32) {
     return *out == *out ? NULL : "not a number (NaN)";
 }
 
+/* The name of field k of a row for a message (`ctx`: the twin's), or NULL for "field k+1". */
+typedef const char *(*field_name_fn)(int k, const void *ctx);
+
+/* The rows after the header on stdin, read as contact_eval reads them. */
+typedef struct {
+    const char *program; /* the twin, named in every message */
+    const char *header;  /* named in a field-count message */
+    int expected;        /* fields per row */
+    field_name_fn name;  /* names field k in a parse message */
+    const void *ctx;     /* name's */
+    long row;            /* rows read, blank ones included (row K is line K + 1) */
+    char line[4096];     /* the row as read */
+    char copy[4096];     /* the row split in place: `fields` point into it */
+    char *fields[64];    /* the row's trimmed fields */
+} csv_rows;
+
+/* The next row (blank lines skipped) into `v` (room for `expected` values), each field parsed
+ * in the run's precision: 1 for a row, 0 at the end of the input, −1 after a message on stderr
+ * naming the program, the row and why (another field count, or a field that is not a
+ * number). */
+static int next_row(csv_rows *r, double *v, int f32) {
+    while (fgets(r->line, sizeof r->line, stdin)) {
+        int n, k;
+        r->row++;
+        if (*trim(r->line) == '\0') continue;
+        memcpy(r->copy, r->line, sizeof r->line);
+        n = split(r->copy, r->fields, 64);
+        if (n != r->expected) {
+            fprintf(stderr, "%s: row %ld: fields = %d: expected %d (%s)\n", r->program, r->row, n, r->expected,
+                    r->header);
+            return -1;
+        }
+        for (k = 0; k < n; k++) {
+            const char *why = parse(r->fields[k], &v[k], f32);
+            if (why) {
+                const char *field = r->name(k, r->ctx);
+                if (field) fprintf(stderr, "%s: row %ld: %s = %s: %s\n", r->program, r->row, field, r->fields[k], why);
+                else fprintf(stderr, "%s: row %ld: field %d = %s: %s\n", r->program, r->row, k + 1, r->fields[k], why);
+                return -1;
+            }
+        }
+        return 1;
+    }
+    return 0;
+}
+
+/* A row's `n` inputs `v` then its `outputs` results `out`, comma-separated: %.9g (f32) or
+ * %.17g (f64), so that they read back to the same bits. */
+static void print_row(const double *v, int n, const double *out, int outputs, int f32) {
+    int k;
+    for (k = 0; k < n; k++) printf(f32 ? "%.9g," : "%.17g,", v[k]);
+    for (k = 0; k < outputs; k++) printf(f32 ? "%.9g%s" : "%.17g%s", out[k], k + 1 < outputs ? "," : "\n");
+}
+
 #ifdef CONTENSOU_H
 /* The options of the wrench contract's twins (wrench_eval, step_eval): --law (a law of the
  * contract: not full-slip or linear), --form, --precision; NULL, or why they are wrong. */

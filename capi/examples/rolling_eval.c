@@ -38,6 +38,12 @@ static int fail_row(long row, contensou_rolling_column column, char *fields[COLU
     return 1;
 }
 
+/* The name of field k: its rolling column. */
+static const char *field_name(int k, const void *ctx) {
+    (void)ctx;
+    return contensou_rolling_column_name((contensou_rolling_column)k);
+}
+
 int main(int argc, char **argv) {
     contensou_law law = CONTENSOU_LAW_TABLE;
     int f32 = 0, i;
@@ -46,7 +52,9 @@ int main(int argc, char **argv) {
     static contensou_rolling_f64 c64;
     double prev[COLUMNS];
     int have_prev = 0;
-    long row = 0;
+    static csv_rows rows;
+    double v[COLUMNS];
+    int got;
 
     for (i = 1; i < argc; i += 2) {
         const char *opt = argv[i], *val = i + 1 < argc ? argv[i + 1] : NULL;
@@ -70,29 +78,17 @@ int main(int argc, char **argv) {
     }
     printf("%s,%s\n", INPUT_NAMES, OUTPUT_NAMES);
 
-    while (fgets(line, sizeof line, stdin)) {
-        char copy[sizeof line];
-        char *fields[COLUMNS];
-        double v[COLUMNS], out[OUTPUTS];
+    rows.program = "rolling_eval";
+    rows.header = INPUT_NAMES;
+    rows.expected = COLUMNS;
+    rows.name = field_name;
+    while ((got = next_row(&rows, v, f32)) > 0) {
+        long row = rows.row;
+        char **fields = rows.fields;
+        double out[OUTPUTS];
         contensou_rolling_column column = CONTENSOU_ROLLING_COLUMN_NONE;
         contensou_status s = CONTENSOU_STATUS_OK;
-        int n, k, same_contact;
-        row++;
-        if (*trim(line) == '\0') continue;
-        memcpy(copy, line, sizeof line);
-        n = split(copy, fields, COLUMNS);
-        if (n != COLUMNS) {
-            fprintf(stderr, "rolling_eval: row %ld: fields = %d: expected %d (%s)\n", row, n, COLUMNS, INPUT_NAMES);
-            return 1;
-        }
-        for (k = 0; k < COLUMNS; k++) {
-            const char *why = parse(fields[k], &v[k], f32);
-            if (why) {
-                fprintf(stderr, "rolling_eval: row %ld: %s = %s: %s\n", row,
-                        contensou_rolling_column_name((contensou_rolling_column)k), fields[k], why);
-                return 1;
-            }
-        }
+        int same_contact;
         /* a, b, G, nu the previous row's: the same contact (same a/b, G, nu bits) */
         same_contact = have_prev && memcmp(v, prev, 4 * sizeof v[0]) == 0;
         have_prev = 0;
@@ -118,8 +114,8 @@ int main(int argc, char **argv) {
         }
         memcpy(prev, v, sizeof v);
         have_prev = 1;
-        for (k = 0; k < COLUMNS; k++) printf(f32 ? "%.9g," : "%.17g,", v[k]);
-        for (k = 0; k < OUTPUTS; k++) printf(f32 ? "%.9g%s" : "%.17g%s", out[k], k + 1 < OUTPUTS ? "," : "\n");
+        print_row(v, COLUMNS, out, OUTPUTS, f32);
     }
+    if (got < 0) return 1;
     return fflush(stdout) == 0 ? 0 : 1;
 }

@@ -35,6 +35,13 @@ static int usage(const char *why) {
     return 2;
 }
 
+/* Fields are named by number in a parse error. */
+static const char *field_number(int k, const void *ctx) {
+    (void)k;
+    (void)ctx;
+    return NULL;
+}
+
 int main(int argc, char **argv) {
     contensou_law law = CONTENSOU_LAW_BEST;
     contensou_form form = CONTENSOU_FORM_FIXED;
@@ -43,7 +50,9 @@ int main(int argc, char **argv) {
     static contensou_contact_f32 c32; /* caller-owned storage: static, no allocation */
     static contensou_contact_f64 c64;
     int field_of[OPTIONAL];
-    long row = 0;
+    static csv_rows rows;
+    double v[MAX_FIELDS];
+    int got;
 
     {
         const char *why = contract_options(argc, argv, &law, &form, &f32);
@@ -56,28 +65,16 @@ int main(int argc, char **argv) {
     for (i = 4; i < OPTIONAL; i++) has_free = has_free || field_of[i] >= 0;
     printf("%s,N,Fx,Fy,Tz\n", header);
 
-    while (fgets(line, sizeof line, stdin)) {
-        char copy[sizeof line];
-        char *fields[MAX_FIELDS];
-        double v[MAX_FIELDS], out[4] = {0, 0, 0, 0}, opt[OPTIONAL];
+    rows.program = "step_eval";
+    rows.header = header;
+    rows.expected = fields_per_row;
+    rows.name = field_number;
+    while ((got = next_row(&rows, v, f32)) > 0) {
+        char **fields = rows.fields;
+        double out[4] = {0, 0, 0, 0}, opt[OPTIONAL];
         contensou_column column = CONTENSOU_COLUMN_NONE;
         contensou_status s;
-        int n, k, bad_field;
-        row++;
-        if (*trim(line) == '\0') continue;
-        memcpy(copy, line, sizeof line);
-        n = split(copy, fields, MAX_FIELDS);
-        if (n != fields_per_row) {
-            fprintf(stderr, "step_eval: row %ld: fields = %d: expected %d (%s)\n", row, n, fields_per_row, header);
-            return 1;
-        }
-        for (k = 0; k < fields_per_row; k++) {
-            const char *why = parse(fields[k], &v[k], f32);
-            if (why) {
-                fprintf(stderr, "step_eval: row %ld: field %d = %s: %s\n", row, k + 1, fields[k], why);
-                return 1;
-            }
-        }
+        int k, bad_field;
         for (k = 0; k < OPTIONAL; k++) opt[k] = field_of[k] >= 0 ? v[field_of[k]] : 0.0;
         /* Absent free columns: the start velocity's (−hdot, vx, vy, omega). */
         if (field_of[4] < 0) opt[4] = -v[7];
@@ -131,12 +128,12 @@ int main(int argc, char **argv) {
                       : column >= CONTENSOU_COLUMN_W_NN && column < CONTENSOU_COLUMN_W ? 12 + (int)(column - CONTENSOU_COLUMN_W_NN)
                       : column >= CONTENSOU_COLUMN_UN_FREE && column < CONTENSOU_COLUMN_H_FREE ? field_of[4 + column - CONTENSOU_COLUMN_UN_FREE]
                       : -1;
-            fprintf(stderr, "step_eval: row %ld: %s = %s: %s (status %u)\n", row, contensou_column_name(column),
+            fprintf(stderr, "step_eval: row %ld: %s = %s: %s (status %u)\n", rows.row, contensou_column_name(column),
                     bad_field >= 0 ? fields[bad_field] : "?", contensou_status_message(s), (unsigned)s);
             return 1;
         }
-        for (k = 0; k < fields_per_row; k++) printf(f32 ? "%.9g," : "%.17g,", v[k]);
-        for (k = 0; k < 4; k++) printf(f32 ? "%.9g%s" : "%.17g%s", out[k], k + 1 < 4 ? "," : "\n");
+        print_row(v, fields_per_row, out, 4, f32);
     }
+    if (got < 0) return 1;
     return fflush(stdout) == 0 ? 0 : 1;
 }

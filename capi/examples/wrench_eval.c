@@ -53,6 +53,15 @@ static int usage(const char *why) {
     return 2;
 }
 
+/* The name of field k: a contract column, or the optional column `field_of` puts there. */
+static const char *field_name(int k, const void *field_of) {
+    const char *name = k < COLUMNS ? contensou_column_name((contensou_column)k) : "";
+    int j;
+    for (j = 0; j < OPTIONAL; j++)
+        if (((const int *)field_of)[j] == k) name = OPTIONAL_NAMES[j];
+    return name;
+}
+
 static int fail_row(long row, const char *column, const char *value, contensou_status s) {
     fprintf(stderr, "wrench_eval: row %ld: %s = %s: %s (status %u)\n", row, column, value,
             contensou_status_message(s), (unsigned)s);
@@ -71,7 +80,9 @@ int main(int argc, char **argv) {
     int have_prev = 0, fields_per_row = COLUMNS, has_contact_option = 0, has_step_option = 0;
     /* field_of[k]: the field holding optional column k, or -1 */
     int field_of[OPTIONAL] = {-1, -1, -1, -1};
-    long row = 0;
+    static csv_rows rows;
+    double v[MAX_FIELDS];
+    int got;
 
     {
         /* `jacobian` takes argv[1]: the options start after it */
@@ -86,32 +97,17 @@ int main(int argc, char **argv) {
     has_step_option = field_of[2] >= 0 || field_of[3] >= 0;
     printf("%s,%s\n", header, jacobian ? JACOBIAN_NAMES : OUTPUT_NAMES);
 
-    while (fgets(line, sizeof line, stdin)) {
-        char copy[sizeof line];
-        char *fields[MAX_FIELDS];
-        double v[MAX_FIELDS], out[MAX_OUTPUTS], opt[OPTIONAL];
+    rows.program = "wrench_eval";
+    rows.header = header;
+    rows.expected = fields_per_row;
+    rows.name = field_name;
+    rows.ctx = field_of;
+    while ((got = next_row(&rows, v, f32)) > 0) {
+        char **fields = rows.fields;
+        double out[MAX_OUTPUTS], opt[OPTIONAL];
         contensou_column column = CONTENSOU_COLUMN_NONE;
         contensou_status s;
-        int n, k, same_but_curvatures, bad_field;
-        row++;
-        if (*trim(line) == '\0') continue;
-        memcpy(copy, line, sizeof line);
-        n = split(copy, fields, MAX_FIELDS);
-        if (n != fields_per_row) {
-            fprintf(stderr, "wrench_eval: row %ld: fields = %d: expected %d (%s)\n", row, n, fields_per_row, header);
-            return 1;
-        }
-        for (k = 0; k < fields_per_row; k++) {
-            const char *why = parse(fields[k], &v[k], f32);
-            if (why) {
-                const char *name = k < COLUMNS ? contensou_column_name((contensou_column)k) : "";
-                int j;
-                for (j = 0; j < OPTIONAL; j++)
-                    if (field_of[j] == k) name = OPTIONAL_NAMES[j];
-                fprintf(stderr, "wrench_eval: row %ld: %s = %s: %s\n", row, name, fields[k], why);
-                return 1;
-            }
-        }
+        int k, same_but_curvatures, bad_field;
         for (k = 0; k < OPTIONAL; k++) opt[k] = field_of[k] >= 0 ? v[field_of[k]] : 0.0;
         same_but_curvatures = have_prev && form == CONTENSOU_FORM_VARYING;
         for (k = CONTENSOU_COLUMN_ESTAR; k <= CONTENSOU_COLUMN_DELTA; k++)
@@ -178,12 +174,12 @@ int main(int argc, char **argv) {
             bad_field = column < COLUMNS ? (int)column
                       : column >= CONTENSOU_COLUMN_G && column <= CONTENSOU_COLUMN_VRY ? field_of[column - CONTENSOU_COLUMN_G]
                       : -1;
-            return fail_row(row, contensou_column_name(column), bad_field >= 0 ? fields[bad_field] : fields[0], s);
+            return fail_row(rows.row, contensou_column_name(column), bad_field >= 0 ? fields[bad_field] : fields[0], s);
         }
         memcpy(prev, v, sizeof v);
         have_prev = 1;
-        for (k = 0; k < fields_per_row; k++) printf(f32 ? "%.9g," : "%.17g,", v[k]);
-        for (k = 0; k < outputs; k++) printf(f32 ? "%.9g%s" : "%.17g%s", out[k], k + 1 < outputs ? "," : "\n");
+        print_row(v, fields_per_row, out, outputs, f32);
     }
+    if (got < 0) return 1;
     return fflush(stdout) == 0 ? 0 : 1;
 }

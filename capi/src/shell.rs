@@ -11,37 +11,43 @@ use contensou::geometry::{Curvatures, Race};
 use contensou::normal::{Material, Modulus};
 use contensou::Real;
 
-use crate::cstr::c_str;
+use crate::cstr::{c_str, c_strs};
 use crate::status::contensou_status as S;
 use crate::types::*;
 
-mod jacobian;
 mod many;
 mod rolling;
 mod step;
-pub(crate) use jacobian::contact_jacobian_rolling;
 pub(crate) use many::{contact_wrench_many, contact_wrench_many_rolling};
 pub(crate) use rolling::{rolling_column_name, rolling_law_of, rolling_new, rolling_wrench};
 pub(crate) use step::{contact_step, step_many};
 
-/// A precision of the C API: its storage type and the tag a constructor writes.
+/// A precision of the C API: its storage types and the tags their constructors write.
 pub(crate) trait Precision: Real {
     /// `contensou_contact_f32` or `contensou_contact_f64`.
     type Storage;
+    /// `contensou_rolling_f32` or `contensou_rolling_f64`.
+    type RollingStorage;
     /// Written by the constructor in front of the contact; checked by every other call. A
     /// Thumb-2 immediate (`0x00XY00XY`): the per-call test is one `cmp`, no constant load.
     const TAG: u32;
+    /// Written by `contensou_rolling_new_*` in front of the rolling contact.
+    const ROLLING_TAG: u32;
 }
 
-impl Precision for f32 {
-    type Storage = contensou_contact_f32;
-    const TAG: u32 = u32::from_le_bytes(*b"f\0f\0");
+/// [`Precision`] for `$t`: its storage types and their tags' bytes.
+macro_rules! precision {
+    ($t:ty: $storage:ty, $tag:literal; $rolling:ty, $rolling_tag:literal) => {
+        impl Precision for $t {
+            type Storage = $storage;
+            type RollingStorage = $rolling;
+            const TAG: u32 = u32::from_le_bytes(*$tag);
+            const ROLLING_TAG: u32 = u32::from_le_bytes(*$rolling_tag);
+        }
+    };
 }
-
-impl Precision for f64 {
-    type Storage = contensou_contact_f64;
-    const TAG: u32 = u32::from_le_bytes(*b"d\0d\0");
-}
+precision!(f32: contensou_contact_f32, b"f\0f\0"; contensou_rolling_f32, b"rf32");
+precision!(f64: contensou_contact_f64, b"d\0d\0"; contensou_rolling_f64, b"rf64");
 
 /// `Err(NullPointer)` or `Err(Misaligned)` unless `p` can be dereferenced as a `T`.
 fn check<T>(p: *const T) -> Result<(), S> {
@@ -147,6 +153,37 @@ unsafe fn optional<T: Copy>(p: *const T) -> Result<Option<T>, S> {
     }
 }
 
+/// The optional rolling velocity at `p` (NULL: V = 0).
+///
+/// # Safety
+/// `p` NULL or readable.
+unsafe fn rolling_step<T: Real>(
+    p: *const contensou_rolling_step<T>,
+) -> Result<RollingStep<T>, (S, contensou_column)> {
+    // SAFETY: caller's contract.
+    let roll = unsafe { optional(p) }.map_err(bare)?;
+    Ok(roll.unwrap_or_default().into())
+}
+
+/// Stores `value` at `at` (the row or contact an error is about) if `at` is usable, then
+/// [`report`]s `r`.
+///
+/// # Safety
+/// `at` NULL or writable as a `usize`; `column` NULL or writable as a `u32`.
+pub(crate) unsafe fn report_at(
+    at: *mut usize,
+    value: usize,
+    column: *mut contensou_column,
+    r: Result<(), (S, contensou_column)>,
+) -> S {
+    if check(at).is_ok() {
+        // SAFETY: non-NULL and aligned; writable by the caller's contract.
+        unsafe { at.write(value) };
+    }
+    // SAFETY: caller's contract.
+    unsafe { report(column, r) }
+}
+
 /// A boundary status without a column.
 fn bare(s: S) -> (S, contensou_column) {
     (s, CONTENSOU_COLUMN_NONE)
@@ -207,6 +244,16 @@ pub(crate) unsafe fn tagged<'a, St, V>(storage: *const St, tag: u32) -> Result<&
     Ok(unsafe { &*storage.cast::<V>() })
 }
 
+/// Writes `contact` behind `tag` into `storage`: what [`tagged`] reads back.
+///
+/// # Safety
+/// `storage` non-NULL, aligned and writable; a [`Tagged`]`<C>` fits in an `St` and needs no
+/// more alignment (asserted in types.rs for each storage).
+pub(crate) unsafe fn store<St, C>(storage: *mut St, tag: u32, contact: C) {
+    // SAFETY: caller's contract.
+    unsafe { storage.cast::<Tagged<C>>().write(Tagged { tag, contact }) }
+}
+
 /// `contensou_contact_new_*`.
 ///
 /// # Safety
@@ -251,12 +298,7 @@ pub(crate) unsafe fn contact_new_rolling<T: Precision>(
         let spec = Spec::from(s);
         let contact = DynContact::new_rolling(&spec, &rolling, law, form).map_err(invalid)?;
         // SAFETY: checked non-NULL and aligned; the slot fits (types.rs).
-        unsafe {
-            storage.cast::<Slot<T>>().write(Slot {
-                tag: T::TAG,
-                contact,
-            })
-        };
+        unsafe { store(storage, T::TAG, contact) };
         Ok(())
     })();
     // SAFETY: caller's contract.
@@ -302,36 +344,35 @@ pub(crate) unsafe fn contact_wrench<T: Precision>(
     }
 }
 
-/// `contensou_contact_wrench_rolling_*` (`rolling` NULL: V = 0).
+/// `contensou_contact_wrench_rolling_*` and `…_jacobian_*`, `…_jacobian_rolling_*`: `eval`
+/// ([`DynContact::wrench_rolling`] or [`DynContact::jacobian_rolling`]) on the contact, the
+/// step and the rolling velocity `rolling` (NULL: V = 0; the plain Jacobian passes NULL, which
+/// is [`DynContact::jacobian`]), through [`wrench_with`]: checked in the order storage, step,
+/// output, then the rolling columns.
 ///
 /// # Safety
 /// Pointers NULL or valid for their types.
-pub(crate) unsafe fn contact_wrench_rolling<T: Precision>(
+pub(crate) unsafe fn rolling_with<T: Precision, W, O: From<W>>(
     storage: *const T::Storage,
     step: *const contensou_step<T>,
     rolling: *const contensou_rolling_step<T>,
-    out: *mut contensou_wrench<T>,
+    out: *mut O,
     column: *mut contensou_column,
+    eval: impl FnOnce(&DynContact<T>, &Step<T>, &RollingStep<T>) -> Result<W, Invalid>,
 ) -> S {
     let eval = |c: &DynContact<T>, s: &Step<T>| {
         // SAFETY: caller's contract.
-        let roll = unsafe { optional(rolling) }
-            .map_err(bare)?
-            .unwrap_or_default();
-        let roll = RollingStep {
-            vrx: roll.vrx,
-            vry: roll.vry,
-        };
-        c.wrench_rolling(s, &roll).map_err(invalid)
+        let roll = unsafe { rolling_step(rolling) }?;
+        eval(c, s, &roll).map_err(invalid)
     };
     // SAFETY: caller's contract.
     unsafe { wrench_with(storage, step, out, column, eval) }
 }
 
-/// The body of `contensou_contact_wrench_*` and `…_rolling_*`: `eval` on the validated contact
-/// and step, checked in the order storage, step, output, then what `eval` reads (the sliding
-/// call keeps its own `DynContact::wrench`, without the rolling columns' handling: the
-/// `c-fixed-best` M4F row).
+/// The body of `contensou_contact_wrench_*` and [`rolling_with`]'s: `eval` on the
+/// validated contact and step, its result written to `*out` as an `O`, checked in the order
+/// storage, step, output, then what `eval` reads (the sliding call keeps its own
+/// `DynContact::wrench`, without the rolling columns' handling: the `c-fixed-best` M4F row).
 ///
 /// The per-call path tests the pointers as plain conditions (one OR of their low address bits,
 /// three NULL tests, the tag); a refused call goes to [`wrench_refused`] (out of line), which
@@ -345,12 +386,12 @@ pub(crate) unsafe fn contact_wrench_rolling<T: Precision>(
 /// # Safety
 /// Pointers NULL or valid for their types.
 #[inline(always)]
-unsafe fn wrench_with<T: Precision>(
+unsafe fn wrench_with<T: Precision, W, O: From<W>>(
     storage: *const T::Storage,
     step: *const contensou_step<T>,
-    out: *mut contensou_wrench<T>,
+    out: *mut O,
     column: *mut contensou_column,
-    eval: impl FnOnce(&DynContact<T>, &Step<T>) -> Result<dynamic::Output<T>, (S, contensou_column)>,
+    eval: impl FnOnce(&DynContact<T>, &Step<T>) -> Result<W, (S, contensou_column)>,
 ) -> S {
     let misaligned = low_bits(storage) | low_bits(step) | low_bits(out);
     if misaligned == 0 && !storage.is_null() && !step.is_null() && !out.is_null() {
@@ -368,7 +409,7 @@ unsafe fn wrench_with<T: Precision>(
             return match eval(contact, &Step::from(s)) {
                 Ok(w) => {
                     // SAFETY: non-NULL and aligned (checked); writable by the caller's contract.
-                    unsafe { out.write(contensou_wrench::from(w)) };
+                    unsafe { out.write(O::from(w)) };
                     S::Ok
                 }
                 // SAFETY: caller's contract.
@@ -377,7 +418,7 @@ unsafe fn wrench_with<T: Precision>(
         }
     }
     // SAFETY: caller's contract.
-    unsafe { wrench_refused::<T>(storage, step, out, column) }
+    unsafe { wrench_refused::<T, O>(storage, step, out, column) }
 }
 
 /// The status of a wrench call whose pointers or storage [`wrench_with`] refused: the first
@@ -387,10 +428,10 @@ unsafe fn wrench_with<T: Precision>(
 /// Pointers NULL or valid for their types.
 #[cold]
 #[inline(never)]
-unsafe fn wrench_refused<T: Precision>(
+unsafe fn wrench_refused<T: Precision, O>(
     storage: *const T::Storage,
     step: *const contensou_step<T>,
-    out: *mut contensou_wrench<T>,
+    out: *mut O,
     column: *mut contensou_column,
 ) -> S {
     let r = (|| {
@@ -403,6 +444,19 @@ unsafe fn wrench_refused<T: Precision>(
     unsafe { report(column, r.map_err(bare)) }
 }
 
+/// Checks `out`, then makes the value and writes it: the status.
+///
+/// # Safety
+/// `out` NULL or writable.
+unsafe fn produce<V>(out: *mut V, make: impl FnOnce() -> Result<V, S>) -> S {
+    status((|| {
+        check(out)?;
+        let v = make()?;
+        // SAFETY: caller's contract.
+        unsafe { write(out, v) }
+    })())
+}
+
 /// Checks `out`, then builds the curvatures and writes them.
 ///
 /// # Safety
@@ -411,17 +465,16 @@ pub(crate) unsafe fn curvatures<T: Precision>(
     out: *mut contensou_curvatures<T>,
     make: impl FnOnce() -> Result<Curvatures<T>, S>,
 ) -> S {
-    status((|| {
-        check(out)?;
+    let make = || {
         let c = make()?;
-        let v = contensou_curvatures {
+        Ok(contensou_curvatures {
             p: c.p(),
             q: c.q(),
             major_angle: c.major_angle(),
-        };
-        // SAFETY: caller's contract.
-        unsafe { write(out, v) }
-    })())
+        })
+    };
+    // SAFETY: caller's contract.
+    unsafe { produce(out, make) }
 }
 
 /// The `contensou_race` value as a [`Race`].
@@ -444,14 +497,13 @@ pub(crate) unsafe fn modulus_of<T: Precision>(
     poisson_b: T,
     estar: *mut T,
 ) -> S {
-    status((|| {
-        check(estar)?;
+    let make = || {
         let a = Material::new(young_a, poisson_a)?;
         let b = Material::new(young_b, poisson_b)?;
-        let e = Modulus::of(a, b)?;
-        // SAFETY: caller's contract.
-        unsafe { write(estar, e.get()) }
-    })())
+        Ok(Modulus::of(a, b)?.get())
+    };
+    // SAFETY: caller's contract.
+    unsafe { produce(estar, make) }
 }
 
 /// Parses a NUL-terminated name with `parse` and writes the value.
@@ -501,24 +553,11 @@ pub(crate) fn form_code(form: Form) -> contensou_form {
 /// NUL-terminated column names by code: [`dynamic::INPUTS`], `""` (NONE), then
 /// [`dynamic::ROLLING_INPUTS`].
 const COLUMN_NAMES: [&CStr; 16] = {
-    use dynamic::{INPUTS as I, ROLLING_INPUTS as R};
+    let [p, q, estar, cd, f, delta, h, hdot, vx, vy, omega] = c_strs!(dynamic::INPUTS; 11);
+    let [g, nu, vrx, vry] = c_strs!(dynamic::ROLLING_INPUTS; 4);
+    let none = c_str!("");
     [
-        c_str!(I[0]),
-        c_str!(I[1]),
-        c_str!(I[2]),
-        c_str!(I[3]),
-        c_str!(I[4]),
-        c_str!(I[5]),
-        c_str!(I[6]),
-        c_str!(I[7]),
-        c_str!(I[8]),
-        c_str!(I[9]),
-        c_str!(I[10]),
-        c_str!(""),
-        c_str!(R[0]),
-        c_str!(R[1]),
-        c_str!(R[2]),
-        c_str!(R[3]),
+        p, q, estar, cd, f, delta, h, hdot, vx, vy, omega, none, g, nu, vrx, vry,
     ]
 };
 

@@ -109,12 +109,15 @@ pub struct contensou_contact_f64 {
     pub opaque: [u64; 737],
 }
 
-/// What the storage holds: a tag that only a constructor writes, then the contact.
+/// What a storage holds: a tag that only its constructor writes, then the contact.
 #[repr(C)]
-pub(crate) struct Slot<T: contensou::Real> {
+pub(crate) struct Tagged<C> {
     pub(crate) tag: u32,
-    pub(crate) contact: DynContact<T>,
+    pub(crate) contact: C,
 }
+
+/// What a contact storage holds.
+pub(crate) type Slot<T> = Tagged<DynContact<T>>;
 
 // The header's sizes are exact on 64-bit targets: the slot rounded up to the storage
 // alignment. On 32-bit targets (thumbv7em-none-eabihf) the slot is smaller — the rolling
@@ -304,6 +307,15 @@ impl<T> From<contensou_step<T>> for contensou::dynamic::Step<T> {
             vx: s.vx,
             vy: s.vy,
             omega: s.omega,
+        }
+    }
+}
+
+impl<T> From<contensou_rolling_step<T>> for contensou::dynamic::RollingStep<T> {
+    fn from(s: contensou_rolling_step<T>) -> Self {
+        Self {
+            vrx: s.vrx,
+            vry: s.vry,
         }
     }
 }

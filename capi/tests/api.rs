@@ -10,17 +10,9 @@ use contensou::Error;
 use contensou_capi::*;
 
 mod common;
-use common::{spec_in, storage32, storage64, text, SPEC};
+use common::{assert_storage, each_null, spec_in, storage32, storage64, text, SPEC, STEP};
 
 type S = contensou_status;
-
-const STEP: contensou_step<f64> = contensou_step {
-    h: 1e-6,
-    hdot: 0.01,
-    vx: 0.01,
-    vy: -0.002,
-    omega: 50.0,
-};
 
 #[test]
 fn every_library_error_has_its_own_code_and_the_library_message() {
@@ -160,18 +152,8 @@ fn bad_pointers_and_values_are_codes_and_write_nothing() {
             contensou_contact_new_f64(&mut *c, &SPEC, 0, 0, null_mut()),
             S::Ok
         );
-        assert_eq!(
-            contensou_contact_wrench_f64(null(), &STEP, &mut w, null_mut()),
-            S::NullPointer
-        );
-        assert_eq!(
-            contensou_contact_wrench_f64(&*c, null(), &mut w, null_mut()),
-            S::NullPointer
-        );
-        assert_eq!(
-            contensou_contact_wrench_f64(&*c, &STEP, null_mut(), null_mut()),
-            S::NullPointer
-        );
+        let wrench = |c, s, o| contensou_contact_wrench_f64(c, s, o, null_mut());
+        assert_eq!(each_null(&*c, &STEP, wrench), [S::NullPointer; 3]);
         assert_eq!(w, contensou_wrench::default(), "nothing written on error");
         // Misaligned storage (4 bytes off the required 8) and a misaligned step.
         let bytes = c.opaque.as_mut_ptr().cast::<u8>();
@@ -571,20 +553,8 @@ fn helpers_are_the_library_constructors_in_contract_order() {
 
 #[test]
 fn storage_sizes_are_the_headers() {
-    assert_eq!(
-        size_of::<contensou_contact_f32>(),
-        CONTENSOU_CONTACT_F32_SIZE
-    );
-    assert_eq!(
-        size_of::<contensou_contact_f64>(),
-        CONTENSOU_CONTACT_F64_SIZE
-    );
-    assert_eq!(align_of::<contensou_contact_f64>(), CONTENSOU_CONTACT_ALIGN);
-    let header = include_str!("../include/contensou.h");
-    assert!(header.contains(&format!(
-        "#define CONTENSOU_CONTACT_F32_SIZE {CONTENSOU_CONTACT_F32_SIZE}"
-    )));
-    assert!(header.contains(&format!(
-        "#define CONTENSOU_CONTACT_F64_SIZE {CONTENSOU_CONTACT_F64_SIZE}"
-    )));
+    let size = CONTENSOU_CONTACT_F32_SIZE;
+    assert_storage::<contensou_contact_f32>("CONTENSOU_CONTACT_F32_SIZE", size);
+    let size = CONTENSOU_CONTACT_F64_SIZE;
+    assert_storage::<contensou_contact_f64>("CONTENSOU_CONTACT_F64_SIZE", size);
 }

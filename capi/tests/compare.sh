@@ -20,22 +20,69 @@ header="P,Q,estar,cd,f,delta,h,hdot,vx,vy,omega"
 
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
+
+# The twin under test and its reference, as commands (set before each section).
+twin=("$c")
+
+# same FILE ROWS PRECISION OPTS...: "${twin[@]}" and "${ref[@]}" on $work/FILE.csv with OPTS
+# both succeed with ROWS rows, every field of both outputs with the same bits in PRECISION.
+same() {
+    local file="$1" want="$2" precision="$3" n
+    shift 3
+    "${twin[@]}" "$@" <"$work/$file.csv" >"$work/c.csv" || { echo "compare: ${twin[*]} failed for $file $*" >&2; exit 1; }
+    "${ref[@]}" "$@" <"$work/$file.csv" >"$work/rust.csv" || { echo "compare: ${ref[*]} failed for $file $*" >&2; exit 1; }
+    n="$("$bits" check "$precision" "$work/c.csv" "$work/rust.csv")" || { echo "compare: FAILED: ${twin[*]} on $file $*" >&2; exit 1; }
+    ((n == want)) || { echo "compare: $n of $want rows: ${twin[*]} on $file $*" >&2; exit 1; }
+}
+
+# sweep ROWS FIRST_LAWS OTHER_LAWS FILE...: `same` on every FILE (ROWS rows) × precision × form
+# × law — the first FILE through FIRST_LAWS, the others through OTHER_LAWS; the runs add to
+# $runs.
+sweep() {
+    local want="$1" first="$2" other="$3" file precision form law laws
+    shift 3
+    for file in "$@"; do
+        read -ra laws <<<"$other"
+        [[ "$file" == "$1" ]] && read -ra laws <<<"$first"
+        for precision in f32 f64; do
+            for form in fixed varying; do
+                for law in "${laws[@]}"; do
+                    same "$file" "$want" "$precision" --law "$law" --form "$form" --precision "$precision"
+                    runs=$((runs + 1))
+                done
+            done
+        done
+    done
+}
+all_laws="best simplified pade ellipsoid coulomb table blend fastsim fastsim-16"
+
+# clean FILE OPTS...: the twin built with ASan + UBSan (build.sh: NAME-san) runs clean on
+# $work/FILE.csv and prints what the plain twin prints.
+clean() {
+    local file="$1"
+    shift
+    "${twin[0]}-san" "${twin[@]:1}" "$@" <"$work/$file.csv" >"$work/san.csv" ||
+        { echo "compare: the sanitized ${twin[*]} failed on $file $*" >&2; exit 1; }
+    "${twin[@]}" "$@" <"$work/$file.csv" | cmp -s - "$work/san.csv" ||
+        { echo "compare: the sanitized ${twin[*]} prints other values on $file $*" >&2; exit 1; }
+}
+
+# refused OPTS...: the twin and the reference on $work/in.csv (a bad row in it): their exit
+# codes rc_c, rc_r and messages msg_c, msg_r — the same text expected, but for the program's
+# name, the C twin's status code and the value (the C twin echoes the field, the CLI its
+# shortest float).
+refused() {
+    set +e
+    "${twin[@]}" "$@" <"$work/in.csv" >"$work/c.csv" 2>"$work/c.err"; rc_c=$?
+    "${ref[@]}" "$@" <"$work/in.csv" >"$work/rust.csv" 2>"$work/rust.err"; rc_r=$?
+    set -e
+    msg_c="$(sed -e "s/^$(basename "${twin[0]}"): //" -e 's/ (status [0-9]*)$//' -e 's/ = [^:]*:/ = _:/' "$work/c.err")"
+    msg_r="$(sed -e 's/^contact_eval: //' -e 's/ = [^:]*:/ = _:/' "$work/rust.err")"
+}
 "$bits" gen >"$work/rows.csv"
 rows=$(($(wc -l <"$work/rows.csv") - 1))
 runs=0
-for precision in f32 f64; do
-    for form in fixed varying; do
-        for law in best simplified pade ellipsoid coulomb table blend fastsim fastsim-16; do
-            opts=(--law "$law" --form "$form" --precision "$precision")
-            "$c" "${opts[@]}" <"$work/rows.csv" >"$work/c.csv" || { echo "compare: the C twin failed for ${opts[*]}" >&2; exit 1; }
-            "${ref[@]}" "${opts[@]}" <"$work/rows.csv" >"$work/rust.csv" || { echo "compare: the reference failed for ${opts[*]}" >&2; exit 1; }
-            n="$("$bits" check "$precision" "$work/c.csv" "$work/rust.csv")" ||
-                { echo "compare: FAILED for ${opts[*]}" >&2; exit 1; }
-            ((n == rows)) || { echo "compare: $n of $rows rows for ${opts[*]}" >&2; exit 1; }
-            runs=$((runs + 1))
-        done
-    done
-done
+sweep "$rows" "$all_laws" "" rows
 echo "compare: $rows rows × $runs runs (9 laws × 2 forms × 2 precisions): C = Rust bit for bit"
 
 # The optional rolling columns (G, nu, vrx, vry): all four, vrx/vry only (G, nu
@@ -46,28 +93,9 @@ cut -d, -f1-11,14,15 "$work/roll4.csv" >"$work/roll2.csv"
 awk -F, -v OFS=, '{ s = $1; for (k = 2; k <= 11; k++) s = s OFS $k; print s, $15, $13 }' "$work/roll4.csv" >"$work/rollswap.csv"
 rrows=$(($(wc -l <"$work/roll4.csv") - 1))
 runs=0
-for file in roll4 roll2 rollswap; do
-    for precision in f32 f64; do
-        for form in fixed varying; do
-            laws=(table blend fastsim fastsim-16 best)
-            [[ "$file" == roll4 ]] || laws=(table)
-            for law in "${laws[@]}"; do
-                opts=(--law "$law" --form "$form" --precision "$precision")
-                "$c" "${opts[@]}" <"$work/$file.csv" >"$work/c.csv" || { echo "compare: the C twin failed for $file ${opts[*]}" >&2; exit 1; }
-                "${ref[@]}" "${opts[@]}" <"$work/$file.csv" >"$work/rust.csv" || { echo "compare: the reference failed for $file ${opts[*]}" >&2; exit 1; }
-                n="$("$bits" check "$precision" "$work/c.csv" "$work/rust.csv")" || { echo "compare: FAILED for $file ${opts[*]}" >&2; exit 1; }
-                ((n == rrows)) || { echo "compare: $n of $rrows rows for $file ${opts[*]}" >&2; exit 1; }
-                runs=$((runs + 1))
-            done
-        done
-    done
-done
+sweep "$rrows" "table blend fastsim fastsim-16 best" table roll4 roll2 rollswap
 for precision in f32 f64; do
-    opts=(--law table --form varying --precision "$precision")
-    target/release/wrench_eval-san "${opts[@]}" <"$work/roll4.csv" >"$work/san.csv" ||
-        { echo "compare: the sanitized C twin failed on the rolling columns (${opts[*]})" >&2; exit 1; }
-    "$c" "${opts[@]}" <"$work/roll4.csv" | cmp -s - "$work/san.csv" ||
-        { echo "compare: the sanitized C twin prints other values on the rolling columns (${opts[*]})" >&2; exit 1; }
+    clean roll4 --law table --form varying --precision "$precision"
 done
 echo "compare: rolling columns: $rrows rows × $runs runs (G,nu,vrx,vry: 5 laws; vrx,vry and vry,nu: table; 2 forms × 2 precisions): C = Rust bit for bit; ASan + UBSan clean (table)"
 
@@ -75,11 +103,7 @@ echo "compare: rolling columns: $rrows rows × $runs runs (G,nu,vrx,vry: 5 laws;
 # on every row, and the same output.
 for precision in f32 f64; do
     for form in fixed varying; do
-        opts=(--law best --form "$form" --precision "$precision")
-        target/release/wrench_eval-san "${opts[@]}" <"$work/rows.csv" >"$work/san.csv" ||
-            { echo "compare: the sanitized C twin failed for ${opts[*]}" >&2; exit 1; }
-        "$c" "${opts[@]}" <"$work/rows.csv" | cmp -s - "$work/san.csv" ||
-            { echo "compare: the sanitized C twin prints other values for ${opts[*]}" >&2; exit 1; }
+        clean rows --law best --form "$form" --precision "$precision"
     done
 done
 echo "compare: the C twin is clean under ASan + UBSan (best, both forms and precisions)"
@@ -87,35 +111,13 @@ echo "compare: the C twin is clean under ASan + UBSan (best, both forms and prec
 # The Jacobian (contensou_contact_jacobian_*, _jacobian_rolling_*): `wrench_eval jacobian`
 # against `contact_eval jacobian` on the same rows, every field (N, Fx, Fy, Tz and the 20
 # derivatives) bit for bit.
-# same_jacobian FILE ROWS OPTS...: both twins on $work/FILE.csv, ROWS rows bit for bit.
-same_jacobian() {
-    local file="$1" want="$2" n
-    shift 2
-    "$c" jacobian "$@" <"$work/$file.csv" >"$work/c.csv" || { echo "compare: the C twin failed for jacobian $file $*" >&2; exit 1; }
-    ../target/release/contact_eval jacobian "$@" <"$work/$file.csv" >"$work/rust.csv" || { echo "compare: the reference failed for jacobian $file $*" >&2; exit 1; }
-    n="$("$bits" check "${@: -1}" "$work/c.csv" "$work/rust.csv")" || { echo "compare: jacobian FAILED for $file $*" >&2; exit 1; }
-    ((n == want)) || { echo "compare: jacobian: $n of $want rows for $file $*" >&2; exit 1; }
-}
+twin=("$c" jacobian)
+ref=(../target/release/contact_eval jacobian)
 runs=0
+sweep "$rows" "$all_laws" "" rows
+sweep "$rrows" "table blend fastsim fastsim-16 best" table roll4 roll2
 for precision in f32 f64; do
-    for form in fixed varying; do
-        for law in best simplified pade ellipsoid coulomb table blend fastsim fastsim-16; do
-            same_jacobian rows "$rows" --law "$law" --form "$form" --precision "$precision"
-            runs=$((runs + 1))
-        done
-        for law in table blend fastsim fastsim-16 best; do
-            same_jacobian roll4 "$rrows" --law "$law" --form "$form" --precision "$precision"
-            runs=$((runs + 1))
-        done
-        same_jacobian roll2 "$rrows" --law table --form "$form" --precision "$precision"
-        runs=$((runs + 1))
-    done
-done
-for precision in f32 f64; do
-    target/release/wrench_eval-san jacobian --law table --form varying --precision "$precision" <"$work/roll4.csv" >"$work/san.csv" ||
-        { echo "compare: the sanitized C twin failed on jacobian ($precision)" >&2; exit 1; }
-    "$c" jacobian --law table --form varying --precision "$precision" <"$work/roll4.csv" | cmp -s - "$work/san.csv" ||
-        { echo "compare: the sanitized C twin prints another jacobian ($precision)" >&2; exit 1; }
+    clean roll4 --law table --form varying --precision "$precision"
 done
 echo "compare: jacobian: $rows rows (9 laws) and $rrows rolling rows (G,nu,vrx,vry: 5 laws; vrx,vry: table) × 2 forms × 2 precisions, $runs runs: C = contact_eval jacobian bit for bit; ASan + UBSan clean (table)"
 
@@ -125,15 +127,11 @@ for kind in $(cut -f1 "$work/bad.tsv" | uniq); do
     { echo "$header"; grep "^$kind"$'\t' "$work/bad.tsv" | cut -f2-; } >"$work/in.csv"
     for precision in f32 f64 jacobian-f32 jacobian-f64; do
         # jacobian-*: `wrench_eval jacobian` against `contact_eval jacobian`
-        mode=(); ref_mode=("${ref[@]}")
+        twin=("$c"); ref=(../target/release/contact_eval wrench)
         if [[ "$precision" == jacobian-* ]]; then
-            precision="${precision#jacobian-}"; mode=(jacobian); ref_mode=(../target/release/contact_eval jacobian)
+            precision="${precision#jacobian-}"; twin=("$c" jacobian); ref=(../target/release/contact_eval jacobian)
         fi
-        opts=(--law best --form varying --precision "$precision")
-        set +e
-        "$c" "${mode[@]}" "${opts[@]}" <"$work/in.csv" >"$work/c.csv" 2>"$work/c.err"; rc_c=$?
-        "${ref_mode[@]}" "${opts[@]}" <"$work/in.csv" >"$work/rust.csv" 2>"$work/rust.err"; rc_r=$?
-        set -e
+        refused --law best --form varying --precision "$precision"
         if ((rc_c != 1 || rc_r != 1)); then
             echo "compare: bad row '$kind' ($precision): exit $rc_c (C) and $rc_r (Rust), expected 1 and 1" >&2
             cat "$work/c.err" "$work/rust.err" >&2
@@ -145,10 +143,7 @@ for kind in $(cut -f1 "$work/bad.tsv" | uniq); do
             echo "compare: bad row '$kind' ($precision): C says '$row_c', Rust '$row_r', expected row 4" >&2
             exit 1
         fi
-        # The same message (row, column, reason), but for the program's name, the C twin's
-        # status code and the value (the C twin echoes the field, the CLI its shortest float).
-        msg_c="$(sed -e 's/^wrench_eval: //' -e 's/ (status [0-9]*)$//' -e 's/ = [^:]*:/ = _:/' "$work/c.err")"
-        msg_r="$(sed -e 's/^contact_eval: //' -e 's/ = [^:]*:/ = _:/' "$work/rust.err")"
+        # The same message (row, column, reason).
         if [[ "$msg_c" != "$msg_r" ]]; then
             printf 'compare: bad row %s (%s): messages differ:\n  C:    %s\n  Rust: %s\n' "$kind" "$precision" "$msg_c" "$msg_r" >&2
             exit 1
@@ -162,6 +157,7 @@ done
 echo "compare: $kinds kinds of bad row (wrench and jacobian): both stop at row 4 with the same message, exit 1, same rows before it"
 
 # Bad rolling columns (law table): the same row, column and message from both.
+twin=("$c"); ref=(../target/release/contact_eval wrench)
 good="50,50,1.15e11,0,0.1,1e-4,1e-6,0,0.01,0,50,8e10,0.28,2,0"
 for bad in "50,50,1.15e11,0,0.1,1e-4,1e-6,0,0.01,0,50,-8e10,0.28,2,0" \
     "50,50,1.15e11,0,0.1,1e-4,1e-6,0,0.01,0,50,8e10,0.6,2,0" \
@@ -170,13 +166,7 @@ for bad in "50,50,1.15e11,0,0.1,1e-4,1e-6,0,0.01,0,50,-8e10,0.28,2,0" \
     "50,50,1.15e11,0,0.1,1e-4,1e-6,0,0.01,0,50,8e10,0.28,2,-inf"; do
     printf '%s\n' "${header},G,nu,vrx,vry" "$good" "$good" "$bad" "$good" >"$work/in.csv"
     for precision in f32 f64; do
-        opts=(--law table --form fixed --precision "$precision")
-        set +e
-        "$c" "${opts[@]}" <"$work/in.csv" >"$work/c.csv" 2>"$work/c.err"; rc_c=$?
-        "${ref[@]}" "${opts[@]}" <"$work/in.csv" >"$work/rust.csv" 2>"$work/rust.err"; rc_r=$?
-        set -e
-        msg_c="$(sed -e 's/^wrench_eval: //' -e 's/ (status [0-9]*)$//' -e 's/ = [^:]*:/ = _:/' "$work/c.err")"
-        msg_r="$(sed -e 's/^contact_eval: //' -e 's/ = [^:]*:/ = _:/' "$work/rust.err")"
+        refused --law table --form fixed --precision "$precision"
         if ((rc_c != 1 || rc_r != 1)) || [[ "$msg_c" != "$msg_r" || "$msg_c" != "row 3: "* ]]; then
             printf 'compare: bad rolling column %s (%s): exit %s / %s\n  C:    %s\n  Rust: %s\n' "$bad" "$precision" "$rc_c" "$rc_r" "$msg_c" "$msg_r" >&2
             exit 1
@@ -191,22 +181,16 @@ echo "compare: 5 bad rolling-column rows (G, nu, vrx, vry): both stop at row 3 w
 # stop both at the same row.
 "$bits" rolling-gen >"$work/rolling.csv"
 rows=$(($(wc -l <"$work/rolling.csv") - 1))
+twin=(target/release/rolling_eval); ref=(../target/release/contact_eval rolling)
 runs=0
 for precision in f32 f64; do
     for law in table blend fastsim fastsim-16 full-slip linear; do
-        opts=(--law "$law" --precision "$precision")
-        target/release/rolling_eval "${opts[@]}" <"$work/rolling.csv" >"$work/c.csv" || { echo "compare: the rolling twin failed for ${opts[*]}" >&2; exit 1; }
-        ../target/release/contact_eval rolling "${opts[@]}" <"$work/rolling.csv" >"$work/rust.csv" || { echo "compare: contact_eval rolling failed for ${opts[*]}" >&2; exit 1; }
-        n="$("$bits" check "$precision" "$work/c.csv" "$work/rust.csv")" || { echo "compare: rolling FAILED for ${opts[*]}" >&2; exit 1; }
-        ((n == rows)) || { echo "compare: $n of $rows rolling rows for ${opts[*]}" >&2; exit 1; }
+        same rolling "$rows" "$precision" --law "$law" --precision "$precision"
         runs=$((runs + 1))
     done
 done
 for precision in f32 f64; do
-    target/release/rolling_eval-san --law table --precision "$precision" <"$work/rolling.csv" >"$work/san.csv" ||
-        { echo "compare: the sanitized rolling twin failed ($precision)" >&2; exit 1; }
-    target/release/rolling_eval --law table --precision "$precision" <"$work/rolling.csv" | cmp -s - "$work/san.csv" ||
-        { echo "compare: the sanitized rolling twin prints other values ($precision)" >&2; exit 1; }
+    clean rolling --law table --precision "$precision"
 done
 echo "compare: rolling: $rows rows × $runs runs (6 laws × 2 precisions): C = contact_eval rolling bit for bit; clean under ASan + UBSan (table)"
 
@@ -215,10 +199,7 @@ kinds=0
 for kind in $(cut -f1 "$work/bad.tsv" | uniq); do
     { echo "a,b,G,nu,f,N,V,xi,eta,phi"; grep "^$kind"$'\t' "$work/bad.tsv" | cut -f2-; } >"$work/in.csv"
     for precision in f32 f64; do
-        set +e
-        target/release/rolling_eval --precision "$precision" <"$work/in.csv" >"$work/c.csv" 2>"$work/c.err"; rc_c=$?
-        ../target/release/contact_eval rolling --precision "$precision" <"$work/in.csv" >"$work/rust.csv" 2>"$work/rust.err"; rc_r=$?
-        set -e
+        refused --precision "$precision"
         # The same row and column (contact_eval names a non-finite input in its message, the
         # creepages by their slip: "row 4: xi = 1e-3: omega must be finite" for φ = ∞).
         col_c="$(sed -n 's/^rolling_eval: row 4: \([^ ]*\) = .*/\1/p' "$work/c.err")"
@@ -244,29 +225,11 @@ echo "compare: rolling: $kinds kinds of bad row: both stop at row 4 naming the s
 cut -d, -f1-26 "$work/step.csv" >"$work/step-nofree.csv"
 cut -d, -f1-22,28,30 "$work/step.csv" >"$work/step-some.csv"
 srows=$(($(wc -l <"$work/step.csv") - 1))
+twin=(target/release/step_eval); ref=(../target/release/contact_eval step)
 runs=0
-for file in step step-nofree step-some; do
-    for precision in f32 f64; do
-        for form in fixed varying; do
-            laws=(best simplified pade ellipsoid coulomb table blend fastsim fastsim-16)
-            [[ "$file" == step ]] || laws=(best table)
-            for law in "${laws[@]}"; do
-                opts=(--law "$law" --form "$form" --precision "$precision")
-                target/release/step_eval "${opts[@]}" <"$work/$file.csv" >"$work/c.csv" || { echo "compare: step_eval failed for $file ${opts[*]}" >&2; exit 1; }
-                ../target/release/contact_eval step "${opts[@]}" <"$work/$file.csv" >"$work/rust.csv" || { echo "compare: contact_eval step failed for $file ${opts[*]}" >&2; exit 1; }
-                n="$("$bits" check "$precision" "$work/c.csv" "$work/rust.csv")" || { echo "compare: step FAILED for $file ${opts[*]}" >&2; exit 1; }
-                ((n == srows)) || { echo "compare: $n of $srows step rows for $file ${opts[*]}" >&2; exit 1; }
-                runs=$((runs + 1))
-            done
-        done
-    done
-done
+sweep "$srows" "$all_laws" "best table" step step-nofree step-some
 for precision in f32 f64; do
-    opts=(--law table --form varying --precision "$precision")
-    target/release/step_eval-san "${opts[@]}" <"$work/step.csv" >"$work/san.csv" ||
-        { echo "compare: the sanitized step twin failed (${opts[*]})" >&2; exit 1; }
-    target/release/step_eval "${opts[@]}" <"$work/step.csv" | cmp -s - "$work/san.csv" ||
-        { echo "compare: the sanitized step twin prints other values (${opts[*]})" >&2; exit 1; }
+    clean step --law table --form varying --precision "$precision"
 done
 echo "compare: step: $srows rows × $runs runs (9 laws × 2 forms × 2 precisions with every optional column; best, table without and with two free columns): C = contact_eval step bit for bit; clean under ASan + UBSan (table)"
 
@@ -275,12 +238,7 @@ kinds=0
 for kind in $(cut -f1 "$work/bad.tsv" | uniq); do
     { head -n 1 "$work/step.csv" | cut -d, -f1-22; grep "^$kind"$'\t' "$work/bad.tsv" | cut -f2-; } >"$work/in.csv"
     for precision in f32 f64; do
-        set +e
-        target/release/step_eval --precision "$precision" <"$work/in.csv" >"$work/c.csv" 2>"$work/c.err"; rc_c=$?
-        ../target/release/contact_eval step --precision "$precision" <"$work/in.csv" >"$work/rust.csv" 2>"$work/rust.err"; rc_r=$?
-        set -e
-        msg_c="$(sed -e 's/^step_eval: //' -e 's/ (status [0-9]*)$//' -e 's/ = [^:]*:/ = _:/' "$work/c.err")"
-        msg_r="$(sed -e 's/^contact_eval: //' -e 's/ = [^:]*:/ = _:/' "$work/rust.err")"
+        refused --precision "$precision"
         if ((rc_c != 1 || rc_r != 1)) || [[ "$msg_c" != "$msg_r" || "$msg_c" != "row 4: "* ]]; then
             printf 'compare: bad step row %s (%s): exit %s / %s\n  C:    %s\n  Rust: %s\n' "$kind" "$precision" "$rc_c" "$rc_r" "$msg_c" "$msg_r" >&2
             exit 1

@@ -7,17 +7,9 @@ use contensou::dynamic::{DynContact, Form, Law, RollingSpec, RollingStep, Spec, 
 use contensou_capi::*;
 
 mod common;
-use common::{spec_in, storage32, storage64, SPEC};
+use common::{each_null, spec_in, storage32, storage64, SPEC, STEP};
 
 type S = contensou_status;
-
-const STEP: contensou_step<f64> = contensou_step {
-    h: 1e-6,
-    hdot: 0.01,
-    vx: 0.01,
-    vy: -0.002,
-    omega: 50.0,
-};
 
 const ROLL: contensou_rolling_step<f64> = contensou_rolling_step { vrx: 2.0, vry: 0.3 };
 
@@ -165,18 +157,8 @@ fn errors_are_the_wrenchs_and_write_nothing() {
             contensou_contact_new_f64(&mut *c, &SPEC, CONTENSOU_LAW_TABLE, 0, null_mut()),
             S::Ok
         );
-        assert_eq!(
-            contensou_contact_jacobian_f64(null(), &STEP, &mut j, null_mut()),
-            S::NullPointer
-        );
-        assert_eq!(
-            contensou_contact_jacobian_f64(&*c, null(), &mut j, null_mut()),
-            S::NullPointer
-        );
-        assert_eq!(
-            contensou_contact_jacobian_f64(&*c, &STEP, null_mut(), null_mut()),
-            S::NullPointer
-        );
+        let jacobian = |c, s, o| contensou_contact_jacobian_f64(c, s, o, null_mut());
+        assert_eq!(each_null(&*c, &STEP, jacobian), [S::NullPointer; 3]);
         let bad = contensou_step {
             omega: f64::NAN,
             ..STEP

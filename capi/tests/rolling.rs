@@ -3,7 +3,7 @@
 //! pointers, laws it does not take, and the numbers (bit for bit `RollingContact::wrench`,
 //! the body of `contact_eval rolling`; tests/compare.sh checks the command itself).
 use core::ffi::CStr;
-use core::ptr::{null, null_mut};
+use core::ptr::null_mut;
 
 use contensou::friction::rolling::row::RowLaw;
 use contensou::friction::rolling::{
@@ -14,7 +14,7 @@ use contensou::Real;
 use contensou_capi::*;
 
 mod common;
-use common::{rolling32 as storage32, rolling64 as storage64, text};
+use common::{assert_storage, each_null, rolling32 as storage32, rolling64 as storage64, text};
 
 type S = contensou_status;
 
@@ -297,18 +297,10 @@ fn bad_pointers_and_laws_are_codes() {
             contensou_rolling_new_f64(&mut *c, 1.5, 8e10, 0.28, CONTENSOU_LAW_BLEND, null_mut()),
             S::Ok
         );
-        assert_eq!(
-            contensou_rolling_wrench_f64(null(), &STATE, &mut out, null_mut()),
-            S::NullPointer
-        );
-        assert_eq!(
-            contensou_rolling_wrench_f64(&*c, null(), &mut out, null_mut()),
-            S::NullPointer
-        );
-        assert_eq!(
-            contensou_rolling_wrench_f64(&*c, &STATE, null_mut(), &mut col),
-            S::NullPointer
-        );
+        col = 77;
+        let column: *mut u32 = &mut col;
+        let wrench = |c, s, o| contensou_rolling_wrench_f64(c, s, o, column);
+        assert_eq!(each_null(&*c, &STATE, wrench), [S::NullPointer; 3]);
         assert_eq!(col, CONTENSOU_ROLLING_COLUMN_NONE);
         let bytes = c.opaque.as_mut_ptr().cast::<u8>();
         let off = bytes.add(4).cast::<contensou_rolling_f64>();
@@ -402,21 +394,11 @@ c_rolling!(c64: f64, storage64, contensou_rolling_new_f64, contensou_rolling_wre
 c_rolling!(c32: f32, storage32, contensou_rolling_new_f32, contensou_rolling_wrench_f32);
 
 fn same<L: RollingLaw>(law: u32, row: [f64; 10]) {
-    let got = c64(law, row).map(f64::to_bits);
-    assert_eq!(
-        got,
-        rust::<f64, L>(row).map(f64::to_bits),
-        "{} {row:?}",
-        L::NAME
-    );
+    let [got, want] = [c64(law, row), rust::<f64, L>(row)].map(|w| w.map(f64::to_bits));
+    assert_eq!(got, want, "{} f64 {row:?}", L::NAME);
     let row32 = row.map(|x| x as f32);
-    let got = c32(law, row32).map(f32::to_bits);
-    assert_eq!(
-        got,
-        rust::<f32, L>(row32).map(f32::to_bits),
-        "{} {row:?}",
-        L::NAME
-    );
+    let [got, want] = [c32(law, row32), rust::<f32, L>(row32)].map(|w| w.map(f32::to_bits));
+    assert_eq!(got, want, "{} f32 {row:?}", L::NAME);
 }
 
 #[test]
@@ -457,20 +439,8 @@ fn the_numbers_are_the_rolling_laws_bit_for_bit() {
 
 #[test]
 fn storage_sizes_are_the_headers() {
-    assert_eq!(
-        size_of::<contensou_rolling_f32>(),
-        CONTENSOU_ROLLING_F32_SIZE
-    );
-    assert_eq!(
-        size_of::<contensou_rolling_f64>(),
-        CONTENSOU_ROLLING_F64_SIZE
-    );
-    assert_eq!(align_of::<contensou_rolling_f64>(), CONTENSOU_CONTACT_ALIGN);
-    let header = include_str!("../include/contensou.h");
-    assert!(header.contains(&format!(
-        "#define CONTENSOU_ROLLING_F32_SIZE {CONTENSOU_ROLLING_F32_SIZE}"
-    )));
-    assert!(header.contains(&format!(
-        "#define CONTENSOU_ROLLING_F64_SIZE {CONTENSOU_ROLLING_F64_SIZE}"
-    )));
+    let size = CONTENSOU_ROLLING_F32_SIZE;
+    assert_storage::<contensou_rolling_f32>("CONTENSOU_ROLLING_F32_SIZE", size);
+    let size = CONTENSOU_ROLLING_F64_SIZE;
+    assert_storage::<contensou_rolling_f64>("CONTENSOU_ROLLING_F64_SIZE", size);
 }

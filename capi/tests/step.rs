@@ -503,64 +503,45 @@ fn step_columns_have_the_contracts_names() {
     );
     // The single call names its columns too: a W entry, W as a whole, a free velocity.
     let c = contact(CONTENSOU_LAW_BEST);
-    let mut out = contensou_step_wrench::default();
-    let mut col = 99;
-    let bad = contensou_inverse_mass {
-        yw: f64::INFINITY,
-        ..BALL_W
+    let single = |w: contensou_inverse_mass<f64>, u: Option<contensou_step_velocity<f64>>| {
+        let mut out = contensou_step_wrench::default();
+        let mut col = 99;
+        let u = u.as_ref().map_or(null(), |u| u as *const _);
+        let s = &STEPS[0];
+        let r =
+            unsafe { contensou_contact_step_f64(&*c, s, null(), 1e-3, &w, u, &mut out, &mut col) };
+        (r, col)
     };
-    let r = unsafe {
-        contensou_contact_step_f64(
-            &*c,
-            &STEPS[0],
-            null(),
-            1e-3,
-            &bad,
-            null(),
-            &mut out,
-            &mut col,
-        )
-    };
-    assert_eq!((r, col), (S::NonFinite, CONTENSOU_COLUMN_W_NN + 8));
-    let bad = contensou_inverse_mass {
-        nx: 100.0,
-        ..BALL_W
-    };
-    let r = unsafe {
-        contensou_contact_step_f64(
-            &*c,
-            &STEPS[0],
-            null(),
-            1e-3,
-            &bad,
-            null(),
-            &mut out,
-            &mut col,
-        )
-    };
-    assert_eq!(
-        (r, col),
-        (S::InverseMassNotPositiveSemidefinite, CONTENSOU_COLUMN_W)
-    );
-    let u = contensou_step_velocity {
-        vn: 0.0,
-        vx: 0.0,
-        vy: 0.0,
+    let nan_spin = contensou_step_velocity {
         omega: f64::NAN,
+        ..Default::default()
     };
-    let r = unsafe {
-        contensou_contact_step_f64(
-            &*c,
-            &STEPS[0],
-            null(),
-            1e-3,
-            &BALL_W,
-            &u,
-            &mut out,
-            &mut col,
-        )
-    };
-    assert_eq!((r, col), (S::NonFinite, CONTENSOU_COLUMN_UN_FREE + 3));
+    let cases = [
+        (
+            contensou_inverse_mass {
+                yw: f64::INFINITY,
+                ..BALL_W
+            },
+            None,
+            (S::NonFinite, CONTENSOU_COLUMN_W_NN + 8),
+        ),
+        (
+            contensou_inverse_mass {
+                nx: 100.0,
+                ..BALL_W
+            },
+            None,
+            (S::InverseMassNotPositiveSemidefinite, CONTENSOU_COLUMN_W),
+        ),
+        (
+            BALL_W,
+            Some(nan_spin),
+            (S::NonFinite, CONTENSOU_COLUMN_UN_FREE + 3),
+        ),
+    ];
+    for (w, u, want) in cases {
+        assert_eq!(single(w, u), want);
+    }
 }
 
 #[test]

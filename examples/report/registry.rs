@@ -130,135 +130,52 @@ macro_rules! m {
     };
 }
 
+/// `methods! { stage, method, section, errors::<precision, …>; … }`: a table of `m!` rows.
+#[cfg(feature = "micromath")]
+macro_rules! methods {
+    ($($stage:literal, $method:literal, $section:expr, $f:ident::<$t:ident $(, $p:ty)*>;)*) => {
+        vec![$(m!($stage, $method, $section, $f::<$t $(, $p)*>),)*]
+    };
+}
+
+/// `both! { stage, method, section, errors[::<…>]; … }`: each method in f32 and in f64, as
+/// `m!` with the precision inserted as `errors`'s first type argument, in order.
+macro_rules! both {
+    ($($stage:literal, $method:literal, $section:expr, $f:ident $(::<$($p:ty),*>)?;)*) => {
+        vec![$(
+            m!($stage, $method, $section, $f::<f32 $($(, $p)*)?>),
+            m!($stage, $method, $section, $f::<f64 $($(, $p)*)?>),
+        )*]
+    };
+}
+
 /// Every method × precision the report measures.
 pub fn methods() -> Vec<Method> {
     #[allow(unused_mut)]
-    let mut all = vec![
-        m!("elliptic", "agm", ELLIPTIC, elliptic::<f32, Agm>),
-        m!("elliptic", "agm", ELLIPTIC, elliptic::<f64, Agm>),
-        m!("elliptic", "theta", ELLIPTIC, elliptic::<f32, Theta>),
-        m!("elliptic", "theta", ELLIPTIC, elliptic::<f64, Theta>),
-        m!("elliptic", "table", ELLIPTIC, elliptic::<f32, KeTable>),
-        m!("elliptic", "table", ELLIPTIC, elliptic::<f64, KeTable>),
-        m!("hertz", "shape_newton", ECCENTRICITY, shape::<f32, Newton>),
-        m!("hertz", "shape_newton", ECCENTRICITY, shape::<f64, Newton>),
-        m!("hertz", "shape_table", ECCENTRICITY, shape::<f32, Table>),
-        m!("hertz", "shape_table", ECCENTRICITY, shape::<f64, Table>),
-        m!("hertz", "shape_linear", ECCENTRICITY, shape::<f32, Linear>),
-        m!("hertz", "shape_linear", ECCENTRICITY, shape::<f64, Linear>),
-        m!(
-            "hertz",
-            "shape_hamrock-dowson",
-            ECCENTRICITY,
-            shape::<f32, HamrockDowson>
-        ),
-        m!(
-            "hertz",
-            "shape_hamrock-dowson",
-            ECCENTRICITY,
-            shape::<f64, HamrockDowson>
-        ),
-        m!("hertz", "per_step", NORMAL, hertz_newton::<f32>),
-        m!("hertz", "per_step", NORMAL, hertz_newton::<f64>),
-        m!(
-            "hertz",
-            "table_each_step",
-            NORMAL,
-            hertz_table_each_step::<f32>
-        ),
-        m!(
-            "hertz",
-            "table_each_step",
-            NORMAL,
-            hertz_table_each_step::<f64>
-        ),
-        m!("hertz", "fitted_each_step", NORMAL, hertz_fitted::<f32>),
-        m!("hertz", "fitted_each_step", NORMAL, hertz_fitted::<f64>),
-        m!("hertz", "volumetric", NORMAL, hertz_volumetric::<f32>),
-        m!("hertz", "volumetric", NORMAL, hertz_volumetric::<f64>),
-        m!(
-            "friction",
-            "simplified",
-            FRICTION,
-            law_prepared::<f32, Simplified>
-        ),
-        m!(
-            "friction",
-            "simplified",
-            FRICTION,
-            law_prepared::<f64, Simplified>
-        ),
-        m!("friction", "pade", FRICTION, law_prepared::<f32, Pade>),
-        m!("friction", "pade", FRICTION, law_prepared::<f64, Pade>),
-        m!(
-            "friction",
-            "ellipsoid",
-            FRICTION,
-            law_prepared::<f32, Ellipsoid>
-        ),
-        m!(
-            "friction",
-            "ellipsoid",
-            FRICTION,
-            law_prepared::<f64, Ellipsoid>
-        ),
-        m!(
-            "friction",
-            "coulomb",
-            FRICTION,
-            law_prepared::<f32, Coulomb>
-        ),
-        m!(
-            "friction",
-            "coulomb",
-            FRICTION,
-            law_prepared::<f64, Coulomb>
-        ),
-        m!("friction", "best", FRICTION, law_prepared::<f32, Best>),
-        m!("friction", "best", FRICTION, law_prepared::<f64, Best>),
-        m!(
-            "friction",
-            "best-varying",
-            FRICTION,
-            law_per_call::<f32, Best>
-        ),
-        m!(
-            "friction",
-            "best-varying",
-            FRICTION,
-            law_per_call::<f64, Best>
-        ),
-        m!("friction", "exact", FRICTION, law_prepared::<f32, Exact>),
-        m!("friction", "exact", FRICTION, law_prepared::<f64, Exact>),
-        m!("wrench", "fixed", WRENCH, wrench_fixed::<f32, Simplified>),
-        m!("wrench", "fixed", WRENCH, wrench_fixed::<f64, Simplified>),
-        m!(
-            "wrench",
-            "table_each_step",
-            WRENCH,
-            wrench_varying::<f32, Simplified>
-        ),
-        m!(
-            "wrench",
-            "table_each_step",
-            WRENCH,
-            wrench_varying::<f64, Simplified>
-        ),
-        m!("wrench", "fixed-best", WRENCH, wrench_fixed::<f32, Best>),
-        m!("wrench", "fixed-best", WRENCH, wrench_fixed::<f64, Best>),
-        m!(
-            "wrench",
-            "table_each_step-best",
-            WRENCH,
-            wrench_varying::<f32, Best>
-        ),
-        m!(
-            "wrench",
-            "table_each_step-best",
-            WRENCH,
-            wrench_varying::<f64, Best>
-        ),
-    ];
+    let mut all = both! {
+        "elliptic", "agm", ELLIPTIC, elliptic::<Agm>;
+        "elliptic", "theta", ELLIPTIC, elliptic::<Theta>;
+        "elliptic", "table", ELLIPTIC, elliptic::<KeTable>;
+        "hertz", "shape_newton", ECCENTRICITY, shape::<Newton>;
+        "hertz", "shape_table", ECCENTRICITY, shape::<Table>;
+        "hertz", "shape_linear", ECCENTRICITY, shape::<Linear>;
+        "hertz", "shape_hamrock-dowson", ECCENTRICITY, shape::<HamrockDowson>;
+        "hertz", "per_step", NORMAL, hertz_newton;
+        "hertz", "table_each_step", NORMAL, hertz_table_each_step;
+        "hertz", "fitted_each_step", NORMAL, hertz_fitted;
+        "hertz", "volumetric", NORMAL, hertz_volumetric;
+        "friction", "simplified", FRICTION, law_prepared::<Simplified>;
+        "friction", "pade", FRICTION, law_prepared::<Pade>;
+        "friction", "ellipsoid", FRICTION, law_prepared::<Ellipsoid>;
+        "friction", "coulomb", FRICTION, law_prepared::<Coulomb>;
+        "friction", "best", FRICTION, law_prepared::<Best>;
+        "friction", "best-varying", FRICTION, law_per_call::<Best>;
+        "friction", "exact", FRICTION, law_prepared::<Exact>;
+        "wrench", "fixed", WRENCH, wrench_fixed::<Simplified>;
+        "wrench", "table_each_step", WRENCH, wrench_varying::<Simplified>;
+        "wrench", "fixed-best", WRENCH, wrench_fixed::<Best>;
+        "wrench", "table_each_step-best", WRENCH, wrench_varying::<Best>;
+    };
     #[cfg(feature = "micromath")]
     all.extend(micromath());
     all
@@ -274,48 +191,13 @@ fn micromath() -> Vec<Method> {
     use contensou::shape::HamrockDowsonMicromath;
 
     use crate::measure::hertz_newton_micromath;
-    vec![
-        m!(
-            "elliptic",
-            "theta-micromath",
-            ELLIPTIC,
-            elliptic::<f32, ThetaMicromath>
-        ),
-        m!(
-            "hertz",
-            "shape_hamrock-dowson-micromath",
-            ECCENTRICITY,
-            shape::<f32, HamrockDowsonMicromath>
-        ),
-        m!(
-            "hertz",
-            "per_step-micromath",
-            NORMAL,
-            hertz_newton_micromath::<f32>
-        ),
-        m!(
-            "friction",
-            "simplified-micromath",
-            FRICTION,
-            law_prepared::<f32, SimplifiedMicromath>
-        ),
-        m!(
-            "friction",
-            "ellipsoid-micromath",
-            FRICTION,
-            law_prepared::<f32, EllipsoidMicromath>
-        ),
-        m!(
-            "friction",
-            "coulomb-micromath",
-            FRICTION,
-            law_prepared::<f32, CoulombMicromath>
-        ),
-        m!(
-            "friction",
-            "best-micromath",
-            FRICTION,
-            law_per_call::<f32, BestMicromath>
-        ),
-    ]
+    methods! {
+        "elliptic", "theta-micromath", ELLIPTIC, elliptic::<f32, ThetaMicromath>;
+        "hertz", "shape_hamrock-dowson-micromath", ECCENTRICITY, shape::<f32, HamrockDowsonMicromath>;
+        "hertz", "per_step-micromath", NORMAL, hertz_newton_micromath::<f32>;
+        "friction", "simplified-micromath", FRICTION, law_prepared::<f32, SimplifiedMicromath>;
+        "friction", "ellipsoid-micromath", FRICTION, law_prepared::<f32, EllipsoidMicromath>;
+        "friction", "coulomb-micromath", FRICTION, law_prepared::<f32, CoulombMicromath>;
+        "friction", "best-micromath", FRICTION, law_per_call::<f32, BestMicromath>;
+    }
 }

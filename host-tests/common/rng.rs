@@ -37,6 +37,20 @@ impl Rng {
     }
 }
 
+/// Knuth's MMIX linear congruential generator (its state's top 53 bits).
+pub struct Lcg(pub u64);
+
+impl Lcg {
+    /// Uniform in [0, 1).
+    pub fn next(&mut self) -> f64 {
+        self.0 = self
+            .0
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        unit(self.0)
+    }
+}
+
 /// splitmix64 (Steele, Lea and Flood 2014).
 pub struct SplitMix(pub u64);
 

@@ -61,13 +61,28 @@ pub fn steps<T: Real>() -> Vec<Step<T>> {
     v
 }
 
+/// The contract's row as the generic contacts' validated parts (friction law `L`).
+type Parts<T, L> = (
+    Curvatures<T>,
+    Modulus<T>,
+    HuntCrossley<T>,
+    Friction<T, L>,
+    Slip<T>,
+);
+
+fn parts<T: Real, L: FrictionLaw>(spec: &Spec<T>, s: &Step<T>) -> Parts<T, L> {
+    (
+        Curvatures::new(spec.p, spec.q).unwrap(),
+        Modulus::new(spec.estar).unwrap(),
+        HuntCrossley::new(spec.cd).unwrap(),
+        Friction::<T, L>::with_law(spec.f, spec.delta).unwrap(),
+        Slip::new(s.vx, s.vy, s.omega).unwrap(),
+    )
+}
+
 /// The generic contact's output for law `L`, as the contract's seven numbers.
 fn generic_of<T: Real, L: FrictionLaw>(spec: &Spec<T>, form: Form, s: &Step<T>) -> [T; 7] {
-    let c = Curvatures::new(spec.p, spec.q).unwrap();
-    let e = Modulus::new(spec.estar).unwrap();
-    let d = HuntCrossley::new(spec.cd).unwrap();
-    let fr = Friction::<T, L>::with_law(spec.f, spec.delta).unwrap();
-    let slip = Slip::new(s.vx, s.vy, s.omega).unwrap();
+    let (c, e, d, fr, slip) = parts::<T, L>(spec, s);
     let w = match form {
         Form::Fixed => Contact::hertz::<Newton>(&c, e, d, fr)
             .unwrap()
@@ -80,11 +95,7 @@ fn generic_of<T: Real, L: FrictionLaw>(spec: &Spec<T>, form: Form, s: &Step<T>) 
 /// The generic rolling contact's output for rolling law `L` with the default rolling columns
 /// (G = E*·(1 − 0.3), ν = 0.3, V = 0), as the contract's seven numbers.
 fn generic_rolling_of<T: Real, L: RollingLaw>(spec: &Spec<T>, form: Form, s: &Step<T>) -> [T; 7] {
-    let c = Curvatures::new(spec.p, spec.q).unwrap();
-    let e = Modulus::new(spec.estar).unwrap();
-    let d = HuntCrossley::new(spec.cd).unwrap();
-    let fr = Friction::<T, Best>::with_law(spec.f, spec.delta).unwrap();
-    let slip = Slip::new(s.vx, s.vy, s.omega).unwrap();
+    let (c, e, d, fr, slip) = parts::<T, Best>(spec, s);
     let nu = T::from_f64(0.3);
     let el = Elasticity::new(spec.estar * (T::ONE - nu), nu).unwrap();
     let v = RollingVelocity::ZERO;
@@ -137,6 +148,20 @@ pub fn run_contact_eval(args: &[&str], input: &str) -> std::process::Output {
     // A usage error exits before reading stdin: a broken pipe is part of that outcome.
     let _ = child.stdin.take().unwrap().write_all(input.as_bytes());
     child.wait_with_output().unwrap()
+}
+
+/// Runs `contact_eval args…` on `input`, which it must refuse: exit code 1 and exactly
+/// `contact_eval: {message}` on stderr (`context` names the case). The output, for more checks.
+#[allow(dead_code)] // not every test of the contract runs the binary
+pub fn refused(args: &[&str], input: &str, message: &str, context: &str) -> std::process::Output {
+    let out = run_contact_eval(args, input);
+    assert_eq!(out.status.code(), Some(1), "{context}");
+    assert_eq!(
+        String::from_utf8_lossy(&out.stderr),
+        format!("contact_eval: {message}\n"),
+        "{context}"
+    );
+    out
 }
 
 /// The stdout of a successful `contact_eval args…` run on `input` (a failure shows `args` and

@@ -52,11 +52,27 @@ fn columns<T>(
     (steps, out)
 }
 
-/// One module of probes per precision (the exported names differ only by their suffix).
+/// One module of probes per precision (`$m32` in `f32`, `$m64` in `f64`): every exported
+/// function, each given as its `[_f32, _f64]` pair.
 macro_rules! precision_probes {
-    ($m:ident: $T:ty, $storage:ident, $words:expr,
-     $new:ident, $set:ident, $wrench:ident, $many:ident,
-     $curv_new:ident, $sphere_plane:ident, $sphere_sphere:ident, $ball_race:ident, $modulus:ident) => {
+    (
+        $m32:ident, $m64:ident;
+        storage = [$s32:ident, $s64:ident], words = [$w32:expr, $w64:expr],
+        rolling = [$r32:ident, $r64:ident], rolling_words = [$rw32:expr, $rw64:expr],
+        $($key:ident = [$f32:ident, $f64:ident]),* $(,)?
+    ) => {
+        precision_probes!(@module $m32: f32, $s32, $w32, $r32, $rw32; $($key = $f32),*);
+        precision_probes!(@module $m64: f64, $s64, $w64, $r64, $rw64; $($key = $f64),*);
+    };
+    (@module $m:ident: $T:ty, $storage:ident, $words:expr, $rolling:ident, $rwords:expr;
+     new = $new:ident, set = $set:ident, wrench = $wrench:ident, many = $many:ident,
+     curvatures_new = $curv_new:ident, sphere_plane = $sphere_plane:ident,
+     sphere_sphere = $sphere_sphere:ident, ball_race = $ball_race:ident,
+     modulus = $modulus:ident,
+     new_rolling = $new_rolling:ident, wrench_rolling = $wrench_rolling:ident,
+     many_rolling = $many_rolling:ident, rolling_new = $rnew:ident, rolling_wrench = $rwrench:ident,
+     jacobian = $jacobian:ident, jacobian_rolling = $jacobian_rolling:ident,
+     step = $single:ident, step_many = $step_many:ident) => {
         pub(crate) mod $m {
             use super::*;
 
@@ -64,28 +80,56 @@ macro_rules! precision_probes {
                 black_box(x as $T)
             }
 
+            /// A contact storage of black-boxed (zero) words: never initialised, as far as
+            /// the optimiser knows.
             fn storage() -> $storage {
                 $storage {
                     opaque: black_box([0; $words]),
                 }
             }
 
-            #[inline(never)]
-            fn probe_capi_contact_new() {
-                let mut s = storage();
-                let spec = contensou_spec::<$T> {
+            /// A rolling storage, as [`storage`].
+            fn rolling_storage() -> $rolling {
+                $rolling {
+                    opaque: black_box([0; $rwords]),
+                }
+            }
+
+            fn spec() -> contensou_spec<$T> {
+                contensou_spec {
                     p: v(1.0),
                     q: v(2.0),
                     estar: v(3.0),
                     cd: v(0.0),
                     f: v(0.1),
                     delta: v(1e-4),
-                };
+                }
+            }
+
+            fn roll() -> contensou_rolling_step<$T> {
+                contensou_rolling_step {
+                    vrx: v(1.0),
+                    vry: v(0.1),
+                }
+            }
+
+            fn velocity() -> contensou_step_velocity<$T> {
+                contensou_step_velocity {
+                    vn: v(-1e-2),
+                    vx: v(0.01),
+                    vy: v(0.0),
+                    omega: v(50.0),
+                }
+            }
+
+            #[inline(never)]
+            fn probe_capi_contact_new() {
+                let mut s = storage();
                 let mut col = black_box(0);
                 let r = unsafe {
                     $new(
                         ptr(&mut s),
-                        ptr(&spec),
+                        ptr(&spec()),
                         black_box(0),
                         black_box(1),
                         ptr(&mut col),
@@ -153,59 +197,15 @@ macro_rules! precision_probes {
                 black_box((r, e));
             }
 
-            pub(crate) fn run() {
-                probe_capi_contact_new();
-                probe_capi_contact_set_curvatures();
-                probe_capi_contact_wrench();
-                probe_capi_contact_wrench_many();
-                probe_capi_curvatures();
-                probe_capi_modulus_of();
-            }
-        }
-    };
-}
-
-precision_probes!(single: f32, contensou_contact_f32, CONTENSOU_CONTACT_F32_SIZE / 8,
-    contensou_contact_new_f32, contensou_contact_set_curvatures_f32, contensou_contact_wrench_f32,
-    contensou_contact_wrench_many_f32,
-    contensou_curvatures_new_f32, contensou_curvatures_sphere_plane_f32,
-    contensou_curvatures_sphere_sphere_f32, contensou_curvatures_ball_race_f32, contensou_modulus_of_f32);
-precision_probes!(double: f64, contensou_contact_f64, CONTENSOU_CONTACT_F64_SIZE / 8,
-    contensou_contact_new_f64, contensou_contact_set_curvatures_f64, contensou_contact_wrench_f64,
-    contensou_contact_wrench_many_f64,
-    contensou_curvatures_new_f64, contensou_curvatures_sphere_plane_f64,
-    contensou_curvatures_sphere_sphere_f64, contensou_curvatures_ball_race_f64, contensou_modulus_of_f64);
-
-/// The rolling functions (issue 20), one module per precision.
-macro_rules! rolling_probes {
-    ($m:ident: $T:ty, $storage:ident, $words:expr, $rolling:ident, $rwords:expr,
-     $new_rolling:ident, $wrench_rolling:ident, $many_rolling:ident, $rnew:ident, $rwrench:ident) => {
-        pub(crate) mod $m {
-            use super::*;
-
-            fn v(x: f64) -> $T {
-                black_box(x as $T)
-            }
-
             #[inline(never)]
             fn probe_capi_contact_new_rolling() {
-                let mut s = $storage {
-                    opaque: black_box([0; $words]),
-                };
-                let spec = contensou_spec::<$T> {
-                    p: v(1.0),
-                    q: v(2.0),
-                    estar: v(3.0),
-                    cd: v(0.0),
-                    f: v(0.1),
-                    delta: v(1e-4),
-                };
+                let mut s = storage();
                 let (g, nu) = (v(1e9), v(0.3));
                 let mut col = black_box(0);
                 let r = unsafe {
                     $new_rolling(
                         ptr(&mut s),
-                        ptr(&spec),
+                        ptr(&spec()),
                         ptr(&g),
                         ptr(&nu),
                         black_box(5),
@@ -218,27 +218,25 @@ macro_rules! rolling_probes {
 
             #[inline(never)]
             fn probe_capi_contact_wrench_rolling() {
-                let s = $storage {
-                    opaque: black_box([0; $words]),
-                };
+                let s = storage();
                 let step = step::<$T>(v);
-                let roll = contensou_rolling_step::<$T> {
-                    vrx: v(1.0),
-                    vry: v(0.1),
-                };
                 let mut w = contensou_wrench::<$T>::default();
                 let mut col = black_box(0);
                 let r = unsafe {
-                    $wrench_rolling(ptr(&s), ptr(&step), ptr(&roll), ptr(&mut w), ptr(&mut col))
+                    $wrench_rolling(
+                        ptr(&s),
+                        ptr(&step),
+                        ptr(&roll()),
+                        ptr(&mut w),
+                        ptr(&mut col),
+                    )
                 };
                 black_box((r, w, col));
             }
 
             #[inline(never)]
             fn probe_capi_contact_wrench_many_rolling() {
-                let s = $storage {
-                    opaque: black_box([0; $words]),
-                };
+                let s = storage();
                 let x = [v(1e-6); 9];
                 let mut o: [[$T; 9]; 7] = [[v(0.0); 9]; 7];
                 let (steps, out) = columns(&x, &mut o);
@@ -263,9 +261,7 @@ macro_rules! rolling_probes {
 
             #[inline(never)]
             fn probe_capi_rolling_new() {
-                let mut s = $rolling {
-                    opaque: black_box([0; $rwords]),
-                };
+                let mut s = rolling_storage();
                 let mut col = black_box(0);
                 let r = unsafe {
                     $rnew(
@@ -282,9 +278,7 @@ macro_rules! rolling_probes {
 
             #[inline(never)]
             fn probe_capi_rolling_wrench() {
-                let s = $rolling {
-                    opaque: black_box([0; $rwords]),
-                };
+                let s = rolling_storage();
                 let state = contensou_rolling_state::<$T> {
                     a: v(6e-3),
                     b: v(4e-3),
@@ -301,47 +295,10 @@ macro_rules! rolling_probes {
                 black_box((r, out, col));
             }
 
-            pub(crate) fn run() {
-                probe_capi_contact_new_rolling();
-                probe_capi_contact_wrench_rolling();
-                probe_capi_contact_wrench_many_rolling();
-                probe_capi_rolling_new();
-                probe_capi_rolling_wrench();
-            }
-        }
-    };
-}
-
-rolling_probes!(rolling_single: f32, contensou_contact_f32, CONTENSOU_CONTACT_F32_SIZE / 8,
-    contensou_rolling_f32, CONTENSOU_ROLLING_F32_SIZE / 8,
-    contensou_contact_new_rolling_f32, contensou_contact_wrench_rolling_f32,
-    contensou_contact_wrench_many_rolling_f32, contensou_rolling_new_f32, contensou_rolling_wrench_f32);
-rolling_probes!(rolling_double: f64, contensou_contact_f64, CONTENSOU_CONTACT_F64_SIZE / 8,
-    contensou_rolling_f64, CONTENSOU_ROLLING_F64_SIZE / 8,
-    contensou_contact_new_rolling_f64, contensou_contact_wrench_rolling_f64,
-    contensou_contact_wrench_many_rolling_f64, contensou_rolling_new_f64, contensou_rolling_wrench_f64);
-
-/// The wrench's Jacobian (`contensou_contact_jacobian_*`, `…_jacobian_rolling_*`), one module
-/// per precision.
-macro_rules! jacobian_probes {
-    ($m:ident: $T:ty, $storage:ident, $words:expr, $jacobian:ident, $jacobian_rolling:ident) => {
-        pub(crate) mod $m {
-            use super::*;
-
-            fn v(x: f64) -> $T {
-                black_box(x as $T)
-            }
-
             #[inline(never)]
             fn probe_capi_contact_jacobian() {
-                let s = $storage {
-                    opaque: black_box([0; $words]),
-                };
+                let s = storage();
                 let step = step::<$T>(v);
-                let roll = contensou_rolling_step::<$T> {
-                    vrx: v(1.0),
-                    vry: v(0.1),
-                };
                 let mut j = contensou_jacobian::<$T>::default();
                 let mut col = black_box(0);
                 let r = unsafe {
@@ -350,7 +307,7 @@ macro_rules! jacobian_probes {
                         $jacobian_rolling(
                             ptr(&s),
                             ptr(&step),
-                            ptr(&roll),
+                            ptr(&roll()),
                             ptr(&mut j),
                             ptr(&mut col),
                         ),
@@ -359,35 +316,9 @@ macro_rules! jacobian_probes {
                 black_box((r, j, col));
             }
 
-            pub(crate) fn run() {
-                probe_capi_contact_jacobian();
-            }
-        }
-    };
-}
-
-jacobian_probes!(jacobian_single: f32, contensou_contact_f32, CONTENSOU_CONTACT_F32_SIZE / 8,
-    contensou_contact_jacobian_f32, contensou_contact_jacobian_rolling_f32);
-jacobian_probes!(jacobian_double: f64, contensou_contact_f64, CONTENSOU_CONTACT_F64_SIZE / 8,
-    contensou_contact_jacobian_f64, contensou_contact_jacobian_rolling_f64);
-
-/// The step-aware wrench: one contact (`contensou_contact_step_*`) and k = 1 … 8 contacts
-/// sharing W (`contensou_step_many_*`, k black-boxed: every K of its dispatch), one module per
-/// precision.
-macro_rules! step_probes {
-    ($m:ident: $T:ty, $storage:ident, $words:expr, $single:ident, $many:ident) => {
-        pub(crate) mod $m {
-            use super::*;
-
-            fn v(x: f64) -> $T {
-                black_box(x as $T)
-            }
-
             #[inline(never)]
             fn probe_capi_contact_step() {
-                let s = $storage {
-                    opaque: black_box([0; $words]),
-                };
+                let s = storage();
                 let w = contensou_inverse_mass {
                     nn: v(30.0),
                     nx: v(0.0),
@@ -400,26 +331,16 @@ macro_rules! step_probes {
                     yw: v(0.0),
                     ww: v(7e5),
                 };
-                let u = contensou_step_velocity {
-                    vn: v(-1e-2),
-                    vx: v(0.01),
-                    vy: v(0.0),
-                    omega: v(50.0),
-                };
-                let roll = contensou_rolling_step {
-                    vrx: v(0.1),
-                    vry: v(0.0),
-                };
                 let (st, mut out, mut col) =
                     (step(v), contensou_step_wrench::default(), black_box(0));
                 let r = unsafe {
                     $single(
                         ptr(&s),
                         ptr(&st),
-                        ptr(&roll),
+                        ptr(&roll()),
                         v(1e-3),
                         ptr(&w),
-                        ptr(&u),
+                        ptr(&velocity()),
                         ptr(&mut out),
                         ptr(&mut col),
                     )
@@ -430,29 +351,19 @@ macro_rules! step_probes {
             #[inline(never)]
             fn probe_capi_step_many() {
                 const M: usize = CONTENSOU_STEP_MAX_CONTACTS;
-                let s = $storage {
-                    opaque: black_box([0; $words]),
-                };
+                let s = storage();
                 let contacts: [*const $storage; M] = [ptr(&s as *const $storage); M];
                 let steps = [step(v); M];
-                let roll = [contensou_rolling_step {
-                    vrx: v(0.1),
-                    vry: v(0.0),
-                }; M];
+                let roll = [roll(); M];
                 let w = [v(0.0); 16 * M * M];
                 let free = [contensou_step_free {
-                    u: contensou_step_velocity {
-                        vn: v(-1e-2),
-                        vx: v(0.01),
-                        vy: v(0.0),
-                        omega: v(50.0),
-                    },
+                    u: velocity(),
                     h: v(1e-6),
                 }; M];
                 let mut out = [contensou_step_wrench::default(); M];
                 let (mut index, mut col) = (black_box(0), black_box(0));
                 let r = unsafe {
-                    $many(
+                    $step_many(
                         ptr(contacts.as_ptr()),
                         black_box(3),
                         ptr(steps.as_ptr()),
@@ -469,6 +380,18 @@ macro_rules! step_probes {
             }
 
             pub(crate) fn run() {
+                probe_capi_contact_new();
+                probe_capi_contact_set_curvatures();
+                probe_capi_contact_wrench();
+                probe_capi_contact_wrench_many();
+                probe_capi_curvatures();
+                probe_capi_modulus_of();
+                probe_capi_contact_new_rolling();
+                probe_capi_contact_wrench_rolling();
+                probe_capi_contact_wrench_many_rolling();
+                probe_capi_rolling_new();
+                probe_capi_rolling_wrench();
+                probe_capi_contact_jacobian();
                 probe_capi_contact_step();
                 probe_capi_step_many();
             }
@@ -476,10 +399,31 @@ macro_rules! step_probes {
     };
 }
 
-step_probes!(step_single: f32, contensou_contact_f32, CONTENSOU_CONTACT_F32_SIZE / 8,
-    contensou_contact_step_f32, contensou_step_many_f32);
-step_probes!(step_double: f64, contensou_contact_f64, CONTENSOU_CONTACT_F64_SIZE / 8,
-    contensou_contact_step_f64, contensou_step_many_f64);
+precision_probes! {
+    single, double;
+    storage = [contensou_contact_f32, contensou_contact_f64],
+    words = [CONTENSOU_CONTACT_F32_SIZE / 8, CONTENSOU_CONTACT_F64_SIZE / 8],
+    rolling = [contensou_rolling_f32, contensou_rolling_f64],
+    rolling_words = [CONTENSOU_ROLLING_F32_SIZE / 8, CONTENSOU_ROLLING_F64_SIZE / 8],
+    new = [contensou_contact_new_f32, contensou_contact_new_f64],
+    set = [contensou_contact_set_curvatures_f32, contensou_contact_set_curvatures_f64],
+    wrench = [contensou_contact_wrench_f32, contensou_contact_wrench_f64],
+    many = [contensou_contact_wrench_many_f32, contensou_contact_wrench_many_f64],
+    curvatures_new = [contensou_curvatures_new_f32, contensou_curvatures_new_f64],
+    sphere_plane = [contensou_curvatures_sphere_plane_f32, contensou_curvatures_sphere_plane_f64],
+    sphere_sphere = [contensou_curvatures_sphere_sphere_f32, contensou_curvatures_sphere_sphere_f64],
+    ball_race = [contensou_curvatures_ball_race_f32, contensou_curvatures_ball_race_f64],
+    modulus = [contensou_modulus_of_f32, contensou_modulus_of_f64],
+    new_rolling = [contensou_contact_new_rolling_f32, contensou_contact_new_rolling_f64],
+    wrench_rolling = [contensou_contact_wrench_rolling_f32, contensou_contact_wrench_rolling_f64],
+    many_rolling = [contensou_contact_wrench_many_rolling_f32, contensou_contact_wrench_many_rolling_f64],
+    rolling_new = [contensou_rolling_new_f32, contensou_rolling_new_f64],
+    rolling_wrench = [contensou_rolling_wrench_f32, contensou_rolling_wrench_f64],
+    jacobian = [contensou_contact_jacobian_f32, contensou_contact_jacobian_f64],
+    jacobian_rolling = [contensou_contact_jacobian_rolling_f32, contensou_contact_jacobian_rolling_f64],
+    step = [contensou_contact_step_f32, contensou_contact_step_f64],
+    step_many = [contensou_step_many_f32, contensou_step_many_f64],
+}
 
 #[inline(never)]
 fn probe_capi_any_messages() {
@@ -506,12 +450,6 @@ fn probe_capi_any_names() {
 pub(crate) fn run() {
     single::run();
     double::run();
-    rolling_single::run();
-    rolling_double::run();
-    jacobian_single::run();
-    jacobian_double::run();
-    step_single::run();
-    step_double::run();
     probe_capi_any_messages();
     probe_capi_any_names();
 }

@@ -11,6 +11,8 @@ use numpy::{AllowTypeChange, Element, PyArrayLikeDyn, PyUntypedArrayMethods};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 
+use crate::rows::Precision;
+
 /// An argument converted to a numpy array of the chosen precision (numpy's `asarray`).
 pub type Arg<'py, T> = PyArrayLikeDyn<'py, T, AllowTypeChange>;
 
@@ -56,6 +58,54 @@ pub fn broadcast_shape<T: Element>(args: &[(&str, &Arg<'_, T>)]) -> PyResult<Vec
         }
     }
     Ok(shape)
+}
+
+/// The arguments `names` and the optional ones `optional_names` (`None`: not given) converted
+/// to arrays of `T` (in that order: the first that numpy cannot convert is the error), then
+/// broadcast together, handed to `then` as columns over the broadcast shape (shape, columns,
+/// optional columns). Every shell function's arguments go through here.
+pub fn with_columns<'py, T: Precision, R, const N: usize, const M: usize>(
+    names: [&'static str; N],
+    values: [&Bound<'py, PyAny>; N],
+    optional_names: [&'static str; M],
+    optional: [Option<&Bound<'py, PyAny>>; M],
+    then: impl for<'a> FnOnce(
+        &'a [usize],
+        [Column<'a, T>; N],
+        [Option<Column<'a, T>>; M],
+    ) -> PyResult<R>,
+) -> PyResult<R> {
+    let mut args = Vec::with_capacity(N);
+    for (name, value) in names.into_iter().zip(values) {
+        args.push(T::convert(name, value)?);
+    }
+    let mut extra = [const { None }; M];
+    for ((arg, name), value) in extra.iter_mut().zip(optional_names).zip(optional) {
+        if let Some(v) = value {
+            *arg = Some(T::convert(name, v)?);
+        }
+    }
+    let given = optional_names.into_iter().zip(&extra);
+    let named: Vec<_> = names
+        .into_iter()
+        .zip(&args)
+        .chain(given.filter_map(|(name, arg)| Some((name, arg.as_ref()?))))
+        .collect();
+    let shape = broadcast_shape(&named)?;
+    let mut columns = Vec::with_capacity(N);
+    for arg in &args {
+        columns.push(Column::new(arg, &shape)?);
+    }
+    let columns = columns
+        .try_into()
+        .map_err(|_| PyValueError::new_err("argument count"))?;
+    let mut optional = [const { None }; M];
+    for (column, arg) in optional.iter_mut().zip(&extra) {
+        if let Some(a) = arg {
+            *column = Some(Column::new(a, &shape)?);
+        }
+    }
+    then(&shape, columns, optional)
 }
 
 /// One input column over the rows of the broadcast shape.

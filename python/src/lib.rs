@@ -34,8 +34,8 @@ use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
-use columns::{Arg, Column, broadcast_shape};
-use rows::{PerRow, Precision, SpecColumns, StepColumns, evaluate_py};
+use columns::{Column, with_columns};
+use rows::{Named, PerRow, Precision, StepColumns, contract_named, evaluate_py, step_named};
 
 /// The value of `option` called `name` among `all`, or a `ValueError` listing the names.
 fn named<V: Copy>(
@@ -73,93 +73,87 @@ fn is_f32(precision: &str) -> PyResult<bool> {
     })
 }
 
-/// The named arguments converted to arrays of `T`.
-fn convert_all<'py, T: Precision, const N: usize>(
-    names: [&'static str; N],
-    values: [&Bound<'py, PyAny>; N],
-) -> PyResult<[Arg<'py, T>; N]> {
-    let mut out = Vec::with_capacity(N);
-    for (name, value) in names.into_iter().zip(values) {
-        out.push(T::convert(name, value)?);
-    }
-    out.try_into()
-        .map_err(|_| PyValueError::new_err("argument count"))
-}
-
-/// The columns of `args` over `shape`.
-fn columns_of<'a, T: Precision, const N: usize>(
-    args: &'a [Arg<'_, T>; N],
-    shape: &[usize],
-) -> PyResult<[Column<'a, T>; N]> {
-    let mut out = Vec::with_capacity(N);
-    for arg in args {
-        out.push(Column::new(arg, shape)?);
-    }
-    out.try_into()
-        .map_err(|_| PyValueError::new_err("argument count"))
-}
-
-/// The optional arguments `G, nu, vrx, vry` converted to arrays of `T` (`None`: not given).
-fn convert_optional<'py, T: Precision>(
-    values: [Option<&Bound<'py, PyAny>>; 4],
-) -> PyResult<[Option<Arg<'py, T>>; 4]> {
-    convert_named_optional(ROLLING_INPUTS, values)
-}
-
-/// Optional arguments called `names` converted to arrays of `T` (`None`: not given).
-fn convert_named_optional<'py, T: Precision, const N: usize>(
-    names: [&'static str; N],
-    values: [Option<&Bound<'py, PyAny>>; N],
-) -> PyResult<[Option<Arg<'py, T>>; N]> {
-    let mut out = [const { None }; N];
-    for (k, value) in values.into_iter().enumerate() {
-        if let Some(v) = value {
-            out[k] = Some(T::convert(names[k], v)?);
+/// A `#[pyfunction]` over the contract's columns: `P, Q, estar, cd, f, delta, h, hdot, vx, vy,
+/// omega`, then the `[$extra]` ones; keyword-only `law`, `precision`, `form`, the optional
+/// `G, nu, vrx, vry`, then the optional `[$optional]` ones. Its body: `$in::<T>(py, values,
+/// optional, law, form)` in the precision asked for, the arguments in that order.
+macro_rules! contract_function {
+    (
+        $(#[$doc:meta])*
+        $vis:vis fn $name:ident => $in:ident, [$($extra:ident),*], [$($optional:ident),*]
+    ) => {
+        $(#[$doc])*
+        #[::pyo3::pyfunction]
+        #[pyo3(signature = (P, Q, estar, cd, f, delta, h, hdot, vx, vy, omega, $($extra,)* *, law = "best", precision = "f64", form = "fixed", G = None, nu = None, vrx = None, vry = None $(, $optional = None)*))]
+        #[allow(non_snake_case, clippy::too_many_arguments)]
+        $vis fn $name<'py>(
+            py: ::pyo3::Python<'py>,
+            P: &::pyo3::Bound<'py, ::pyo3::PyAny>,
+            Q: &::pyo3::Bound<'py, ::pyo3::PyAny>,
+            estar: &::pyo3::Bound<'py, ::pyo3::PyAny>,
+            cd: &::pyo3::Bound<'py, ::pyo3::PyAny>,
+            f: &::pyo3::Bound<'py, ::pyo3::PyAny>,
+            delta: &::pyo3::Bound<'py, ::pyo3::PyAny>,
+            h: &::pyo3::Bound<'py, ::pyo3::PyAny>,
+            hdot: &::pyo3::Bound<'py, ::pyo3::PyAny>,
+            vx: &::pyo3::Bound<'py, ::pyo3::PyAny>,
+            vy: &::pyo3::Bound<'py, ::pyo3::PyAny>,
+            omega: &::pyo3::Bound<'py, ::pyo3::PyAny>,
+            $($extra: &::pyo3::Bound<'py, ::pyo3::PyAny>,)*
+            law: &str,
+            precision: &str,
+            form: &str,
+            G: Option<&::pyo3::Bound<'py, ::pyo3::PyAny>>,
+            nu: Option<&::pyo3::Bound<'py, ::pyo3::PyAny>>,
+            vrx: Option<&::pyo3::Bound<'py, ::pyo3::PyAny>>,
+            vry: Option<&::pyo3::Bound<'py, ::pyo3::PyAny>>,
+            $($optional: Option<&::pyo3::Bound<'py, ::pyo3::PyAny>>,)*
+        ) -> ::pyo3::PyResult<::pyo3::Bound<'py, ::pyo3::types::PyDict>> {
+            let (law, form) = ($crate::law_of(law)?, $crate::form_of(form)?);
+            let values = [P, Q, estar, cd, f, delta, h, hdot, vx, vy, omega $(, $extra)*];
+            let optional = [G, nu, vrx, vry $(, $optional)*];
+            if $crate::is_f32(precision)? {
+                $in::<f32>(py, values, optional, law, form)
+            } else {
+                $in::<f64>(py, values, optional, law, form)
+            }
         }
-    }
-    Ok(out)
+    };
 }
-
-/// The columns of the given optional arguments over `shape`.
-fn optional_columns<'a, T: Precision, const N: usize>(
-    args: &'a [Option<Arg<'_, T>>; N],
-    shape: &[usize],
-) -> PyResult<[Option<Column<'a, T>>; N]> {
-    let mut out = [const { None }; N];
-    for (k, arg) in args.iter().enumerate() {
-        if let Some(a) = arg {
-            out[k] = Some(Column::new(a, shape)?);
-        }
-    }
-    Ok(out)
-}
+pub(crate) use contract_function;
 
 /// The contract's arguments (the 11 columns, the optional `G, nu, vrx, vry`) as columns over
-/// their broadcast shape, handed to `then` (shape, contact columns, step columns, optional).
-fn with_contract_columns<'py, T: Precision, R>(
+/// their broadcast shape, handed to `then` with the rows' contacts of `law` and `form`: the
+/// shape, the step columns, the rolling velocity `[vrx, vry]`, the contacts and every column
+/// by name ([`Named`]).
+fn with_contract_rows<'py, T: Precision, R>(
     values: [&Bound<'py, PyAny>; 11],
     optional: [Option<&Bound<'py, PyAny>>; 4],
+    law: Law,
+    form: Form,
     then: impl for<'a> FnOnce(
         &'a [usize],
-        &'a SpecColumns<'a, T>,
         &'a StepColumns<'a, T>,
-        &'a [Option<Column<'a, T>>; 4],
+        [Option<&'a Column<'a, T>>; 2],
+        PerRow<'a, T>,
+        &'a Named<'a, 'a, T>,
     ) -> PyResult<R>,
 ) -> PyResult<R> {
-    let args = convert_all::<T, 11>(INPUTS, values)?;
-    let extra = convert_optional::<T>(optional)?;
-    let mut named: Vec<_> = INPUTS.iter().copied().zip(args.iter()).collect();
-    for (name, arg) in ROLLING_INPUTS.iter().zip(&extra) {
-        if let Some(a) = arg {
-            named.push((name, a));
-        }
-    }
-    let shape = broadcast_shape(&named)?;
-    let [p, q, estar, cd, f, delta, h, hdot, vx, vy, omega] = columns_of(&args, &shape)?;
-    let rolling = optional_columns(&extra, &shape)?;
-    let spec = [p, q, estar, cd, f, delta];
-    let steps = [h, hdot, vx, vy, omega];
-    then(&shape, &spec, &steps, &rolling)
+    with_columns(
+        INPUTS,
+        values,
+        ROLLING_INPUTS,
+        optional,
+        |shape, c, rolling| {
+            let [p, q, estar, cd, f, delta, h, hdot, vx, vy, omega] = c;
+            let spec = [p, q, estar, cd, f, delta];
+            let steps = [h, hdot, vx, vy, omega];
+            let [g, nu, vrx, vry] = rolling.each_ref().map(Option::as_ref);
+            let contacts = PerRow::new(&spec, [g, nu], law, form);
+            let named = contract_named(&spec, &steps, [g, nu, vrx, vry]);
+            then(shape, &steps, [vrx, vry], contacts, &named)
+        },
+    )
 }
 
 /// The per-row function in precision `T`.
@@ -170,59 +164,26 @@ fn wrench_in<'py, T: Precision>(
     law: Law,
     form: Form,
 ) -> PyResult<Bound<'py, PyDict>> {
-    with_contract_columns::<T, _>(values, optional, |shape, spec, steps, rolling| {
-        let rolling = rolling.each_ref().map(Option::as_ref);
-        let inputs = core::array::from_fn(|k| match k {
-            0..6 => Some(&spec[k]),
-            6..11 => Some(&steps[k - 6]),
-            _ => rolling[k - 11],
-        });
-        let contacts = PerRow::new(spec, [rolling[0], rolling[1]], law, form);
-        evaluate_py(py, shape, steps, contacts, inputs)
-    })
+    with_contract_rows::<T, _>(
+        values,
+        optional,
+        law,
+        form,
+        |shape, steps, rolling, c, named| evaluate_py(py, shape, steps, rolling, c, named),
+    )
 }
 
-/// The wrench of the contract, row by row over the broadcast arguments.
-///
-/// Arguments are the contract's input columns (`contensou.INPUTS`) and, optionally, the
-/// rolling columns `G`, `nu` (contact) and `vrx`, `vry` (step; `contensou.ROLLING_INPUTS`,
-/// read by the rolling laws only; defaults G = E*·(1 − ν), ν = 0.3, V = 0): scalars or
-/// arrays that broadcast together. Returns a dict of arrays `N, Fx, Fy, Tz, a, b, e2` of the broadcast
-/// shape (numpy scalars if every argument is a scalar), dtype float32 for `precision="f32"`.
-/// Raises `ValueError` naming the argument, the index and the reason for any invalid value,
-/// an unknown `law`, `precision` or `form`, or shapes that do not broadcast.
-#[pyfunction]
-#[pyo3(signature = (P, Q, estar, cd, f, delta, h, hdot, vx, vy, omega, *, law = "best", precision = "f64", form = "fixed", G = None, nu = None, vrx = None, vry = None))]
-#[allow(non_snake_case, clippy::too_many_arguments)]
-fn wrench<'py>(
-    py: Python<'py>,
-    P: &Bound<'py, PyAny>,
-    Q: &Bound<'py, PyAny>,
-    estar: &Bound<'py, PyAny>,
-    cd: &Bound<'py, PyAny>,
-    f: &Bound<'py, PyAny>,
-    delta: &Bound<'py, PyAny>,
-    h: &Bound<'py, PyAny>,
-    hdot: &Bound<'py, PyAny>,
-    vx: &Bound<'py, PyAny>,
-    vy: &Bound<'py, PyAny>,
-    omega: &Bound<'py, PyAny>,
-    law: &str,
-    precision: &str,
-    form: &str,
-    G: Option<&Bound<'py, PyAny>>,
-    nu: Option<&Bound<'py, PyAny>>,
-    vrx: Option<&Bound<'py, PyAny>>,
-    vry: Option<&Bound<'py, PyAny>>,
-) -> PyResult<Bound<'py, PyDict>> {
-    let (law, form) = (law_of(law)?, form_of(form)?);
-    let values = [P, Q, estar, cd, f, delta, h, hdot, vx, vy, omega];
-    let optional = [G, nu, vrx, vry];
-    if is_f32(precision)? {
-        wrench_in::<f32>(py, values, optional, law, form)
-    } else {
-        wrench_in::<f64>(py, values, optional, law, form)
-    }
+contract_function! {
+    /// The wrench of the contract, row by row over the broadcast arguments.
+    ///
+    /// Arguments are the contract's input columns (`contensou.INPUTS`) and, optionally, the
+    /// rolling columns `G`, `nu` (contact) and `vrx`, `vry` (step; `contensou.ROLLING_INPUTS`,
+    /// read by the rolling laws only; defaults G = E*·(1 − ν), ν = 0.3, V = 0): scalars or
+    /// arrays that broadcast together. Returns a dict of arrays `N, Fx, Fy, Tz, a, b, e2` of the broadcast
+    /// shape (numpy scalars if every argument is a scalar), dtype float32 for `precision="f32"`.
+    /// Raises `ValueError` naming the argument, the index and the reason for any invalid value,
+    /// an unknown `law`, `precision` or `form`, or shapes that do not broadcast.
+    fn wrench => wrench_in, [], []
 }
 
 /// A value in either precision: a built contact (one per `Contact` or `RollingContact`
@@ -309,7 +270,8 @@ fn build<T: Precision>(
 }
 
 /// A built contact's step arguments (`h, hdot, vx, vy, omega`, the optional `vrx, vry`) as
-/// columns over their broadcast shape, handed to `then` (shape, step columns, `[vrx, vry]`).
+/// columns over their broadcast shape, handed to `then`: the shape, the step columns,
+/// `[vrx, vry]` and every column by name ([`Named`]).
 fn with_step_columns<'py, T: Precision, R>(
     values: [&Bound<'py, PyAny>; 5],
     rolling: [Option<&Bound<'py, PyAny>>; 2],
@@ -317,21 +279,15 @@ fn with_step_columns<'py, T: Precision, R>(
         &'a [usize],
         &'a StepColumns<'a, T>,
         [Option<&'a Column<'a, T>>; 2],
+        &'a Named<'a, 'a, T>,
     ) -> PyResult<R>,
 ) -> PyResult<R> {
     let names = [INPUTS[6], INPUTS[7], INPUTS[8], INPUTS[9], INPUTS[10]];
-    let args = convert_all::<T, 5>(names, values)?;
-    let extra = convert_optional::<T>([None, None, rolling[0], rolling[1]])?;
-    let mut named: Vec<_> = names.iter().copied().zip(args.iter()).collect();
-    for (name, arg) in ROLLING_INPUTS.iter().zip(&extra) {
-        if let Some(a) = arg {
-            named.push((name, a));
-        }
-    }
-    let shape = broadcast_shape(&named)?;
-    let steps = columns_of(&args, &shape)?;
-    let [_, _, vrx, vry] = optional_columns(&extra, &shape)?;
-    then(&shape, &steps, [vrx.as_ref(), vry.as_ref()])
+    let optional = [ROLLING_INPUTS[2], ROLLING_INPUTS[3]];
+    with_columns(names, values, optional, rolling, |shape, steps, rolling| {
+        let rolling = rolling.each_ref().map(Option::as_ref);
+        then(shape, &steps, rolling, &step_named(&steps, rolling))
+    })
 }
 
 /// One step (or an array of steps) of a built contact in precision `T`.
@@ -341,14 +297,8 @@ fn steps_in<'py, T: Precision>(
     values: [&Bound<'py, PyAny>; 5],
     rolling: [Option<&Bound<'py, PyAny>>; 2],
 ) -> PyResult<Bound<'py, PyDict>> {
-    with_step_columns::<T, _>(values, rolling, |shape, steps, [vrx, vry]| {
-        let inputs = core::array::from_fn(|k| match k {
-            6..11 => Some(&steps[k - 6]),
-            13 => vrx,
-            14 => vry,
-            _ => None,
-        });
-        evaluate_py(py, shape, steps, contact, inputs)
+    with_step_columns::<T, _>(values, rolling, |shape, steps, rolling, named| {
+        evaluate_py(py, shape, steps, rolling, contact, named)
     })
 }
 

@@ -8,15 +8,13 @@ use ::contensou::friction::rolling::Wrench;
 use ::contensou::friction::rolling::row::{
     COLUMNS, Column as Col, OUTPUTS as ROW_OUTPUTS, Rejected, RowContact, RowLaw, RowState, Rows,
 };
-use numpy::PyArray1;
-use numpy::PyArrayMethods;
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
-use crate::columns::{broadcast_shape, index_of};
-use crate::rows::Precision;
-use crate::{Either, columns_of, convert_all, each, is_f32, named};
+use crate::columns::{index_of, with_columns};
+use crate::rows::{Precision, dict_of, each_row};
+use crate::{Either, each, is_f32, named};
 
 /// The input columns, as `contact_eval rolling` reads them.
 pub const INPUTS: [&str; 10] = COLUMNS;
@@ -34,12 +32,10 @@ fn rolling_in<'py, T: Precision>(
     values: [&Bound<'py, PyAny>; 10],
     law: RowLaw,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let args = convert_all::<T, 10>(INPUTS, values)?;
-    let named: Vec<_> = INPUTS.iter().copied().zip(args.iter()).collect();
-    let shape = broadcast_shape(&named)?;
-    let c = columns_of(&args, &shape)?;
-    let mut rows = Rows::new(law);
-    run(py, &shape, |i| rows.eval(&c.each_ref().map(|c| c.at(i))))
+    with_columns::<T, _, 10, 0>(INPUTS, values, [], [], |shape, c, []| {
+        let mut rows = Rows::new(law);
+        run(py, shape, |i| rows.eval(&c.each_ref().map(|c| c.at(i))))
+    })
 }
 
 /// The per-call columns `a, b, f, N, V, xi, eta, phi` of a built contact.
@@ -48,21 +44,19 @@ fn built_in<'py, T: Precision>(
     contact: &RowContact<T>,
     values: [&Bound<'py, PyAny>; 8],
 ) -> PyResult<Bound<'py, PyDict>> {
-    let args = convert_all::<T, 8>(STATE, values)?;
-    let named: Vec<_> = STATE.iter().copied().zip(args.iter()).collect();
-    let shape = broadcast_shape(&named)?;
-    let c = columns_of(&args, &shape)?;
-    run(py, &shape, |i| {
-        let [a, b, f, n, v, xi, eta, phi] = c.each_ref().map(|c| c.at(i));
-        contact.wrench(&RowState {
-            a,
-            b,
-            f,
-            n,
-            v,
-            xi,
-            eta,
-            phi,
+    with_columns(STATE, values, [], [], |shape, c, []| {
+        run(py, shape, |i| {
+            let [a, b, f, n, v, xi, eta, phi] = c.each_ref().map(|c| c.at(i));
+            contact.wrench(&RowState {
+                a,
+                b,
+                f,
+                n,
+                v,
+                xi,
+                eta,
+                phi,
+            })
         })
     })
 }
@@ -75,29 +69,9 @@ fn run<'py, T: Precision>(
     mut row: impl FnMut(usize) -> Result<Wrench<T>, Rejected<T>> + Send,
 ) -> PyResult<Bound<'py, PyDict>> {
     let rows: usize = shape.iter().product();
-    let result = py.detach(|| {
-        let mut out: [Vec<T>; 3] = core::array::from_fn(|_| Vec::with_capacity(rows));
-        for i in 0..rows {
-            let w = row(i).map_err(|r| (i, r))?;
-            for (o, x) in out.iter_mut().zip([w.fx, w.fy, w.mz]) {
-                o.push(x);
-            }
-        }
-        Ok::<_, (usize, Rejected<T>)>(out)
-    });
+    let result = py.detach(|| each_row(rows, |i| row(i).map(|w| [w.fx, w.fy, w.mz])));
     match result {
-        Ok(out) => {
-            let dict = PyDict::new(py);
-            for (name, column) in OUTPUTS.iter().zip(out) {
-                let flat = PyArray1::from_vec(py, column);
-                match shape.len() {
-                    0 => dict.set_item(*name, flat.get_item(0)?)?,
-                    1 => dict.set_item(*name, flat)?,
-                    _ => dict.set_item(*name, flat.reshape(shape)?)?,
-                }
-            }
-            Ok(dict)
-        }
+        Ok(out) => dict_of(py, shape, &OUTPUTS, out),
         Err((i, r)) => Err(PyValueError::new_err(format!(
             "{} = {} at index {}: {}",
             r.column.name(),

@@ -8,8 +8,8 @@ use std::borrow::Cow;
 use ::contensou::Real;
 use ::contensou::batch::{BatchReal, Steps, Wrenches};
 use ::contensou::dynamic::{
-    DynContact, Form, INPUTS, Invalid, Law, OUTPUTS, ROLLING_INPUTS, RollingSpec, RollingSteps,
-    Spec,
+    DynContact, Form, INPUTS, Invalid, Law, OUTPUTS, ROLLING_INPUTS, RollingSpec, RollingStep,
+    RollingSteps, Spec, Step,
 };
 use numpy::{Element, PyArray1, PyArrayMethods};
 use pyo3::exceptions::PyValueError;
@@ -51,8 +51,55 @@ impl Precision for f64 {
 pub type StepColumns<'a, T> = [Column<'a, T>; 5];
 /// The contact columns `P, Q, estar, cd, f, delta`, in [`INPUTS`] order.
 pub type SpecColumns<'a, T> = [Column<'a, T>; 6];
-/// Every input column by name for the error message: [`INPUTS`] then [`ROLLING_INPUTS`].
-pub type Named<'a, 'b, T> = [Option<&'b Column<'a, T>>; 15];
+/// The input columns by name, only read to name the value of a rejected row (`None`: fixed by
+/// a built contact or not given).
+pub type Named<'c, 'a, T> = Vec<(&'static str, Option<&'c Column<'a, T>>)>;
+
+/// The contract's columns by name: [`INPUTS`] (the contact's, then the step's), then
+/// [`ROLLING_INPUTS`] (`G, nu, vrx, vry`, each when given).
+pub fn contract_named<'c, 'a, T: Precision>(
+    spec: &'c SpecColumns<'a, T>,
+    steps: &'c StepColumns<'a, T>,
+    rolling: [Option<&'c Column<'a, T>>; 4],
+) -> Named<'c, 'a, T> {
+    let given = spec.iter().chain(steps).map(Some);
+    let mut named: Vec<_> = INPUTS.into_iter().zip(given).collect();
+    named.extend(ROLLING_INPUTS.into_iter().zip(rolling));
+    named
+}
+
+/// A built contact's per-step columns by name: the step's, then `vrx, vry` when given.
+pub fn step_named<'c, 'a, T: Precision>(
+    steps: &'c StepColumns<'a, T>,
+    [vrx, vry]: [Option<&'c Column<'a, T>>; 2],
+) -> Named<'c, 'a, T> {
+    let mut named: Vec<_> = INPUTS[6..]
+        .iter()
+        .copied()
+        .zip(steps.iter().map(Some))
+        .collect();
+    named.extend(ROLLING_INPUTS[2..].iter().copied().zip([vrx, vry]));
+    named
+}
+
+/// Row `i`'s step (`h, hdot, vx, vy, omega`) and rolling velocity (`vrx, vry`; 0 when not
+/// given).
+pub fn step_at<T: Precision>(
+    steps: &StepColumns<'_, T>,
+    rolling: [Option<&Column<'_, T>>; 2],
+    i: usize,
+) -> (Step<T>, RollingStep<T>) {
+    let [h, hdot, vx, vy, omega] = steps.each_ref().map(|c| c.at(i));
+    let [vrx, vry] = rolling.map(|c| c.map_or(T::ZERO, |c| c.at(i)));
+    let step = Step {
+        h,
+        hdot,
+        vx,
+        vy,
+        omega,
+    };
+    (step, RollingStep { vrx, vry })
+}
 
 /// Where each row's contact comes from.
 pub trait Contacts<T: Real> {
@@ -224,50 +271,48 @@ pub fn evaluate<T: Precision>(
     Ok(Outputs { columns })
 }
 
-/// [`evaluate`] with the GIL released, its result as the Python dict or the `ValueError`.
-/// `inputs` are the 11 columns in [`INPUTS`] order then the 4 of [`ROLLING_INPUTS`] (`None`
-/// for those fixed by a built contact or not given), only read to name the rejected value;
-/// `vrx, vry` are also the rolling step columns.
+/// [`evaluate`] with the GIL released, its result as the Python dict or the `ValueError`
+/// ([`rejected`]); `rolling` (`vrx, vry`) are the rolling step columns when given.
 pub fn evaluate_py<'py, T: Precision>(
     py: Python<'py>,
     shape: &[usize],
     steps: &StepColumns<'_, T>,
+    rolling: [Option<&Column<'_, T>>; 2],
     contacts: impl Contacts<T> + Send,
-    inputs: Named<'_, '_, T>,
+    named: &[(&str, Option<&Column<'_, T>>)],
 ) -> PyResult<Bound<'py, PyDict>> {
     let rows = shape.iter().product();
-    let rolling = [inputs[13], inputs[14]];
     match py.detach(|| evaluate(rows, steps, rolling, contacts)) {
-        Ok(outputs) => to_dict(py, shape, outputs),
-        Err((row, invalid)) => {
-            let value = INPUTS
-                .iter()
-                .chain(ROLLING_INPUTS.iter())
-                .position(|&c| c == invalid.column)
-                .and_then(|k| inputs[k])
-                .map_or(String::new(), |c| format!(" = {}", c.at(row)));
-            Err(PyValueError::new_err(format!(
-                "{}{value} at index {}: {}",
-                invalid.column,
-                index_of(row, shape),
-                invalid.error.as_str()
-            )))
-        }
+        Ok(outputs) => dict_of(py, shape, &OUTPUTS, outputs.columns),
+        Err((row, invalid)) => Err(rejected(named, row, shape, invalid)),
     }
 }
 
-/// The dict `{N, Fx, Fy, Tz, a, b, e2}` of arrays of `shape` (numpy scalars for shape `()`,
-/// as a ufunc returns).
-fn to_dict<'py, T: Precision>(
-    py: Python<'py>,
+/// The `ValueError` of row `i` (flat, in `shape`) rejected for `invalid`: the column, its
+/// value when `named` holds that column (`(name, column)` of every input), the index and the
+/// reason.
+fn rejected<T: Precision>(
+    named: &[(&str, Option<&Column<'_, T>>)],
+    i: usize,
     shape: &[usize],
-    outputs: Outputs<T>,
-) -> PyResult<Bound<'py, PyDict>> {
-    dict_of(py, shape, &OUTPUTS, outputs.columns)
+    invalid: Invalid,
+) -> PyErr {
+    let value = named
+        .iter()
+        .find(|(n, _)| *n == invalid.column)
+        .and_then(|(_, c)| *c)
+        .map_or(String::new(), |c| format!(" = {}", c.at(i)));
+    PyValueError::new_err(format!(
+        "{}{value} at index {}: {}",
+        invalid.column,
+        index_of(i, shape),
+        invalid.error.as_str()
+    ))
 }
 
-/// The dict `{names[k]: columns[k]}` of arrays of `shape` (numpy scalars for shape `()`).
-fn dict_of<'py, T: Precision, const K: usize>(
+/// The dict `{names[k]: columns[k]}` of arrays of `shape` (numpy scalars for shape `()`, as a
+/// ufunc returns).
+pub fn dict_of<'py, T: Precision, const K: usize>(
     py: Python<'py>,
     shape: &[usize],
     names: &[&str; K],
@@ -287,10 +332,25 @@ fn dict_of<'py, T: Precision, const K: usize>(
     Ok(dict)
 }
 
+/// Rows `0..rows` through `row` (row i → its K outputs) into K columns; the first rejected
+/// row stops the loop: `(row, why)`.
+pub fn each_row<T, E, const K: usize>(
+    rows: usize,
+    mut row: impl FnMut(usize) -> Result<[T; K], E>,
+) -> Result<[Vec<T>; K], (usize, E)> {
+    let mut out: [Vec<T>; K] = core::array::from_fn(|_| Vec::with_capacity(rows));
+    for i in 0..rows {
+        let values = row(i).map_err(|e| (i, e))?;
+        for (o, x) in out.iter_mut().zip(values) {
+            o.push(x);
+        }
+    }
+    Ok(out)
+}
+
 /// Rows one at a time through `row` (the contact of row i and i → K outputs; the Jacobian and
 /// the step-aware wrench have no batch path), the GIL released: the dict `{names[k]: …}` of
-/// arrays of `shape`, or the first rejected row's `ValueError` — the column, its value when
-/// `named` holds that column (`(name, column)` of every input), the index and the reason.
+/// arrays of `shape`, or the first rejected row's `ValueError` ([`rejected`]).
 pub fn evaluate_each_py<'py, T: Precision, const K: usize>(
     py: Python<'py>,
     shape: &[usize],
@@ -300,30 +360,9 @@ pub fn evaluate_each_py<'py, T: Precision, const K: usize>(
     named: &[(&str, Option<&Column<'_, T>>)],
 ) -> PyResult<Bound<'py, PyDict>> {
     let rows: usize = shape.iter().product();
-    let result = py.detach(|| {
-        let mut out: [Vec<T>; K] = core::array::from_fn(|_| Vec::with_capacity(rows));
-        for i in 0..rows {
-            let values = contacts.at(i).and_then(|c| row(c, i)).map_err(|e| (i, e))?;
-            for (o, x) in out.iter_mut().zip(values) {
-                o.push(x);
-            }
-        }
-        Ok::<_, (usize, Invalid)>(out)
-    });
+    let result = py.detach(|| each_row(rows, |i| contacts.at(i).and_then(|c| row(c, i))));
     match result {
         Ok(out) => dict_of(py, shape, names, out),
-        Err((i, invalid)) => {
-            let value = named
-                .iter()
-                .find(|(n, _)| *n == invalid.column)
-                .and_then(|(_, c)| *c)
-                .map_or(String::new(), |c| format!(" = {}", c.at(i)));
-            Err(PyValueError::new_err(format!(
-                "{}{value} at index {}: {}",
-                invalid.column,
-                index_of(i, shape),
-                invalid.error.as_str()
-            )))
-        }
+        Err((i, invalid)) => Err(rejected(named, i, shape, invalid)),
     }
 }

@@ -28,3 +28,16 @@ def contract_rows(n, seed=0, dtype=np.float64):
     # Rounding to f32 must keep P <= Q.
     out["P"] = np.minimum(out["P"], out["Q"])
     return out
+
+
+def with_bad(good, name, value, index=None, shape=(5,)):
+    """The arguments `good` with `name` made bad: `value` itself (index None), or an array of
+    `shape` holding good's value everywhere but `value` at `index`."""
+    args = dict(good)
+    if index is None:
+        args[name] = value
+    else:
+        column = np.full(shape, args[name])
+        column[index] = value
+        args[name] = column
+    return args

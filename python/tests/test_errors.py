@@ -5,21 +5,15 @@ import numpy as np
 import pytest
 
 import contensou
+import rows
 
 SPEC = {"P": 20.0, "Q": 50.0, "estar": 1.15e11, "cd": 0.0, "f": 0.3, "delta": 1e-4}
 STEP = {"h": 1e-6, "hdot": 0.0, "vx": 0.01, "vy": -0.002, "omega": 30.0}
 
 
 def with_bad(name, value, index=None, shape=(5,)):
-    """Every column a scalar; `name` an array of `shape` with `value` at `index` (None: scalar)."""
-    args = {**SPEC, **STEP}
-    if index is None:
-        args[name] = value
-    else:
-        column = np.full(shape, args[name])
-        column[index] = value
-        args[name] = column
-    return args
+    """Every column a scalar but `name` (rows.with_bad)."""
+    return rows.with_bad({**SPEC, **STEP}, name, value, index, shape)
 
 
 CASES = [

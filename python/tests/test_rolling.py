@@ -16,6 +16,7 @@ import numpy as np
 import pytest
 
 import contensou
+from rows import with_bad
 
 REPO = Path(__file__).resolve().parents[2]
 DTYPES = {"f32": np.float32, "f64": np.float64}
@@ -141,15 +142,8 @@ GOOD = {"a": 6e-3, "b": 4e-3, "G": 8e10, "nu": 0.28, "f": 0.3, "N": 8e4, "V": 30
 @pytest.mark.parametrize("precision", ["f64", "f32"])
 @pytest.mark.parametrize("name,value,index,shape,start,reason", BAD)
 def test_bad_value_names_argument_index_and_reason(name, value, index, shape, start, reason, precision):
-    args = dict(GOOD)
-    if index is None:
-        args[name] = value
-    else:
-        column = np.full(shape, args[name])
-        column[index] = value
-        args[name] = column
     with pytest.raises(ValueError) as e:
-        contensou.rolling(**args, precision=precision)
+        contensou.rolling(**with_bad(GOOD, name, value, index, shape), precision=precision)
     assert str(e.value).startswith(start), str(e.value)
     assert reason in str(e.value), str(e.value)
 

@@ -39,20 +39,15 @@ impl<V: Lanes> QuarticLanes<V> {
             }
             a
         };
-        QuarticLanes {
-            a: V::from_array(&lane(|q| q.a)),
-            b: V::from_array(&lane(|q| q.b)),
-            c: V::from_array(&lane(|q| q.c)),
-            k22: V::from_array(&lane(|q| q.k22)),
-            k40: V::from_array(&lane(|q| q.k40)),
-            k40m: V::from_array(&lane(|q| q.k40m)),
-            hb: V::from_array(&lane(|q| q.hb)),
-            ha: V::from_array(&lane(|q| q.ha)),
-            t40: V::from_array(&lane(|q| q.t40)),
-            t22: V::from_array(&lane(|q| q.t22)),
-            t40m: V::from_array(&lane(|q| q.t40m)),
-            m1: V::from_array(&lane(|q| q.m1)),
+        // every field, lane i from the contact i (cycling)
+        macro_rules! by_lane {
+            ($($field:ident),*) => {
+                QuarticLanes {
+                    $($field: V::from_array(&lane(|q| q.$field)),)*
+                }
+            };
         }
+        by_lane!(a, b, c, k22, k40, k40m, hb, ha, t40, t22, t40m, m1)
     }
 
     /// `Quartic::new` lane by lane (each lane's constants in `k`).

@@ -20,6 +20,20 @@ use super::lanes::{
     LAST_PIECE, Lanes, MAX_LANES, PIECE_TABLE, gather_by_lane, lookup_by_lane, piece_by_lane,
 };
 
+/// `impl Trait for Vector`, `fn method(self, o) = intrinsic(self, o)`, for each
+/// `Trait method intrinsic`.
+macro_rules! binary_ops {
+    ($name:ident: $($trait:ident $method:ident $f:ident),*) => {$(
+        impl $trait for $name {
+            type Output = Self;
+            #[inline(always)]
+            fn $method(self, o: Self) -> Self {
+                $name(unsafe { $f(self.0, o.0) })
+            }
+        }
+    )*};
+}
+
 macro_rules! vector {
     (
         $name:ident, $mask:ident, $t:ty, $reg:ty, $n:literal, $feat:literal,
@@ -45,34 +59,7 @@ macro_rules! vector {
         #[derive(Clone, Copy, Debug)]
         pub struct $mask($reg);
 
-        impl Add for $name {
-            type Output = Self;
-            #[inline(always)]
-            fn add(self, o: Self) -> Self {
-                $name(unsafe { $add(self.0, o.0) })
-            }
-        }
-        impl Sub for $name {
-            type Output = Self;
-            #[inline(always)]
-            fn sub(self, o: Self) -> Self {
-                $name(unsafe { $sub(self.0, o.0) })
-            }
-        }
-        impl Mul for $name {
-            type Output = Self;
-            #[inline(always)]
-            fn mul(self, o: Self) -> Self {
-                $name(unsafe { $mul(self.0, o.0) })
-            }
-        }
-        impl Div for $name {
-            type Output = Self;
-            #[inline(always)]
-            fn div(self, o: Self) -> Self {
-                $name(unsafe { $div(self.0, o.0) })
-            }
-        }
+        binary_ops!($name: Add add $add, Sub sub $sub, Mul mul $mul, Div div $div);
         impl Neg for $name {
             type Output = Self;
             #[inline(always)]
@@ -183,120 +170,147 @@ macro_rules! vector {
     };
 }
 
-vector!(
-    F32x4, M32x4, f32, __m128, 4, "SSE2",
-    add _mm_add_ps, sub _mm_sub_ps, mul _mm_mul_ps, div _mm_div_ps, sqrt _mm_sqrt_ps,
-    and _mm_and_ps, andnot _mm_andnot_ps, or _mm_or_ps, xor _mm_xor_ps,
-    set1 _mm_set1_ps, loadu _mm_loadu_ps, storeu _mm_storeu_ps, movemask _mm_movemask_ps,
-    ones _mm_castsi128_ps(_mm_set1_epi32(-1)),
-    lt |a, b| _mm_cmplt_ps(a, b),
-    le |a, b| _mm_cmple_ps(a, b),
-    eq |a, b| _mm_cmpeq_ps(a, b),
-    nan |a| _mm_cmpunord_ps(a, a),
-    select |m, a, b| _mm_or_ps(_mm_and_ps(m, a), _mm_andnot_ps(m, b)),
-    idx [u8; MAX_LANES],
-    piece |v| piece_by_lane(v),
-    lookup |t, i| lookup_by_lane(t, &i),
-    gather |t, i| gather_by_lane(t, i)
-);
+/// The four vectors, a column each — SSE2 `f32`, SSE2 `f64`, AVX2 `f32`, AVX2 `f64`: the type
+/// row, a row per lane-wise instruction (its intrinsic for each type), and each type's
+/// compares, selects and table lookups. `vector!` takes one column at a time.
+macro_rules! vectors {
+    (
+        types: [$($head:tt),*];
+        lanewise: { $($op:ident: [$($f:ident),*];)* }
+        rest: [$($tail:tt),*];
+    ) => {
+        vectors!(@column [$($head),*] [$($tail),*] $($op: [$($f),*];)*);
+    };
+    (@column [] [] $($op:ident: [];)*) => {};
+    (@column [$head:tt $(, $heads:tt)*] [$tail:tt $(, $tails:tt)*]
+        $($op:ident: [$f:ident $(, $fs:ident)*];)*) => {
+        vectors!(@one $head $tail $($op $f),*);
+        vectors!(@column [$($heads),*] [$($tails),*] $($op: [$($fs),*];)*);
+    };
+    // SSE2: compare intrinsics per predicate, no blend (select by and/andnot/or), the table
+    // lookups lane by lane.
+    (@one $head:tt {
+        sse($cast:ident, $lt:ident, $le:ident, $eq:ident, $unord:ident, $or:ident, $and:ident,
+            $andnot:ident)
+    } $($op:ident $f:ident),*) => {
+        vectors!(@one $head {
+            ones $cast(_mm_set1_epi32(-1)),
+            lt |a, b| $lt(a, b),
+            le |a, b| $le(a, b),
+            eq |a, b| $eq(a, b),
+            nan |a| $unord(a, a),
+            select |m, a, b| $or($and(m, a), $andnot(m, b)),
+            idx [u8; MAX_LANES],
+            piece |v| piece_by_lane(v),
+            lookup |t, i| lookup_by_lane(t, &i),
+            gather |t, i| gather_by_lane(t, i)
+        } $($op $f),*);
+    };
+    (@one ($($head:tt)*) {$($tail:tt)*} $($op:ident $f:ident),*) => {
+        vector!($($head)*, $($op $f),*, $($tail)*);
+    };
+}
 
-vector!(
-    F64x2, M64x2, f64, __m128d, 2, "SSE2",
-    add _mm_add_pd, sub _mm_sub_pd, mul _mm_mul_pd, div _mm_div_pd, sqrt _mm_sqrt_pd,
-    and _mm_and_pd, andnot _mm_andnot_pd, or _mm_or_pd, xor _mm_xor_pd,
-    set1 _mm_set1_pd, loadu _mm_loadu_pd, storeu _mm_storeu_pd, movemask _mm_movemask_pd,
-    ones _mm_castsi128_pd(_mm_set1_epi32(-1)),
-    lt |a, b| _mm_cmplt_pd(a, b),
-    le |a, b| _mm_cmple_pd(a, b),
-    eq |a, b| _mm_cmpeq_pd(a, b),
-    nan |a| _mm_cmpunord_pd(a, a),
-    select |m, a, b| _mm_or_pd(_mm_and_pd(m, a), _mm_andnot_pd(m, b)),
-    idx [u8; MAX_LANES],
-    piece |v| piece_by_lane(v),
-    lookup |t, i| lookup_by_lane(t, &i),
-    gather |t, i| gather_by_lane(t, i)
-);
-
-vector!(
-    F32x8, M32x8, f32, __m256, 8, "AVX2",
-    add _mm256_add_ps, sub _mm256_sub_ps, mul _mm256_mul_ps, div _mm256_div_ps,
-    sqrt _mm256_sqrt_ps,
-    and _mm256_and_ps, andnot _mm256_andnot_ps, or _mm256_or_ps, xor _mm256_xor_ps,
-    set1 _mm256_set1_ps, loadu _mm256_loadu_ps, storeu _mm256_storeu_ps,
-    movemask _mm256_movemask_ps,
-    ones _mm256_castsi256_ps(_mm256_set1_epi32(-1)),
-    lt |a, b| _mm256_cmp_ps::<_CMP_LT_OQ>(a, b),
-    le |a, b| _mm256_cmp_ps::<_CMP_LE_OQ>(a, b),
-    eq |a, b| _mm256_cmp_ps::<_CMP_EQ_OQ>(a, b),
-    nan |a| _mm256_cmp_ps::<_CMP_UNORD_Q>(a, a),
-    select |m, a, b| _mm256_blendv_ps(b, a, m),
-    // (the index, whose low 3 bits pick within a half-table, the upper-half mask i > 7, and
-    // whether any lane is there: wide contacts reach piece 8 only at u = ∞)
-    idx (__m256i, __m256, bool),
-    piece |v| {
-        let i = _mm256_cvttps_epi32(v.0);
-        let last = _mm256_set1_epi32(LAST_PIECE as i32);
-        let i = _mm256_min_epi32(_mm256_max_epi32(i, _mm256_setzero_si256()), last);
-        let upper = _mm256_castsi256_ps(_mm256_cmpgt_epi32(i, _mm256_set1_epi32(7)));
-        let any = _mm256_movemask_ps(upper) != 0;
-        ((i, upper, any), F32x8(_mm256_sub_ps(v.0, _mm256_cvtepi32_ps(i))))
-    },
-    lookup |t, i| {
-        let lo = _mm256_permutevar8x32_ps(_mm256_loadu_ps(t.as_ptr()), i.0);
-        if !i.2 {
-            return F32x8(lo);
+vectors! {
+    types: [
+        (F32x4, M32x4, f32, __m128, 4, "SSE2"),
+        (F64x2, M64x2, f64, __m128d, 2, "SSE2"),
+        (F32x8, M32x8, f32, __m256, 8, "AVX2"),
+        (F64x4, M64x4, f64, __m256d, 4, "AVX2")
+    ];
+    lanewise: {
+        add: [_mm_add_ps, _mm_add_pd, _mm256_add_ps, _mm256_add_pd];
+        sub: [_mm_sub_ps, _mm_sub_pd, _mm256_sub_ps, _mm256_sub_pd];
+        mul: [_mm_mul_ps, _mm_mul_pd, _mm256_mul_ps, _mm256_mul_pd];
+        div: [_mm_div_ps, _mm_div_pd, _mm256_div_ps, _mm256_div_pd];
+        sqrt: [_mm_sqrt_ps, _mm_sqrt_pd, _mm256_sqrt_ps, _mm256_sqrt_pd];
+        and: [_mm_and_ps, _mm_and_pd, _mm256_and_ps, _mm256_and_pd];
+        andnot: [_mm_andnot_ps, _mm_andnot_pd, _mm256_andnot_ps, _mm256_andnot_pd];
+        or: [_mm_or_ps, _mm_or_pd, _mm256_or_ps, _mm256_or_pd];
+        xor: [_mm_xor_ps, _mm_xor_pd, _mm256_xor_ps, _mm256_xor_pd];
+        set1: [_mm_set1_ps, _mm_set1_pd, _mm256_set1_ps, _mm256_set1_pd];
+        loadu: [_mm_loadu_ps, _mm_loadu_pd, _mm256_loadu_ps, _mm256_loadu_pd];
+        storeu: [_mm_storeu_ps, _mm_storeu_pd, _mm256_storeu_ps, _mm256_storeu_pd];
+        movemask: [_mm_movemask_ps, _mm_movemask_pd, _mm256_movemask_ps, _mm256_movemask_pd];
+    }
+    rest: [
+        {
+            sse(_mm_castsi128_ps, _mm_cmplt_ps, _mm_cmple_ps, _mm_cmpeq_ps, _mm_cmpunord_ps, _mm_or_ps,
+                _mm_and_ps, _mm_andnot_ps)
+        },
+        {
+            sse(_mm_castsi128_pd, _mm_cmplt_pd, _mm_cmple_pd, _mm_cmpeq_pd, _mm_cmpunord_pd, _mm_or_pd,
+                _mm_and_pd, _mm_andnot_pd)
+        },
+        {
+            ones _mm256_castsi256_ps(_mm256_set1_epi32(-1)),
+            lt |a, b| _mm256_cmp_ps::<_CMP_LT_OQ>(a, b),
+            le |a, b| _mm256_cmp_ps::<_CMP_LE_OQ>(a, b),
+            eq |a, b| _mm256_cmp_ps::<_CMP_EQ_OQ>(a, b),
+            nan |a| _mm256_cmp_ps::<_CMP_UNORD_Q>(a, a),
+            select |m, a, b| _mm256_blendv_ps(b, a, m),
+            // (the index, whose low 3 bits pick within a half-table, the upper-half mask i > 7, and
+            // whether any lane is there: wide contacts reach piece 8 only at u = ∞)
+            idx (__m256i, __m256, bool),
+            piece |v| {
+                let i = _mm256_cvttps_epi32(v.0);
+                let last = _mm256_set1_epi32(LAST_PIECE as i32);
+                let i = _mm256_min_epi32(_mm256_max_epi32(i, _mm256_setzero_si256()), last);
+                let upper = _mm256_castsi256_ps(_mm256_cmpgt_epi32(i, _mm256_set1_epi32(7)));
+                let any = _mm256_movemask_ps(upper) != 0;
+                ((i, upper, any), F32x8(_mm256_sub_ps(v.0, _mm256_cvtepi32_ps(i))))
+            },
+            lookup |t, i| {
+                let lo = _mm256_permutevar8x32_ps(_mm256_loadu_ps(t.as_ptr()), i.0);
+                if !i.2 {
+                    return F32x8(lo);
+                }
+                let hi = _mm256_permutevar8x32_ps(_mm256_loadu_ps(t.as_ptr().add(8)), i.0);
+                F32x8(_mm256_blendv_ps(lo, hi, i.1))
+            },
+            gather |t, i| F32x8(_mm256_i32gather_ps::<4>(t.as_ptr(), _mm256_loadu_si256(i.as_ptr().cast())))
+        },
+        {
+            ones _mm256_castsi256_pd(_mm256_set1_epi32(-1)),
+            lt |a, b| _mm256_cmp_pd::<_CMP_LT_OQ>(a, b),
+            le |a, b| _mm256_cmp_pd::<_CMP_LE_OQ>(a, b),
+            eq |a, b| _mm256_cmp_pd::<_CMP_EQ_OQ>(a, b),
+            nan |a| _mm256_cmp_pd::<_CMP_UNORD_Q>(a, a),
+            select |m, a, b| _mm256_blendv_pd(b, a, m),
+            // (the 32-bit word pairs of each lane's double within a quarter-table, the masks of
+            // bit 2 (odd quarter) and of i > 7 (the third quarter), and whether any lane is there)
+            idx (__m256i, __m256d, __m256d, bool),
+            piece |v| {
+                let i = _mm256_cvttpd_epi32(v.0);
+                let last = _mm_set1_epi32(LAST_PIECE as i32);
+                let i = _mm_min_epi32(_mm_max_epi32(i, _mm_setzero_si128()), last);
+                let r = F64x4(_mm256_sub_pd(v.0, _mm256_cvtepi32_pd(i)));
+                let j = _mm256_slli_epi64::<1>(_mm256_cvtepi32_epi64(_mm_and_si128(i, _mm_set1_epi32(3))));
+                let pairs = _mm256_or_si256(j, _mm256_slli_epi64::<32>(_mm256_add_epi64(j, _mm256_set1_epi64x(1))));
+                let four = _mm_set1_epi32(4);
+                let odd = _mm_cmpeq_epi32(_mm_and_si128(i, four), four);
+                let odd = _mm256_castsi256_pd(_mm256_cvtepi32_epi64(odd));
+                let upper = _mm256_castsi256_pd(_mm256_cvtepi32_epi64(_mm_cmpgt_epi32(i, _mm_set1_epi32(7))));
+                let any = _mm256_movemask_pd(upper) != 0;
+                ((pairs, odd, upper, any), r)
+            },
+            lookup |t, i| {
+                let quarter = |k: usize| {
+                    let q = _mm256_castpd_ps(_mm256_loadu_pd(t.as_ptr().add(4 * k)));
+                    _mm256_castps_pd(_mm256_permutevar8x32_ps(q, i.0))
+                };
+                // i ≤ LAST_PIECE = 11: the fourth quarter (12…15, padding) is never selected
+                const { assert!(LAST_PIECE < 12) };
+                let lo = _mm256_blendv_pd(quarter(0), quarter(1), i.1);
+                if !i.3 {
+                    return F64x4(lo);
+                }
+                F64x4(_mm256_blendv_pd(lo, quarter(2), i.2))
+            },
+            gather |t, i| F64x4(_mm256_cvtps_pd(_mm_i32gather_ps::<4>(t.as_ptr(), _mm_loadu_si128(i.as_ptr().cast()))))
         }
-        let hi = _mm256_permutevar8x32_ps(_mm256_loadu_ps(t.as_ptr().add(8)), i.0);
-        F32x8(_mm256_blendv_ps(lo, hi, i.1))
-    },
-    gather |t, i| F32x8(_mm256_i32gather_ps::<4>(t.as_ptr(), _mm256_loadu_si256(i.as_ptr().cast())))
-);
-
-vector!(
-    F64x4, M64x4, f64, __m256d, 4, "AVX2",
-    add _mm256_add_pd, sub _mm256_sub_pd, mul _mm256_mul_pd, div _mm256_div_pd,
-    sqrt _mm256_sqrt_pd,
-    and _mm256_and_pd, andnot _mm256_andnot_pd, or _mm256_or_pd, xor _mm256_xor_pd,
-    set1 _mm256_set1_pd, loadu _mm256_loadu_pd, storeu _mm256_storeu_pd,
-    movemask _mm256_movemask_pd,
-    ones _mm256_castsi256_pd(_mm256_set1_epi32(-1)),
-    lt |a, b| _mm256_cmp_pd::<_CMP_LT_OQ>(a, b),
-    le |a, b| _mm256_cmp_pd::<_CMP_LE_OQ>(a, b),
-    eq |a, b| _mm256_cmp_pd::<_CMP_EQ_OQ>(a, b),
-    nan |a| _mm256_cmp_pd::<_CMP_UNORD_Q>(a, a),
-    select |m, a, b| _mm256_blendv_pd(b, a, m),
-    // (the 32-bit word pairs of each lane's double within a quarter-table, the masks of
-    // bit 2 (odd quarter) and of i > 7 (the third quarter), and whether any lane is there)
-    idx (__m256i, __m256d, __m256d, bool),
-    piece |v| {
-        let i = _mm256_cvttpd_epi32(v.0);
-        let last = _mm_set1_epi32(LAST_PIECE as i32);
-        let i = _mm_min_epi32(_mm_max_epi32(i, _mm_setzero_si128()), last);
-        let r = F64x4(_mm256_sub_pd(v.0, _mm256_cvtepi32_pd(i)));
-        let j = _mm256_slli_epi64::<1>(_mm256_cvtepi32_epi64(_mm_and_si128(i, _mm_set1_epi32(3))));
-        let pairs = _mm256_or_si256(j, _mm256_slli_epi64::<32>(_mm256_add_epi64(j, _mm256_set1_epi64x(1))));
-        let four = _mm_set1_epi32(4);
-        let odd = _mm_cmpeq_epi32(_mm_and_si128(i, four), four);
-        let odd = _mm256_castsi256_pd(_mm256_cvtepi32_epi64(odd));
-        let upper = _mm256_castsi256_pd(_mm256_cvtepi32_epi64(_mm_cmpgt_epi32(i, _mm_set1_epi32(7))));
-        let any = _mm256_movemask_pd(upper) != 0;
-        ((pairs, odd, upper, any), r)
-    },
-    lookup |t, i| {
-        let quarter = |k: usize| {
-            let q = _mm256_castpd_ps(_mm256_loadu_pd(t.as_ptr().add(4 * k)));
-            _mm256_castps_pd(_mm256_permutevar8x32_ps(q, i.0))
-        };
-        // i ≤ LAST_PIECE = 11: the fourth quarter (12…15, padding) is never selected
-        const { assert!(LAST_PIECE < 12) };
-        let lo = _mm256_blendv_pd(quarter(0), quarter(1), i.1);
-        if !i.3 {
-            return F64x4(lo);
-        }
-        F64x4(_mm256_blendv_pd(lo, quarter(2), i.2))
-    },
-    gather |t, i| F64x4(_mm256_cvtps_pd(_mm_i32gather_ps::<4>(t.as_ptr(), _mm_loadu_si128(i.as_ptr().cast()))))
-);
+    ];
+}
 
 /// The vector level found on this CPU: 1 = SSE2 (always on x86-64), 2 = AVX2 (CPU and OS).
 /// Detected once (CPUID + XGETBV, no `std`), cached.

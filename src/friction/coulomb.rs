@@ -21,9 +21,9 @@
 //! that tiny speeds keep full precision). Cortex-M4F `f32`: 42 instructions per call (incl.
 //! the 8-instruction call floor); `f64` ≈1,300. Host: ≈5–12 ns.
 
-use super::{Constants, FrictionLaw, SlipState, Traction, larger};
+use super::{Constants, SlipState, Traction, larger};
 use crate::Real;
-use crate::math::{Backend, Libm};
+use crate::math::Backend;
 
 /// Regularized Coulomb point contact (see the [module docs](self)).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -46,67 +46,29 @@ impl Coulomb {
     pub const ERROR: (f64, f64) = (0.99988, 0.58905);
 }
 
-impl FrictionLaw for Coulomb {
-    const NAME: &'static str = "coulomb";
-    type Branch = Branch;
-    super::law::constants_are_prepared!();
-
+super::twin::libm_and_micromath! {
+    Coulomb: "coulomb", Branch,
+    slip_ramp
     /// The ramp F = −fN·v_P/δ below δ: κ = 1.
-    fn slip_ramp<T: Real>(_k: &Constants<T>) -> Option<T> {
-        Some(T::ONE)
-    }
-
+    T::ONE,
+    spin_ramp
     /// No drilling torque: κ_T = 0.
-    fn spin_ramp<T: Real>(_k: &Constants<T>) -> Option<T> {
-        Some(T::ZERO)
-    }
-
-    #[inline]
-    fn traction<T: Real>(_k: &Constants<T>, s: &SlipState<T>) -> (Traction<T>, Branch) {
-        traction::<Libm, T>(s)
-    }
-}
-
-/// [`Coulomb`] with micromath's square root for |v_P| (feature `micromath`; `f32` only, libm
-/// for `f64`).
-///
-/// Formula, domain, branches: as [`Coulomb`]; `f64` is [`Coulomb`]. The direction is right,
-/// the sliding magnitude is 1/v̂ with v̂ ≥ v at most 6.07 % high: |F| ≤ fN still holds, at most
-/// 5.7 % short of it. Measured (`f32`, the 4,329 states of host-tests/micromath.rs, asserted
-/// there): against [`Coulomb`] 4.4e-2 fN; against the exact integrals 0.988 fN / 0.589 fNa
-/// (the same as [`Coulomb`]: no spin effect). Cost: M4F **45** instructions (`f32`; [`Coulomb`]
-/// 42), host ≈ 10 ns. Not worth using.
-#[cfg(feature = "micromath")]
-#[cfg_attr(docsrs, doc(cfg(feature = "micromath")))]
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct CoulombMicromath;
-
-#[cfg(feature = "micromath")]
-#[cfg_attr(docsrs, doc(cfg(feature = "micromath")))]
-impl FrictionLaw for CoulombMicromath {
-    const NAME: &'static str = "coulomb-micromath";
-    type Branch = Branch;
-    super::law::constants_are_prepared!();
-
-    /// The ramp F = −fN·v_P/δ below δ: κ = 1.
-    fn slip_ramp<T: Real>(_k: &Constants<T>) -> Option<T> {
-        Some(T::ONE)
-    }
-
-    /// No drilling torque: κ_T = 0.
-    fn spin_ramp<T: Real>(_k: &Constants<T>) -> Option<T> {
-        Some(T::ZERO)
-    }
-
-    #[inline]
-    fn traction<T: Real>(_k: &Constants<T>, s: &SlipState<T>) -> (Traction<T>, Branch) {
-        traction::<crate::math::Micromath, T>(s)
-    }
+    T::ZERO,
+    /// [`Coulomb`] with micromath's square root for |v_P| (feature `micromath`; `f32` only, libm
+    /// for `f64`).
+    ///
+    /// Formula, domain, branches: as [`Coulomb`]; `f64` is [`Coulomb`]. The direction is right,
+    /// the sliding magnitude is 1/v̂ with v̂ ≥ v at most 6.07 % high: |F| ≤ fN still holds, at most
+    /// 5.7 % short of it. Measured (`f32`, the 4,329 states of host-tests/micromath.rs, asserted
+    /// there): against [`Coulomb`] 4.4e-2 fN; against the exact integrals 0.988 fN / 0.589 fNa
+    /// (the same as [`Coulomb`]: no spin effect). Cost: M4F **45** instructions (`f32`; [`Coulomb`]
+    /// 42), host ≈ 10 ns. Not worth using.
+    twin CoulombMicromath
 }
 
 /// Coulomb's law with √ from the backend `B`.
 #[inline(always)]
-fn traction<B: Backend, T: Real>(s: &SlipState<T>) -> (Traction<T>, Branch) {
+fn traction<B: Backend, T: Real>(_k: &Constants<T>, s: &SlipState<T>) -> (Traction<T>, Branch) {
     let (x, y, d) = (s.x(), s.y(), s.d());
     let mx = larger(x.abs(), y.abs());
     if mx == T::ZERO {

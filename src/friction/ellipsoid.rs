@@ -35,9 +35,9 @@
 //! 8-instruction call floor); `f64` ≈1,300. Host: ≈3–7 ns.
 
 use super::law::Smooth;
-use super::{Constants, FrictionLaw, SlipState, Traction};
+use super::{Constants, SlipState, Traction};
 use crate::Real;
-use crate::math::{Backend, Libm};
+use crate::math::Backend;
 
 /// The Leine–Glocker/Möller ellipsoidal law with R̄ = C·a (see the [module docs](self)).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -49,44 +49,20 @@ impl Ellipsoid {
     pub const ERROR: (f64, f64) = (0.22720, 0.13357);
 }
 
-impl FrictionLaw for Ellipsoid {
-    const NAME: &'static str = "ellipsoid";
-    type Branch = Smooth;
-    super::law::constants_are_prepared!();
-
-    #[inline]
-    fn traction<T: Real>(k: &Constants<T>, s: &SlipState<T>) -> (Traction<T>, Smooth) {
-        traction::<Libm, T>(k, s)
-    }
-}
-
-/// [`Ellipsoid`] with micromath's square root of v² + R̄²ω² (feature `micromath`; `f32` only,
-/// libm for `f64`).
-///
-/// Formula, domain: as [`Ellipsoid`]; `f64` is [`Ellipsoid`]. The direction of (F, T_z/R̄) is
-/// right, its length 1/(1 + ε) with the square root's error ε ∈ [0, 6.07 %]: |F| ≤ fN still
-/// holds, passivity too. Measured (`f32`, the 4,329 states of host-tests/micromath.rs, asserted
-/// there): against [`Ellipsoid`] 5.7e-2 fN / 2.1e-2 fNa; against the exact integrals
-/// **0.211 fN / 0.121 fNa** max ([`Ellipsoid`]: 0.227 / 0.121 on the same set: the shortfall
-/// happens to offset the law's overshoot there), median 4.0e-2 fN / 7.8e-3 fNa (vs 1.2e-2 /
-/// 3.6e-3). Cost: M4F **37** instructions (`f32`; [`Ellipsoid`] 34), host ≈ 6 ns. Not worth
-/// using.
-#[cfg(feature = "micromath")]
-#[cfg_attr(docsrs, doc(cfg(feature = "micromath")))]
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct EllipsoidMicromath;
-
-#[cfg(feature = "micromath")]
-#[cfg_attr(docsrs, doc(cfg(feature = "micromath")))]
-impl FrictionLaw for EllipsoidMicromath {
-    const NAME: &'static str = "ellipsoid-micromath";
-    type Branch = Smooth;
-    super::law::constants_are_prepared!();
-
-    #[inline]
-    fn traction<T: Real>(k: &Constants<T>, s: &SlipState<T>) -> (Traction<T>, Smooth) {
-        traction::<crate::math::Micromath, T>(k, s)
-    }
+super::twin::libm_and_micromath! {
+    Ellipsoid: "ellipsoid", Smooth,
+    /// [`Ellipsoid`] with micromath's square root of v² + R̄²ω² (feature `micromath`; `f32` only,
+    /// libm for `f64`).
+    ///
+    /// Formula, domain: as [`Ellipsoid`]; `f64` is [`Ellipsoid`]. The direction of (F, T_z/R̄) is
+    /// right, its length 1/(1 + ε) with the square root's error ε ∈ [0, 6.07 %]: |F| ≤ fN still
+    /// holds, passivity too. Measured (`f32`, the 4,329 states of host-tests/micromath.rs, asserted
+    /// there): against [`Ellipsoid`] 5.7e-2 fN / 2.1e-2 fNa; against the exact integrals
+    /// **0.211 fN / 0.121 fNa** max ([`Ellipsoid`]: 0.227 / 0.121 on the same set: the shortfall
+    /// happens to offset the law's overshoot there), median 4.0e-2 fN / 7.8e-3 fNa (vs 1.2e-2 /
+    /// 3.6e-3). Cost: M4F **37** instructions (`f32`; [`Ellipsoid`] 34), host ≈ 6 ns. Not worth
+    /// using.
+    twin EllipsoidMicromath
 }
 
 /// The ellipsoidal law with √ from the backend `B`.

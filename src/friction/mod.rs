@@ -42,6 +42,7 @@ pub mod rolling;
 pub mod simplified;
 pub mod slip;
 mod spin_step;
+mod twin;
 
 pub use best::{Best, BestContact, BestSeries};
 pub use constants::Constants;

@@ -49,9 +49,9 @@
 //! The dimensional call [`Friction::tangential`](super::Friction::tangential) (normalisation +
 //! core + scaling): 124 instructions (`f32`).
 
-use super::{Constants, FrictionLaw, SlipState, Traction, larger as max};
+use super::{Constants, SlipState, Traction, larger as max};
 use crate::Real;
-use crate::math::{Backend, Libm};
+use crate::math::Backend;
 
 /// The paper's simplified anisotropic model (see the [module docs](self)).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -121,63 +121,25 @@ fn zone<T: Real>(v: T, width: T, d: T) -> Zone {
     }
 }
 
-impl FrictionLaw for Simplified {
-    const NAME: &'static str = "simplified";
-    type Branch = Branch;
-    super::law::constants_are_prepared!();
-
+super::twin::libm_and_micromath! {
+    Simplified: "simplified", Branch,
+    slip_ramp
     /// The ramp of width δ (widened, never steepened, by the spin): κ = 1.
-    fn slip_ramp<T: Real>(_k: &Constants<T>) -> Option<T> {
-        Some(T::ONE)
-    }
-
+    T::ONE,
+    spin_ramp
     /// κ_T = 2/5 (see [`Friction::stable_spin_step`](super::Friction::stable_spin_step)).
-    fn spin_ramp<T: Real>(_k: &Constants<T>) -> Option<T> {
-        Some(T::from_f64(0.4))
-    }
-
-    #[inline]
-    fn traction<T: Real>(k: &Constants<T>, s: &SlipState<T>) -> (Traction<T>, Branch) {
-        traction::<Libm, T>(k, s)
-    }
-}
-
-/// [`Simplified`] with micromath's square root for v = √(x² + y²) (feature `micromath`; `f32`
-/// only, libm for `f64`).
-///
-/// Formula, domain, branches: as [`Simplified`], with v up to 6.07 % too large (never too
-/// small); each component still opposes its own velocity (passive) and |F| ≤ fN holds; `f64` is
-/// [`Simplified`]. Measured (`f32`, 4,329 states: 9 e² ∈ [0, 0.99], 13 ψ, u log-spaced, around
-/// the ellipse and ∞; asserted by host-tests/micromath.rs): against the exact integrals
-/// **0.329 fN / 0.335 fNa** max, the same as [`Simplified`] (whose model error dominates), but
-/// median 3.1e-2 fN (vs 8.6e-4); against [`Simplified`] itself 5.7e-2 fN / 2.6e-2 fNa. Cost:
-/// M4F **73** instructions (`f32`; [`Simplified`] 69), host ≈ 11 ns. Not worth using.
-#[cfg(feature = "micromath")]
-#[cfg_attr(docsrs, doc(cfg(feature = "micromath")))]
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct SimplifiedMicromath;
-
-#[cfg(feature = "micromath")]
-#[cfg_attr(docsrs, doc(cfg(feature = "micromath")))]
-impl FrictionLaw for SimplifiedMicromath {
-    const NAME: &'static str = "simplified-micromath";
-    type Branch = Branch;
-    super::law::constants_are_prepared!();
-
-    /// The ramp of width δ (widened, never steepened, by the spin): κ = 1.
-    fn slip_ramp<T: Real>(_k: &Constants<T>) -> Option<T> {
-        Some(T::ONE)
-    }
-
-    /// κ_T = 2/5 (see [`Friction::stable_spin_step`](super::Friction::stable_spin_step)).
-    fn spin_ramp<T: Real>(_k: &Constants<T>) -> Option<T> {
-        Some(T::from_f64(0.4))
-    }
-
-    #[inline]
-    fn traction<T: Real>(k: &Constants<T>, s: &SlipState<T>) -> (Traction<T>, Branch) {
-        traction::<crate::math::Micromath, T>(k, s)
-    }
+    T::from_f64(0.4),
+    /// [`Simplified`] with micromath's square root for v = √(x² + y²) (feature `micromath`; `f32`
+    /// only, libm for `f64`).
+    ///
+    /// Formula, domain, branches: as [`Simplified`], with v up to 6.07 % too large (never too
+    /// small); each component still opposes its own velocity (passive) and |F| ≤ fN holds; `f64` is
+    /// [`Simplified`]. Measured (`f32`, 4,329 states: 9 e² ∈ [0, 0.99], 13 ψ, u log-spaced, around
+    /// the ellipse and ∞; asserted by host-tests/micromath.rs): against the exact integrals
+    /// **0.329 fN / 0.335 fNa** max, the same as [`Simplified`] (whose model error dominates), but
+    /// median 3.1e-2 fN (vs 8.6e-4); against [`Simplified`] itself 5.7e-2 fN / 2.6e-2 fNa. Cost:
+    /// M4F **73** instructions (`f32`; [`Simplified`] 69), host ≈ 11 ns. Not worth using.
+    twin SimplifiedMicromath
 }
 
 /// The simplified law with √ from the backend `B`.

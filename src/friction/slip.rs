@@ -72,6 +72,15 @@ impl<T: Real> Slip<T> {
         }
     }
 
+    /// The slip from the components of one already validated ([`Slip::new`]: each finite),
+    /// carried into another [`Real`] (the Jacobian's dual numbers): no test. Unlike
+    /// [`Slip::or_rest`] it keeps finite components whose sum overflows (|v| near `T::MAX`),
+    /// as the validated slip does.
+    #[inline(always)]
+    pub(crate) fn from_valid(vx: T, vy: T, omega: T) -> Self {
+        Slip { vx, vy, omega }
+    }
+
     /// v_Px (m/s)
     #[inline(always)]
     pub fn vx(&self) -> T {

@@ -25,8 +25,9 @@ impl<T: Real> Inputs<T> {
         Inputs {
             h: v(s.h, input::H),
             hdot: v(s.hdot, input::HDOT),
-            // a validated slip is finite: `or_rest` keeps it as it is
-            slip: Slip::or_rest(
+            // the validated slip as it is (`or_rest` would give rest where finite components
+            // overflow their sum, near `T::MAX`, and the value would differ from the wrench's)
+            slip: Slip::from_valid(
                 v(s.slip.vx(), input::VX),
                 v(s.slip.vy(), input::VY),
                 v(s.slip.omega(), input::OMEGA),
@@ -46,7 +47,13 @@ pub(crate) fn pack<T: Real>(w: [D5<T>; 4]) -> Jacobian<T> {
     };
     // one test on the sum (finite exactly when every term is, unless finite terms overflow
     // it, which only sends them through `finite` unchanged)
-    if !jac.d.iter().flatten().fold(T::ZERO, |acc, &x| acc + x).is_finite() {
+    if !jac
+        .d
+        .iter()
+        .flatten()
+        .fold(T::ZERO, |acc, &x| acc + x)
+        .is_finite()
+    {
         saturate(&mut jac);
     }
     jac
@@ -140,6 +147,12 @@ where
         [w.n, w.fx, w.fy, w.tz]
     }
 
+    /// [`Contact::wrench`]'s N: its normal law alone.
+    #[inline]
+    fn normal_force(&self, s: &State<T>) -> T {
+        self.normal().damped_patch(s.h, s.hdot, self.damping()).n
+    }
+
     /// The wrench and its Jacobian, by forward-mode dual numbers through the same code as
     /// [`Contact::wrench`] (value bit for bit that of `wrench`; see the [module docs](super)).
     #[inline]
@@ -196,6 +209,17 @@ where
     fn wrench4(&self, s: &State<T>) -> [T; 4] {
         let w = self.contact.wrench(&self.curvatures, s.h, s.hdot, s.slip);
         [w.n, w.fx, w.fy, w.tz]
+    }
+
+    /// [`VaryingContact::wrench`]'s N: this step's Hertz law alone.
+    #[inline]
+    fn normal_force(&self, s: &State<T>) -> T {
+        let (estar, damping, _) = self.contact.parts();
+        let c = &self.curvatures;
+        let shape = <shape::Table as Eccentricity>::shape(Ratio::clamped(c.ratio()));
+        Hertz::from_shape(c, &shape, estar)
+            .damped_patch(s.h, s.hdot, damping)
+            .n
     }
 
     /// As [`VaryingContact::wrench`]: the shape, Hertz's and the friction constants from

@@ -9,7 +9,7 @@
 //! - [`ball`]: a steel ball launched sliding and spinning on a plane (analytic figures).
 //! - [`step_aware`]: the scenes' glue to the library's step-aware wrench ([`crate::step`])
 //!   behind their `step_aware` integrators: the ball at 5 ms, the tippe top at 2 ms, the
-//!   rattleback at 1–2 ms and the creep bearing at 20–50 µs (figures: the guide chapter
+//!   rattleback at 1–2 ms and the creep bearing at 30 µs (figures: the guide chapter
 //!   `docs/guide/src/scenes-large-steps.md`, `bench-results/step-sweep.md`).
 //! - [`rattleback`]: the rattleback (celt), an ellipsoid whose contact geometry changes every step.
 //!

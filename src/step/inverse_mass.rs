@@ -16,11 +16,21 @@
 //! - symmetric: |W_ab − W_ba| ≤ [`SYMMETRY_TOLERANCE`]·√(W_aa·W_bb) (relative to the
 //!   diagonal, so that W may mix units: 1/kg against 1/(kg·m²)); a zero diagonal entry (a
 //!   direction no impulse moves, e.g. both bodies fixed there) needs its row and column exactly
-//!   zero ([`Error::InverseMassNotSymmetric`]). The stored matrix is (W + Wᵀ)/2.
+//!   zero: W_ab ≠ W_ba there is [`Error::InverseMassNotSymmetric`], W_ab = W_ba ≠ 0 breaks
+//!   W_ab² ≤ W_aa·W_bb ([`Error::InverseMassNotPositiveSemidefinite`]). The stored matrix is (W + Wᵀ)/2. A W assembled as
+//!   L·Lᵀ (or J·M⁻¹·Jᵀ) in floating point is positive semidefinite as rounded only if its
+//!   diagonal does not underflow: with entries below √`T::MIN_POSITIVE` relative to the others
+//!   (f32: 1.1e-19) a diagonal entry can round to 0 or lose its digits while its row keeps
+//!   them, and W is refused as not positive semidefinite — scale the units (the fuzz target
+//!   `step` accepts every L·Lᵀ whose factors are 0 or within [1e-6, 1e6] in magnitude).
 //! - positive semidefinite: the LDLᵀ factorisation of the diagonally scaled matrix
 //!   S = D^{-1/2} W D^{-1/2} (unit diagonal; D = diag W) with a pivot floor: a pivot below
 //!   −[`PSD_TOLERANCE`] is an error, a pivot within ±[`PSD_TOLERANCE`] is taken as zero (its
-//!   column must then vanish to the same tolerance), else it factorises. n = 4K rows: n³/6
+//!   column must then vanish to the same tolerance), else it factorises. The floor is
+//!   absolute: a rank-deficient W whose dependent row repeats an ill-conditioned combination
+//!   of the rows before it can be refused by its own rounding (f64 W = L·Lᵀ with |L_jk| ≈ 33
+//!   in the scaled factor: pivot −2.1e-13 against 5.7e-14; a floor growing as
+//!   (1 + Σ_k |L_jk|)² accepts it but changes which W the scenes' fallback sees — not done). n = 4K rows: n³/6
 //!   multiply-adds, no branch on the data beyond the pivot tests.
 
 use crate::error::finite;
@@ -115,8 +125,15 @@ impl<T: Real, const K: usize> InverseMass<T, K> {
                 let (a, b) = (w.get(r, c), w.get(c, r));
                 let scale = (w.get(r, r) * w.get(c, c)).sqrt();
                 if scale == T::ZERO {
-                    if a != T::ZERO || b != T::ZERO {
+                    // A zero diagonal entry with a non-zero entry in its row: no tolerance
+                    // scales there, so W_ab ≠ W_ba is the asymmetry; W_ab = W_ba ≠ 0 breaks
+                    // W_ab² ≤ W_aa·W_bb = 0, not positive semidefinite (a W = L·Lᵀ whose
+                    // diagonal entry underflowed to 0 while its row did not, as rounded).
+                    if a != b {
                         return Err(Error::InverseMassNotSymmetric);
+                    }
+                    if a != T::ZERO {
+                        return Err(Error::InverseMassNotPositiveSemidefinite);
                     }
                 } else if (a - b).abs() > tol * scale {
                     return Err(Error::InverseMassNotSymmetric);

@@ -171,7 +171,7 @@
 //!
 //! # Cost
 //!
-//! Per contact: at most [`PREDICTOR_STEPS`] + 2 [`Linearize::wrench4`] (the normal predictor),
+//! Per contact: at most [`PREDICTOR_STEPS`] + 2 [`Linearize::normal_force`] (the normal predictor),
 //! [`project::PATCH_STEPS`] + 2 + 4 (the limit set: its patch, its full-slip points),
 //! [`LINEARISATIONS`] [`Linearize::linearize`] (one more per reversal), a 4 × 4 (or 4K × 4K)
 //! elimination with partial pivoting per solve (at most LINEARISATIONS·2·(K + 1) solves, one
@@ -593,12 +593,12 @@ fn reversal<T: Real, const K: usize>(
 /// h − h_free + c·N(h) = 0 with c = Δt²·W_nn (ḣ, slip held at the free state), by
 /// [`PREDICTOR_STEPS`] Illinois (regula falsi) steps on the bracket
 /// [max(0, h_free − c·N(h_free)), h_free] (φ ≤ 0 at its left end since N is non-decreasing in
-/// h and 0 at h = 0, ≥ 0 at its right). One [`Linearize::wrench4`] per step. Returns the
+/// h and 0 at h = 0, ≥ 0 at its right). One [`Linearize::normal_force`] per step. Returns the
 /// last interpolation inside the bracket: the first linearisation goes there instead of
 /// h_free.
 fn predict_gap<T: Real>(contact: &dyn Linearize<T>, l: &State<T>, c: T) -> T {
     let phi = |h: T| {
-        let n = contact.wrench4(&State { h, ..*l })[0];
+        let n = contact.normal_force(&State { h, ..*l });
         let n = if n.is_finite() { n } else { T::ZERO };
         h - l.h + c * n
     };

@@ -60,7 +60,7 @@ pub const PATCH_STEPS: usize = 4;
 fn patch_of<T: Real>(c: &dyn Linearize<T>, l: &State<T>, n_l: T, n: T) -> (State<T>, T) {
     let at = |h: T| {
         let s = State { h, ..*l };
-        let v = c.wrench4(&s)[0];
+        let v = c.normal_force(&s);
         (s, if v.is_finite() { v } else { T::ZERO })
     };
     let h2 = l.h * (n / n_l);

@@ -3,6 +3,8 @@
 
 #[cfg(doc)]
 use super::{contensou_contact_new_f32, contensou_contact_wrench_f32};
+use contensou::dynamic::DynContact;
+
 use crate::shell;
 use crate::status::contensou_status;
 use crate::types::*;
@@ -24,7 +26,8 @@ twins! {
         out: *mut contensou_jacobian<f32> | *mut contensou_jacobian<f64>,
         column: *mut contensou_column | *mut contensou_column,
     ) -> contensou_status {
-        unsafe { shell::contact_jacobian_rolling(storage, step, core::ptr::null(), out, column) }
+        let rolling = core::ptr::null();
+        unsafe { shell::rolling_with(storage, step, rolling, out, column, DynContact::jacobian_rolling) }
     }
 }
 
@@ -43,6 +46,6 @@ twins! {
         out: *mut contensou_jacobian<f32> | *mut contensou_jacobian<f64>,
         column: *mut contensou_column | *mut contensou_column,
     ) -> contensou_status {
-        unsafe { shell::contact_jacobian_rolling(storage, step, rolling, out, column) }
+        unsafe { shell::rolling_with(storage, step, rolling, out, column, DynContact::jacobian_rolling) }
     }
 }

@@ -7,6 +7,8 @@ use core::ffi::c_char;
 use super::{
     contensou_contact_new_f32, contensou_contact_wrench_f32, contensou_contact_wrench_many_f32,
 };
+use contensou::dynamic::DynContact;
+
 use crate::shell;
 use crate::status::contensou_status;
 use crate::types::*;
@@ -99,7 +101,7 @@ twins! {
         out: *mut contensou_wrench<f32> | *mut contensou_wrench<f64>,
         column: *mut contensou_column | *mut contensou_column,
     ) -> contensou_status {
-        unsafe { shell::contact_wrench_rolling(storage, step, rolling, out, column) }
+        unsafe { shell::rolling_with(storage, step, rolling, out, column, DynContact::wrench_rolling) }
     }
 }
 

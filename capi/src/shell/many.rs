@@ -5,7 +5,7 @@
 use contensou::batch::{BatchReal, Steps, Wrenches};
 use contensou::dynamic::RollingSteps;
 
-use super::{bare, check, column_of, read, report, slot, Precision};
+use super::{bare, check, column_of, read, report_at, slot, Precision};
 use crate::status::contensou_status as S;
 use crate::types::*;
 
@@ -121,10 +121,6 @@ pub(crate) unsafe fn contact_wrench_many_rolling<T: Precision + BatchReal>(
             (S::from(e.error), column_of(e.column))
         })
     })();
-    if check(row).is_ok() {
-        // SAFETY: non-NULL and aligned; writable by the caller's contract.
-        unsafe { row.write(first_bad) };
-    }
     // SAFETY: caller's contract.
-    unsafe { report(column, r) }
+    unsafe { report_at(row, first_bad, column, r) }
 }

@@ -7,28 +7,10 @@ use core::ffi::CStr;
 
 use contensou::friction::rolling::row::{Rejected, RowContact, RowLaw, RowState};
 
-use super::{bare, check, read, report, tagged, write, Precision};
+use super::{bare, check, read, report, store, tagged, write, Precision};
 use crate::cstr::c_str;
 use crate::status::contensou_status as S;
 use crate::types::*;
-
-/// A precision's rolling storage and tag.
-pub(crate) trait RollingPrecision: Precision {
-    /// `contensou_rolling_f32` or `contensou_rolling_f64`.
-    type RollingStorage;
-    /// Written by the constructor in front of the contact.
-    const ROLLING_TAG: u32;
-}
-
-impl RollingPrecision for f32 {
-    type RollingStorage = contensou_rolling_f32;
-    const ROLLING_TAG: u32 = u32::from_le_bytes(*b"rf32");
-}
-
-impl RollingPrecision for f64 {
-    type RollingStorage = contensou_rolling_f64;
-    const ROLLING_TAG: u32 = u32::from_le_bytes(*b"rf64");
-}
 
 /// The rolling laws, by `contensou_law` value.
 const ROLLING_LAWS: [(contensou_law, RowLaw); 6] = [
@@ -87,7 +69,7 @@ const _: () = assert!(CONTENSOU_ROLLING_COLUMN_NONE == CONTENSOU_COLUMN_NONE);
 ///
 /// # Safety
 /// `storage` NULL or writable; `column` NULL or writable.
-pub(crate) unsafe fn rolling_new<T: RollingPrecision>(
+pub(crate) unsafe fn rolling_new<T: Precision>(
     storage: *mut T::RollingStorage,
     a_over_b: T,
     g: T,
@@ -103,12 +85,7 @@ pub(crate) unsafe fn rolling_new<T: RollingPrecision>(
             .ok_or(bare(S::InvalidLaw))?;
         let contact = RowContact::new(a_over_b, g, nu, *law).map_err(rejected)?;
         // SAFETY: checked non-NULL and aligned; the slot fits (types/rolling.rs).
-        unsafe {
-            storage.cast::<RollingSlot<T>>().write(RollingSlot {
-                tag: T::ROLLING_TAG,
-                contact,
-            })
-        };
+        unsafe { store(storage, T::ROLLING_TAG, contact) };
         Ok(())
     })();
     // SAFETY: caller's contract.
@@ -119,7 +96,7 @@ pub(crate) unsafe fn rolling_new<T: RollingPrecision>(
 ///
 /// # Safety
 /// `storage` NULL or readable.
-unsafe fn rolling_slot<'a, T: RollingPrecision>(
+unsafe fn rolling_slot<'a, T: Precision>(
     storage: *const T::RollingStorage,
 ) -> Result<&'a RollingSlot<T>, S> {
     // SAFETY: caller's contract; `RollingSlot` is `repr(C)` with its tag first, aligned for the
@@ -132,7 +109,7 @@ unsafe fn rolling_slot<'a, T: RollingPrecision>(
 ///
 /// # Safety
 /// Pointers NULL or valid for their types.
-pub(crate) unsafe fn rolling_wrench<T: RollingPrecision>(
+pub(crate) unsafe fn rolling_wrench<T: Precision>(
     storage: *const T::RollingStorage,
     state: *const contensou_rolling_state<T>,
     out: *mut contensou_rolling_output<T>,

@@ -13,9 +13,11 @@ use contensou::step::{step_wrenches, Free, InverseMass, TimeStep};
 use contensou::Error;
 use core::ffi::CStr;
 
-use crate::cstr::c_str;
+use crate::cstr::{c_str, c_strs};
 
-use super::{bare, check, column_of, optional, read, report, slot, write, Precision};
+use super::{
+    bare, check, column_of, optional, read, report, report_at, rolling_step, slot, write, Precision,
+};
 use crate::status::contensou_status as S;
 use crate::types::*;
 
@@ -44,28 +46,7 @@ fn at(name: &'static str, e: Error) -> Failure {
 }
 
 /// NUL-terminated names of the step's columns by code from `CONTENSOU_COLUMN_DT`.
-const STEP_COLUMN_NAMES: [&CStr; 17] = {
-    use crate::types::STEP_COLUMNS as NAMES;
-    [
-        c_str!(NAMES[0]),
-        c_str!(NAMES[1]),
-        c_str!(NAMES[2]),
-        c_str!(NAMES[3]),
-        c_str!(NAMES[4]),
-        c_str!(NAMES[5]),
-        c_str!(NAMES[6]),
-        c_str!(NAMES[7]),
-        c_str!(NAMES[8]),
-        c_str!(NAMES[9]),
-        c_str!(NAMES[10]),
-        c_str!(NAMES[11]),
-        c_str!(NAMES[12]),
-        c_str!(NAMES[13]),
-        c_str!(NAMES[14]),
-        c_str!(NAMES[15]),
-        c_str!(NAMES[16]),
-    ]
-};
+const STEP_COLUMN_NAMES: [&CStr; 17] = c_strs!(crate::types::STEP_COLUMNS; 17);
 
 /// The name of a step column code (`CONTENSOU_COLUMN_DT` …; `""` for any other code).
 pub(crate) fn step_column_name(column: contensou_column) -> &'static CStr {
@@ -97,7 +78,7 @@ pub(crate) unsafe fn contact_step<T: Precision>(
             (
                 slot::<T>(storage).map_err(bare)?,
                 read(step).map_err(bare)?,
-                optional(rolling).map_err(bare)?.unwrap_or_default(),
+                rolling_step(rolling)?,
                 read(w).map_err(bare)?,
                 optional(u_free).map_err(bare)?,
             )
@@ -106,10 +87,6 @@ pub(crate) unsafe fn contact_step<T: Precision>(
         let u_free = match u {
             Some(u) => [Some(u.vn), Some(u.vx), Some(u.vy), Some(u.omega)],
             None => [None; 4],
-        };
-        let roll = RollingStep {
-            vrx: roll.vrx,
-            vry: roll.vry,
         };
         let [n, fx, fy, tz] =
             contract::step_row(&slot.contact, &Step::from(s), &roll, dt, w.upper(), u_free)
@@ -152,11 +129,7 @@ unsafe fn start<'a, T: Precision>(
 ) -> Result<Taken<'a, T>, Failure> {
     // SAFETY: caller's contract.
     let contact = &unsafe { slot::<T>(storage) }.map_err(bare)?.contact;
-    let roll = rolling.copied().unwrap_or_default();
-    let roll = RollingStep {
-        vrx: roll.vrx,
-        vry: roll.vry,
-    };
+    let roll = RollingStep::from(rolling.copied().unwrap_or_default());
     let step = Step::from(*step);
     contact.wrench_rolling(&step, &roll).map_err(invalid)?;
     let v = if contact.law().is_rolling() {
@@ -288,12 +261,8 @@ pub(crate) unsafe fn step_many<T: Precision>(
     if r.is_ok() {
         which = k;
     }
-    if check(index).is_ok() {
-        // SAFETY: non-NULL and aligned; writable by the caller's contract.
-        unsafe { index.write(which) };
-    }
     // SAFETY: caller's contract.
-    unsafe { report(column, r) }
+    unsafe { report_at(index, which, column, r) }
 }
 
 /// [`step_wrenches`] over the first K taken contacts and their free motions (all `Some`), W

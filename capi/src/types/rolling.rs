@@ -69,11 +69,7 @@ pub struct contensou_rolling_f64 {
 }
 
 /// What a rolling storage holds: a tag only the constructor writes, the contact and its law.
-#[repr(C)]
-pub(crate) struct RollingSlot<T: contensou::Real> {
-    pub(crate) tag: u32,
-    pub(crate) contact: RowContact<T>,
-}
+pub(crate) type RollingSlot<T> = super::Tagged<RowContact<T>>;
 
 // The slot fits in the storage, on every target this crate is built for.
 const _: () = {

@@ -3,6 +3,7 @@
 #![allow(dead_code)]
 
 use core::ffi::{c_char, CStr};
+use core::ptr::{null, null_mut};
 
 use contensou::dynamic::Spec;
 use contensou_capi::*;
@@ -12,32 +13,64 @@ pub fn text(p: *const c_char) -> &'static str {
     unsafe { CStr::from_ptr(p) }.to_str().unwrap()
 }
 
+/// A zeroed storage (as static memory is: no constructor wrote it). The storages are arrays
+/// of `u64`, for which all-zero bytes are a valid value.
+fn zeroed<St>() -> Box<St> {
+    let layout = std::alloc::Layout::new::<St>();
+    let p = unsafe { std::alloc::alloc_zeroed(layout) }.cast::<St>();
+    assert!(!p.is_null(), "allocation failed");
+    unsafe { Box::from_raw(p) }
+}
+
 /// Zeroed storage of one `float` contact.
 pub fn storage32() -> Box<contensou_contact_f32> {
-    Box::new(contensou_contact_f32 {
-        opaque: [0; CONTENSOU_CONTACT_F32_SIZE / 8],
-    })
+    zeroed()
 }
 
 /// Zeroed storage of one `double` contact.
 pub fn storage64() -> Box<contensou_contact_f64> {
-    Box::new(contensou_contact_f64 {
-        opaque: [0; CONTENSOU_CONTACT_F64_SIZE / 8],
-    })
+    zeroed()
 }
 
 /// Zeroed storage of one `float` rolling contact.
 pub fn rolling32() -> Box<contensou_rolling_f32> {
-    Box::new(contensou_rolling_f32 {
-        opaque: [0; CONTENSOU_ROLLING_F32_SIZE / 8],
-    })
+    zeroed()
 }
 
 /// Zeroed storage of one `double` rolling contact.
 pub fn rolling64() -> Box<contensou_rolling_f64> {
-    Box::new(contensou_rolling_f64 {
-        opaque: [0; CONTENSOU_ROLLING_F64_SIZE / 8],
-    })
+    zeroed()
+}
+
+/// The statuses of `call` (a per-step call on a contact: storage, step, output) with each
+/// pointer NULL in turn — storage, step, output — the others valid; asserts that nothing was
+/// written.
+pub fn each_null<St, In, O: Default + PartialEq + core::fmt::Debug>(
+    c: &St,
+    step: &In,
+    call: impl Fn(*const St, *const In, *mut O) -> contensou_status,
+) -> [contensou_status; 3] {
+    let mut out = O::default();
+    let statuses = [
+        call(null(), step, &mut out),
+        call(c, null(), &mut out),
+        call(c, step, null_mut()),
+    ];
+    assert_eq!(out, O::default(), "nothing written on error");
+    statuses
+}
+
+/// The storage `St` has the size the crate and the header declare as `name` = `size`, and
+/// the header's alignment.
+pub fn assert_storage<St>(name: &str, size: usize) {
+    assert_eq!(core::mem::size_of::<St>(), size, "{name}");
+    assert_eq!(
+        core::mem::align_of::<St>(),
+        CONTENSOU_CONTACT_ALIGN,
+        "{name}"
+    );
+    let header = include_str!("../../include/contensou.h");
+    assert!(header.contains(&format!("#define {name} {size}")), "{name}");
 }
 
 /// The reference contact: P = 10, Q = 50 (1/m), E* = 1.15e11 Pa, c_d = 0.1, f = 0.1,
@@ -49,6 +82,15 @@ pub const SPEC: contensou_spec<f64> = contensou_spec {
     cd: 0.1,
     f: 0.1,
     delta: 1e-4,
+};
+
+/// A step of the reference contact: pressed in, compressing, sliding and spinning.
+pub const STEP: contensou_step<f64> = contensou_step {
+    h: 1e-6,
+    hdot: 0.01,
+    vx: 0.01,
+    vy: -0.002,
+    omega: 50.0,
 };
 
 /// [`SPEC`] in another precision, each value converted by `to`.

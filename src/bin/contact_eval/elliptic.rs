@@ -9,29 +9,14 @@ use crate::csv::{message, run_csv, shortest};
 use crate::{Args, Model, Precision, list_models, run_model};
 
 /// The methods, the default first.
-pub const METHODS: &[Model] = &[
-    Model {
-        name: "agm",
-        about: "arithmetic-geometric mean (exact grade)",
-        run: by::<Agm>,
-    },
-    Model {
-        name: "theta",
-        about: "theta-function series (fixed terms)",
-        run: by::<Theta>,
-    },
-    Model {
-        name: "table",
-        about: "interpolated table",
-        run: by::<Table>,
-    },
+pub const METHODS: &[Model] = models! {
+    "agm" => by::<Agm>, "arithmetic-geometric mean (exact grade)";
+    "theta" => by::<Theta>, "theta-function series (fixed terms)";
+    "table" => by::<Table>, "interpolated table";
     #[cfg(feature = "micromath")]
-    Model {
-        name: "theta-micromath",
-        about: "theta series with micromath's f32 functions",
-        run: by::<contensou::elliptic::ThetaMicromath>,
-    },
-];
+    "theta-micromath" => by::<contensou::elliptic::ThetaMicromath>,
+        "theta series with micromath's f32 functions";
+};
 
 /// The help text.
 pub fn help() -> String {
@@ -44,10 +29,7 @@ pub fn run(args: Args) -> Result<ExitCode, String> {
 }
 
 fn by<M: Method>(precision: Precision) -> ExitCode {
-    match precision {
-        Precision::F32 => eval::<f32, M>(),
-        Precision::F64 => eval::<f64, M>(),
-    }
+    per_precision!(precision, T => eval::<T, M>())
 }
 
 fn eval<T: Real + LowerExp, M: Method>() -> ExitCode {

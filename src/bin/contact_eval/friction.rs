@@ -16,72 +16,31 @@ use crate::{Args, Model, Precision, list_models, run_model};
 
 /// The models, the library's default law first (`Friction<T>` without a law parameter; the
 /// unit test `default_is_the_librarys` keeps it so).
-pub const MODELS: &[Model] = &[
-    Model {
-        name: "best",
-        about: "exact grade, per-contact tables (prepare at e2, then traction_prepared)",
-        run: prepared::<Best>,
-    },
-    Model {
-        name: "best-varying",
-        about: "best, per-step form (one flash table, e2 interpolated: the shape varies every call)",
-        run: per_call::<Best>,
-    },
-    Model {
-        name: "best-series",
-        about: "best, the per-call fitted series (the per-step form's predecessor and fallback)",
-        run: per_call::<BestSeries>,
-    },
-    Model {
-        name: "simplified",
-        about: "the paper's simplified model",
-        run: prepared::<Simplified>,
-    },
-    Model {
-        name: "pade",
-        about: "Pade approximants",
-        run: prepared::<Pade>,
-    },
-    Model {
-        name: "ellipsoid",
-        about: "ellipsoidal pressure fit",
-        run: prepared::<Ellipsoid>,
-    },
-    Model {
-        name: "coulomb",
-        about: "point contact (no drilling torque)",
-        run: prepared::<Coulomb>,
-    },
-    Model {
-        name: "exact",
-        about: "the reference integrals (slow)",
-        run: prepared::<Exact>,
-    },
+pub const MODELS: &[Model] = models! {
+    "best" => prepared::<Best>,
+        "exact grade, per-contact tables (prepare at e2, then traction_prepared)";
+    "best-varying" => per_call::<Best>,
+        "best, per-step form (one flash table, e2 interpolated: the shape varies every call)";
+    "best-series" => per_call::<BestSeries>,
+        "best, the per-call fitted series (the per-step form's predecessor and fallback)";
+    "simplified" => prepared::<Simplified>, "the paper's simplified model";
+    "pade" => prepared::<Pade>, "Pade approximants";
+    "ellipsoid" => prepared::<Ellipsoid>, "ellipsoidal pressure fit";
+    "coulomb" => prepared::<Coulomb>, "point contact (no drilling torque)";
+    "exact" => prepared::<Exact>, "the reference integrals (slow)";
     #[cfg(feature = "micromath")]
-    Model {
-        name: "best-micromath",
-        about: "best with micromath's f32 functions",
-        run: prepared::<contensou::friction::BestMicromath>,
-    },
+    "best-micromath" => prepared::<contensou::friction::BestMicromath>,
+        "best with micromath's f32 functions";
     #[cfg(feature = "micromath")]
-    Model {
-        name: "simplified-micromath",
-        about: "simplified with micromath's f32 functions",
-        run: prepared::<contensou::friction::SimplifiedMicromath>,
-    },
+    "simplified-micromath" => prepared::<contensou::friction::SimplifiedMicromath>,
+        "simplified with micromath's f32 functions";
     #[cfg(feature = "micromath")]
-    Model {
-        name: "ellipsoid-micromath",
-        about: "ellipsoid with micromath's f32 functions",
-        run: prepared::<contensou::friction::EllipsoidMicromath>,
-    },
+    "ellipsoid-micromath" => prepared::<contensou::friction::EllipsoidMicromath>,
+        "ellipsoid with micromath's f32 functions";
     #[cfg(feature = "micromath")]
-    Model {
-        name: "coulomb-micromath",
-        about: "coulomb with micromath's f32 functions",
-        run: prepared::<contensou::friction::CoulombMicromath>,
-    },
-];
+    "coulomb-micromath" => prepared::<contensou::friction::CoulombMicromath>,
+        "coulomb with micromath's f32 functions";
+};
 
 /// The name of the law `Friction<T>` defaults to.
 pub fn default_law() -> &'static str {
@@ -108,18 +67,12 @@ pub fn run(args: Args) -> Result<ExitCode, String> {
 /// Each row through the law's per-contact form (`prepare` at the row's e², then
 /// `traction_prepared`): what a contact of fixed shape evaluates every step.
 fn prepared<L: FrictionLaw>(precision: Precision) -> ExitCode {
-    match precision {
-        Precision::F32 => rows::<f32>(|k, s| L::traction_prepared(&L::prepare(k), s).0),
-        Precision::F64 => rows::<f64>(|k, s| L::traction_prepared(&L::prepare(k), s).0),
-    }
+    per_precision!(precision, T => rows::<T>(|k, s| L::traction_prepared(&L::prepare(k), s).0))
 }
 
 /// Each row through the law's per-call form (`traction`, nothing precomputed).
 fn per_call<L: FrictionLaw>(precision: Precision) -> ExitCode {
-    match precision {
-        Precision::F32 => rows::<f32>(|k, s| L::traction(k, s).0),
-        Precision::F64 => rows::<f64>(|k, s| L::traction(k, s).0),
-    }
+    per_precision!(precision, T => rows::<T>(|k, s| L::traction(k, s).0))
 }
 
 fn rows<T: Real + LowerExp>(law: impl Fn(&Constants<T>, &SlipState<T>) -> Traction<T>) -> ExitCode {

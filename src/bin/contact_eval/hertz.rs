@@ -11,68 +11,26 @@ use crate::csv::{message, run_csv, shortest};
 use crate::{Args, Model, Precision, list_models, run_model};
 
 /// The eccentricity methods, the default first.
-pub const ECCENTRICITY: &[Model] = &[
-    Model {
-        name: "newton",
-        about: "exact (Newton on the Hertz shape equation)",
-        run: eccentricity::<Newton>,
-    },
-    Model {
-        name: "table",
-        about: "per-step table in g (exact grade)",
-        run: eccentricity::<Table>,
-    },
-    Model {
-        name: "linear",
-        about: "the paper's G* (c1 = 0.4)",
-        run: eccentricity::<Linear>,
-    },
-    Model {
-        name: "hamrock-dowson",
-        about: "k = (Q/P)^(2/pi)",
-        run: eccentricity::<HamrockDowson>,
-    },
+pub const ECCENTRICITY: &[Model] = models! {
+    "newton" => eccentricity::<Newton>, "exact (Newton on the Hertz shape equation)";
+    "table" => eccentricity::<Table>, "per-step table in g (exact grade)";
+    "linear" => eccentricity::<Linear>, "the paper's G* (c1 = 0.4)";
+    "hamrock-dowson" => eccentricity::<HamrockDowson>, "k = (Q/P)^(2/pi)";
     #[cfg(feature = "micromath")]
-    Model {
-        name: "hamrock-dowson-micromath",
-        about: "hamrock-dowson with micromath's f32 functions",
-        run: eccentricity::<contensou::shape::HamrockDowsonMicromath>,
-    },
-];
+    "hamrock-dowson-micromath" => eccentricity::<contensou::shape::HamrockDowsonMicromath>,
+        "hamrock-dowson with micromath's f32 functions";
+};
 
 /// The normal laws, the default first.
-pub const HERTZ: &[Model] = &[
-    Model {
-        name: "newton",
-        about: "Hertz, exact eccentricity",
-        run: hertz_by::<Newton>,
-    },
-    Model {
-        name: "table",
-        about: "Hertz, eccentricity by table",
-        run: hertz_by::<Table>,
-    },
-    Model {
-        name: "linear",
-        about: "Hertz, the paper's G*",
-        run: hertz_by::<Linear>,
-    },
-    Model {
-        name: "hamrock-dowson",
-        about: "Hertz, Hamrock-Dowson eccentricity",
-        run: hertz_by::<HamrockDowson>,
-    },
-    Model {
-        name: "volumetric",
-        about: "Hertz circle of the Gaussian radius; stated domain P/Q >= 0.5 (error <= 1 %), refused below",
-        run: volumetric,
-    },
-    Model {
-        name: "fitted",
-        about: "eccentricity-free fitted Hertz (P/Q >= 1e-4)",
-        run: fitted,
-    },
-];
+pub const HERTZ: &[Model] = models! {
+    "newton" => hertz_by::<Newton>, "Hertz, exact eccentricity";
+    "table" => hertz_by::<Table>, "Hertz, eccentricity by table";
+    "linear" => hertz_by::<Linear>, "Hertz, the paper's G*";
+    "hamrock-dowson" => hertz_by::<HamrockDowson>, "Hertz, Hamrock-Dowson eccentricity";
+    "volumetric" => volumetric,
+        "Hertz circle of the Gaussian radius; stated domain P/Q >= 0.5 (error <= 1 %), refused below";
+    "fitted" => fitted, "eccentricity-free fitted Hertz (P/Q >= 1e-4)";
+};
 
 /// `eccentricity` help.
 pub fn help_eccentricity() -> String {
@@ -101,31 +59,19 @@ fn eccentricity<M: Eccentricity>(precision: Precision) -> ExitCode {
             Ok(vec![M::shape(g).e2()])
         })
     }
-    match precision {
-        Precision::F32 => eval::<f32, M>(),
-        Precision::F64 => eval::<f64, M>(),
-    }
+    per_precision!(precision, T => eval::<T, M>())
 }
 
 fn hertz_by<M: Eccentricity>(precision: Precision) -> ExitCode {
-    match precision {
-        Precision::F32 => hertz::<f32, _>(Hertz::new::<M>),
-        Precision::F64 => hertz::<f64, _>(Hertz::new::<M>),
-    }
+    per_precision!(precision, T => hertz::<T, _>(Hertz::new::<M>))
 }
 
 fn volumetric(precision: Precision) -> ExitCode {
-    match precision {
-        Precision::F32 => hertz::<f32, _>(Volumetric::checked),
-        Precision::F64 => hertz::<f64, _>(Volumetric::checked),
-    }
+    per_precision!(precision, T => hertz::<T, _>(Volumetric::checked))
 }
 
 fn fitted(precision: Precision) -> ExitCode {
-    match precision {
-        Precision::F32 => hertz::<f32, _>(Fitted::new),
-        Precision::F64 => hertz::<f64, _>(Fitted::new),
-    }
+    per_precision!(precision, T => hertz::<T, _>(Fitted::new))
 }
 
 /// Every row through the law built by `build` from the row's curvatures and modulus.

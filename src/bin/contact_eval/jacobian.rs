@@ -34,8 +34,5 @@ fn eval<T: contensou::Real>(law: Law, form: Form) -> Box<Eval<'static, T>> {
 /// Run the subcommand, or say why the options are wrong.
 pub fn run(args: Args) -> Result<ExitCode, String> {
     let (law, form, precision) = options(args)?;
-    Ok(match precision {
-        Precision::F32 => rows::<f32>(&OUTPUTS, &*eval(law, form)),
-        Precision::F64 => rows::<f64>(&OUTPUTS, &*eval(law, form)),
-    })
+    Ok(per_precision!(precision, T => rows::<T>(&OUTPUTS, &*eval(law, form))))
 }

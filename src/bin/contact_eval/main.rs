@@ -20,6 +20,30 @@
 //! Each subcommand is a thin shell over the library, in its own file, with its models in one
 //! table (the help text is generated from it).
 
+/// A model table: `name => run, "about";` a row (optionally under attributes such as `cfg`),
+/// the default first.
+macro_rules! models {
+    ($($(#[$m:meta])* $name:literal => $run:expr, $about:literal;)*) => {
+        &[$($(#[$m])* Model { name: $name, about: $about, run: $run },)*]
+    };
+}
+
+/// `$body` with the type `$t` the run's precision (`f32` or `f64`).
+macro_rules! per_precision {
+    ($precision:expr, $t:ident => $body:expr) => {
+        match $precision {
+            Precision::F32 => {
+                type $t = f32;
+                $body
+            }
+            Precision::F64 => {
+                type $t = f64;
+                $body
+            }
+        }
+    };
+}
+
 mod csv;
 mod elliptic;
 mod friction;

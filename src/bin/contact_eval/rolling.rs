@@ -29,10 +29,7 @@ pub fn run(mut args: Args) -> Result<ExitCode, String> {
     let law = law.copied().unwrap_or_default();
     let precision = args.precision;
     args.finish()?;
-    Ok(match precision {
-        Precision::F32 => eval::<f32>(law),
-        Precision::F64 => eval::<f64>(law),
-    })
+    Ok(per_precision!(precision, T => eval::<T>(law)))
 }
 
 fn eval<T: Real + LowerExp>(law: RowLaw) -> ExitCode {

@@ -38,10 +38,7 @@ pub fn help() -> String {
 /// Run the subcommand, or say why the options are wrong.
 pub fn run(args: Args) -> Result<ExitCode, String> {
     let (law, form, precision) = wrench::options(args)?;
-    Ok(match precision {
-        Precision::F32 => rows::<f32>(law, form),
-        Precision::F64 => rows::<f64>(law, form),
-    })
+    Ok(per_precision!(precision, T => rows::<T>(law, form)))
 }
 
 fn rows<T: Real + LowerExp>(law: Law, form: Form) -> ExitCode {

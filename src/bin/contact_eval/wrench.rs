@@ -6,7 +6,8 @@ use std::process::ExitCode;
 
 use contensou::Real;
 use contensou::dynamic::{
-    self, Form, INPUTS, Invalid, Law, OUTPUTS, ROLLING_INPUTS, RollingSpec, RollingStep, Spec, Step,
+    self, Form, INPUTS, Invalid, Law, OUTPUTS, ROLLING_INPUTS, RollingSpec, RollingStep, Spec,
+    Step, from_inputs,
 };
 
 use crate::csv::{message, run_csv_optional, shortest};
@@ -71,14 +72,11 @@ pub fn help_options() -> String {
 /// Run the subcommand, or say why the options are wrong.
 pub fn run(args: Args) -> Result<ExitCode, String> {
     let (law, form, precision) = options(args)?;
-    Ok(match precision {
-        Precision::F32 => rows::<f32>(&OUTPUTS, &|c, rs, s, rv| {
+    Ok(
+        per_precision!(precision, T => rows::<T>(&OUTPUTS, &|c, rs, s, rv| {
             dynamic::wrench_rolling(c, rs, law, form, s, rv).map(|o| o.to_array().to_vec())
-        }),
-        Precision::F64 => rows::<f64>(&OUTPUTS, &|c, rs, s, rv| {
-            dynamic::wrench_rolling(c, rs, law, form, s, rv).map(|o| o.to_array().to_vec())
-        }),
-    })
+        })),
+    )
 }
 
 /// The options of the contract's subcommands: `--law`, `--form` and the precision.
@@ -116,21 +114,7 @@ pub fn parts<T: Real>(
     o: &[Option<T>],
 ) -> (Spec<T>, Step<T>, RollingSpec<T>, RollingStep<T>) {
     let get = |i: usize| o.get(i).copied().flatten();
-    let spec = Spec {
-        p: r[0],
-        q: r[1],
-        estar: r[2],
-        cd: r[3],
-        f: r[4],
-        delta: r[5],
-    };
-    let step = Step {
-        h: r[6],
-        hdot: r[7],
-        vx: r[8],
-        vy: r[9],
-        omega: r[10],
-    };
+    let (spec, step) = from_inputs(core::array::from_fn(|i| r[i]));
     let rolling_spec = RollingSpec {
         g: get(0),
         nu: get(1),

@@ -33,7 +33,7 @@
 //! With a/b arguments only those shapes are computed (to split the work; concatenate the rows).
 use rolling_exact::cases::{NL, SHAPES, magnitudes, uniform};
 use rolling_exact::kalker;
-use rolling_exact::reference::{Patch, finest_k};
+use rolling_exact::reference::{CSV_COLUMNS, Patch, finest_k};
 use std::time::Instant;
 
 /// The intervals of the 29 node magnitudes (spin) refined in the `knee` modes (q ≈ 0.1 … 1.6).
@@ -115,7 +115,7 @@ fn main() {
         "# (cargo run --release --example directions -- {mode}; see there for the cases); same method, grids,"
     ));
     line("# extrapolation and format as rolling_ref.csv (see its header).");
-    line("family,a_over_b,nu,nl,xi,eta,phi_c,fx,fy,mz,err_f,err_m");
+    line(CSV_COLUMNS);
     let mut seed = 20u64;
     for aob in shapes {
         let (c11, c22, c23) = kalker::coefficients(aob).expect("shape in Table E3");
@@ -199,20 +199,9 @@ fn main() {
                 sol.converged,
                 "not converged: {family} {aob} {xi} {eta} {phi_c}"
             );
-            line(&format!(
-                "{family},{aob},{nu},{NL},{xi:e},{eta:e},{phi_c:e},{:.10e},{:.10e},{:.10e},{:.3e},{:.3e}",
-                sol.totals.fx, sol.totals.fy, sol.totals.mz, sol.err_f, sol.err_m
-            ));
+            line(&patch.csv_row(family, [xi, eta, phi_c], &sol));
         }
-        let dims: Vec<String> = patch
-            .levels
-            .iter()
-            .map(|l| format!("{}x{}", l.grid.n, l.grid.m))
-            .collect();
-        line(&format!(
-            "# a/b = {aob}, nu = {nu}, nl = {NL}: grids (x by y elements) {}",
-            dims.join(", ")
-        ));
+        line(&patch.grids_comment());
         eprintln!(
             "a/b {aob}: done, {:.1} s so far",
             started.elapsed().as_secs_f64()

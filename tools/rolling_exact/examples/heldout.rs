@@ -28,7 +28,7 @@
 //! `a_over_b`, then `converged` (every grid's Gauss–Seidel met its tolerance) and the seconds.
 use contensou::friction::rolling::Kalker;
 use rolling_exact::cases::uniform;
-use rolling_exact::reference::{Patch, elements_ratio, finest_k, skew};
+use rolling_exact::reference::{skew, skewed_row};
 use std::time::Instant;
 
 /// Points in the committed file.
@@ -106,21 +106,14 @@ fn main() {
         if i < first {
             continue;
         }
-        let t = Instant::now();
-        let (a, b, _) = skew(aob, theta);
-        let nm = elements_ratio(a / b);
-        let patch = Patch::skewed_on(aob, theta, nu, NL, finest_k(nm, elements), nm);
-        let sol = patch.solve(xi, eta, phi_c, true);
-        line(&format!(
-            "{family},{aob:.6},{:.4},{nu:.4},{NL},{xi:e},{eta:e},{phi_c:e},{:.10e},{:.10e},{:.10e},{:.3e},{:.3e},{},{:.2}",
-            theta.to_degrees(),
-            sol.totals.fx,
-            sol.totals.fy,
-            sol.totals.mz,
-            sol.err_f,
-            sol.err_m,
-            u8::from(sol.converged),
-            t.elapsed().as_secs_f64()
+        line(&skewed_row(
+            family,
+            aob,
+            theta,
+            nu,
+            NL,
+            [xi, eta, phi_c],
+            elements,
         ));
     }
     eprintln!("wrote {out} in {:.1} s", started.elapsed().as_secs_f64());

@@ -94,11 +94,7 @@ fn main() {
         let target = if a / b > 5.0 { 2048 } else { 1024 };
         let patch = Patch::skewed_on(r, th, nu, 1.0, finest_k(nm, target), nm);
         let m = patch.creep_matrix();
-        let dims: Vec<String> = patch
-            .levels
-            .iter()
-            .map(|l| format!("{}x{}", l.grid.n, l.grid.m))
-            .collect();
+        let dims = patch.grid_dims();
         let k: Vec<String> = m.k.iter().flatten().map(|v| format!("{v:.7e}")).collect();
         let e: Vec<String> = m.err.iter().flatten().map(|v| format!("{v:.2e}")).collect();
         line(&format!(

@@ -10,7 +10,7 @@
 //! midpoints.
 use rolling_exact::cases::{NL, SHAPES, magnitudes};
 use rolling_exact::kalker;
-use rolling_exact::reference::{Patch, finest_k};
+use rolling_exact::reference::{Patch, csv_file, finest_k};
 use std::fmt::Write as _;
 use std::time::Instant;
 
@@ -69,24 +69,9 @@ fn main() {
                 sol.converged,
                 "not converged: {family} {aob} {xi} {eta} {phi_c}"
             );
-            writeln!(
-                rows,
-                "{family},{aob},{nu},{NL},{xi:e},{eta:e},{phi_c:e},{:.10e},{:.10e},{:.10e},{:.3e},{:.3e}",
-                sol.totals.fx, sol.totals.fy, sol.totals.mz, sol.err_f, sol.err_m
-            )
-            .unwrap();
+            writeln!(rows, "{}", patch.csv_row(family, [xi, eta, phi_c], &sol)).unwrap();
         }
-        let dims: Vec<String> = patch
-            .levels
-            .iter()
-            .map(|l| format!("{}x{}", l.grid.n, l.grid.m))
-            .collect();
-        writeln!(
-            grids,
-            "# a/b = {aob}, nu = {nu}, nl = {NL}: grids (x by y elements) {}",
-            dims.join(", ")
-        )
-        .unwrap();
+        writeln!(grids, "{}", patch.grids_comment()).unwrap();
         eprintln!(
             "a/b {aob}: done, {:.1} s so far",
             started.elapsed().as_secs_f64()
@@ -101,15 +86,7 @@ fn main() {
     writeln!(text, "# magnitudes (tools/rolling_exact, cargo run --release --example midpoints{}); same method, grids,", if quarter { " -- quarter" } else { "" }).unwrap();
     text.push_str("# extrapolation and format as rolling_ref.csv (see its header). The held-out set of the default\n");
     text.push_str("# rolling law's tables (tools/fit_rolling_table.py).\n");
-    text.push_str(&grids);
-    writeln!(
-        text,
-        "# total generator time {:.1} s",
-        started.elapsed().as_secs_f64()
-    )
-    .unwrap();
-    text.push_str("family,a_over_b,nu,nl,xi,eta,phi_c,fx,fy,mz,err_f,err_m\n");
-    text.push_str(&rows);
-    std::fs::write(out, text).expect("write csv");
+    let seconds = started.elapsed().as_secs_f64();
+    std::fs::write(out, csv_file(&text, &grids, seconds, &rows)).expect("write csv");
     eprintln!("wrote {out} in {:.1} s", started.elapsed().as_secs_f64());
 }

@@ -14,11 +14,7 @@ fn main() {
     let nm = (ga / gb).powf(a.get(4).copied().unwrap_or(1.0));
     let p = Patch::skewed_on(a[0], th, a[2], 1.0, finest_k(nm, a[3] as usize), nm);
     let m = p.creep_matrix();
-    let dims: Vec<String> = p
-        .levels
-        .iter()
-        .map(|l| format!("{}x{}", l.grid.n, l.grid.m))
-        .collect();
+    let dims = p.grid_dims();
     println!(
         "a/b {} theta {}° nu {}: aligned a/b {:.4} shear {:.4}, grids {}, {:.1} s",
         a[0],

@@ -120,6 +120,37 @@ impl Patch {
         }
     }
 
+    /// The three grids, coarse to fine, as `NxM` (elements along x by along y).
+    pub fn grid_dims(&self) -> Vec<String> {
+        self.levels
+            .iter()
+            .map(|l| format!("{}x{}", l.grid.n, l.grid.m))
+            .collect()
+    }
+
+    /// The comment line of a reference file naming this patch's grids:
+    /// `# a/b = …, nu = …, nl = …: grids (x by y elements) n×m, …`.
+    pub fn grids_comment(&self) -> String {
+        let dims = self.grid_dims();
+        format!(
+            "# a/b = {}, nu = {}, nl = {}: grids (x by y elements) {}",
+            self.aob,
+            self.nu,
+            self.nl,
+            dims.join(", ")
+        )
+    }
+
+    /// The reference row (columns [`CSV_COLUMNS`]) of `family` at the creepages (ξ, η, cφ)
+    /// solved as `sol`.
+    pub fn csv_row(&self, family: &str, [xi, eta, phi_c]: [f64; 3], sol: &Solution) -> String {
+        let (aob, nu, nl, t) = (self.aob, self.nu, self.nl, &sol.totals);
+        format!(
+            "{family},{aob},{nu},{nl},{xi:e},{eta:e},{phi_c:e},{:.10e},{:.10e},{:.10e},{:.3e},{:.3e}",
+            t.fx, t.fy, t.mz, sol.err_f, sol.err_m
+        )
+    }
+
     /// Solves one case on the three grids and extrapolates. `phi_c` = φ·c; `coulomb = false`:
     /// full adhesion (linear theory).
     pub fn solve(&self, xi: f64, eta: f64, phi_c: f64, coulomb: bool) -> Solution {
@@ -153,6 +184,46 @@ impl Patch {
             levels: per,
         }
     }
+}
+
+/// One case of a skewed patch (a₀/b₀ = `aob`, c = 1, its a₀ axis at `theta` rad from the rolling
+/// direction x), solved on the three grids with `elements` on the finest, as one CSV row of the
+/// held-out file's format: `family,a_over_b,theta_deg,nu,nl,xi,eta,phi_c,fx,fy,mz,err_f,err_m,converged,seconds`.
+pub fn skewed_row(
+    family: &str,
+    aob: f64,
+    theta: f64,
+    nu: f64,
+    nl: f64,
+    creepage: [f64; 3],
+    elements: usize,
+) -> String {
+    let [xi, eta, phi_c] = creepage;
+    let t = Instant::now();
+    let (a, b, _) = skew(aob, theta);
+    let nm = elements_ratio(a / b);
+    let patch = Patch::skewed_on(aob, theta, nu, nl, finest_k(nm, elements), nm);
+    let sol = patch.solve(xi, eta, phi_c, true);
+    format!(
+        "{family},{aob:.6},{:.4},{nu:.4},{nl},{xi:e},{eta:e},{phi_c:e},{:.10e},{:.10e},{:.10e},{:.3e},{:.3e},{},{:.2}",
+        theta.to_degrees(),
+        sol.totals.fx,
+        sol.totals.fy,
+        sol.totals.mz,
+        sol.err_f,
+        sol.err_m,
+        u8::from(sol.converged),
+        t.elapsed().as_secs_f64()
+    )
+}
+
+/// The columns of a reference file (tools/data/rolling_ref.csv's).
+pub const CSV_COLUMNS: &str = "family,a_over_b,nu,nl,xi,eta,phi_c,fx,fy,mz,err_f,err_m";
+
+/// A reference file: the `header` comment lines, the patches' grid comments `grids`, the
+/// generator's time, the columns and the `rows`.
+pub fn csv_file(header: &str, grids: &str, seconds: f64, rows: &str) -> String {
+    format!("{header}{grids}# total generator time {seconds:.1} s\n{CSV_COLUMNS}\n{rows}")
 }
 
 /// Extrapolated totals (÷ fN, ÷ fNc), their error estimates and the per-grid results.

@@ -5,7 +5,7 @@
 //! repository's tools/data/rolling_ref.csv, all five shapes, plus CONTACT's published cases).
 
 use rolling_exact::cases::{self, Case};
-use rolling_exact::reference::{Patch, finest_k};
+use rolling_exact::reference::{Patch, csv_file, finest_k};
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
 use std::time::Instant;
@@ -70,23 +70,8 @@ fn main() {
                 stat[i].1 = stat[i].1.max(l.2);
                 stat[i].2 += l.1.sweeps;
             }
-            writeln!(
-                rows,
-                "{},{},{},{},{:e},{:e},{:e},{:.10e},{:.10e},{:.10e},{:.3e},{:.3e}",
-                c.family,
-                aob,
-                nu,
-                nl,
-                c.xi,
-                c.eta,
-                c.phi_c,
-                s.totals.fx,
-                s.totals.fy,
-                s.totals.mz,
-                s.err_f,
-                s.err_m
-            )
-            .unwrap();
+            let row = patch.csv_row(c.family, [c.xi, c.eta, c.phi_c], &s);
+            writeln!(rows, "{row}").unwrap();
         }
         for (i, l) in patch.levels.iter().enumerate() {
             let n = list.len() as f64;
@@ -103,17 +88,7 @@ fn main() {
             )
             .unwrap();
         }
-        let dims: Vec<String> = patch
-            .levels
-            .iter()
-            .map(|l| format!("{}x{}", l.grid.n, l.grid.m))
-            .collect();
-        writeln!(
-            grids,
-            "# a/b = {aob}, nu = {nu}, nl = {nl}: grids (x by y elements) {}",
-            dims.join(", ")
-        )
-        .unwrap();
+        writeln!(grids, "{}", patch.grids_comment()).unwrap();
         eprintln!(
             "a/b {aob} nu {nu} nl {nl}: {} cases, {:.1} s so far",
             list.len(),
@@ -132,16 +107,8 @@ fn main() {
     text.push_str("# linear: full adhesion (no traction bound), creepage 1e-3 of saturation: C11 = -fx*nl/xi etc.\n");
     text.push_str("# fullslip: normalised creepage 1e4 (elastic correction O(1e-4)).\n");
     text.push_str("# contact_example, contact_testbank: CONTACT's published cases (nu = 0.28; tools/rolling_exact/src/cases.rs).\n");
-    text.push_str(&grids);
-    writeln!(
-        text,
-        "# total generator time {:.1} s",
-        started.elapsed().as_secs_f64()
-    )
-    .unwrap();
-    text.push_str("family,a_over_b,nu,nl,xi,eta,phi_c,fx,fy,mz,err_f,err_m\n");
-    text.push_str(&rows);
-    std::fs::write(&out, text).expect("write csv");
+    let seconds = started.elapsed().as_secs_f64();
+    std::fs::write(&out, csv_file(&text, &grids, seconds, &rows)).expect("write csv");
     let tpath = out.replace(".csv", "_timing.csv");
     std::fs::write(&tpath, timing).expect("write timing");
     eprintln!(
