@@ -189,8 +189,10 @@ impl<T: Real, const K: usize> InverseMass<T, K> {
     #[inline]
     pub(crate) fn row_times(&self, r: usize, x: &[[T; 4]; K]) -> T {
         let mut s = T::ZERO;
-        for (j, xj) in x.iter().enumerate() {
-            if let Some(b) = self.blocks.get(r / 4).map(|row| &row[j]) {
+        // Zipped, not indexed by j: when this is not inlined (opt-level z), `row[j]` kept a
+        // bounds check (a panic path, tools/no-panic.sh).
+        if let Some(blocks) = self.blocks.get(r / 4) {
+            for (b, xj) in blocks.iter().zip(x.iter()) {
                 let row = &b[r % 4];
                 s += row[0] * xj[0] + row[1] * xj[1] + row[2] * xj[2] + row[3] * xj[3];
             }

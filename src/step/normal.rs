@@ -58,7 +58,7 @@ use crate::friction::Slip;
 use crate::friction::rolling::RollingVelocity;
 use crate::jacobian::{Jacobian, Linearize, State};
 
-/// Illinois (regula falsi) steps of the normal re-solve: one wrench call each.
+/// Newton steps (bracketed) of the normal re-solve on its end approach: one wrench call each.
 pub const NORMAL_STEPS: usize = 8;
 
 /// The relative residual |N̄ − N_law(h⁺, ḣ⁺)| / N̄ above which the normal force is re-solved.
