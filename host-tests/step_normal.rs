@@ -7,7 +7,8 @@
 //! Before the normal re-solve (measured on these 3 × 3000 states, ≈ 2530 of them in contact
 //! each): N off the law's value by more than 1e-3 on 1218 (`best`; 1050 by more than 1 %),
 //! 1111 (`coulomb`) and 1179 (`best`, damped) states, up to 100 % (N > 0 with the body above
-//! the plane at the end of the step). After: 18, 0, 17.
+//! the plane at the end of the step). After: 4, 0, 5 (18, 0, 17 with two follow rounds instead
+//! of `contensou::step::normal::FOLLOW_ROUNDS` = 4).
 //!
 //! The contacts are linearised by central differences of the wrench itself
 //! ([`contensou::step::Numeric`]); the normal law is the contact's own wrench at (h⁺, ḣ⁺).
@@ -120,8 +121,8 @@ fn run<L: FrictionLaw, D: Damping<f64> + Copy>(n: usize, seed: u64, damping: D) 
 /// `coulomb`: N within the re-solve's tolerance (1e-3) of the law at the returned end state
 /// on every state (measured 9.96e-4). `best` (and `best` with Hunt–Crossley damping): the
 /// same on all but the states where the final limit-set projection (after the last re-solve)
-/// moved the friction again — measured 18 (damped: 17) of 3000, all with the slip reversing
-/// within the step and the limit set acting; bound 1 % of the states.
+/// moved the friction again — measured 4 (damped: 5) of ≈ 2530 in contact, with the limit set
+/// acting and (nearly all) the slip reversing within the step; bound 0.5 % of the states.
 #[test]
 fn normal_force_is_the_law_at_the_returned_end_state() {
     let runs = [
@@ -136,7 +137,7 @@ fn normal_force_is_the_law_at_the_returned_end_state() {
         eprintln!("{name}: {f:?}");
         assert!(f.active > 2000, "{name}: {f:?}");
         assert!(f.resolved > 100, "{name}: the re-solve never acted: {f:?}");
-        assert!(f.off * 100 <= f.active, "{name}: {f:?}");
+        assert!(f.off * 200 <= f.active, "{name}: {f:?}");
     }
     let coulomb = &runs[1].1;
     assert!(coulomb.worst <= 1.0e-3, "{coulomb:?}");
