@@ -58,10 +58,7 @@ fn documented() -> Vec<String> {
 fn guide_table_lists_every_variant() {
     let (d, r) = (declared(), documented());
     assert_eq!(d.len(), 21, "variants parsed from src/error.rs: {d:?}");
-    assert_eq!(
-        d, r,
-        "src/error.rs vs the guide's Errors tables"
-    );
+    assert_eq!(d, r, "src/error.rs vs the guide's Errors tables");
 }
 
 fn nonfinite<V: std::fmt::Debug>(r: Result<V, Error>, name: &'static str) {
