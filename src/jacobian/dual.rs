@@ -73,6 +73,17 @@ impl<T: Real, const K: usize> Dual<T, K> {
         }
     }
 
+    /// The value `v` with the derivatives f(dᵢ(self), dᵢ(o)) entry by entry (the rule of the
+    /// binary operations and of `atan2`, `hypot`).
+    #[inline(always)]
+    fn pairwise(self, o: Self, v: T, f: impl Fn(T, T) -> T) -> Self {
+        let mut d = self.d;
+        for (x, &y) in d.iter_mut().zip(o.d.iter()) {
+            *x = f(*x, y);
+        }
+        Dual { v, d }
+    }
+
     /// `self · k` for a constant `k` (K + 1 multiplies, not 2K + 1).
     #[inline(always)]
     pub fn scale(self, k: T) -> Self {
@@ -94,27 +105,22 @@ impl<T: Real, const K: usize> PartialEq for Dual<T, K> {
     }
 }
 
+/// The order of dual numbers: that of their values.
+macro_rules! compare {
+    ($($f:ident $op:tt),*) => {$(
+        #[inline(always)]
+        fn $f(&self, other: &Self) -> bool {
+            self.v $op other.v
+        }
+    )*};
+}
+
 impl<T: Real, const K: usize> PartialOrd for Dual<T, K> {
     #[inline(always)]
     fn partial_cmp(&self, other: &Self) -> Option<Ordering> {
         self.v.partial_cmp(&other.v)
     }
-    #[inline(always)]
-    fn lt(&self, other: &Self) -> bool {
-        self.v < other.v
-    }
-    #[inline(always)]
-    fn le(&self, other: &Self) -> bool {
-        self.v <= other.v
-    }
-    #[inline(always)]
-    fn gt(&self, other: &Self) -> bool {
-        self.v > other.v
-    }
-    #[inline(always)]
-    fn ge(&self, other: &Self) -> bool {
-        self.v >= other.v
-    }
+    compare!(lt <, le <=, gt >, ge >=);
 }
 
 impl<T: Real, const K: usize> fmt::Display for Dual<T, K> {
@@ -132,53 +138,29 @@ impl<T: Real, const K: usize> FromStr for Dual<T, K> {
     }
 }
 
-impl<T: Real, const K: usize> Add for Dual<T, K> {
-    type Output = Self;
-    #[inline(always)]
-    fn add(self, o: Self) -> Self {
-        let mut d = self.d;
-        for (x, &y) in d.iter_mut().zip(o.d.iter()) {
-            *x += y;
+/// `impl $tr for Dual` with the operands bound to `$a` (self) and `$b` and the body `$body`.
+macro_rules! binary {
+    ($($tr:ident, $f:ident, |$a:ident, $b:ident| $body:block)*) => {$(
+        impl<T: Real, const K: usize> $tr for Dual<T, K> {
+            type Output = Self;
+            #[inline(always)]
+            #[allow(clippy::suspicious_arithmetic_impl)] // the product and quotient rules
+            fn $f(self, o: Self) -> Self {
+                let ($a, $b) = (self, o);
+                $body
+            }
         }
-        Dual { v: self.v + o.v, d }
-    }
+    )*};
 }
 
-impl<T: Real, const K: usize> Sub for Dual<T, K> {
-    type Output = Self;
-    #[inline(always)]
-    fn sub(self, o: Self) -> Self {
-        let mut d = self.d;
-        for (x, &y) in d.iter_mut().zip(o.d.iter()) {
-            *x -= y;
-        }
-        Dual { v: self.v - o.v, d }
-    }
-}
-
-impl<T: Real, const K: usize> Mul for Dual<T, K> {
-    type Output = Self;
-    #[inline(always)]
-    fn mul(self, o: Self) -> Self {
-        let mut d = self.d;
-        for (x, &y) in d.iter_mut().zip(o.d.iter()) {
-            *x = *x * o.v + self.v * y;
-        }
-        Dual { v: self.v * o.v, d }
-    }
-}
-
-impl<T: Real, const K: usize> Div for Dual<T, K> {
-    type Output = Self;
-    #[inline(always)]
-    fn div(self, o: Self) -> Self {
-        let v = self.v / o.v;
-        let inv = T::ONE / o.v;
-        let mut d = self.d;
-        for (x, &y) in d.iter_mut().zip(o.d.iter()) {
-            *x = (*x - v * y) * inv;
-        }
-        Dual { v, d }
+binary! {
+    Add, add, |a, b| { a.pairwise(b, a.v + b.v, |x, y| x + y) }
+    Sub, sub, |a, b| { a.pairwise(b, a.v - b.v, |x, y| x - y) }
+    Mul, mul, |a, b| { a.pairwise(b, a.v * b.v, |x, y| x * b.v + a.v * y) }
+    Div, div, |a, b| {
+        let v = a.v / b.v;
+        let inv = T::ONE / b.v;
+        a.pairwise(b, v, |x, y| (x - v * y) * inv)
     }
 }
 
@@ -214,6 +196,26 @@ fn sign<T: Real>(x: T) -> T {
     T::ONE.copysign(x)
 }
 
+/// `Real`'s conversions into a dual number: constants (zero derivatives).
+macro_rules! constants {
+    ($($f:ident($t:ty)),*) => {$(
+        #[inline(always)]
+        fn $f(x: $t) -> Self {
+            Self::constant(T::$f(x))
+        }
+    )*};
+}
+
+/// `Real`'s reads of a dual number: those of its value.
+macro_rules! of_value {
+    ($($f:ident -> $t:ty),*) => {$(
+        #[inline(always)]
+        fn $f(self) -> $t {
+            self.v.$f()
+        }
+    )*};
+}
+
 impl<T: Real, const K: usize> crate::real::sealed::Sealed for Dual<T, K> {}
 
 impl<T: Real, const K: usize> Real for Dual<T, K> {
@@ -239,30 +241,13 @@ impl<T: Real, const K: usize> Real for Dual<T, K> {
     ) -> &'a [[Self::Base; W]; C] {
         T::of_precision(single, double)
     }
-    #[inline(always)]
-    fn from_base(x: Self::Base) -> Self {
-        Self::constant(T::from_base(x))
-    }
-    #[inline(always)]
-    fn from_f64(x: f64) -> Self {
-        Self::constant(T::from_f64(x))
-    }
-    #[inline(always)]
-    fn from_f32(x: f32) -> Self {
-        Self::constant(T::from_f32(x))
-    }
-    #[inline(always)]
-    fn to_f64(self) -> f64 {
-        self.v.to_f64()
-    }
-    #[inline(always)]
-    fn from_usize(i: usize) -> Self {
-        Self::constant(T::from_usize(i))
-    }
-    #[inline(always)]
-    fn trunc_usize(self) -> usize {
-        self.v.trunc_usize()
-    }
+    constants!(
+        from_base(Self::Base),
+        from_f64(f64),
+        from_f32(f32),
+        from_usize(usize)
+    );
+    of_value!(to_f64 -> f64, trunc_usize -> usize, is_finite -> bool, is_positive_normal -> bool);
     #[inline(always)]
     fn sqrt(self) -> Self {
         let r = self.v.sqrt();
@@ -330,11 +315,7 @@ impl<T: Real, const K: usize> Real for Dual<T, K> {
             return Self::constant(v);
         }
         let inv = T::ONE / r2;
-        let mut d = self.d;
-        for (dy, &dx) in d.iter_mut().zip(x.d.iter()) {
-            *dy = (x.v * *dy - self.v * dx) * inv;
-        }
-        Dual { v, d }
+        self.pairwise(x, v, |dy, dx| (x.v * dy - self.v * dx) * inv)
     }
     #[inline(always)]
     fn cbrt(self) -> Self {
@@ -355,23 +336,11 @@ impl<T: Real, const K: usize> Real for Dual<T, K> {
             return Self::constant(h);
         }
         let (cx, cy) = (self.v / h, o.v / h);
-        let mut d = self.d;
-        for (x, &y) in d.iter_mut().zip(o.d.iter()) {
-            *x = cx * *x + cy * y;
-        }
-        Dual { v: h, d }
+        self.pairwise(o, h, |x, y| cx * x + cy * y)
     }
     #[inline(always)]
     fn floor(self) -> Self {
         Self::constant(self.v.floor())
-    }
-    #[inline(always)]
-    fn is_finite(self) -> bool {
-        self.v.is_finite()
-    }
-    #[inline(always)]
-    fn is_positive_normal(self) -> bool {
-        self.v.is_positive_normal()
     }
 }
 
