@@ -73,17 +73,6 @@ impl<T: Real, const K: usize> Dual<T, K> {
         }
     }
 
-    /// The value `v` with the derivatives f(dᵢ(self), dᵢ(o)) entry by entry (the rule of the
-    /// binary operations and of `atan2`, `hypot`).
-    #[inline(always)]
-    fn pairwise(self, o: Self, v: T, f: impl Fn(T, T) -> T) -> Self {
-        let mut d = self.d;
-        for (x, &y) in d.iter_mut().zip(o.d.iter()) {
-            *x = f(*x, y);
-        }
-        Dual { v, d }
-    }
-
     /// `self · k` for a constant `k` (K + 1 multiplies, not 2K + 1).
     #[inline(always)]
     pub fn scale(self, k: T) -> Self {
@@ -138,29 +127,52 @@ impl<T: Real, const K: usize> FromStr for Dual<T, K> {
     }
 }
 
-/// `impl $tr for Dual` with the operands bound to `$a` (self) and `$b` and the body `$body`.
-macro_rules! binary {
-    ($($tr:ident, $f:ident, |$a:ident, $b:ident| $body:block)*) => {$(
+/// `impl $tr for Dual`: the values and the derivatives entry by entry by `$op` (a sum or a
+/// difference).
+macro_rules! additive {
+    ($($tr:ident, $f:ident, $op:tt, $op_assign:tt;)*) => {$(
         impl<T: Real, const K: usize> $tr for Dual<T, K> {
             type Output = Self;
             #[inline(always)]
-            #[allow(clippy::suspicious_arithmetic_impl)] // the product and quotient rules
             fn $f(self, o: Self) -> Self {
-                let ($a, $b) = (self, o);
-                $body
+                let mut d = self.d;
+                for (x, &y) in d.iter_mut().zip(o.d.iter()) {
+                    *x $op_assign y;
+                }
+                Dual { v: self.v $op o.v, d }
             }
         }
     )*};
 }
 
-binary! {
-    Add, add, |a, b| { a.pairwise(b, a.v + b.v, |x, y| x + y) }
-    Sub, sub, |a, b| { a.pairwise(b, a.v - b.v, |x, y| x - y) }
-    Mul, mul, |a, b| { a.pairwise(b, a.v * b.v, |x, y| x * b.v + a.v * y) }
-    Div, div, |a, b| {
-        let v = a.v / b.v;
-        let inv = T::ONE / b.v;
-        a.pairwise(b, v, |x, y| (x - v * y) * inv)
+additive! {
+    Add, add, +, +=;
+    Sub, sub, -, -=;
+}
+
+impl<T: Real, const K: usize> Mul for Dual<T, K> {
+    type Output = Self;
+    #[inline(always)]
+    fn mul(self, o: Self) -> Self {
+        let mut d = self.d;
+        for (x, &y) in d.iter_mut().zip(o.d.iter()) {
+            *x = *x * o.v + self.v * y;
+        }
+        Dual { v: self.v * o.v, d }
+    }
+}
+
+impl<T: Real, const K: usize> Div for Dual<T, K> {
+    type Output = Self;
+    #[inline(always)]
+    fn div(self, o: Self) -> Self {
+        let v = self.v / o.v;
+        let inv = T::ONE / o.v;
+        let mut d = self.d;
+        for (x, &y) in d.iter_mut().zip(o.d.iter()) {
+            *x = (*x - v * y) * inv;
+        }
+        Dual { v, d }
     }
 }
 
@@ -315,7 +327,11 @@ impl<T: Real, const K: usize> Real for Dual<T, K> {
             return Self::constant(v);
         }
         let inv = T::ONE / r2;
-        self.pairwise(x, v, |dy, dx| (x.v * dy - self.v * dx) * inv)
+        let mut d = self.d;
+        for (dy, &dx) in d.iter_mut().zip(x.d.iter()) {
+            *dy = (x.v * *dy - self.v * dx) * inv;
+        }
+        Dual { v, d }
     }
     #[inline(always)]
     fn cbrt(self) -> Self {
@@ -336,7 +352,11 @@ impl<T: Real, const K: usize> Real for Dual<T, K> {
             return Self::constant(h);
         }
         let (cx, cy) = (self.v / h, o.v / h);
-        self.pairwise(o, h, |x, y| cx * x + cy * y)
+        let mut d = self.d;
+        for (x, &y) in d.iter_mut().zip(o.d.iter()) {
+            *x = cx * *x + cy * y;
+        }
+        Dual { v: h, d }
     }
     #[inline(always)]
     fn floor(self) -> Self {
