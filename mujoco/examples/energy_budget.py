@@ -6,6 +6,7 @@ integrates it, and the contact's elastic energy counted two ways.
     python mujoco/examples/energy_budget.py                                  # the four models, 2 ms
     python mujoco/examples/energy_budget.py --models rattleback --dt 0.001
     python mujoco/examples/energy_budget.py --models rattleback --config step_point=0
+    python mujoco/examples/energy_budget.py --native --dt 0.002      # MuJoCo's own condim-6 contact instead
 
 MuJoCo's update (implicitfast without damping or actuators; Euler the same here) is
 semi-implicit Euler: M(q)·Δv = Δt·(f_c − bias), q⁺ = q ⊕ Δt·v⁺, with f_c the plugin's
@@ -37,9 +38,17 @@ step_sweep.py: kinetic + gravitational + (2/5)N·h):
 
 Per model: the largest per-step value of each column and of `true`/`reported`, and the column
 values at the step where `true` peaks.
+
+`--native` (native_budget): the same bodies with MuJoCo's own soft contact instead of the plugin
+(the plugin removed, the geoms colliding natively, condim 6, friction "f 0.005 0.0001": the
+model's f, MuJoCo's default torsional and rolling coefficients): the largest per-step rise of
+T + V (mjData.energy) and of T + V + U with U = ½·Σ N·(−dist) over the active contacts (a soft
+constraint stores no elastic energy; this is a linear spring's at the contact's penetration and
+normal force, mj_contactForce), and of the staggered energy, relative to the start T + V + U.
 """
 
 import argparse
+import re
 import sys
 from pathlib import Path
 
@@ -149,6 +158,59 @@ def budget(name, dt, config, end, key=0):
     return m, peak, at_true, resid
 
 
+NATIVE_FRICTION = "0.005 0.0001"  # MuJoCo's default torsional and rolling coefficients (m)
+
+
+def native_model(name, dt, integrator=None):
+    """Model `name` with MuJoCo's own condim-6 contact on the plugin's bodies (module docs)."""
+    text = (run_models.MODELS / f"{name}.xml").read_text()
+    f = re.search(r'<config key="f" value="([^"]+)"/>', text).group(1)
+    friction = f'condim="6" friction="{f} {NATIVE_FRICTION}"'
+    for block in ("extension", "sensor"):
+        text = re.sub(rf"<{block}>.*?</{block}>", "", text, flags=re.S)
+    text = text.replace('<plugin instance="contact"/>', "").replace('<flag contact="disable"/>', "")
+    text = text.replace('contype="0" conaffinity="0"', friction)
+    text = re.sub(r'(<geom name="floor" type="plane"[^/]*)/>', rf"\1 {friction}/>", text)
+    return step_sweep.model_from(text, dt, integrator)
+
+
+def native_budget(name, dt, end, key=0, integrator=None):
+    """Largest per-step rises relative to the start energy with MuJoCo's native contact:
+    {"TV": T + V, "true": T + V + U, "staggered": ½v_nᵀM v_{n+1} + V + U} (module docs)."""
+    m = native_model(name, dt, integrator)
+    d = mujoco.MjData(m)
+    mujoco.mj_resetDataKeyframe(m, d, key)
+    force = np.zeros(6)
+    M = np.zeros((m.nv, m.nv))
+
+    def elastic():
+        u = 0.0
+        for i in range(d.ncon):
+            mujoco.mj_contactForce(m, d, i, force)
+            u += 0.5 * force[0] * max(-d.contact[i].dist, 0.0)
+        return u
+
+    mujoco.mj_forward(m, d)
+    e0 = abs(float(d.energy.sum()) + elastic())
+    peak = {"TV": -np.inf, "true": -np.inf, "staggered": -np.inf}
+    stag_prev = None
+    for _ in range(round(end / m.opt.timestep)):
+        mujoco.mj_forward(m, d)
+        tv, u = float(d.energy.sum()), elastic()
+        mujoco.mj_fullM(m, d, M)
+        v = d.qvel.copy()
+        mujoco.mj_step(m, d)
+        stag = 0.5 * v @ M @ d.qvel + float(d.energy[0]) + u
+        if stag_prev is not None:
+            peak["staggered"] = max(peak["staggered"], (stag - stag_prev) / e0)
+        stag_prev = stag
+        mujoco.mj_forward(m, d)
+        tv1 = float(d.energy.sum())
+        peak["TV"] = max(peak["TV"], (tv1 - tv) / e0)
+        peak["true"] = max(peak["true"], (tv1 + elastic() - tv - u) / e0)
+    return m, peak
+
+
 def pose_check(name, dt, config, end, key=0):
     """The `pose` term of an ellipsoid body (the rattlebacks: body frame = the geom's axes, the
     bottom at −a_z) against ½·N·Δt²·((ρ_x − ℓ)ω_y² + (ρ_y − ℓ)ω_x²), ρ = a²/a_z the bottom's
@@ -186,11 +248,24 @@ def main():
     ap.add_argument("--dt", type=float, default=None, help="step (s; default as shipped, 2 ms)")
     ap.add_argument("--config", action="append", default=[], help="plugin config key=value (repeatable)")
     ap.add_argument("--end", type=float, default=None, help="simulated time (s; default per model)")
+    ap.add_argument("--native", action="store_true",
+                    help="MuJoCo's native condim-6 contact on the same bodies instead (native_budget)")
+    ap.add_argument("--integrator", default=None, help="--native: Euler, implicitfast, … (default: as shipped)")
     ap.add_argument("--pose-check", action="store_true",
                     help="the rattlebacks' `pose` term against ½N·Δt²·Σ(ρ − ℓ)ω² (pose_check) instead")
     args = ap.parse_args()
     run_models.load_plugin()
     config = dict(c.split("=", 1) for c in args.config)
+    if args.native:
+        print("| model | step | native condim 6, max rise per step: T + V | T + V + ½N·pen | staggered |")
+        print("|---|---|---|---|---|")
+        for name in args.models.split(","):
+            for key in step_sweep.keys(name):
+                m, peak = native_budget(name, args.dt, args.end or step_sweep.ENDS[name], key, args.integrator)
+                label = name + ("" if key == 0 else f" {m.key(key).name}")
+                print(f"| {label} | {m.opt.timestep * 1e3:g} ms | {peak['TV']:.1e} | {peak['true']:.1e} | "
+                      f"{peak['staggered']:.1e} |", flush=True)
+        return
     if args.pose_check:
         for name in ("rattleback", "rattleback_rolling"):
             c, ratio, p, e = pose_check(name, args.dt, config, args.end or step_sweep.ENDS[name])
