@@ -37,7 +37,9 @@ step_sweep.py: kinetic + gravitational + (2/5)N·h):
   swing; for a linear spring exactly).
 
 Per model: the largest per-step value of each column and of `true`/`reported`, and the column
-values at the step where `true` peaks.
+values at the step where `true` peaks. `--sums`: instead, each column summed over the run (from
+`--since` s on): a swing sums to about nothing, a drift does not — the backward-Euler normal
+force must take energy, Σ `law` ≤ 0.
 
 `--native` (native_budget): the same bodies with MuJoCo's own soft contact instead of the plugin
 (the plugin removed, the geoms colliding natively, condim 6, friction "f 0.005 0.0001": the
@@ -76,7 +78,7 @@ def support_points(m, d, body, normal):
     return out
 
 
-def budget(name, dt, config, end, key=0):
+def budget(name, dt, config, end, key=0, sums=None, since=0.0):
     m = step_sweep.load(name, dt, config)
     # The same model with the plain contact: the elastic force N_el(h) at a pose (q̇ = 0).
     plain = {k: x for k, x in config.items() if k != "step_point"}
@@ -153,6 +155,8 @@ def budget(name, dt, config, end, key=0):
         row = {k: x / abs(e0) for k, x in row.items()}
         for c in cols:
             peak[c] = max(peak[c], row[c])
+            if sums is not None and d.time > since and np.isfinite(row[c]):
+                sums[c] = sums.get(c, 0.0) + row[c]
         if at_true is None or row["true"] >= max(at_true["true"], -np.inf):
             at_true = {**row, "t": d.time}
     return m, peak, at_true, resid
@@ -286,6 +290,8 @@ def main():
     ap.add_argument("--dt", type=float, default=None, help="step (s; default as shipped, 2 ms)")
     ap.add_argument("--config", action="append", default=[], help="plugin config key=value (repeatable)")
     ap.add_argument("--end", type=float, default=None, help="simulated time (s; default per model)")
+    ap.add_argument("--sums", action="store_true", help="each column summed over the run instead of its peak")
+    ap.add_argument("--since", type=float, default=0.0, help="--sums: from this time on (s)")
     ap.add_argument("--native", action="store_true",
                     help="MuJoCo's native condim-6 contact on the same bodies instead (native_budget)")
     ap.add_argument("--integrator", default=None, help="--native: Euler, implicitfast, … (default: as shipped)")
@@ -324,9 +330,15 @@ def main():
     print("|---|---|---|---|---|---|---|---|---|---|---|---|")
     for name in args.models.split(","):
         for key in step_sweep.keys(name):
-            m, peak, at, resid = budget(name, args.dt, config, args.end or step_sweep.ENDS[name], key)
+            sums = {} if args.sums else None
+            m, peak, at, resid = budget(name, args.dt, config, args.end or step_sweep.ENDS[name], key, sums, args.since)
             label = name + ("" if key == 0 else f" {m.key(key).name}")
             assert resid < 1e-5, f"MuJoCo's update is not M·Δv = Δt·(f − bias) here (residual {resid:.1e})"
+            if args.sums:
+                print(f"| {label} | {m.opt.timestep * 1e3:g} ms | sums from {args.since:g} s: "
+                      + ", ".join(f"{c} {sums.get(c, 0.0):+.2e}" for c in ("law", "pose", "friction", "gyro", "true"))
+                      + " |", flush=True)
+                continue
             print(f"| {label} | {m.opt.timestep * 1e3:g} ms | {peak['normal']:.1e} | {peak['law']:.1e} | "
                   f"{peak['pose']:.1e} | {peak['friction']:.1e} | {peak['gyro']:.1e} | {peak['true']:.1e} | "
                   f"{peak['reported']:.1e} | {peak['accounting']:.1e} | {peak['staggered']:.1e} | {at['t']:.3f} s: {at['law']:.1e}, "
