@@ -515,7 +515,9 @@ static void passive_step(const mjModel* m, mjData* d, instance_data* x) {
       }
     }
   }
-  /* N consistent with the end approach of the wrenches as returned (step_normal). */
+  /* N consistent with the end approach at the pose MuJoCo's update produces for the wrenches as
+   * returned (step_end_gap, step_normal). */
+  step_end_gap(m, d, x->pairs, s, x->wrench);
   step_normal(x->pairs, s, m->opt.timestep, x->wrench);
   if (s->point > 0.0) {
     /* Friction passive at MuJoCo's own end velocity (the wrench acts through the start rows). */

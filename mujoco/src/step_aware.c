@@ -43,6 +43,7 @@ int step_work_init(step_work* s, const mjModel* m, int npair, double point) {
   s->w = calloc(rows * rows, sizeof(mjtNum));
   s->qfrc = calloc(nv, sizeof(mjtNum));
   s->qvel = calloc(nv, sizeof(mjtNum));
+  s->vhat = calloc(nv, sizeof(mjtNum));
   s->u = calloc(rows, sizeof(double));
   s->u_free = calloc(rows, sizeof(double));
   s->h_free = calloc(rows / 4, sizeof(double));
@@ -54,7 +55,7 @@ int step_work_init(step_work* s, const mjModel* m, int npair, double point) {
   s->index = calloc(rows / 4, sizeof(int));
   if (!s->jac || !s->work || !s->scratch || !s->w || !s->qfrc || !s->qvel || !s->u || !s->u_free || !s->geom ||
       !s->index || !s->h_free || !s->roll || !s->geom_xpos || !s->geom_xmat || !s->done ||
-      !s->body_v || !s->body_w || !s->body_p) {
+      !s->body_v || !s->body_w || !s->body_p || !s->vhat) {
     step_work_free(s);
     return -1;
   }
@@ -68,6 +69,7 @@ void step_work_free(step_work* s) {
   free(s->w);
   free(s->qfrc);
   free(s->qvel);
+  free(s->vhat);
   free(s->u);
   free(s->u_free);
   free(s->h_free);
@@ -100,7 +102,7 @@ static void free_velocity(const mjModel* m, mjData* d, step_work* s) {
 
 /* The geoms' poses at the free end of the step (module docs) in s->geom_xpos, s->geom_xmat:
  * every geom of a body that moves (body_weldid ≠ 0), the others as they are. */
-static void drift_pose(const mjModel* m, const mjData* d, step_work* s, double fraction) {
+static void drift_pose(const mjModel* m, const mjData* d, step_work* s, const mjtNum* qvel, double fraction) {
   int nv = m->nv;
   double dt = m->opt.timestep * fraction;
   mju_copy(s->geom_xpos, d->geom_xpos, 3 * m->ngeom);
@@ -113,8 +115,8 @@ static void drift_pose(const mjModel* m, const mjData* d, step_work* s, double f
     mj_jac(m, d, jp, jr, p, b);
     double v[3], w[3];
     for (int i = 0; i < 3; i++) {
-      v[i] = mju_dot(jp + i * nv, s->qvel, nv);
-      w[i] = mju_dot(jr + i * nv, s->qvel, nv);
+      v[i] = mju_dot(jp + i * nv, qvel, nv);
+      w[i] = mju_dot(jr + i * nv, qvel, nv);
       s->body_v[3 * b + i] = v[i];
       s->body_w[3 * b + i] = w[i];
       s->body_p[3 * b + i] = p[i] + dt * v[i];
@@ -178,7 +180,7 @@ static void drifted_velocity(const mjModel* m, const step_work* s, const pair* k
 int step_prepare(const mjModel* m, mjData* d, const pair* pairs, int npair, step_work* s) {
   int nv = m->nv;
   free_velocity(m, d, s);
-  drift_pose(m, d, s, 1.0);
+  drift_pose(m, d, s, s->qvel, 1.0);
   int k = 0;
   for (int i = 0; i < npair; i++) {
     geometry* g = &s->geom[k];
@@ -198,7 +200,7 @@ int step_prepare(const mjModel* m, mjData* d, const pair* pairs, int npair, step
   s->count = k;
   if (s->point > 0.0) {
     /* step_point θ > 0: u_free at the contact point and frame of the pose drifted by θ·Δt. */
-    if (s->point != 1.0) drift_pose(m, d, s, s->point);
+    if (s->point != 1.0) drift_pose(m, d, s, s->qvel, s->point);
     for (int t = 0; t < k; t++) {
       geometry e;
       pair_geometry_at(m, s->geom_xpos, s->geom_xmat, &pairs[s->index[t]], &e);
@@ -250,8 +252,8 @@ int step_solve(const contensou_contact_f64* const* contacts, int k, double dt, c
  *   r(N) = N − N_law(h⁺(N), ḣ⁺(N)),   h⁺ = h_free − Δt²·(c₀ + W_nn·N),   ḣ⁺ = −(u_free,n + Δt·(c₀ + W_nn·N))
  *
  * (c₀ the other rows' part of (W·w)_n), increasing in N (N_law grows with h and ḣ), r(0) ≤ 0:
- * on the bracket [0, N] if r(N) > 0, else [N, N_law(h⁺(N), ḣ⁺(N))], NORMAL_STEPS Illinois
- * steps. Only when |r(N)| > NORMAL_TOLERANCE·N (one law call per pair otherwise: the library's N
+ * on the bracket between N and N_law(h⁺(N), ḣ⁺(N)) (r has the other sign there), NORMAL_STEPS
+ * Illinois steps. Only when |r(N)| > NORMAL_TOLERANCE·N (one law call per pair otherwise: the library's N
  * is consistent to ≈ 1e-5 on the other steps), pair after pair, NORMAL_SWEEPS sweeps (pairs
  * sharing a body: a ball on a ball on the floor rests with both contacts at the law's value to
  * 8e-4 at 2 ms, the upper one 32 % off without). If the new N makes the pair's friction do work at
@@ -283,12 +285,16 @@ static int normal_row(const contensou_contact_f64* c, const step_work* s, int t,
   }
   double r = normal_residual(c, s->h_free[t], s->u_free[i], dt, c0, wnn, n, &law);
   if (!(mju_abs(r) > NORMAL_TOLERANCE * n)) return 0;
-  double a = 0.0, b = n, fa = normal_residual(c, s->h_free[t], s->u_free[i], dt, c0, wnn, 0.0, &law), fb = r;
+  /* The bracket [N, N_law(N)] or [N_law(N), N]: r(N_law(N)) has the other sign (N_law falls as N
+   * grows). */
+  double a = law, b = n, fa = 0.0, fb = r;
   if (r < 0.0) {
     a = n;
     fa = r;
-    normal_residual(c, s->h_free[t], s->u_free[i], dt, c0, wnn, n, &b);
+    b = law;
     fb = normal_residual(c, s->h_free[t], s->u_free[i], dt, c0, wnn, b, &law);
+  } else {
+    fa = normal_residual(c, s->h_free[t], s->u_free[i], dt, c0, wnn, a, &law);
   }
   if (!(fa <= 0.0 && fb >= 0.0)) return 0;
   int side = 0;
@@ -350,6 +356,38 @@ void step_normal(const pair* pairs, const step_work* s, double dt, double* wrenc
         normal_row(&pairs[s->index[t]].contact, s, t, dt, wrench);
       }
     }
+  }
+}
+
+/*
+ * The end approach at the pose MuJoCo's update will produce (step_end_gap). h_free is read at the
+ * pose the free velocities q̇_free reach, and the library moves it linearly with the impulse,
+ * h⁺ = h_free − Δt²·(W·w)_n. MuJoCo's pose update turns a body by Δt·ω with its END ω, and the
+ * approach of a curved bottom is quadratic in that rotation (a body rocking on a bottom of
+ * curvature radius ρ about a centre of mass ℓ above the contact sinks ½(ρ − ℓ)(Δt·ω)² per step),
+ * so after an impulse that changes ω the linear prediction misses the end approach. Here, with
+ * q̂ = q̇_free + Δt·M⁻¹·Σ Jᵀw the end velocity of the wrenches w just solved (MuJoCo's Euler
+ * update) and ĥ the approach at the pose drifted by Δt·q̂ (drift_pose: MuJoCo's position update
+ * for a free joint), h_free is replaced by ĥ + Δt²·(W·w)_n — the library's end approach is then
+ * ĥ at w and moves linearly from there — and step_normal re-solves N against it (one Newton
+ * step on the end approach, the friction rows fixed).
+ */
+void step_end_gap(const mjModel* m, const mjData* d, const pair* pairs, step_work* s, const double* wrench) {
+  int nv = m->nv, k = s->count, rows = 4 * k;
+  double dt = m->opt.timestep;
+  if (k < 1) return;
+  /* s->work holds M⁻¹Jᵀ, row by row (inverse_mass). */
+  mju_copy(s->vhat, s->qvel, nv);
+  for (int r = 0; r < rows; r++) {
+    if (wrench[r] != 0.0) mju_addToScl(s->vhat, s->work + (size_t)r * nv, dt * wrench[r], nv);
+  }
+  drift_pose(m, d, s, s->vhat, 1.0);
+  for (int t = 0; t < k; t++) {
+    geometry e;
+    pair_geometry_at(m, s->geom_xpos, s->geom_xmat, &pairs[s->index[t]], &e);
+    double ww = 0.0;
+    for (int j = 0; j < rows; j++) ww += s->w[4 * t * rows + j] * wrench[j];
+    s->h_free[t] = e.h + dt * dt * ww;
   }
 }
 
