@@ -387,7 +387,8 @@ void step_end_gap(const mjModel* m, const mjData* d, const pair* pairs, step_wor
     pair_geometry_at(m, s->geom_xpos, s->geom_xmat, &pairs[s->index[t]], &e);
     double ww = 0.0;
     for (int j = 0; j < rows; j++) ww += s->w[4 * t * rows + j] * wrench[j];
-    s->h_free[t] = e.h + dt * dt * ww;
+    double hplus = s->h_free[t] - dt * dt * ww, kappa = getenv("CKAPPA") ? atof(getenv("CKAPPA")) : 0.0;
+    if (mju_abs(e.h - hplus) > kappa * mju_abs(hplus)) s->h_free[t] = e.h + dt * dt * ww;
   }
 }
 
