@@ -765,9 +765,9 @@ RATTLEBACK_ROCKING_DECAY = (0.0053, 0.0089)
 
 @pytest.mark.parametrize("dt", [2e-3, 1e-3])
 def test_step_aware_rattleback_rocks_without_numerical_damping(dt):
-    """The per-step rise of T + V + U that the test above bounds is the swing of semi-implicit
-    Euler around its staggered energy, not a drift: the step-aware contact neither pumps nor
-    damps the rocking. A small roll and pitch oscillation (0.2 rad/s kick from rest) decays at
+    """The per-step rise of T + V + U that the test above bounds is mostly the swing of
+    semi-implicit Euler around its staggered energy: the step-aware contact neither pumps nor
+    damps a small rocking oscillation. A small roll and pitch oscillation (0.2 rad/s kick from rest) decays at
     the fine-step rate within 0.02 s⁻¹ (measured: roll 0.013, pitch 0.007 at 2 ms; 0.007, 0.010
     at 1 ms). A contact that keeps T + V + U from rising over every step (the normal force
     applied at the mid-step contact point: measured ≤ 2.5e-9 of E0 per step) damps them at
