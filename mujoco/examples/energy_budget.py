@@ -221,10 +221,10 @@ def rocking_decay(name, dt, axis, kick=0.2, settle=0.5, end=1.0, config=None):
     frame, origin at G; the approach from the settled state), settled for `settle` s without
     spin, then its ω about the body axis `axis` (0: roll about the long axis x, 1: pitch about
     y) raised by `kick` rad/s; the rocking energy e = T + V + U − (the settled one) over the
-    first and last 0.2 s of `end` s gives ln(ē₀/ē₁)/(end − 0.2). A scheme that keeps T + V + U from rising
-    over every step damps such a mode at about ½·Δt·Ω² (the normal force applied at the
-    mid-step contact point, measured: 8.6, 5.7, 2.9 s⁻¹ for the pitch, Ω ≈ 107 rad/s, at 2, 1,
-    0.5 ms; 1.2, 0.58, 0.29 for the roll, Ω ≈ 34 rad/s). (MuJoCo's native soft contact has no
+    first and last 0.2 s of `end` s gives ln(ē₀/ē₁)/(end − 0.2). A scheme that keeps T + V + U
+    from rising over every step damps such a mode at about ½·Δt·Ω² (the normal force applied at
+    the mid-step contact point, measured: 8.6, 5.7, 2.9 s⁻¹ for the pitch, Ω ≈ 107 rad/s, at 2,
+    1, 0.5 ms; 1.2, 0.58, 0.29 for the roll, Ω ≈ 34 rad/s). (MuJoCo's native soft contact has no
     such measure: its penetration, and with it V, follows the rocking by tens of µm.) `config`:
     plugin config keys, as step_sweep.load (step=explicit: the plain contact at its small step)."""
     m = step_sweep.load(name, dt, config or {})
