@@ -143,13 +143,13 @@ typedef struct {
   mjtNum* body_v;   /* per body: the free end velocity of its origin (3), */
   mjtNum* body_w;   /* its ω (3), */
   mjtNum* body_p;   /* its origin drifted by θ·Δt (3) */
+  mjtNum* body_jac; /* per body: mj_jac at its origin at this state (6 × nv; drift_pose) */
   mjtNum* w;        /* W = J M⁻¹ Jᵀ, 4·count × 4·count, row-major, cross blocks included */
   mjtNum* jac;      /* J, 4·cap × nv */
   mjtNum* work;     /* 4·cap × nv */
   mjtNum* scratch;  /* 6 × nv */
   mjtNum* qfrc;     /* nv */
   mjtNum* qvel;     /* q̇_free, nv */
-  mjtNum* vhat;     /* q̂, the end velocity of the solved wrenches (step_end_gap), nv */
 } step_work;
 
 /* Buffers for npair pairs of model m, u_free at step_point θ; −1 if memory is short (then
@@ -163,9 +163,6 @@ int step_prepare(const mjModel* m, mjData* d, const pair* pairs, int npair, step
 /* Each taken pair's N (wrench: 4 per pair taken) re-solved, the other rows fixed, where it is not
  * the normal law's value at the end approach and velocity the wrenches give (step_aware.c). */
 void step_normal(const pair* pairs, const step_work* s, double dt, double* wrench);
-/* Each taken pair's h_free moved so that the end approach the library predicts at the wrenches
- * `wrench` is the one at MuJoCo's end pose for their end velocity (step_aware.c). */
-void step_end_gap(const mjModel* m, const mjData* d, const pair* pairs, step_work* s, const double* wrench);
 /* With step_point θ > 0: each taken pair's friction scaled so that it does no work at the end
  * velocity MuJoCo's update gives the start rows J (step_aware.c). */
 void step_friction_at_start(const mjModel* m, const step_work* s, double* wrench);

@@ -467,16 +467,9 @@ static void passive_step(const mjModel* m, mjData* d, instance_data* x) {
     x->steps[t] = (contensou_step_f64){g->h, -u[0], u[1], u[2], u[3]};
     contensou_wrench_f64 plain;
     x->ab[2 * t] = x->ab[2 * t + 1] = 0.0;
-    for (int r = 0; r < 4; r++) x->wrench[4 * t + r] = 0.0;
     if (g->h > 0.0 && plain_wrench(m, d, x, p, g, &x->kins[t], &x->steps[t], &plain) == CONTENSOU_STATUS_OK) {
       x->ab[2 * t] = plain.a;
       x->ab[2 * t + 1] = plain.b;
-      if (getenv("CPRED")) {
-        x->wrench[4 * t] = plain.n;
-        x->wrench[4 * t + 1] = plain.fx;
-        x->wrench[4 * t + 2] = plain.fy;
-        x->wrench[4 * t + 3] = plain.tz;
-      }
     } else if (p->kind == ELLIPSOID_PLANE && g->p > 0.0) {
       contensou_contact_set_curvatures_f64(&p->contact, g->p, g->q, NULL);
     }
@@ -485,10 +478,6 @@ static void passive_step(const mjModel* m, mjData* d, instance_data* x) {
       /* step_point θ > 0: V at the drifted pose with the free velocities (as u_free). */
       x->rolls[t] = (contensou_rolling_step_f64){s->roll[2 * t], s->roll[2 * t + 1]};
     }
-  }
-  /* CPRED: h_free from the end pose of the start (plain) wrenches' impulse. */
-  if (getenv("CPRED")) step_end_gap(m, d, x->pairs, s, x->wrench);
-  for (int t = 0; t < count; t++) {
     for (int r = 0; r < 4; r++) x->wrench[4 * t + r] = 0.0;
   }
   /* Groups: the taken pairs connected through shared moving bodies (W couples only those). */
@@ -526,9 +515,7 @@ static void passive_step(const mjModel* m, mjData* d, instance_data* x) {
       }
     }
   }
-  /* N consistent with the end approach at the pose MuJoCo's update produces for the wrenches as
-   * returned (step_end_gap, step_normal). */
-  if (!getenv("CNOGAP")) step_end_gap(m, d, x->pairs, s, x->wrench);
+  /* N consistent with the end approach of the wrenches as returned (step_normal). */
   step_normal(x->pairs, s, m->opt.timestep, x->wrench);
   if (s->point > 0.0) {
     /* Friction passive at MuJoCo's own end velocity (the wrench acts through the start rows). */
