@@ -2,7 +2,7 @@
 //! (h, ḣ, v_x, v_y, ω), row by row over broadcast arguments — each row
 //! [`DynContact::jacobian_rolling`], bit for bit `contact_eval jacobian`.
 
-use ::contensou::dynamic::{DynContact, Form, Invalid, Law};
+use ::contensou::dynamic::{DynContact, Invalid};
 use ::contensou::jacobian::OUTPUTS;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
@@ -10,25 +10,6 @@ use pyo3::types::PyDict;
 use crate::columns::Column;
 use crate::rows::{Precision, StepColumns, evaluate_each_py, step_at};
 use crate::{contract_function, with_contract_rows, with_step_columns};
-
-/// The per-row Jacobian in precision `T`.
-fn jacobian_in<'py, T: Precision>(
-    py: Python<'py>,
-    values: [&Bound<'py, PyAny>; 11],
-    optional: [Option<&Bound<'py, PyAny>>; 4],
-    law: Law,
-    form: Form,
-) -> PyResult<Bound<'py, PyDict>> {
-    with_contract_rows::<T, _>(
-        values,
-        optional,
-        law,
-        form,
-        |shape, steps, rolling, c, named| {
-            evaluate_each_py(py, shape, c, row_of(steps, rolling), &OUTPUTS, named)
-        },
-    )
-}
 
 /// The Jacobian of row i from the step columns and the optional rolling velocity.
 fn row_of<'a, T: Precision>(
@@ -63,5 +44,9 @@ contract_function! {
     /// of the broadcast shape — bit for bit `contact_eval jacobian`. Forward-mode dual numbers
     /// through the library's code: at a law's kink the derivative of the branch the value takes;
     /// h ≤ 0 gives zeros. `ValueError` as `wrench` (argument, index, reason).
-    pub fn jacobian => jacobian_in, [], []
+    pub fn jacobian[][] => |py, values, optional, law, form| {
+        with_contract_rows::<T, _>(values, optional, law, form, |shape, steps, rolling, c, named| {
+            evaluate_each_py(py, shape, c, row_of(steps, rolling), &OUTPUTS, named)
+        })
+    }
 }
