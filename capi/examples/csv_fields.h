@@ -10,6 +10,13 @@
 #include <stdlib.h>
 #include <string.h>
 
+/* A usage error of `program` (taking `options`, reading stdin, writing stdout): `why`, then the
+ * usage line, on stderr; the exit code 2. */
+static int usage_error(const char *program, const char *options, const char *why) {
+    fprintf(stderr, "%s: %s\nusage: %s %s < in.csv > out.csv\n", program, why, program, options);
+    return 2;
+}
+
 /* Strips leading and trailing blanks in place. */
 static char *trim(char *s) {
     char *end;

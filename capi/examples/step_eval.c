@@ -51,11 +51,7 @@ static const char *const OPTIONAL_NAMES[OPTIONAL] = {"G", "nu", "vrx", "vry", "u
         out[0] = o.n; out[1] = o.fx; out[2] = o.fy; out[3] = o.tz;                                 \
     } while (0)
 
-static int usage(const char *why) {
-    fprintf(stderr, "step_eval: %s\nusage: step_eval [--law NAME] [--form fixed|varying] "
-                    "[--precision f32|f64] < in.csv > out.csv\n", why);
-    return 2;
-}
+static int usage(const char *why) { return usage_error("step_eval", "[--law NAME] [--form fixed|varying] [--precision f32|f64]", why); }
 
 /* Fields are named by number in a parse error. */
 static const char *field_number(int k, const void *ctx) {

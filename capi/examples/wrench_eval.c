@@ -77,11 +77,7 @@ static const char *const OPTIONAL_NAMES[OPTIONAL] = {"G", "nu", "vrx", "vry"};
         }                                                                                          \
     } while (0)
 
-static int usage(const char *why) {
-    fprintf(stderr, "wrench_eval: %s\nusage: wrench_eval [jacobian] [--law NAME] [--form fixed|varying] "
-                    "[--precision f32|f64] < in.csv > out.csv\n", why);
-    return 2;
-}
+static int usage(const char *why) { return usage_error("wrench_eval", "[jacobian] [--law NAME] [--form fixed|varying] [--precision f32|f64]", why); }
 
 /* The name of field k: a contract column, or the optional column `field_of` puts there. */
 static const char *field_name(int k, const void *field_of) {

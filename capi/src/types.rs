@@ -88,25 +88,30 @@ pub const CONTENSOU_CONTACT_F64_SIZE: usize = 5896;
 /// Alignment (bytes) of both contact storage types.
 pub const CONTENSOU_CONTACT_ALIGN: usize = 8;
 
-/// Caller-owned storage of one `float` contact: opaque, [`CONTENSOU_CONTACT_F32_SIZE`] bytes,
-/// 8-byte aligned. Initialised by `contensou_contact_new_f32`: other calls on storage it did
-/// not initialise (zeroed, as static memory is) return `CONTENSOU_STATUS_NOT_INITIALIZED`.
-/// Plain data (may be copied with `memcpy` or assignment); no destructor. No global state:
-/// `contensou_contact_wrench_f32` only reads the contact, so threads may share one.
-#[repr(C)]
-#[derive(Debug)]
-pub struct contensou_contact_f32 {
-    /// Opaque.
-    pub opaque: [u64; 408],
+/// Opaque caller-owned storage structs, `[u64; words]` each (8-byte aligned), with their docs.
+macro_rules! storage {
+    ($($(#[doc = $doc:literal])* $name:ident: $words:literal;)*) => {$(
+        $(#[doc = $doc])*
+        #[repr(C)]
+        #[derive(Debug)]
+        pub struct $name {
+            /// Opaque.
+            pub opaque: [u64; $words],
+        }
+    )*};
 }
+pub(crate) use storage;
 
-/// Caller-owned storage of one `double` contact: opaque, [`CONTENSOU_CONTACT_F64_SIZE`]
-/// bytes, 8-byte aligned. As [`contensou_contact_f32`].
-#[repr(C)]
-#[derive(Debug)]
-pub struct contensou_contact_f64 {
-    /// Opaque.
-    pub opaque: [u64; 737],
+storage! {
+    /// Caller-owned storage of one `float` contact: opaque, [`CONTENSOU_CONTACT_F32_SIZE`] bytes,
+    /// 8-byte aligned. Initialised by `contensou_contact_new_f32`: other calls on storage it did
+    /// not initialise (zeroed, as static memory is) return `CONTENSOU_STATUS_NOT_INITIALIZED`.
+    /// Plain data (may be copied with `memcpy` or assignment); no destructor. No global state:
+    /// `contensou_contact_wrench_f32` only reads the contact, so threads may share one.
+    contensou_contact_f32: 408;
+    /// Caller-owned storage of one `double` contact: opaque, [`CONTENSOU_CONTACT_F64_SIZE`]
+    /// bytes, 8-byte aligned. As [`contensou_contact_f32`].
+    contensou_contact_f64: 737;
 }
 
 /// What a storage holds: a tag that only its constructor writes, then the contact.

@@ -298,21 +298,27 @@ fn two_contacts_sharing_a_body_are_the_librarys_step_wrenches() {
     }
 }
 
+/// The 4k × 4k inverse mass of k balls each on its own plane: `BALL_W` block-diagonal.
+fn ball_blocks(k: usize) -> Vec<f64> {
+    let mut w = vec![0.0; 16 * k * k];
+    let b = full(&BALL_W);
+    for i in 0..k {
+        for r in 0..4 {
+            for col in 0..4 {
+                w[(4 * i + r) * 4 * k + 4 * i + col] = b[4 * r + col];
+            }
+        }
+    }
+    w
+}
+
 #[test]
 fn every_count_dispatches_and_decoupled_contacts_are_each_ones_own() {
     let dt = 1e-3;
     let c = contact(CONTENSOU_LAW_BEST);
     for k in 1..=CONTENSOU_STEP_MAX_CONTACTS {
         // k balls, each on its own plane: W block-diagonal.
-        let mut w = vec![0.0; 16 * k * k];
-        let b = full(&BALL_W);
-        for i in 0..k {
-            for r in 0..4 {
-                for col in 0..4 {
-                    w[(4 * i + r) * 4 * k + 4 * i + col] = b[4 * r + col];
-                }
-            }
-        }
+        let w = ball_blocks(k);
         let steps: Vec<_> = (0..k).map(|i| STEPS[i % 3]).collect();
         let ptrs: Vec<*const contensou_contact_f64> = (0..k).map(|_| &*c as *const _).collect();
         let mut out = vec![contensou_step_wrench::default(); k];
@@ -376,14 +382,7 @@ fn many_error(
     let mut steps = [STEPS[0], STEPS[1]];
     let mut dt = 1e-3;
     let mut w = [0.0; 64];
-    let b = full(&BALL_W);
-    for i in 0..2 {
-        for r in 0..4 {
-            for col in 0..4 {
-                w[(4 * i + r) * 8 + 4 * i + col] = b[4 * r + col];
-            }
-        }
-    }
+    w.copy_from_slice(&ball_blocks(2));
     let mut free = steps.map(|s| contensou_step_free {
         u: contensou_step_velocity {
             vn: -s.hdot,

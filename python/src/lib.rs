@@ -35,7 +35,10 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
 use columns::{Column, with_columns};
-use rows::{Named, PerRow, Precision, StepColumns, contract_named, evaluate_py, step_named};
+use rows::{
+    Named, PerRow, Precision, StepColumns, contract_named, evaluate_each_py, evaluate_py,
+    step_named,
+};
 
 /// The value of `option` called `name` among `all`, or a `ValueError` listing the names.
 fn named<V: Copy>(
@@ -281,15 +284,29 @@ fn with_step_columns<'py, T: Precision, R>(
     })
 }
 
-/// One step (or an array of steps) of a built contact in precision `T`.
+/// A built contact's step columns in precision `T`: the dict of `wrench`, or with `jacobian`
+/// that of `jacobian`.
 fn steps_in<'py, T: Precision>(
     py: Python<'py>,
     contact: &DynContact<T>,
     values: [&Bound<'py, PyAny>; 5],
     rolling: [Option<&Bound<'py, PyAny>>; 2],
+    jacobian: bool,
 ) -> PyResult<Bound<'py, PyDict>> {
     with_step_columns::<T, _>(values, rolling, |shape, steps, rolling, named| {
-        evaluate_py(py, shape, steps, rolling, contact, named)
+        if jacobian {
+            let row = jacobian::row_of(steps, rolling);
+            evaluate_each_py(
+                py,
+                shape,
+                contact,
+                row,
+                &::contensou::jacobian::OUTPUTS,
+                named,
+            )
+        } else {
+            evaluate_py(py, shape, steps, rolling, contact, named)
+        }
     })
 }
 
@@ -347,7 +364,7 @@ impl Contact {
         vry: Option<&Bound<'py, PyAny>>,
     ) -> PyResult<Bound<'py, PyDict>> {
         let values = [h, hdot, vx, vy, omega];
-        each!(&self.built, c => steps_in(py, c, values, [vrx, vry]))
+        each!(&self.built, c => steps_in(py, c, values, [vrx, vry], false))
     }
 
     /// The wrench and its Jacobian at the step columns (scalars or arrays that broadcast),
@@ -367,7 +384,7 @@ impl Contact {
         vry: Option<&Bound<'py, PyAny>>,
     ) -> PyResult<Bound<'py, PyDict>> {
         let values = [h, hdot, vx, vy, omega];
-        each!(&self.built, c => jacobian::built_in(py, c, values, [vrx, vry]))
+        each!(&self.built, c => steps_in(py, c, values, [vrx, vry], true))
     }
 
     /// One scalar step for tight Python loops (a physics engine's callback): Python floats in,
