@@ -10,7 +10,9 @@ use contensou::Error;
 use contensou_capi::*;
 
 mod common;
-use common::{assert_storage, each_null, spec_in, storage32, storage64, text, SPEC, STEP};
+use common::{
+    assert_storage, copied, each_null, misaligned, spec_in, storage32, storage64, text, SPEC, STEP,
+};
 
 type S = contensou_status;
 
@@ -134,8 +136,7 @@ fn bad_pointers_and_values_are_codes_and_write_nothing() {
         assert_eq!(each_null(&*c, &STEP, wrench), [S::NullPointer; 3]);
         assert_eq!(w, contensou_wrench::default(), "nothing written on error");
         // Misaligned storage (4 bytes off the required 8) and a misaligned step.
-        let bytes = c.opaque.as_mut_ptr().cast::<u8>();
-        let off = bytes.add(4).cast::<contensou_contact_f64>();
+        let off = misaligned::<contensou_contact_f64, _>(c.opaque.as_mut_ptr());
         assert_eq!(
             contensou_contact_new_f64(off, &SPEC, 0, 0, null_mut()),
             S::Misaligned
@@ -145,11 +146,7 @@ fn bad_pointers_and_values_are_codes_and_write_nothing() {
             S::Misaligned
         );
         let steps = [0.0_f64; 8];
-        let odd = steps
-            .as_ptr()
-            .cast::<u8>()
-            .add(4)
-            .cast::<contensou_step<f64>>();
+        let odd = misaligned::<contensou_step<f64>, _>(steps.as_ptr());
         assert_eq!(
             contensou_contact_wrench_f64(&*c, odd, &mut w, null_mut()),
             S::Misaligned
@@ -161,8 +158,7 @@ fn bad_pointers_and_values_are_codes_and_write_nothing() {
             contensou_contact_new_f32(&mut *c32, &spec32, 0, 0, null_mut()),
             S::Ok
         );
-        let mut big = storage64();
-        core::ptr::copy_nonoverlapping(c32.opaque.as_ptr(), big.opaque.as_mut_ptr(), 130);
+        let big = copied::<_, contensou_contact_f64>(&*c32);
         assert_eq!(
             contensou_contact_wrench_f64(&*big, &STEP, &mut w, null_mut()),
             S::NotInitialized
@@ -219,15 +215,10 @@ fn wrench_statuses_follow_the_documented_order() {
             contensou_contact_new_f64(&mut *c, &SPEC, 0, 0, null_mut()),
             S::Ok
         );
-        let off = c
-            .opaque
-            .as_ptr()
-            .cast::<u8>()
-            .add(4)
-            .cast::<contensou_contact_f64>();
+        let off = misaligned::<contensou_contact_f64, _>(c.opaque.as_ptr()).cast_const();
         let words = [0.0_f64; 8];
-        let odd = words.as_ptr().cast::<u8>().add(4);
-        let (odd_step, odd_out) = (odd.cast::<contensou_step<f64>>(), odd.cast_mut().cast());
+        let odd_step = misaligned::<contensou_step<f64>, _>(words.as_ptr()).cast_const();
+        let odd_out = misaligned(words.as_ptr());
         let mut w = contensou_wrench::default();
         let (good, zeroed) = (&*c as *const _, &*zeroed as *const _);
         let cases = [

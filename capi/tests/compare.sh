@@ -57,14 +57,16 @@ sweep() {
 all_laws="best simplified pade ellipsoid coulomb table blend fastsim fastsim-16"
 
 # clean FILE OPTS...: the twin built with ASan + UBSan (build.sh: NAME-san) runs clean on
-# $work/FILE.csv and prints what the plain twin prints.
+# $work/FILE.csv with OPTS and --precision f32, then f64, and prints what the plain twin prints.
 clean() {
-    local file="$1"
+    local file="$1" precision
     shift
-    "${twin[0]}-san" "${twin[@]:1}" "$@" <"$work/$file.csv" >"$work/san.csv" ||
-        { echo "compare: the sanitized ${twin[*]} failed on $file $*" >&2; exit 1; }
-    "${twin[@]}" "$@" <"$work/$file.csv" | cmp -s - "$work/san.csv" ||
-        { echo "compare: the sanitized ${twin[*]} prints other values on $file $*" >&2; exit 1; }
+    for precision in f32 f64; do
+        "${twin[0]}-san" "${twin[@]:1}" "$@" --precision "$precision" <"$work/$file.csv" >"$work/san.csv" ||
+            { echo "compare: the sanitized ${twin[*]} failed on $file $* ($precision)" >&2; exit 1; }
+        "${twin[@]}" "$@" --precision "$precision" <"$work/$file.csv" | cmp -s - "$work/san.csv" ||
+            { echo "compare: the sanitized ${twin[*]} prints other values on $file $* ($precision)" >&2; exit 1; }
+    done
 }
 
 # refused OPTS...: the twin and the reference on $work/in.csv (a bad row in it): their exit
@@ -117,17 +119,13 @@ awk -F, -v OFS=, '{ s = $1; for (k = 2; k <= 11; k++) s = s OFS $k; print s, $15
 rrows=$(($(wc -l <"$work/roll4.csv") - 1))
 runs=0
 sweep "$rrows" "table blend fastsim fastsim-16 best" table roll4 roll2 rollswap
-for precision in f32 f64; do
-    clean roll4 --law table --form varying --precision "$precision"
-done
+clean roll4 --law table --form varying
 echo "compare: rolling columns: $rrows rows × $runs runs (G,nu,vrx,vry: 5 laws; vrx,vry and vry,nu: table; 2 forms × 2 precisions): C = Rust bit for bit; ASan + UBSan clean (table)"
 
 # The C side under AddressSanitizer + UndefinedBehaviorSanitizer (built by build.sh): clean
 # on every row, and the same output.
-for precision in f32 f64; do
-    for form in fixed varying; do
-        clean rows --law best --form "$form" --precision "$precision"
-    done
+for form in fixed varying; do
+    clean rows --law best --form "$form"
 done
 echo "compare: the C twin is clean under ASan + UBSan (best, both forms and precisions)"
 
@@ -139,9 +137,7 @@ ref=(../target/release/contact_eval jacobian)
 runs=0
 sweep "$rows" "$all_laws" "" rows
 sweep "$rrows" "table blend fastsim fastsim-16 best" table roll4 roll2
-for precision in f32 f64; do
-    clean roll4 --law table --form varying --precision "$precision"
-done
+clean roll4 --law table --form varying
 echo "compare: jacobian: $rows rows (9 laws) and $rrows rolling rows (G,nu,vrx,vry: 5 laws; vrx,vry: table) × 2 forms × 2 precisions, $runs runs: C = contact_eval jacobian bit for bit; ASan + UBSan clean (table)"
 
 # wrench_bad KIND: the bad rows through `wrench` and `jacobian` in both precisions.
@@ -192,9 +188,7 @@ for precision in f32 f64; do
         runs=$((runs + 1))
     done
 done
-for precision in f32 f64; do
-    clean rolling --law table --precision "$precision"
-done
+clean rolling --law table
 echo "compare: rolling: $rows rows × $runs runs (6 laws × 2 precisions): C = contact_eval rolling bit for bit; clean under ASan + UBSan (table)"
 
 # rolling_bad KIND: the same row and column from both (contact_eval names a non-finite input
@@ -231,9 +225,7 @@ srows=$(($(wc -l <"$work/step.csv") - 1))
 twin=(target/release/step_eval); ref=(../target/release/contact_eval step)
 runs=0
 sweep "$srows" "$all_laws" "best table" step step-nofree step-some
-for precision in f32 f64; do
-    clean step --law table --form varying --precision "$precision"
-done
+clean step --law table --form varying
 echo "compare: step: $srows rows × $runs runs (9 laws × 2 forms × 2 precisions with every optional column; best, table without and with two free columns): C = contact_eval step bit for bit; clean under ASan + UBSan (table)"
 
 # step_bad KIND: the same row and message from both.
