@@ -10,9 +10,7 @@ use contensou::Error;
 use contensou_capi::*;
 
 mod common;
-use common::{
-    assert_storage, copied, each_null, misaligned, spec_in, storage32, storage64, text, SPEC, STEP,
-};
+use common::{copied, each_null, misaligned, spec_in, storage32, storage64, text, SPEC, STEP};
 
 type S = contensou_status;
 
@@ -520,10 +518,29 @@ fn helpers_are_the_library_constructors_in_contract_order() {
     assert_eq!(e.to_bits(), want.get().to_bits());
 }
 
+/// The storage type `$st` has the size the crate and the header declare as `$size`, and the
+/// header's alignment.
+macro_rules! assert_storage {
+    ($st:ty, $size:ident) => {{
+        let name = stringify!($size);
+        assert_eq!(core::mem::size_of::<$st>(), $size, "{name}");
+        assert_eq!(
+            core::mem::align_of::<$st>(),
+            CONTENSOU_CONTACT_ALIGN,
+            "{name}"
+        );
+        let header = include_str!("../include/contensou.h");
+        assert!(
+            header.contains(&format!("#define {name} {}", $size)),
+            "{name}"
+        );
+    }};
+}
+
 #[test]
 fn storage_sizes_are_the_headers() {
-    let size = CONTENSOU_CONTACT_F32_SIZE;
-    assert_storage::<contensou_contact_f32>("CONTENSOU_CONTACT_F32_SIZE", size);
-    let size = CONTENSOU_CONTACT_F64_SIZE;
-    assert_storage::<contensou_contact_f64>("CONTENSOU_CONTACT_F64_SIZE", size);
+    assert_storage!(contensou_contact_f32, CONTENSOU_CONTACT_F32_SIZE);
+    assert_storage!(contensou_contact_f64, CONTENSOU_CONTACT_F64_SIZE);
+    assert_storage!(contensou_rolling_f32, CONTENSOU_ROLLING_F32_SIZE);
+    assert_storage!(contensou_rolling_f64, CONTENSOU_ROLLING_F64_SIZE);
 }

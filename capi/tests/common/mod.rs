@@ -78,19 +78,6 @@ pub fn each_null<St, In, O: Default + PartialEq + core::fmt::Debug>(
     statuses
 }
 
-/// The storage `St` has the size the crate and the header declare as `name` = `size`, and
-/// the header's alignment.
-pub fn assert_storage<St>(name: &str, size: usize) {
-    assert_eq!(core::mem::size_of::<St>(), size, "{name}");
-    assert_eq!(
-        core::mem::align_of::<St>(),
-        CONTENSOU_CONTACT_ALIGN,
-        "{name}"
-    );
-    let header = include_str!("../../include/contensou.h");
-    assert!(header.contains(&format!("#define {name} {size}")), "{name}");
-}
-
 /// The reference contact: P = 10, Q = 50 (1/m), E* = 1.15e11 Pa, c_d = 0.1, f = 0.1,
 /// δ = 1e-4 m/s.
 pub const SPEC: contensou_spec<f64> = contensou_spec {
