@@ -24,11 +24,11 @@ is a line: 2phi is what is defined).
 
 Run:  python3 tools/gen_rattleback_geometry.py
 """
-import os
 import mpmath as mp
 
+from data_csv import write_rows
+
 mp.mp.dps = 40
-HERE = os.path.dirname(os.path.abspath(__file__))
 
 A1, A2, A3 = mp.mpf("0.2"), mp.mpf("0.03"), mp.mpf("0.02")
 EPS = mp.mpf("0.01")
@@ -116,10 +116,7 @@ def main():
         q = quat(seq)
         vals = geometry(q, mp.mpf(zg))
         rows.append(",".join(mp.nstr(v, 20) for v in list(q) + [mp.mpf(zg)] + list(vals)))
-    path = os.path.join(HERE, "data", "rattleback_geometry.csv")
-    with open(path, "w") as fh:
-        fh.write("\n".join(rows) + "\n")
-    print(f"wrote {path} ({len(rows) - 1} cases)")
+    print(f"wrote {write_rows('rattleback_geometry.csv', rows)} ({len(rows) - 1} cases)")
 
 
 if __name__ == "__main__":
