@@ -24,15 +24,18 @@ s′: the full slip is evaluated for creepages with the spin pole SHIFTED, (ξ, 
 the patch. The displacement gradient ∂u/∂x of the full-slip traction is smooth and near the pole
 nearly uniform; a uniform term in the slip s = w − ∂u/∂x moves the pole by a distance ∝ fN/(Gc²)/φ,
 i.e. a 1/ρ tail (mostly in F_y when rolling along an axis) and, at ρ ≈ 3, the overshoot past
-abs(W_fs) in a direction away from W_fs that the exact theory shows. (Δξ, Δη) ∝ σ: none without spin.
+abs(W_fs) in a direction away from W_fs that the exact theory shows. (Δξ, Δη) ∝ σ_M (σ with the pole's
+distance in units of the major semi-axis, sigma_major: a small spin already turns the slip along a long
+patch; `--shift-elliptic`: ∝ σ): none without spin.
 
 Parameters: ρ_t, ρ_λ, ρ₀ exponentials of the aligned shape la = ln(a/b along the rolling direction)
-/ ln 20; w_s(σ); the shift's α, β of pole_shift; 12 numbers fitted (Nelder–Mead, one stage, from
+/ ln 20; w_s(σ, la); the shift's α, β of pole_shift; 14 numbers fitted (Nelder–Mead, one stage, from
 X0) on 6,000 training rows (a fixed random subset; full slip by a 16 × 32 quadrature while
 fitting), objective: the 95 % + 0.3 × the 99.5 % quantile of max(ΔF/0.03, ΔM/0.05). Then, as
 fit_rolling_surrogate.py, a ridge polynomial correction τ²(1 − τ)·P(x) (τ = ρ/(1 + ρ), both limits
 kept) on the same 12 features (`--fs-features --sigma`), degree 2 and 3 (`--degree`);
-`--lam-feature` adds the base's λ. Passivity: the projection of fit_rolling_surrogate.passive
+`--lam-feature` adds the base's λ; `--diagnose` appends the worst error per creep curve of
+tools/data/rolling_diag_families.csv (diagnosis only). Passivity: the projection of fit_rolling_surrogate.passive
 (counted). The held-out set is only measured.
 
     "$(tools/venv.sh)" tools/fit_rolling_reach.py [--reuse] [--degree D ...] [--lam-feature] [--families] [--md OUT]
@@ -107,7 +110,20 @@ class Quad:
         return np.stack([tx.sum(1), ty.sum(1), (x * ty - y * tx).sum(1)], axis=1).astype(np.float64)
 
 
+def sigma_major(d):
+    """σ with the pole's distance in units of the major semi-axis instead of the elliptic radius."""
+    s = d["s"]
+    r2 = (s[:, 0] ** 2 + s[:, 1] ** 2) / np.maximum(d["aob"], 1.0 / d["aob"])
+    phi2 = s[:, 2] ** 2
+    return phi2 / np.maximum(phi2 + r2, 1e-300)
+
+
 def sigma_of(d):
+    if "--sigma-major" in sys.argv:  # the pole's distance in units of the major semi-axis, not elliptic
+        s = d["s"]
+        r2 = (s[:, 0] ** 2 + s[:, 1] ** 2) / np.maximum(d["aob"], 1.0 / d["aob"])
+        phi2 = s[:, 2] ** 2
+        return phi2 / np.maximum(phi2 + r2, 1e-300)
     return F.spin_share(d)
 
 
@@ -118,9 +134,9 @@ def shape_feat(d):
     return np.log(r) / math.log(20.0), np.cos(2 * psi), np.sin(2 * psi)
 
 
-NPRM = 12
-X0 = np.array([1.398, 1.2708, -0.0563, -0.0698, 0.7838, -0.1681, 0.0, 1.8614, 0.0, -0.4481, 0.1729, 0.2753])
-STEPS = np.array([0.1, 0.1, 0.1, 0.1, 0.5, 0.1, 0.1, 0.1, 0.1, 0.2, 0.3, 0.3])
+NPRM = 14
+X0 = np.array([1.398, 1.2708, -0.0563, -0.0698, 0.7838, -0.1681, 0.0, 1.8614, 0.0, -0.4481, 0.1729, 0.2753, 0.0, 0.0])
+STEPS = np.array([0.1, 0.1, 0.1, 0.1, 0.5, 0.1, 0.1, 0.1, 0.1, 0.2, 0.3, 0.3, 0.5, 0.3])
 
 
 def params(prm, sig, lr, c2):
@@ -130,9 +146,9 @@ def params(prm, sig, lr, c2):
     of the clock w_s(σ), the pole shift κ (lateral creepage, ∝ σ)."""
     z = 2 * sig - 1
     la = lr * c2
-    rho_t = np.exp(prm[0] + prm[2] * la)
+    rho_t = np.exp(prm[0] + prm[2] * la + prm[13] * la * la)
     rho_l = np.exp(prm[1] + prm[3] * la)
-    ws = 1.0 / (1.0 + np.exp(-prm[4] * (z - prm[5])))
+    ws = 1.0 / (1.0 + np.exp(-prm[4] * (z - prm[5]) - prm[12] * la))
     n, k = 4.0, 2.0  # fixed exponents (no pow on the hot path: (1 + ρ⁴)^¼ is two square roots)
     rho0 = np.exp(prm[7] + prm[6] * la + prm[8] * la * la)
     return rho_t, rho_l, ws, n, rho0, k
@@ -162,7 +178,7 @@ def reach(d, lin, fs0, prm, quad=None, xy=None):
     sig = sigma_of(d)
     lr, c2, _ = shape_feat(d)
     rho_t, rho_l, ws, n, rho0, k = params(prm, sig, lr, c2)
-    kxi, kap = pole_shift(prm, d, sig)
+    kxi, kap = pole_shift(prm, d, sig if "--shift-elliptic" in sys.argv else sigma_major(d))
     mf0 = np.maximum(np.linalg.norm(fs0, axis=1), 1e-12)
     ml = np.maximum(np.linalg.norm(lin, axis=1), 1e-300)
     rho = ml / mf0
@@ -219,13 +235,15 @@ def main():
         w = reach(trs, trs["lin"], fs_s, prm, qfit if shift else None, xy_s)[0]
         return score(w, trs["ref"])
 
-    prm_file = pathlib.Path("/tmp/roll/reach_prm.npy")
+    prm_file = pathlib.Path(F.args("--prm", ["/tmp/roll/reach_prm.npy"])[0])
     if "--reuse" in sys.argv and prm_file.exists():
         best = np.load(prm_file)
     else:
         best = None
         for shift in (True,):
-            start = X0 if best is None else best
+            start = X0.copy() if best is None else best
+            if "--sharp" in sys.argv:  # start from a sharp regime switch in σ
+                start[4] = 6.0
             simplex = np.vstack([start] + [start + np.eye(NPRM)[i] * STEPS[i] for i in range(NPRM)])
             r = minimize(obj, start, args=(shift,), method="Nelder-Mead",
                          options=dict(maxiter=2500 if not shift else 1500, xatol=1e-3, fatol=1e-4,
@@ -266,6 +284,7 @@ def main():
         lines.append(F.summary(f"reach + degree {degree} ({len(mons)} terms × 3), training", *errs(ftr, tr["ref"])))
         lines.append(F.summary(f"reach + degree {degree}, held-out (projected for passivity: {npro})", *errs(fho, ho["ref"])))
         fits[degree] = fho
+        np.savez(f"/tmp/roll/reach_tr_deg{degree}.npz", fit=ftr, base=bases["tr"][0], rho=bases["tr"][1], lam=bases["tr"][2])
     print("\n".join(lines))
     if "--families" in sys.argv:
         laws = F.committed_laws(len(ho["aob"]))
@@ -276,6 +295,28 @@ def main():
         title = ["# Rolling: the reach base against the held-out set", "",
                  "`" + " ".join(["tools/fit_rolling_reach.py"] + [a for a in sys.argv[1:] if a not in ("--fs-features", "--sigma")]) + "`", ""]
         pathlib.Path(F.args("--md", [""])[0]).write_text("\n".join(title + lines) + "\n")
+    if "--diagnose" in sys.argv:
+        fam = F.read([str(root / "tools/data/rolling_diag_families.csv")])
+        tags = [l.split(",")[0].split("_")[0] for l in (root / "tools/data/rolling_diag_families.csv").read_text().splitlines()
+                if l and l[0] != "#" and not l.startswith("family")]
+        fam["k"] = F.creep_k(fam)
+        fam["lin"], fam["fs"] = F.linear(fam, fam["k"]), F.full_slip(fam)
+        wr, rr, _ = reach(fam, fam["lin"], fam["fs"], best, qh, qh.geometry(fam))
+        wo = F.base(fam["lin"], fam["fs"], (5.552, 2.229, 1.223))[0]
+        sg = sigma_of(fam)
+        eo, er = errs(wo, fam["ref"]), errs(wr, fam["ref"])
+        diag = ["", "## Creep curves through the previous base's worst held-out points (tools/data/rolling_diag_families.csv; "
+                "diagnosis only, never fitted on): worst ΔF / ΔM over ρ = 0.03 … 100", "",
+                "| curve | a/b | θ | σ | previous base | reach base |", "|---|---|---|---|---|---|"]
+        for name in dict.fromkeys(tags):
+            m = np.array([t == name for t in tags])
+            i = np.argmax(m)
+            diag.append(f"| {name} | {fam['aob'][i]:.2f} | {math.degrees(fam['theta'][i]):.0f}° | {sg[i]:.2f} | "
+                        f"{eo[0][m].max():.3f} / {eo[1][m].max():.3f} | {er[0][m].max():.3f} / {er[1][m].max():.3f} |")
+        print("\n".join(diag))
+        if "--md" in sys.argv:
+            with open(F.args("--md", [""])[0], "a") as fh:
+                fh.write("\n".join(diag) + "\n")
     np.savez("/tmp/roll/reach_fit.npz", ho_base=bases["ho"][0], rho=bases["ho"][1], **{f"deg{g}": w for g, w in fits.items()})
 
 
