@@ -34,7 +34,7 @@ X0) on 6,000 training rows (a fixed random subset; full slip by a 16 × 32 quadr
 fitting), objective: the 95 % + 0.3 × the 99.5 % quantile of max(ΔF/0.03, ΔM/0.05). Then, as
 fit_rolling_surrogate.py, a ridge polynomial correction τ²(1 − τ)·P(x) (τ = ρ/(1 + ρ), both limits
 kept) on the same 12 features (`--fs-features --sigma`), degree 2 and 3 (`--degree`);
-`--lam-feature` adds the base's λ; `--diagnose` appends the worst error per creep curve of
+`--lam-feature` adds the base's λ; `--lam-factor` uses λ(1 − λ) as the correction's factor; `--diagnose` appends the worst error per creep curve of
 tools/data/rolling_diag_families.csv (diagnosis only). Passivity: the projection of fit_rolling_surrogate.passive
 (counted). The held-out set is only measured.
 
@@ -216,6 +216,23 @@ def score(w, ref):
     return np.quantile(e, 0.95) + 0.3 * np.quantile(e, 0.995)
 
 
+def sparse_select(an, res, k, lam):
+    """Greedy forward selection (orthogonal matching pursuit) of k columns of the standardised design
+    an for the three residual channels together (largest summed squared correlation with the
+    current residual), refitted by ridge after each pick; the constant column first."""
+    sel = [0]
+    norms = np.sqrt((an * an).sum(0))
+    r = res.copy()
+    while len(sel) < k:
+        sa = an[:, sel]
+        c = np.linalg.solve(sa.T @ sa + lam * len(an) * np.eye(len(sel)), sa.T @ res)
+        r = res - sa @ c
+        score = ((an.T @ r) ** 2).sum(1) / np.maximum(norms, 1e-12) ** 2
+        score[sel] = -1
+        sel.append(int(np.argmax(score)))
+    return sel
+
+
 def main():
     if CACHE.exists():
         c = dict(np.load(CACHE))
@@ -272,11 +289,27 @@ def main():
         xs = {t: F.features(d, d["lin"], bases[t][1], d["fs"]) for t, d in [("tr", tr), ("ho", ho)]}
         if "--lam-feature" in sys.argv:  # + the base's direction weight λ, 2λ − 1
             xs = {t: (np.column_stack([x, 2 * bases[t][2] - 1]), fac) for t, (x, fac) in xs.items()}
+        if "--lam-factor" in sys.argv:  # the correction's clock from the base: λ(1 − λ) (O(ρ²); 0 at full slip)
+            xs = {t: (x, bases[t][2] * (1 - bases[t][2])) for t, (x, fac) in xs.items()}
         mons = F.monomials(xs["tr"][0].shape[1], degree)
         a = F.design(xs["tr"][0], xs["tr"][1], mons)
         res = tr["ref"] - bases["tr"][0]
         sc = np.maximum(np.sqrt((a * a).mean(0)), 1e-12)
         an = a / sc
+        if "--cv" in sys.argv:  # ridge by 5-fold validation on the TRAINING rows (a row and its mirror in one fold)
+            half = len(an) // 2
+            fold = np.arange(len(an)) % half % 5
+            for lam_cv in [1e-6, 1e-5, 1e-4, 1e-3, 1e-2]:
+                worst = np.zeros(2)
+                q95 = []
+                for kf in range(5):
+                    t, v = fold != kf, fold == kf
+                    cf = np.linalg.solve(an[t].T @ an[t] + lam_cv * t.sum() * np.eye(an.shape[1]), an[t].T @ res[t])
+                    ef, em = errs(bases["tr"][0][v] + an[v] @ cf, tr["ref"][v])
+                    worst = np.maximum(worst, [ef.max(), em.max()])
+                    q95.append([np.quantile(ef, .95), np.quantile(em, .95)])
+                print(f"  cv degree {degree} ridge {lam_cv:g}: validation worst {worst[0]:.3f} / {worst[1]:.3f}, "
+                      f"95 % {np.mean(q95, 0)[0]:.3f} / {np.mean(q95, 0)[1]:.3f}", flush=True)
         coef = np.linalg.solve(an.T @ an + lam * len(an) * np.eye(an.shape[1]), an.T @ res) / sc[:, None]
         ftr = bases["tr"][0] + a @ coef
         fho = bases["ho"][0] + F.design(xs["ho"][0], xs["ho"][1], mons) @ coef
@@ -284,6 +317,16 @@ def main():
         lines.append(F.summary(f"reach + degree {degree} ({len(mons)} terms × 3), training", *errs(ftr, tr["ref"])))
         lines.append(F.summary(f"reach + degree {degree}, held-out (projected for passivity: {npro})", *errs(fho, ho["ref"])))
         fits[degree] = fho
+        for kk in [int(x) for x in F.args("--sparse", []) if degree == 3 and int(x) < len(mons)]:
+            sel = sparse_select(an, res, kk, lam)
+            c_s = np.linalg.solve(an[:, sel].T @ an[:, sel] + lam * len(an) * np.eye(len(sel)), an[:, sel].T @ res)
+            c_s = c_s / sc[sel, None]
+            a_ho = F.design(xs["ho"][0], xs["ho"][1], mons)
+            f_tr = bases["tr"][0] + a[:, sel] @ c_s
+            f_ho, npro = F.passive(bases["ho"][0] + a_ho[:, sel] @ c_s, ho)
+            lines.append(F.summary(f"reach + degree {degree}, {kk} greedy terms × 3, training", *errs(f_tr, tr["ref"])))
+            lines.append(F.summary(f"reach + degree {degree}, {kk} greedy terms, held-out (projected: {npro})", *errs(f_ho, ho["ref"])))
+            fits[f"{degree}s{kk}"] = f_ho
         np.savez(f"/tmp/roll/reach_tr_deg{degree}.npz", fit=ftr, base=bases["tr"][0], rho=bases["tr"][1], lam=bases["tr"][2])
     print("\n".join(lines))
     if "--families" in sys.argv:
