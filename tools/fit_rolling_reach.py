@@ -234,6 +234,7 @@ def sparse_select(an, res, k, lam):
 
 
 def main():
+    CACHE.parent.mkdir(parents=True, exist_ok=True)
     if CACHE.exists():
         c = dict(np.load(CACHE))
     else:
