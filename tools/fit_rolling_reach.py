@@ -34,7 +34,7 @@ X0) on 6,000 training rows (a fixed random subset; full slip by a 16 × 32 quadr
 fitting), objective: the 95 % + 0.3 × the 99.5 % quantile of max(ΔF/0.03, ΔM/0.05). Then, as
 fit_rolling_surrogate.py, a ridge polynomial correction τ²(1 − τ)·P(x) (τ = ρ/(1 + ρ), both limits
 kept) on the same 12 features (`--fs-features --sigma`), degree 2 and 3 (`--degree`);
-`--lam-feature` adds the base's λ; `--lam-factor` uses λ(1 − λ) as the correction's factor; `--diagnose` appends the worst error per creep curve of
+`--lam-feature` adds the base's λ; `--lam-factor` uses λ(1 − λ) as the correction's factor; `--sigma-major-feature` adds σ_M; `--diagnose` appends the worst error per creep curve of
 tools/data/rolling_diag_families.csv (diagnosis only). Passivity: the projection of fit_rolling_surrogate.passive
 (counted). The held-out set is only measured.
 
@@ -290,6 +290,8 @@ def main():
         xs = {t: F.features(d, d["lin"], bases[t][1], d["fs"]) for t, d in [("tr", tr), ("ho", ho)]}
         if "--lam-feature" in sys.argv:  # + the base's direction weight λ, 2λ − 1
             xs = {t: (np.column_stack([x, 2 * bases[t][2] - 1]), fac) for t, (x, fac) in xs.items()}
+        if "--sigma-major-feature" in sys.argv:  # + σ_M, 2σ_M − 1
+            xs = {t: (np.column_stack([x, 2 * sigma_major(d) - 1]), fac) for (t, (x, fac)), d in zip(xs.items(), (tr, ho))}
         if "--lam-factor" in sys.argv:  # the correction's clock from the base: λ(1 − λ) (O(ρ²); 0 at full slip)
             xs = {t: (x, bases[t][2] * (1 - bases[t][2])) for t, (x, fac) in xs.items()}
         mons = F.monomials(xs["tr"][0].shape[1], degree)
