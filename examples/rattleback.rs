@@ -225,6 +225,9 @@ fn creeping<L: RollingLaw>(law: &'static str) -> [Run; 2] {
     both(&rb, law)
 }
 
+/// A law's two runs (both spin directions), labelled with its name.
+type Runs = fn(&'static str) -> [Run; 2];
+
 /// Whether `RATTLEBACK_LAWS` (comma-separated names; default all) asks for `law`.
 fn wanted(law: &str) -> bool {
     std::env::var("RATTLEBACK_LAWS").map_or(true, |l| l.split(',').any(|x| x == law))
@@ -263,25 +266,19 @@ fn main() {
         el.g(),
         el.nu()
     );
-    let mut laws = Vec::new();
-    if wanted("best") {
-        laws.push(sliding::<Best>("best"));
-    }
-    if wanted("simplified") {
-        laws.push(sliding::<Simplified>("simplified"));
-    }
-    if wanted("ellipsoid") {
-        laws.push(sliding::<Ellipsoid>("ellipsoid"));
-    }
-    if wanted("coulomb") {
-        laws.push(sliding::<Coulomb>("coulomb"));
-    }
-    if wanted("table") {
-        laws.push(creeping::<Table>("table"));
-    }
-    if wanted("blend") {
-        laws.push(creeping::<Blend>("blend"));
-    }
+    let all: [(&'static str, Runs); 6] = [
+        ("best", sliding::<Best>),
+        ("simplified", sliding::<Simplified>),
+        ("ellipsoid", sliding::<Ellipsoid>),
+        ("coulomb", sliding::<Coulomb>),
+        ("table", creeping::<Table>),
+        ("blend", creeping::<Blend>),
+    ];
+    let laws: Vec<_> = all
+        .into_iter()
+        .filter(|(name, _)| wanted(name))
+        .map(|(name, run)| run(name))
+        .collect();
     let mut csv = String::from(
         "law,direction,reversal_s,stall_s,peak_rock_rad,final_spin,energy_start,energy_end,reversal_sampled_s,stall_sampled_s,peak_reversed_spin\n",
     );
