@@ -14,16 +14,18 @@
 //! ([`contensou::step::Numeric`]); the normal law is the contact's own wrench at (h⁺, ḣ⁺).
 
 use contensou::contact::Contact;
-use contensou::frame::{Frame, MajorAxis};
 use contensou::friction::{Best, Coulomb, Friction, FrictionLaw, Slip};
 use contensou::geometry::Curvatures;
 use contensou::jacobian::State;
 use contensou::normal::{Damping, HuntCrossley, Modulus, Undamped};
-use contensou::step::{Body, ContactPoint, Free, InverseMass, Numeric, TimeStep, step_wrench};
+use contensou::step::{Body, Free, Numeric, TimeStep, step_wrench};
 
 #[path = "common/rng.rs"]
 mod rng;
 use rng::Rng;
+#[path = "common/on_plane.rs"]
+mod on_plane;
+use on_plane::on_plane;
 
 const R: f64 = 10e-3;
 const ESTAR: f64 = 1.15e11;
@@ -71,18 +73,7 @@ fn run<L: FrictionLaw, D: Damping<f64> + Copy>(n: usize, seed: u64, damping: D) 
         let dir = rng.range(0.0, 6.3);
         let centre = [off * dir.cos(), off * dir.sin(), rng.range(0.5, 1.5) * R];
         let body = Body::new(m, [[i, 0.0, 0.0], [0.0, i, 0.0], [0.0, 0.0, i]], centre).unwrap();
-        let frame = Frame::new(
-            [0.0, 0.0, 1.0],
-            [1.0, 0.0, 0.0],
-            MajorAxis::from_cos_sin(1.0, 0.0),
-        );
-        let cp = ContactPoint {
-            a: None,
-            b: Some(0),
-            point: [0.0; 3],
-            frame,
-        };
-        let wm = InverseMass::<f64, 1>::from_bodies(&[body], &[cp]).unwrap();
+        let wm = on_plane(body, [1.0, 0.0, 0.0]);
         let dt = 10f64.powf(rng.range(-4.0, -2.3));
         let tstep = TimeStep::new(dt).unwrap();
         let h = hs * 10f64.powf(rng.range(-1.0, 1.0));

@@ -554,6 +554,9 @@ fn a_slip_that_would_reverse_within_the_step_is_stopped() {
 #[path = "common/rng.rs"]
 mod rng;
 use rng::Rng;
+#[path = "common/on_plane.rs"]
+mod on_plane;
+use on_plane::on_plane;
 
 impl Rng {
     /// 10^x, x uniform in [lo, hi).
@@ -615,18 +618,7 @@ fn random_run<L: FrictionLaw>(n: usize, seed: u64) -> Worst {
         ];
         let body = Body::new(m, inertia, centre).unwrap();
         let phi = rng.range(0.0, 6.3);
-        let frame = Frame::new(
-            [0.0, 0.0, 1.0],
-            [phi.cos(), phi.sin(), 0.0],
-            MajorAxis::from_cos_sin(1.0, 0.0),
-        );
-        let cp = ContactPoint {
-            a: None,
-            b: Some(0),
-            point: [0.0; 3],
-            frame,
-        };
-        let wm = InverseMass::<f64, 1>::from_bodies(&[body], &[cp]).unwrap();
+        let wm = on_plane(body, [phi.cos(), phi.sin(), 0.0]);
         let dt = rng.log(-5.0, -2.0);
         let tstep = TimeStep::new(dt).unwrap();
         let h = if rng.next() < 0.1 {
