@@ -6,6 +6,7 @@ integrates it, and the contact's elastic energy counted two ways.
     python mujoco/examples/energy_budget.py                                  # the four models, 2 ms
     python mujoco/examples/energy_budget.py --models rattleback --dt 0.001
     python mujoco/examples/energy_budget.py --models rattleback --config step_point=0
+    python mujoco/examples/energy_budget.py --native --dt 0.002      # MuJoCo's own condim-6 contact instead
 
 MuJoCo's update (implicitfast without damping or actuators; Euler the same here) is
 semi-implicit Euler: M(q)·Δv = Δt·(f_c − bias), q⁺ = q ⊕ Δt·v⁺, with f_c the plugin's
@@ -36,10 +37,20 @@ step_sweep.py: kinetic + gravitational + (2/5)N·h):
   swing; for a linear spring exactly).
 
 Per model: the largest per-step value of each column and of `true`/`reported`, and the column
-values at the step where `true` peaks.
+values at the step where `true` peaks. `--sums`: instead, each column summed over the run (from
+`--since` s on): a swing sums to about nothing, a drift does not — the backward-Euler normal
+force must take energy, Σ `law` ≤ 0.
+
+`--native` (native_budget): the same bodies with MuJoCo's own soft contact instead of the plugin
+(the plugin removed, the geoms colliding natively, condim 6, friction "f 0.005 0.0001": the
+model's f, MuJoCo's default torsional and rolling coefficients): the largest per-step rise of
+T + V (mjData.energy) and of T + V + U with U = ½·Σ N·(−dist) over the active contacts (a soft
+constraint stores no elastic energy; this is a linear spring's at the contact's penetration and
+normal force, mj_contactForce), and of the staggered energy, relative to the start T + V + U.
 """
 
 import argparse
+import re
 import sys
 from pathlib import Path
 
@@ -67,7 +78,7 @@ def support_points(m, d, body, normal):
     return out
 
 
-def budget(name, dt, config, end, key=0):
+def budget(name, dt, config, end, key=0, sums=None, since=0.0):
     m = step_sweep.load(name, dt, config)
     # The same model with the plain contact: the elastic force N_el(h) at a pose (q̇ = 0).
     plain = {k: x for k, x in config.items() if k != "step_point"}
@@ -144,9 +155,102 @@ def budget(name, dt, config, end, key=0):
         row = {k: x / abs(e0) for k, x in row.items()}
         for c in cols:
             peak[c] = max(peak[c], row[c])
+            if sums is not None and d.time > since and np.isfinite(row[c]):
+                sums[c] = sums.get(c, 0.0) + row[c]
         if at_true is None or row["true"] >= max(at_true["true"], -np.inf):
             at_true = {**row, "t": d.time}
     return m, peak, at_true, resid
+
+
+NATIVE_FRICTION = "0.005 0.0001"  # MuJoCo's default torsional and rolling coefficients (m)
+
+
+def native_model(name, dt, integrator=None):
+    """Model `name` with MuJoCo's own condim-6 contact on the plugin's bodies (module docs)."""
+    text = (run_models.MODELS / f"{name}.xml").read_text()
+    f = re.search(r'<config key="f" value="([^"]+)"/>', text).group(1)
+    friction = f'condim="6" friction="{f} {NATIVE_FRICTION}"'
+    for block in ("extension", "sensor"):
+        text = re.sub(rf"<{block}>.*?</{block}>", "", text, flags=re.S)
+    text = text.replace('<plugin instance="contact"/>', "").replace('<flag contact="disable"/>', "")
+    text = text.replace('contype="0" conaffinity="0"', friction)
+    text = re.sub(r'(<geom name="floor" type="plane"[^/]*)/>', rf"\1 {friction}/>", text)
+    return step_sweep.model_from(text, dt, integrator)
+
+
+def native_budget(name, dt, end, key=0, integrator=None):
+    """Largest per-step rises relative to the start energy with MuJoCo's native contact:
+    {"TV": T + V, "true": T + V + U, "staggered": ½v_nᵀM v_{n+1} + V + U} (module docs)."""
+    m = native_model(name, dt, integrator)
+    d = mujoco.MjData(m)
+    mujoco.mj_resetDataKeyframe(m, d, key)
+    force = np.zeros(6)
+    M = np.zeros((m.nv, m.nv))
+
+    def elastic():
+        u = 0.0
+        for i in range(d.ncon):
+            mujoco.mj_contactForce(m, d, i, force)
+            u += 0.5 * force[0] * max(-d.contact[i].dist, 0.0)
+        return u
+
+    mujoco.mj_forward(m, d)
+    e0 = abs(float(d.energy.sum()) + elastic())
+    peak = {"TV": -np.inf, "true": -np.inf, "staggered": -np.inf}
+    stag_prev = None
+    for _ in range(round(end / m.opt.timestep)):
+        mujoco.mj_forward(m, d)
+        tv, u = float(d.energy.sum()), elastic()
+        mujoco.mj_fullM(m, d, M)
+        v = d.qvel.copy()
+        mujoco.mj_step(m, d)
+        stag = 0.5 * v @ M @ d.qvel + float(d.energy[0]) + u
+        if stag_prev is not None:
+            peak["staggered"] = max(peak["staggered"], (stag - stag_prev) / e0)
+        stag_prev = stag
+        mujoco.mj_forward(m, d)
+        tv1 = float(d.energy.sum())
+        peak["TV"] = max(peak["TV"], (tv1 - tv) / e0)
+        peak["true"] = max(peak["true"], (tv1 + elastic() - tv - u) / e0)
+    return m, peak
+
+
+def rocking_decay(name, dt, axis, kick=0.2, settle=0.5, end=1.0, config=None):
+    """How fast a small rocking oscillation of a rattleback model loses its energy over the
+    step's integration (s⁻¹): the body set upright (its body frame is the bottom's curvature
+    frame, origin at G; the approach from the settled state), settled for `settle` s without
+    spin, then its ω about the body axis `axis` (0: roll about the long axis x, 1: pitch about
+    y) raised by `kick` rad/s; the rocking energy e = T + V + U − (the settled one) over the
+    first and last 0.2 s of `end` s gives ln(ē₀/ē₁)/(end − 0.2). A scheme that keeps T + V + U
+    from rising over every step damps such a mode at about ½·Δt·Ω² (the normal force applied at
+    the mid-step contact point, measured: 8.6, 5.7, 2.9 s⁻¹ for the pitch, Ω ≈ 107 rad/s, at 2,
+    1, 0.5 ms; 1.2, 0.58, 0.29 for the roll, Ω ≈ 34 rad/s). (MuJoCo's native soft contact has no
+    such measure: its penetration, and with it V, follows the rocking by tens of µm.) `config`:
+    plugin config keys, as step_sweep.load (step=explicit: the plain contact at its small step)."""
+    m = step_sweep.load(name, dt, config or {})
+    d = mujoco.MjData(m)
+
+    def energy():
+        rows = run_models.contacts(m, d)
+        return float(d.energy.sum()) + 0.4 * float(np.sum(rows[:, 0] * np.maximum(rows[:, 6], 0.0)))
+
+    g = next(i for i in range(m.ngeom) if int(m.geom_type[i]) == int(mujoco.mjtGeom.mjGEOM_ELLIPSOID))
+    d.qpos[:] = [0.0, 0.0, m.geom_size[g][2] - m.geom_pos[g][2], 1.0, 0.0, 0.0, 0.0]
+    mujoco.mj_forward(m, d)
+    mujoco.mj_step(m, d, round(settle / m.opt.timestep))
+    mujoco.mj_forward(m, d)
+    rest = energy()
+    d.qvel[3 + axis] += kick
+    mujoco.mj_forward(m, d)
+    ts, es = [], []
+    for _ in range(round(end / m.opt.timestep)):
+        mujoco.mj_step(m, d)
+        mujoco.mj_forward(m, d)
+        ts.append(d.time)
+        es.append(energy() - rest)
+    ts, es = np.array(ts), np.array(es)
+    first, last = es[ts < ts[0] + 0.2].mean(), es[ts > ts[-1] - 0.2].mean()
+    return float(np.log(first / last) / (ts[-1] - ts[0] - 0.2)) if first > 0 and last > 0 else float("inf")
 
 
 def pose_check(name, dt, config, end, key=0):
@@ -186,11 +290,35 @@ def main():
     ap.add_argument("--dt", type=float, default=None, help="step (s; default as shipped, 2 ms)")
     ap.add_argument("--config", action="append", default=[], help="plugin config key=value (repeatable)")
     ap.add_argument("--end", type=float, default=None, help="simulated time (s; default per model)")
+    ap.add_argument("--sums", action="store_true", help="each column summed over the run instead of its peak")
+    ap.add_argument("--since", type=float, default=0.0, help="--sums: from this time on (s)")
+    ap.add_argument("--native", action="store_true",
+                    help="MuJoCo's native condim-6 contact on the same bodies instead (native_budget)")
+    ap.add_argument("--integrator", default=None, help="--native: Euler, implicitfast, … (default: as shipped)")
+    ap.add_argument("--rocking", action="store_true",
+                    help="the decay rate of a small roll and pitch oscillation of the rattleback (rocking_decay)")
     ap.add_argument("--pose-check", action="store_true",
                     help="the rattlebacks' `pose` term against ½N·Δt²·Σ(ρ − ℓ)ω² (pose_check) instead")
     args = ap.parse_args()
     run_models.load_plugin()
     config = dict(c.split("=", 1) for c in args.config)
+    if args.native:
+        print("| model | step | native condim 6, max rise per step: T + V | T + V + ½N·pen | staggered |")
+        print("|---|---|---|---|---|")
+        for name in args.models.split(","):
+            for key in step_sweep.keys(name):
+                m, peak = native_budget(name, args.dt, args.end or step_sweep.ENDS[name], key, args.integrator)
+                label = name + ("" if key == 0 else f" {m.key(key).name}")
+                print(f"| {label} | {m.opt.timestep * 1e3:g} ms | {peak['TV']:.1e} | {peak['true']:.1e} | "
+                      f"{peak['staggered']:.1e} |", flush=True)
+        return
+    if args.rocking:
+        print("| step | roll decay (1/s) | pitch decay (1/s) |")
+        print("|---|---|---|")
+        for dt in (args.dt,) if args.dt else (0.002, 0.001, 0.0005):
+            rates = [rocking_decay("rattleback", dt, axis) for axis in (0, 1)]
+            print(f"| {dt * 1e3:g} ms | " + " | ".join(f"{r:.3f}" for r in rates) + " |", flush=True)
+        return
     if args.pose_check:
         for name in ("rattleback", "rattleback_rolling"):
             c, ratio, p, e = pose_check(name, args.dt, config, args.end or step_sweep.ENDS[name])
@@ -202,9 +330,15 @@ def main():
     print("|---|---|---|---|---|---|---|---|---|---|---|---|")
     for name in args.models.split(","):
         for key in step_sweep.keys(name):
-            m, peak, at, resid = budget(name, args.dt, config, args.end or step_sweep.ENDS[name], key)
+            sums = {} if args.sums else None
+            m, peak, at, resid = budget(name, args.dt, config, args.end or step_sweep.ENDS[name], key, sums, args.since)
             label = name + ("" if key == 0 else f" {m.key(key).name}")
             assert resid < 1e-5, f"MuJoCo's update is not M·Δv = Δt·(f − bias) here (residual {resid:.1e})"
+            if args.sums:
+                print(f"| {label} | {m.opt.timestep * 1e3:g} ms | sums from {args.since:g} s: "
+                      + ", ".join(f"{c} {sums.get(c, 0.0):+.2e}" for c in ("law", "pose", "friction", "gyro", "true"))
+                      + " |", flush=True)
+                continue
             print(f"| {label} | {m.opt.timestep * 1e3:g} ms | {peak['normal']:.1e} | {peak['law']:.1e} | "
                   f"{peak['pose']:.1e} | {peak['friction']:.1e} | {peak['gyro']:.1e} | {peak['true']:.1e} | "
                   f"{peak['reported']:.1e} | {peak['accounting']:.1e} | {peak['staggered']:.1e} | {at['t']:.3f} s: {at['law']:.1e}, "

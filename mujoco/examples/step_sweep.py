@@ -59,6 +59,12 @@ def load(name, dt, config, integrator=None):
             text = text[:start] + value + text[text.index('"', start):]
         else:
             text = text.replace("</instance>", f'  <config key="{key}" value="{value}"/>\n      </instance>', 1)
+    return model_from(text, dt, integrator)
+
+
+def model_from(text, dt=None, integrator=None):
+    """The model of MJCF `text` with `timestep` = dt and the integrator (None: as in the text),
+    MuJoCo's energy computed (mjENBL_ENERGY)."""
     m = mujoco.MjModel.from_xml_string(text)
     if dt is not None:
         m.opt.timestep = dt
