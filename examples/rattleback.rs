@@ -231,6 +231,9 @@ fn creeping<L: RollingLaw>(law: &'static str) -> [Run; 2] {
     both(&rb, law, step(1e-4))
 }
 
+/// A law's two runs (both spin directions), labelled with its name.
+type Runs = fn(&'static str) -> [Run; 2];
+
 /// Whether `RATTLEBACK_LAWS` (comma-separated names; default all) asks for `law`.
 fn wanted(law: &str) -> bool {
     std::env::var("RATTLEBACK_LAWS").map_or(true, |l| l.split(',').any(|x| x == law))
@@ -267,25 +270,21 @@ fn main() {
         el.g(),
         el.nu()
     );
-    let mut laws = Vec::new();
-    if wanted("best") {
-        laws.push(sliding::<Best>("best", BEST_DELTA, 1e-5));
-    }
-    if wanted("simplified") {
-        laws.push(sliding::<Simplified>("simplified", SIMPLIFIED_DELTA, 1e-5));
-    }
-    if wanted("ellipsoid") {
-        laws.push(sliding::<Ellipsoid>("ellipsoid", 1e-3, 2.5e-5));
-    }
-    if wanted("coulomb") {
-        laws.push(sliding::<Coulomb>("coulomb", COULOMB_DELTA, 2e-6));
-    }
-    if wanted("table") {
-        laws.push(creeping::<Table>("table"));
-    }
-    if wanted("blend") {
-        laws.push(creeping::<Blend>("blend"));
-    }
+    let all: [(&'static str, Runs); 6] = [
+        ("best", |n| sliding::<Best>(n, BEST_DELTA, 1e-5)),
+        ("simplified", |n| {
+            sliding::<Simplified>(n, SIMPLIFIED_DELTA, 1e-5)
+        }),
+        ("ellipsoid", |n| sliding::<Ellipsoid>(n, 1e-3, 2.5e-5)),
+        ("coulomb", |n| sliding::<Coulomb>(n, COULOMB_DELTA, 2e-6)),
+        ("table", creeping::<Table>),
+        ("blend", creeping::<Blend>),
+    ];
+    let laws: Vec<_> = all
+        .into_iter()
+        .filter(|(name, _)| wanted(name))
+        .map(|(name, run)| run(name))
+        .collect();
     let mut csv = String::from(
         "law,direction,reversal_s,stall_s,peak_rock_rad,final_spin,energy_start,energy_end,reversal_sampled_s,stall_sampled_s,peak_reversed_spin\n",
     );

@@ -25,8 +25,8 @@ use contensou::shape::{Eccentricity, Linear, Newton, Ratio};
 #[path = "../host-tests/stability/shared.rs"]
 mod shared;
 use shared::{
-    BestBlock, BestCase, best_case_step, best_stiffness_row, elliptic_rows, measured_step, rel,
-    series, shape_rows, spin_probe_step, spin_probes,
+    BestBlock, BestCase, Settles, best_case_step, best_stiffness_row, elliptic_rows, measured_step,
+    rel, series, shape_rows, spin_probe_step, spin_probes,
 };
 
 const OUT: &str = "docs/report/stability";

@@ -279,6 +279,15 @@ fn rolling_bearing(
     Bearing::new(g, c(Race::Inner), c(Race::Outer)).unwrap()
 }
 
+/// The loaded state of the rolling-law tests: the bearing 209, its full-slip (`best`) scene
+/// and that scene's state after 5 ms (10,000 RK4 steps of 0.5 µs from the initial state).
+fn loaded() -> (Geometry<f64>, Bearing<f64, BestRace>, State<f64>) {
+    let g = Geometry::bearing_209();
+    let full = best_bearing(&g);
+    let y = rk4(&full, 0.0, full.initial_state(), 5e-7, 10_000, |_, _, _| {});
+    (g, full, y)
+}
+
 /// At a loaded state (5 ms of the full-slip run: load ramped up, balls rolling with the
 /// contact angle the axial load gives): every rolling contact is passive (friction power
 /// F·v_P + T_z·ω ≤ 0) and bounded (|F| ≤ fN), its creep force differs from full slip's, δ does
@@ -286,9 +295,7 @@ fn rolling_bearing(
 /// 0.1 µs stay finite with the balls carrying the load.
 #[test]
 fn rolling_law_in_the_bearing_is_passive_and_ignores_delta() {
-    let g = Geometry::bearing_209();
-    let full = best_bearing(&g);
-    let y = rk4(&full, 0.0, full.initial_state(), 5e-7, 10_000, |_, _, _| {});
+    let (g, full, y) = loaded();
     let roll = rolling_bearing(&g, 0.05);
     assert_eq!(roll.rhs(5e-3, &y), rolling_bearing(&g, 1e-3).rhs(5e-3, &y));
     let mut loaded = 0;
@@ -322,9 +329,7 @@ fn rolling_law_in_the_bearing_is_passive_and_ignores_delta() {
 /// that (measured 1.3e-3 of N, 3.3e-4 of fN).
 #[test]
 fn rolling_law_in_f32_matches_f64() {
-    let g = Geometry::bearing_209();
-    let full = best_bearing(&g);
-    let y = rk4(&full, 0.0, full.initial_state(), 5e-7, 10_000, |_, _, _| {});
+    let (g, _, y) = loaded();
     let roll = rolling_bearing(&g, 0.05);
     let g32 = Geometry::<f32>::bearing_209();
     let c32 = |race| {

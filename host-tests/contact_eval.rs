@@ -3,6 +3,9 @@
 //! `row K: name = value: reason` and a nonzero exit, skips blank lines; `--help` exits 0.
 
 mod contract;
+#[macro_use]
+#[path = "common/each.rs"]
+mod each;
 
 use std::process::Output;
 
@@ -10,7 +13,9 @@ use contensou::Real;
 use contensou::dynamic::{Form, INPUTS, Law, OUTPUTS, Spec, Step};
 use contensou::friction::rolling::row::RowLaw;
 
-use contract::{bits, generic, refused, specs, stdout_of, stdout_with, steps};
+use contract::{
+    GOOD, bits, each_law_form, generic, refused, refuses_after_good, specs, stdout_of, steps,
+};
 
 /// Runs `contact_eval args…` with `input` on stdin.
 fn run(args: &[&str], input: &str) -> Output {
@@ -23,7 +28,8 @@ fn row<T: Real>(spec: &Spec<T>, s: &Step<T>) -> [T; 11] {
     ]
 }
 
-fn wrench_matches_the_generic_contacts<T: Real>(precision: &str) {
+fn wrench_matches_the_generic_contacts<T: Real>() {
+    let precision = T::NAME;
     // Inputs printed with Rust's shortest round-trip Display: the binary parses the same values.
     let mut input = format!("{}\n", INPUTS.join(","));
     let mut want = Vec::new();
@@ -37,40 +43,31 @@ fn wrench_matches_the_generic_contacts<T: Real>(precision: &str) {
         }
         input += "\n"; // blank lines are skipped
     }
-    for law in Law::ALL {
-        for form in Form::ALL {
-            let stdout = stdout_with("wrench", law, form, precision, &input);
-            let mut lines = stdout.lines();
+    let header = format!("{},{}", INPUTS.join(","), OUTPUTS.join(","));
+    each_law_form::<T>(
+        "wrench",
+        &input,
+        &header,
+        want.len(),
+        |law, form, i, got, line| {
+            let (r, spec, s) = &want[i];
+            assert_eq!(got.len(), 18, "{line}");
+            let echo = |v: &[T]| v.iter().map(|x| x.to_f64().to_bits()).collect::<Vec<_>>();
+            assert_eq!(echo(&got[..11]), echo(r), "{line}");
+            let expect = generic(law, spec, form, s);
             assert_eq!(
-                lines.next().unwrap(),
-                format!("{},{}", INPUTS.join(","), OUTPUTS.join(","))
+                bits::<T>(got[11..].try_into().unwrap()),
+                bits(expect),
+                "{law:?} {form:?} {precision}: {line}"
             );
-            let mut n = 0;
-            for (line, (r, spec, s)) in lines.by_ref().zip(&want) {
-                let got: Vec<T> = line.split(',').map(|f| f.parse().ok().unwrap()).collect();
-                assert_eq!(got.len(), 18, "{line}");
-                let echo = |v: &[T]| v.iter().map(|x| x.to_f64().to_bits()).collect::<Vec<_>>();
-                assert_eq!(echo(&got[..11]), echo(r), "{line}");
-                let expect = generic(law, spec, form, s);
-                assert_eq!(
-                    bits::<T>(got[11..].try_into().unwrap()),
-                    bits(expect),
-                    "{law:?} {form:?} {precision}: {line}"
-                );
-                n += 1;
-            }
-            assert_eq!((n, lines.next()), (want.len(), None));
-        }
-    }
+        },
+    );
 }
 
 #[test]
 fn wrench_is_bit_identical_to_the_library() {
-    wrench_matches_the_generic_contacts::<f64>("f64");
-    wrench_matches_the_generic_contacts::<f32>("f32");
+    each!(wrench_matches_the_generic_contacts, [f64, f32]);
 }
-
-const GOOD: &str = "10,400,1.15e11,0.3,0.2,1e-4,2e-6,0.01,-3e-3,2e-3,25";
 
 /// A two-row input whose second row (row 3: a blank line sits before it) is `bad`; the run
 /// must print row 1 only, fail, and say exactly `message`.
@@ -252,7 +249,8 @@ fn rolling_direct<T: Real, L: contensou::friction::rolling::RollingLaw>(r: [T; 1
     [w.fx, w.fy, w.mz]
 }
 
-fn rolling_matches_the_library<T: Real>(precision: &str) {
+fn rolling_matches_the_library<T: Real>() {
+    let precision = T::NAME;
     use contensou::friction::rolling::{Blend, Fastsim, FastsimGrid, FullSlip, Linear, Table};
     let rows: Vec<[T; 10]> = ROLLING.iter().map(|r| r.map(T::from_f64)).collect();
     let mut input = "a,b,G,nu,f,N,V,xi,eta,phi\n".to_string();
@@ -306,38 +304,40 @@ fn rolling_matches_the_library<T: Real>(precision: &str) {
 
 #[test]
 fn rolling_is_bit_identical_to_the_library() {
-    rolling_matches_the_library::<f64>("f64");
-    rolling_matches_the_library::<f32>("f32");
+    each!(rolling_matches_the_library, [f64, f32]);
 }
 
 #[test]
 fn rolling_refuses_bad_rows_naming_the_column() {
     let good = "6e-3,4e-3,8e10,0.28,0.3,8e4,30,1e-3,0,0";
-    for (bad, message) in [
-        (
-            "6e-3,4e-3,0,0.28,0.3,8e4,30,1e-3,0,0",
-            "G = 0: shear modulus G must be positive (Pa)",
-        ),
-        (
-            "6e-3,4e-3,8e10,0.6,0.3,8e4,30,1e-3,0,0",
-            "nu = 0.6: Poisson's ratio of a rolling contact outside [0, 0.5] (Kalker's table)",
-        ),
-        (
-            "0,4e-3,8e10,0.28,0.3,8e4,30,1e-3,0,0",
-            "a = 0: length must be positive",
-        ),
-        (
-            "6e-3,4e-3,8e10,0.28,-0.3,8e4,30,1e-3,0,0",
-            "f = -0.3: friction coefficient is negative",
-        ),
-        (
-            "1,4e-3,8e10,0.28,0.3,8e4,30,1e-3,0,0",
-            "a/b = 250: semi-axis ratio a/b of a rolling contact outside [0.01, 100]",
-        ),
-    ] {
-        let input = format!("a,b,G,nu,f,N,V,xi,eta,phi\n{good}\n{bad}\n");
-        refused(&["rolling"], &input, &format!("row 2: {message}"), bad);
-    }
+    let header = "a,b,G,nu,f,N,V,xi,eta,phi";
+    refuses_after_good(
+        &["rolling"],
+        header,
+        good,
+        &[
+            (
+                "6e-3,4e-3,0,0.28,0.3,8e4,30,1e-3,0,0",
+                "G = 0: shear modulus G must be positive (Pa)",
+            ),
+            (
+                "6e-3,4e-3,8e10,0.6,0.3,8e4,30,1e-3,0,0",
+                "nu = 0.6: Poisson's ratio of a rolling contact outside [0, 0.5] (Kalker's table)",
+            ),
+            (
+                "0,4e-3,8e10,0.28,0.3,8e4,30,1e-3,0,0",
+                "a = 0: length must be positive",
+            ),
+            (
+                "6e-3,4e-3,8e10,0.28,-0.3,8e4,30,1e-3,0,0",
+                "f = -0.3: friction coefficient is negative",
+            ),
+            (
+                "1,4e-3,8e10,0.28,0.3,8e4,30,1e-3,0,0",
+                "a/b = 250: semi-axis ratio a/b of a rolling contact outside [0.01, 100]",
+            ),
+        ],
+    );
 }
 
 /// The optional rolling columns: echoed, read by the rolling laws bit for bit as

@@ -3,14 +3,20 @@
 //! of `wrench`; bad rows refused as `wrench` refuses them.
 
 mod contract;
+#[macro_use]
+#[path = "common/each.rs"]
+mod each;
 
 use contensou::Real;
-use contensou::dynamic::{DynContact, Form, INPUTS, Law, RollingSpec, RollingStep};
+use contensou::dynamic::{DynContact, INPUTS, Law, RollingSpec, RollingStep};
 use contensou::jacobian::OUTPUTS;
 
-use contract::{bits, generic, refused, run_contact_eval as run, specs, stdout_with, steps};
+use contract::{
+    GOOD, bits, each_law_form, generic, refuses_after_good, run_contact_eval as run, specs, steps,
+};
 
-fn matches_the_library<T: Real>(precision: &str) {
+fn matches_the_library<T: Real>() {
+    let precision = T::NAME;
     let x = T::from_f64;
     let velocity = RollingStep {
         vrx: x(1.5),
@@ -40,77 +46,68 @@ fn matches_the_library<T: Real>(precision: &str) {
             rows.push((spec, s));
         }
     }
-    for law in Law::ALL {
-        for form in Form::ALL {
-            let stdout = stdout_with("jacobian", law, form, precision, &input);
-            let mut lines = stdout.lines();
+    let header = format!("{},vrx,vry,{}", INPUTS.join(","), OUTPUTS.join(","));
+    each_law_form::<T>(
+        "jacobian",
+        &input,
+        &header,
+        rows.len(),
+        |law, form, i, got, line| {
+            let (spec, s) = &rows[i];
+            assert_eq!(got.len(), 13 + 24, "{line}");
+            let dc = DynContact::new_rolling(spec, &RollingSpec::default(), law, form).unwrap();
+            let want = dc.jacobian_rolling(s, &velocity).unwrap().to_array();
+            let wrench = dc.wrench_rolling(s, &velocity).unwrap().to_array();
+            let raw = |v: &[T]| v.iter().map(|x| x.to_f64().to_bits()).collect::<Vec<_>>();
             assert_eq!(
-                lines.next().unwrap(),
-                format!("{},vrx,vry,{}", INPUTS.join(","), OUTPUTS.join(","))
+                raw(&got[13..]),
+                raw(&want),
+                "{law:?} {form:?} {precision}: {line}"
             );
-            let mut n = 0;
-            for (line, (spec, s)) in lines.zip(&rows) {
-                let got: Vec<T> = line.split(',').map(|f| f.parse().ok().unwrap()).collect();
-                assert_eq!(got.len(), 13 + 24, "{line}");
-                let dc = DynContact::new_rolling(spec, &RollingSpec::default(), law, form).unwrap();
-                let want = dc.jacobian_rolling(s, &velocity).unwrap().to_array();
-                let wrench = dc.wrench_rolling(s, &velocity).unwrap().to_array();
-                let raw = |v: &[T]| v.iter().map(|x| x.to_f64().to_bits()).collect::<Vec<_>>();
-                assert_eq!(
-                    raw(&got[13..]),
-                    raw(&want),
-                    "{law:?} {form:?} {precision}: {line}"
-                );
+            assert_eq!(
+                raw(&got[13..17]),
+                raw(&wrench[..4]),
+                "{law:?} {form:?} {precision}: {line}"
+            );
+            if Law::SLIDING.contains(&law) {
+                // the rolling columns are not read: the generic contact's wrench
+                let g = bits(generic(law, spec, form, s));
                 assert_eq!(
                     raw(&got[13..17]),
-                    raw(&wrench[..4]),
+                    g[..4].to_vec(),
                     "{law:?} {form:?} {precision}: {line}"
                 );
-                if Law::SLIDING.contains(&law) {
-                    // the rolling columns are not read: the generic contact's wrench
-                    let g = bits(generic(law, spec, form, s));
-                    assert_eq!(
-                        raw(&got[13..17]),
-                        g[..4].to_vec(),
-                        "{law:?} {form:?} {precision}: {line}"
-                    );
-                }
-                n += 1;
             }
-            assert_eq!(n, rows.len());
-        }
-    }
+        },
+    );
 }
 
 #[test]
 fn jacobian_is_bit_identical_to_the_library() {
-    matches_the_library::<f64>("f64");
-    matches_the_library::<f32>("f32");
+    each!(matches_the_library, [f64, f32]);
 }
 
 #[test]
 fn jacobian_refuses_bad_rows_as_wrench_does() {
-    let good = "10,400,1.15e11,0.3,0.2,1e-4,2e-6,0.01,-3e-3,2e-3,25";
-    for (bad, message) in [
-        (
-            "10,400,1.15e11,0.3,0.2,1e-4,NaN,0.01,-3e-3,2e-3,25",
-            "h = NaN: not a number (NaN)",
-        ),
-        (
-            "500,400,1.15e11,0.3,0.2,1e-4,2e-6,0.01,-3e-3,2e-3,25",
-            "P = 500: curvatures must satisfy P <= Q (x is the major axis)",
-        ),
-        (
-            "10,400,1.15e11,0.3,-0.2,1e-4,2e-6,0.01,-3e-3,2e-3,25",
-            "f = -0.2: friction coefficient is negative",
-        ),
-    ] {
-        let input = format!("{}\n{good}\n{bad}\n", INPUTS.join(","));
-        for sub in ["jacobian", "wrench"] {
-            let context = format!("{sub} {bad}");
-            refused(&[sub], &input, &format!("row 2: {message}"), &context);
-        }
-    }
+    refuses_after_good(
+        &["jacobian", "wrench"],
+        &INPUTS.join(","),
+        GOOD,
+        &[
+            (
+                "10,400,1.15e11,0.3,0.2,1e-4,NaN,0.01,-3e-3,2e-3,25",
+                "h = NaN: not a number (NaN)",
+            ),
+            (
+                "500,400,1.15e11,0.3,0.2,1e-4,2e-6,0.01,-3e-3,2e-3,25",
+                "P = 500: curvatures must satisfy P <= Q (x is the major axis)",
+            ),
+            (
+                "10,400,1.15e11,0.3,-0.2,1e-4,2e-6,0.01,-3e-3,2e-3,25",
+                "f = -0.2: friction coefficient is negative",
+            ),
+        ],
+    );
     let out = run(&["jacobian", "--help"], "");
     assert!(out.status.success());
     assert!(String::from_utf8_lossy(&out.stdout).contains("dTz_domega"));

@@ -5,9 +5,9 @@
 
 use contensou::contact::Contact;
 use contensou::frame::{ContactFrame, Frame, MajorAxis, Vector, WorldAxes, point_velocity};
-use contensou::friction::{Friction, Simplified};
+use contensou::friction::{Best, Friction, Simplified};
 use contensou::geometry::{Curvatures, Principal};
-use contensou::normal::{Modulus, Undamped};
+use contensou::normal::{Hertz, Modulus, Undamped};
 use contensou::shape::Newton;
 use std::f64::consts::PI;
 
@@ -58,17 +58,15 @@ impl Rng {
     }
 }
 
-fn contact(
-    p: f64,
-    q: f64,
-) -> Contact<f64, contensou::normal::Hertz<f64>, Undamped, contensou::friction::Best> {
-    Contact::hertz::<Newton>(
-        &Curvatures::new(p, q).unwrap(),
-        Modulus::new(1.15e11).unwrap(),
-        Undamped,
-        Friction::new(0.1, 1e-6).unwrap(),
-    )
-    .unwrap()
+/// The tests' contact: exact Hertz (E* = 1.15e11 Pa), undamped, `best` at f = 0.1, δ = 1e-6.
+fn contact_on(curv: &Curvatures<f64>) -> Contact<f64, Hertz<f64>, Undamped, Best> {
+    let friction = Friction::new(0.1, 1e-6).unwrap();
+    Contact::hertz::<Newton>(curv, Modulus::new(1.15e11).unwrap(), Undamped, friction).unwrap()
+}
+
+/// [`contact_on`] the curvatures (P, Q).
+fn contact(p: f64, q: f64) -> Contact<f64, Hertz<f64>, Undamped, Best> {
+    contact_on(&Curvatures::new(p, q).unwrap())
 }
 
 #[test]
@@ -295,14 +293,7 @@ fn continuous_across_the_crossing_from_bodies() {
         )
         .unwrap();
         let frame = Frame::new(n, t1, MajorAxis::of(&curv));
-        let c = Contact::hertz::<Newton>(
-            &curv,
-            Modulus::new(1.15e11).unwrap(),
-            Undamped,
-            Friction::<f64>::new(0.1, 1e-6).unwrap(),
-        )
-        .unwrap();
-        let w = c.wrench(1e-6, 0.0, frame.slip(v_rel, w_rel).unwrap());
+        let w = contact_on(&curv).wrench(1e-6, 0.0, frame.slip(v_rel, w_rel).unwrap());
         (frame.on_b(&w, [0.0; 3]).force, 0.1 * w.n, frame.x())
     };
     for d in [1.0, 1e-2, 1e-4] {

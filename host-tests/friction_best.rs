@@ -7,7 +7,7 @@
 
 #[path = "best_switch/mod.rs"]
 mod best_switch;
-use best_switch::switch_jump;
+use best_switch::{switch_jump, thin_grid, worst};
 
 use contensou::Real;
 use contensou::elliptic::Parameter;
@@ -117,26 +117,43 @@ fn max_error<T: Real>(build: impl Fn(&Constants<T>) -> Law<T>) -> Errors {
     e
 }
 
-fn report(name: &str, e: &Errors) {
+/// Prints `e` as the error of `name` in precision `T`, and returns it.
+fn report<T: Real>(name: &str, e: Errors) -> Errors {
     println!(
-        "{name}: force {:.2e} fN, torque {:.2e} fNa, worst at (e2, psi, u) = {:?}",
-        e.force, e.torque, e.at
+        "{name} {}: force {:.2e} fN, torque {:.2e} fNa, worst at (e2, psi, u) = {:?}",
+        T::NAME,
+        e.force,
+        e.torque,
+        e.at
     );
+    e
+}
+
+/// `BestContact`'s error in precision `T` (reported).
+fn per_contact<T: Real>() -> Errors {
+    report::<T>(
+        "BestContact",
+        max_error::<T>(|k| {
+            let b = BestContact::new(k);
+            Box::new(move |s| b.traction(s).0)
+        }),
+    )
+}
+
+/// The per-call law `L`'s error in precision `T` (reported as `name`).
+fn per_call<L: FrictionLaw + 'static, T: Real>(name: &str) -> Errors {
+    report::<T>(
+        name,
+        max_error::<T>(|k| {
+            let k = *k;
+            Box::new(move |s| L::traction(&k, s).0)
+        }),
+    )
 }
 
 #[test]
 fn per_contact_error_against_exact() {
-    let e64 = max_error::<f64>(|k| {
-        let b = BestContact::new(k);
-        Box::new(move |s| b.traction(s).0)
-    });
-    report("BestContact f64", &e64);
-    let e32 = max_error::<f32>(|k| {
-        let b = BestContact::new(k);
-        Box::new(move |s| b.traction(s).0)
-    });
-    report("BestContact f32", &e32);
-    for e in [&e64, &e32] {
+    for e in [&per_contact::<f64>(), &per_contact::<f32>()] {
         assert!(e.force <= EXACT_GRADE.0 && e.torque <= EXACT_GRADE.1);
         assert!(e.force <= BestContact::<f64>::ERROR.0 && e.torque <= BestContact::<f64>::ERROR.1);
     }
@@ -144,30 +161,15 @@ fn per_contact_error_against_exact() {
 
 #[test]
 fn per_call_error_against_exact() {
-    let e64 = max_error::<f64>(|k| {
-        let k = *k;
-        Box::new(move |s| Best::traction(&k, s).0)
-    });
-    report("Best f64", &e64);
-    let e32 = max_error::<f32>(|k| {
-        let k = *k;
-        Box::new(move |s| Best::traction(&k, s).0)
-    });
-    report("Best f32", &e32);
-    for e in [&e64, &e32] {
+    for e in [
+        &per_call::<Best, f64>("Best"),
+        &per_call::<Best, f32>("Best"),
+    ] {
         assert!(e.force <= EXACT_GRADE.0 && e.torque <= EXACT_GRADE.1);
         assert!(e.force <= Best::ERROR.0 && e.torque <= Best::ERROR.1);
     }
-    let e64 = max_error::<f64>(|k| {
-        let k = *k;
-        Box::new(move |s| BestSeries::traction(&k, s).0)
-    });
-    report("BestSeries f64", &e64);
-    let e32 = max_error::<f32>(|k| {
-        let k = *k;
-        Box::new(move |s| BestSeries::traction(&k, s).0)
-    });
-    report("BestSeries f32", &e32);
+    let e64 = per_call::<BestSeries, f64>("BestSeries");
+    let e32 = per_call::<BestSeries, f32>("BestSeries");
     assert!(e32.force <= BOUND && e32.torque <= BOUND);
     assert!(e64.force <= BestSeries::ERROR.0 && e64.torque <= BestSeries::ERROR.1);
 }
@@ -435,20 +437,16 @@ fn below_the_contract() {
         let p = Parameter::from_complement(m1).unwrap();
         let k = Constants::from_parameter(p);
         let b = BestContact::new(&k);
-        let (mut ef, mut et) = (0.0f64, 0.0f64);
-        for i in 0..30 {
-            let psi = 0.001 + i as f64 * 0.0524;
-            for j in 0..80 {
-                let u = 10f64.powf(-3.0 + 6.0 * j as f64 / 80.0);
-                let s = SlipState::from_polar(psi, u).unwrap();
-                let r = exact::traction(p, s.x(), s.y(), s.w());
-                for t in [b.traction(&s).0, Best::traction(&k, &s).0] {
-                    ef = ef.max((t.fx - r.fx).abs().max((t.fy - r.fy).abs()));
-                    et = et.max((t.tz - r.tz).abs());
-                    assert!(t.fx.hypot(t.fy) <= 1.0 + 1e-15);
-                }
+        let mut e = (0.0, 0.0);
+        for (psi, u) in thin_grid() {
+            let s = SlipState::from_polar(psi, u).unwrap();
+            let r = exact::traction(p, s.x(), s.y(), s.w());
+            for t in [b.traction(&s).0, Best::traction(&k, &s).0] {
+                worst(&mut e, &t, &r);
+                assert!(t.fx.hypot(t.fy) <= 1.0 + 1e-15);
             }
         }
+        let (ef, et) = e;
         println!("m1 {m1:e}: force {ef:.2e}, torque {et:.2e}");
         assert!(ef <= force && et <= torque, "m1 {m1}: {ef} {et}");
     }

@@ -10,7 +10,7 @@
 
 #[path = "best_switch/mod.rs"]
 mod best_switch;
-use best_switch::switch_jump;
+use best_switch::{switch_jump, thin_grid, worst};
 #[path = "common/rng.rs"]
 mod rng;
 
@@ -334,23 +334,16 @@ fn thin_patches_to_the_contract_end() {
         let k = Constants::from_parameter(p);
         let k32 = Constants::from_parameter(Parameter::from_complement(m1 as f32).unwrap());
         let p32 = Parameter::from_complement(k32.m1() as f64).unwrap();
-        let (mut ef, mut et) = (0.0f64, 0.0f64);
-        for i in 0..30 {
-            let psi = 0.001 + i as f64 * 0.0524;
-            for j in 0..80 {
-                let u = 10f64.powf(-3.0 + 6.0 * j as f64 / 80.0);
-                let s = SlipState::from_polar(psi, u).unwrap();
-                let r = exact::traction(p, s.x(), s.y(), s.w());
-                let t = Best::traction(&k, &s).0;
-                ef = ef.max((t.fx - r.fx).abs().max((t.fy - r.fy).abs()));
-                et = et.max((t.tz - r.tz).abs());
-                let s32 = SlipState::from_polar(psi as f32, u as f32).unwrap();
-                let r = exact::traction(p32, s32.x() as f64, s32.y() as f64, s32.w() as f64);
-                let t = Best::traction(&k32, &s32).0;
-                ef = ef.max((t.fx as f64 - r.fx).abs().max((t.fy as f64 - r.fy).abs()));
-                et = et.max((t.tz as f64 - r.tz).abs());
-            }
+        let mut e = (0.0, 0.0);
+        for (psi, u) in thin_grid() {
+            let s = SlipState::from_polar(psi, u).unwrap();
+            let r = exact::traction(p, s.x(), s.y(), s.w());
+            worst(&mut e, &Best::traction(&k, &s).0, &r);
+            let s32 = SlipState::from_polar(psi as f32, u as f32).unwrap();
+            let r = exact::traction(p32, s32.x() as f64, s32.y() as f64, s32.w() as f64);
+            worst(&mut e, &Best::traction(&k32, &s32).0, &r);
         }
+        let (ef, et) = e;
         println!("m1 {m1:.3e}: force {ef:.2e}, torque {et:.2e}");
         assert!(
             ef <= EXACT_GRADE.0 && et <= EXACT_GRADE.1,

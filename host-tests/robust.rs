@@ -53,6 +53,7 @@ areas!(
 /// finite where the library used to return NaN (or a wrong error).
 mod rolling_findings {
     use contensou::Real;
+    use contensou::contact::Contact;
     use contensou::contact::Rolling;
     use contensou::dynamic::Output;
     use contensou::friction::rolling::row::RowLaw;
@@ -60,8 +61,10 @@ mod rolling_findings {
         Blend, Elasticity, Fastsim, FastsimGrid, Patch, RollingContact, RollingLaw, RollingSlip,
         RollingVelocity, Table, Wrench,
     };
-    use contensou::friction::{Best, Slip};
-    use contensou::normal::{Hertz, Undamped};
+    use contensou::friction::{Best, Friction, Slip};
+    use contensou::geometry::Curvatures;
+    use contensou::normal::{Hertz, Modulus, Undamped};
+    use contensou::shape::Newton;
 
     /// Every rolling law but the unsaturated reference `linear` (the last of `RowLaw::ALL`).
     fn all<T: Real>(c: &RollingContact<T>, p: &Patch<T>, s: &RollingSlip<T>) -> [Wrench<T>; 5] {
@@ -71,9 +74,11 @@ mod rolling_findings {
     type Fixed = contensou::contact::Contact<f32, Hertz<f32>, Undamped, Best>;
 
     /// `contact::Rolling`'s wrench at (h, ḣ = 0, slip, v) by each rolling law of the wrench
-    /// contract, each with a positive normal force and finite components.
+    /// contract on a `best` contact (f = 0.3, δ = 0, E* = 1e11 Pa, Newton's shape) of
+    /// curvatures (P, Q), each with a positive normal force, finite components and
+    /// |F| ≤ fN (1 + 1e-5).
     fn rolling_wrenches(
-        contact: Fixed,
+        (p, q): (f32, f32),
         el: Elasticity<f32>,
         h: f32,
         slip: Slip<f32>,
@@ -91,8 +96,16 @@ mod rolling_findings {
                 w.n > 0.0 && w.fx.is_finite() && w.fy.is_finite() && w.tz.is_finite(),
                 "{w:?}"
             );
+            assert!(w.fx.hypot(w.fy) <= 0.3 * w.n * (1.0 + 1e-5), "{w:?}");
             w
         }
+        let contact = Contact::hertz::<Newton>(
+            &Curvatures::new(p, q).unwrap(),
+            Modulus::new(1e11).unwrap(),
+            Undamped,
+            Friction::<f32, Best>::with_law(0.3, 0.0).unwrap(),
+        )
+        .unwrap();
         [
             one::<Table>(contact, el, h, slip, v),
             one::<Blend>(contact, el, h, slip, v),
@@ -223,25 +236,11 @@ mod rolling_findings {
     /// κ ≤ T::MAX; it now shares `RollingContact`'s clamp (κ ≤ 1/ε²).
     #[test]
     fn rolling_wrench_at_a_tiny_load() {
-        use contensou::contact::Contact;
-        use contensou::friction::rolling::RollingVelocity;
-        use contensou::friction::{Best, Friction, Slip};
-        use contensou::geometry::Curvatures;
-        use contensou::normal::{Modulus, Undamped};
-        use contensou::shape::Newton;
-        let contact = Contact::hertz::<Newton>(
-            &Curvatures::new(1000.0f32, 1000.0).unwrap(),
-            Modulus::new(1e11).unwrap(),
-            Undamped,
-            Friction::<f32, Best>::with_law(0.3, 0.0).unwrap(),
-        )
-        .unwrap();
         let el = Elasticity::new(3e38f32, 0.3).unwrap();
         let v = RollingVelocity::new(1.0f32, 0.0).unwrap();
         let slip = Slip::new(1e-3f32, 0.0, 1.0).unwrap();
-        for w in rolling_wrenches(contact, el, 1e-30, slip, v) {
-            assert!(w.fx.hypot(w.fy) <= 0.3 * w.n * (1.0 + 1e-5), "{w:?}");
-        }
+        // finite, N > 0, |F| ≤ fN: checked per law by `rolling_wrenches`
+        rolling_wrenches((1000.0, 1000.0), el, 1e-30, slip, v);
     }
 
     /// `contact::Rolling` with a slip whose magnitude overflows f32 (v = (f32::MAX, −1.77e38),
@@ -249,24 +248,10 @@ mod rolling_findings {
     /// `RollingSlip::scaled`. Now the limit direction: full slip, finite.
     #[test]
     fn rolling_wrench_of_an_overflowing_slip() {
-        use contensou::contact::Contact;
-        use contensou::friction::rolling::RollingVelocity;
-        use contensou::friction::{Best, Friction, Slip};
-        use contensou::geometry::Curvatures;
-        use contensou::normal::{Modulus, Undamped};
-        use contensou::shape::Newton;
-        let contact = Contact::hertz::<Newton>(
-            &Curvatures::new(10.0f32, 200.0).unwrap(),
-            Modulus::new(1e11).unwrap(),
-            Undamped,
-            Friction::<f32, Best>::with_law(0.3, 0.0).unwrap(),
-        )
-        .unwrap();
         let el = Elasticity::new(8e10f32, 0.3).unwrap();
         let v = RollingVelocity::new(1.0f32, 1.0).unwrap();
         let slip = Slip::new(f32::MAX, -1.7698068e38, 1.0).unwrap();
-        for w in rolling_wrenches(contact, el, 1e-5, slip, v) {
-            assert!(w.fx.hypot(w.fy) <= 0.3 * w.n * (1.0 + 1e-5), "{w:?}");
+        for w in rolling_wrenches((10.0, 200.0), el, 1e-5, slip, v) {
             // opposing the slip
             assert!(w.fx < 0.0 && w.fy > 0.0, "{w:?}");
         }
@@ -277,11 +262,7 @@ mod rolling_findings {
     /// q/MIN_POSITIVE: F_x = ∞, F_y = NaN. κ is now at least ε².
     #[test]
     fn fastsim_at_a_tiny_load_parameter() {
-        use contensou::contact::{Rolling, VaryingContact};
-        use contensou::friction::rolling::RollingVelocity;
-        use contensou::friction::{Best, Friction, Slip};
-        use contensou::geometry::Curvatures;
-        use contensou::normal::{Modulus, Undamped};
+        use contensou::contact::VaryingContact;
         let c = Curvatures::new(1.1523438e-5f32, 0.14335938).unwrap();
         let contact = VaryingContact::new(
             Modulus::new(1.90625e23f32).unwrap(),

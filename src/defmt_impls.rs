@@ -33,23 +33,20 @@ impl<T: Format> Format for Patch<T> {
 #[cfg_attr(docsrs, doc(cfg(feature = "defmt")))]
 impl<T: Format> Format for Traction<T> {
     fn format(&self, f: Formatter<'_>) {
-        write!(
-            f,
-            "Traction {{ fx: {}, fy: {}, tz: {} }}",
-            self.fx, self.fy, self.tz
-        )
+        forces(f, "Traction", &self.fx, &self.fy, &self.tz)
     }
 }
 
 #[cfg_attr(docsrs, doc(cfg(feature = "defmt")))]
 impl<T: Format, B> Format for Tangential<T, B> {
     fn format(&self, f: Formatter<'_>) {
-        write!(
-            f,
-            "Tangential {{ fx: {}, fy: {}, tz: {} }}",
-            self.fx, self.fy, self.tz
-        )
+        forces(f, "Tangential", &self.fx, &self.fy, &self.tz)
     }
+}
+
+/// `name { fx: …, fy: …, tz: … }`: the traction and the tangential result.
+fn forces<T: Format>(f: Formatter<'_>, name: &str, fx: &T, fy: &T, tz: &T) {
+    write!(f, "{=str} {{ fx: {}, fy: {}, tz: {} }}", name, fx, fy, tz)
 }
 
 #[cfg_attr(docsrs, doc(cfg(feature = "defmt")))]

@@ -458,20 +458,12 @@ impl<T: Real, L> PartialEq for RollingFormed<T, L> {
 }
 
 impl<T: Real, L: RollingLaw> RollingFormed<T, L> {
-    fn new(
-        form: Form,
-        curvatures: &Curvatures<T>,
-        estar: Modulus<T>,
-        damping: HuntCrossley<T>,
-        friction: Friction<T, Best>,
-        elasticity: Elasticity<T>,
-    ) -> Result<Self, Invalid> {
-        Ok(
-            match Formed::new(form, curvatures, estar, damping, friction)? {
-                Formed::Fixed(c) => RollingFormed::Fixed(at("P", Rolling::new(c, elasticity))?),
-                Formed::Varying(c) => RollingFormed::Varying(at("P", Rolling::new(c, elasticity))?),
-            },
-        )
+    /// The `best` contact `formed` rolling with `elasticity`.
+    fn new(formed: Formed<T, Best>, elasticity: Elasticity<T>) -> Result<Self, Invalid> {
+        Ok(match formed {
+            Formed::Fixed(c) => RollingFormed::Fixed(at("P", Rolling::new(c, elasticity))?),
+            Formed::Varying(c) => RollingFormed::Varying(at("P", Rolling::new(c, elasticity))?),
+        })
     }
 
     #[inline]
@@ -565,14 +557,8 @@ impl<T: Real> DynContact<T> {
             ($variant:ident) => {{
                 let friction = friction_of::<T, Best>(f, delta)?;
                 let elasticity = rolling.elasticity(estar.get())?;
-                ByLaw::$variant(RollingFormed::new(
-                    form,
-                    &curvatures,
-                    estar,
-                    damping,
-                    friction,
-                    elasticity,
-                )?)
+                let formed = Formed::new(form, &curvatures, estar, damping, friction)?;
+                ByLaw::$variant(RollingFormed::new(formed, elasticity)?)
             }};
         }
         let contact = match law {

@@ -73,6 +73,33 @@ pub enum Error {
 }
 
 impl Error {
+    /// Every variant once, in declaration order (`NonFinite` with the placeholder name
+    /// `"input"`): for the shells that give each its own code and the tests that walk them all.
+    /// A new variant goes here too.
+    pub const ALL: [Error; 21] = [
+        Error::NonFinite("input"),
+        Error::EllipticParameterOutOfDomain,
+        Error::CurvatureNotPositive,
+        Error::CurvaturesNotOrdered,
+        Error::CurvatureRatioOutOfRange,
+        Error::ModulusNotPositive,
+        Error::PoissonRatioOutOfRange,
+        Error::FrictionCoefficientNegative,
+        Error::LengthNotPositive,
+        Error::RegularizationSpeedNegative,
+        Error::DampingNegative,
+        Error::ShearModulusNotPositive,
+        Error::RollingPoissonRatioOutOfRange,
+        Error::RollingAspectOutOfRange,
+        Error::ColumnLengthMismatch,
+        Error::StepNotPositive,
+        Error::InverseMassNotSymmetric,
+        Error::InverseMassNotPositiveSemidefinite,
+        Error::MassNotPositive,
+        Error::InertiaNotPositiveDefinite,
+        Error::BodyIndexInvalid,
+    ];
+
     /// A short description of the error (for `NonFinite`, without the input's name).
     pub const fn as_str(&self) -> &'static str {
         match self {

@@ -11,7 +11,7 @@ dps 40,
      formula) and G at height zG;
   3. the lowest point: minimise the world height over the lower half of the ellipsoid,
      parametrised as a graph (a1 p, a2 r, -a3 sqrt(1 - p^2 - r^2)) in curvature coordinates,
-     by Newton on the numerical gradient (mp.findroot of mp.diff);
+     by Newton on the numerical gradient (mp.findroot of mp.diff, over the plane mapped onto the disk);
   4. the curvatures: the lower sheet as a height function f(x, y) over the world floor (for
      each (x, y) the surface point found by mp.findroot), its Hessian by mp.diff at the lowest
      point; P <= Q the eigenvalues of Hessian/2, the major axis the eigenvector of P.
@@ -24,11 +24,11 @@ is a line: 2phi is what is defined).
 
 Run:  python3 tools/gen_rattleback_geometry.py
 """
-import os
 import mpmath as mp
 
+from data_csv import write_rows
+
 mp.mp.dps = 40
-HERE = os.path.dirname(os.path.abspath(__file__))
 
 A1, A2, A3 = mp.mpf("0.2"), mp.mpf("0.03"), mp.mpf("0.02")
 EPS = mp.mpf("0.01")
@@ -60,8 +60,14 @@ def world_point(R, zg, p, r):
 def geometry(q, zg):
     R = rot(q)
     height = lambda p, r: world_point(R, zg, p, r)[2]
-    grad = lambda p, r: (mp.diff(height, (p, r), (1, 0)), mp.diff(height, (p, r), (0, 1)))
-    p0, r0 = mp.findroot(grad, (mp.mpf(0), mp.mpf(0)))
+    # The lowest point, searched over the whole plane (u, v) mapped onto the open unit disk
+    # (p, r) = (u, v)/√(1 + u² + v²), on which the lower sheet is defined: a stationary point in
+    # (u, v) is one in (p, r), and a Newton step can no longer leave the disk (mpmath ≥ 1.4's
+    # undamped steps did on the large tilts).
+    disk = lambda u, v: (u / mp.sqrt(1 + u * u + v * v), v / mp.sqrt(1 + u * u + v * v))
+    lifted = lambda u, v: height(*disk(u, v))
+    grad = lambda u, v: (mp.diff(lifted, (u, v), (1, 0)), mp.diff(lifted, (u, v), (0, 1)))
+    p0, r0 = disk(*mp.findroot(grad, (mp.mpf(0), mp.mpf(0))))
     x0, y0, z0 = world_point(R, zg, p0, r0)
 
     def f(x, y):
@@ -116,10 +122,7 @@ def main():
         q = quat(seq)
         vals = geometry(q, mp.mpf(zg))
         rows.append(",".join(mp.nstr(v, 20) for v in list(q) + [mp.mpf(zg)] + list(vals)))
-    path = os.path.join(HERE, "data", "rattleback_geometry.csv")
-    with open(path, "w") as fh:
-        fh.write("\n".join(rows) + "\n")
-    print(f"wrote {path} ({len(rows) - 1} cases)")
+    print(f"wrote {write_rows('rattleback_geometry.csv', rows)} ({len(rows) - 1} cases)")
 
 
 if __name__ == "__main__":

@@ -33,11 +33,11 @@ energy_drift_rel (RK4 dt = 1 ms; 0.5 ms moves the reversal times by < 1 ms).
 Run:  python3 tools/rattleback_noslip.py      (a few minutes)
 """
 import math
-import os
 
 import numpy as np
 
-HERE = os.path.dirname(os.path.abspath(__file__))
+from data_csv import write_rows
+
 AX = np.array([0.2, 0.03, 0.02])
 EPS, M, G = 0.01, 1.0, 9.81
 IA, IB, IC, ID = 2e-4, 1.6e-3, 1.7e-3, -2e-5
@@ -167,10 +167,7 @@ def main():
         gh = gh_formula(w0, tilt, sr, sp)
         print(f"w0 = {w0:+.1f} rad/s, tilt {tilt_deg} deg: no-slip reversal {t} s, formula {gh:.3f} s, energy drift {drift:.1e}")
         rows.append(f"{w0},{tilt_deg},{'' if t is None else f'{t:.3f}'},{gh:.3f},{drift:.1e}")
-    path = os.path.join(HERE, "data", "rattleback_noslip.csv")
-    with open(path, "w") as fh:
-        fh.write("\n".join(rows) + "\n")
-    print(f"wrote {path}")
+    print(f"wrote {write_rows('rattleback_noslip.csv', rows)}")
 
 
 if __name__ == "__main__":

@@ -200,48 +200,59 @@ fn rolling_generate() {
     }
 }
 
+/// A contact block of the rolling rows: `[E*, c_d, f, δ, G, ν]`, δ one of 0, a log-uniform
+/// draw and `more_deltas`.
+fn rolling_block(rng: &mut Rng, more_deltas: &[f64]) -> [f64; 6] {
+    let estar = rng.log(1e8, 1e12);
+    let cd = pick!(rng, 0.0, rng.log(1e-3, 10.0));
+    let f = pick!(rng, 0.0, rng.log(1e-2, 1.0), rng.log(1e-2, 1.0));
+    let deltas = [&[0.0, rng.log(1e-6, 1e-2)], more_deltas].concat();
+    let delta = rng.pick(&deltas);
+    let g = estar * pick!(rng, 0.7, rng.log(0.1, 1.0));
+    let nu = pick!(rng, 0.0, 0.5, rng.unit() * 0.5);
+    [estar, cd, f, delta, g, nu]
+}
+
+/// A state of a rolling block: `[P, Q, h, ḣ, v_x, v_y, ω, v_rx, v_ry]`; h and ω drawn
+/// log-uniformly below `h_top` and `omega_top` (two ranges each), the rolling velocity from 0
+/// to well past the slip.
+fn rolling_state(rng: &mut Rng, h_top: [f64; 2], omega_top: [f64; 2]) -> [f64; 9] {
+    let q = rng.log(1e-1, 1e4);
+    let ratio = pick!(rng, 1.0, rng.log(2e-4, 1.0), rng.log(0.05, 1.0));
+    let h = pick!(
+        rng,
+        -1e-6,
+        rng.log(1e-12, h_top[0]),
+        rng.log(1e-9, h_top[1])
+    );
+    let hdot = pick!(rng, 0.0, rng.signed(1e-6, 1.0));
+    let vx = pick!(rng, 0.0, rng.signed(1e-7, 1.0), rng.signed(1e-5, 1e-1));
+    let vy = pick!(rng, 0.0, rng.signed(1e-7, 1.0), rng.signed(1e-5, 1e-1));
+    let omega = pick!(
+        rng,
+        0.0,
+        rng.signed(1e-3, omega_top[0]),
+        rng.signed(1e-1, omega_top[1])
+    );
+    let vrx = pick!(rng, 0.0, rng.signed(1e-4, 30.0), rng.signed(1e-2, 10.0));
+    let vry = pick!(rng, 0.0, 0.0, rng.signed(1e-4, 30.0));
+    [ratio * q, q, h, hdot, vx, vy, omega, vrx, vry]
+}
+
 /// Rows of the wrench contract with the optional rolling columns `G,nu,vrx,vry`: contact
 /// blocks (a spec, G, ν) then steps with a rolling velocity from 0 to well past the slip.
 fn wrench_rolling_generate() {
     let mut rng = Rng(21);
     println!("{},G,nu,vrx,vry", INPUTS.join(","));
     for _ in 0..200 {
-        let estar = rng.log(1e8, 1e12);
-        let cd = pick!(rng, 0.0, rng.log(1e-3, 10.0));
-        let f = pick!(rng, 0.0, rng.log(1e-2, 1.0), rng.log(1e-2, 1.0));
-        let delta = pick!(rng, 0.0, rng.log(1e-6, 1e-2));
-        let g = estar * pick!(rng, 0.7, rng.log(0.1, 1.0));
-        let nu = pick!(rng, 0.0, 0.5, rng.unit() * 0.5);
+        let [estar, cd, f, delta, g, nu] = rolling_block(&mut rng, &[]);
         for _ in 0..8 {
-            let q = rng.log(1e-1, 1e4);
-            let ratio = pick!(rng, 1.0, rng.log(2e-4, 1.0), rng.log(0.05, 1.0));
-            let h = pick!(rng, -1e-6, rng.log(1e-12, 1e-3), rng.log(1e-9, 1e-4));
-            let hdot = pick!(rng, 0.0, rng.signed(1e-6, 1.0));
-            let vx = pick!(rng, 0.0, rng.signed(1e-7, 1.0), rng.signed(1e-5, 1e-1));
-            let vy = pick!(rng, 0.0, rng.signed(1e-7, 1.0), rng.signed(1e-5, 1e-1));
-            let omega = pick!(rng, 0.0, rng.signed(1e-3, 1e4), rng.signed(1e-1, 1e3));
-            let vrx = pick!(rng, 0.0, rng.signed(1e-4, 30.0), rng.signed(1e-2, 10.0));
-            let vry = pick!(rng, 0.0, 0.0, rng.signed(1e-4, 30.0));
-            println!(
-                "{}",
-                row(&[
-                    ratio * q,
-                    q,
-                    estar,
-                    cd,
-                    f,
-                    delta,
-                    h,
-                    hdot,
-                    vx,
-                    vy,
-                    omega,
-                    g,
-                    nu,
-                    vrx,
-                    vry
-                ])
-            );
+            let [p, q, h, hdot, vx, vy, omega, vrx, vry] =
+                rolling_state(&mut rng, [1e-3, 1e-4], [1e4, 1e3]);
+            let v = [
+                p, q, estar, cd, f, delta, h, hdot, vx, vy, omega, g, nu, vrx, vry,
+            ];
+            println!("{}", row(&v));
         }
     }
 }
@@ -302,22 +313,10 @@ fn step_generate() {
         FREE_INPUTS.join(",")
     );
     for _ in 0..60 {
-        let estar = rng.log(1e8, 1e12);
-        let cd = pick!(rng, 0.0, rng.log(1e-3, 10.0));
-        let f = pick!(rng, 0.0, rng.log(1e-2, 1.0), rng.log(1e-2, 1.0));
-        let delta = pick!(rng, 0.0, rng.log(1e-6, 1e-2), 1e-4);
-        let g = estar * pick!(rng, 0.7, rng.log(0.1, 1.0));
-        let nu = pick!(rng, 0.0, 0.5, rng.unit() * 0.5);
+        let [estar, cd, f, delta, g, nu] = rolling_block(&mut rng, &[1e-4]);
         for _ in 0..5 {
-            let q = rng.log(1e-1, 1e4);
-            let ratio = pick!(rng, 1.0, rng.log(2e-4, 1.0), rng.log(0.05, 1.0));
-            let h = pick!(rng, -1e-6, rng.log(1e-12, 1e-4), rng.log(1e-9, 1e-5));
-            let hdot = pick!(rng, 0.0, rng.signed(1e-6, 1.0));
-            let vx = pick!(rng, 0.0, rng.signed(1e-7, 1.0), rng.signed(1e-5, 1e-1));
-            let vy = pick!(rng, 0.0, rng.signed(1e-7, 1.0), rng.signed(1e-5, 1e-1));
-            let omega = pick!(rng, 0.0, rng.signed(1e-3, 1e3), rng.signed(1e-1, 1e2));
-            let vrx = pick!(rng, 0.0, rng.signed(1e-4, 30.0), rng.signed(1e-2, 10.0));
-            let vry = pick!(rng, 0.0, 0.0, rng.signed(1e-4, 30.0));
+            let [p, q, h, hdot, vx, vy, omega, vrx, vry] =
+                rolling_state(&mut rng, [1e-4, 1e-5], [1e3, 1e2]);
             let dt = pick!(rng, 1e-3, 2e-3, rng.log(1e-5, 1e-2));
             let mut w = body_w(&mut rng);
             if rng.next() & 3 == 0 {
@@ -331,20 +330,7 @@ fn step_generate() {
             let ux = vx + pick!(rng, 0.0, rng.signed(1e-5, 1.0));
             let uy = vy + pick!(rng, 0.0, rng.signed(1e-5, 1.0));
             let uw = omega + pick!(rng, 0.0, rng.signed(1e-3, 10.0));
-            let mut v = vec![
-                ratio * q,
-                q,
-                estar,
-                cd,
-                f,
-                delta,
-                h,
-                hdot,
-                vx,
-                vy,
-                omega,
-                dt,
-            ];
+            let mut v = vec![p, q, estar, cd, f, delta, h, hdot, vx, vy, omega, dt];
             v.extend_from_slice(&w);
             v.extend_from_slice(&[g, nu, vrx, vry, un, ux, uy, uw]);
             println!("{}", row(&v));

@@ -10,6 +10,13 @@
 #include <stdlib.h>
 #include <string.h>
 
+/* A usage error of `program` (taking `options`, reading stdin, writing stdout): `why`, then the
+ * usage line, on stderr; the exit code 2. */
+static int usage_error(const char *program, const char *options, const char *why) {
+    fprintf(stderr, "%s: %s\nusage: %s %s < in.csv > out.csv\n", program, why, program, options);
+    return 2;
+}
+
 /* Strips leading and trailing blanks in place. */
 static char *trim(char *s) {
     char *end;
@@ -122,6 +129,17 @@ static inline const char *contract_options(int argc, char **argv, contensou_law 
     }
     return NULL;
 }
+
+/* The contract's columns in C type T (float or double; the cast is exact for double): the
+ * contact spec from v[0..5], the step from v[6..10], the rolling velocity from opt[2], opt[3]. */
+#define CONTRACT_COLUMNS(T, spec, step, roll, v, opt)                                              \
+    do {                                                                                           \
+        (spec).p = (T)(v)[0]; (spec).q = (T)(v)[1]; (spec).estar = (T)(v)[2];                      \
+        (spec).cd = (T)(v)[3]; (spec).f = (T)(v)[4]; (spec).delta = (T)(v)[5];                     \
+        (step).h = (T)(v)[6]; (step).hdot = (T)(v)[7]; (step).vx = (T)(v)[8];                      \
+        (step).vy = (T)(v)[9]; (step).omega = (T)(v)[10];                                          \
+        (roll).vrx = (T)(opt)[2]; (roll).vry = (T)(opt)[3];                                        \
+    } while (0)
 #endif
 
 /* A header made of the `required` columns then any of the `count` optional `names` (each at

@@ -25,11 +25,7 @@
 static const char *const INPUT_NAMES = "a,b,G,nu,f,N,V,xi,eta,phi";
 static const char *const OUTPUT_NAMES = "Fx,Fy,Mz";
 
-static int usage(const char *why) {
-    fprintf(stderr, "rolling_eval: %s\nusage: rolling_eval [--law NAME] [--precision f32|f64] "
-                    "< in.csv > out.csv\n", why);
-    return 2;
-}
+static int usage(const char *why) { return usage_error("rolling_eval", "[--law NAME] [--precision f32|f64]", why); }
 
 static int fail_row(long row, contensou_rolling_column column, char *fields[COLUMNS], contensou_status s) {
     const char *value = column < COLUMNS ? fields[column] : "";

@@ -29,11 +29,29 @@ static const char *const INPUT_NAMES =
     "P,Q,estar,cd,f,delta,h,hdot,vx,vy,omega,dt,w_nn,w_nx,w_ny,w_nw,w_xx,w_xy,w_xw,w_yy,w_yw,w_ww";
 static const char *const OPTIONAL_NAMES[OPTIONAL] = {"G", "nu", "vrx", "vry", "un_free", "ux_free", "uy_free", "uw_free"};
 
-static int usage(const char *why) {
-    fprintf(stderr, "step_eval: %s\nusage: step_eval [--law NAME] [--form fixed|varying] "
-                    "[--precision f32|f64] < in.csv > out.csv\n", why);
-    return 2;
-}
+/* One row in precision S (f32, f64; T its C type) on the storage c: builds the contact, then
+ * the step-aware wrench into out. */
+#define STEP_ROW(S, T, c)                                                                          \
+    do {                                                                                           \
+        contensou_spec_##S spec;                                                                   \
+        contensou_step_##S step;                                                                   \
+        contensou_rolling_step_##S roll;                                                           \
+        contensou_inverse_mass_##S w;                                                              \
+        contensou_step_velocity_##S u;                                                             \
+        contensou_step_wrench_##S o = {0, 0, 0, 0};                                                \
+        T g = (T)opt[0], nu = (T)opt[1];                                                           \
+        CONTRACT_COLUMNS(T, spec, step, roll, v, opt);                                             \
+        w.nn = (T)v[12]; w.nx = (T)v[13]; w.ny = (T)v[14]; w.nw = (T)v[15]; w.xx = (T)v[16];       \
+        w.xy = (T)v[17]; w.xw = (T)v[18]; w.yy = (T)v[19]; w.yw = (T)v[20]; w.ww = (T)v[21];       \
+        u.vn = (T)opt[4]; u.vx = (T)opt[5]; u.vy = (T)opt[6]; u.omega = (T)opt[7];                 \
+        s = contensou_contact_new_rolling_##S(&c, &spec, field_of[0] >= 0 ? &g : NULL,             \
+                                              field_of[1] >= 0 ? &nu : NULL, law, form, &column); \
+        if (s == CONTENSOU_STATUS_OK)                                                              \
+            s = contensou_contact_step_##S(&c, &step, &roll, (T)v[11], &w, has_free ? &u : NULL, &o, &column); \
+        out[0] = o.n; out[1] = o.fx; out[2] = o.fy; out[3] = o.tz;                                 \
+    } while (0)
+
+static int usage(const char *why) { return usage_error("step_eval", "[--law NAME] [--form fixed|varying] [--precision f32|f64]", why); }
 
 /* Fields are named by number in a parse error. */
 static const char *field_number(int k, const void *ctx) {
@@ -80,47 +98,8 @@ int main(int argc, char **argv) {
         if (field_of[4] < 0) opt[4] = -v[7];
         for (k = 5; k < OPTIONAL; k++)
             if (field_of[k] < 0) opt[k] = v[8 + (k - 5)];
-        if (f32) {
-            contensou_spec_f32 spec;
-            contensou_step_f32 step;
-            contensou_rolling_step_f32 roll;
-            contensou_inverse_mass_f32 w;
-            contensou_step_velocity_f32 u;
-            contensou_step_wrench_f32 o = {0, 0, 0, 0};
-            float g = (float)opt[0], nu = (float)opt[1];
-            spec.p = (float)v[0]; spec.q = (float)v[1]; spec.estar = (float)v[2];
-            spec.cd = (float)v[3]; spec.f = (float)v[4]; spec.delta = (float)v[5];
-            step.h = (float)v[6]; step.hdot = (float)v[7]; step.vx = (float)v[8];
-            step.vy = (float)v[9]; step.omega = (float)v[10];
-            roll.vrx = (float)opt[2]; roll.vry = (float)opt[3];
-            w.nn = (float)v[12]; w.nx = (float)v[13]; w.ny = (float)v[14]; w.nw = (float)v[15]; w.xx = (float)v[16];
-            w.xy = (float)v[17]; w.xw = (float)v[18]; w.yy = (float)v[19]; w.yw = (float)v[20]; w.ww = (float)v[21];
-            u.vn = (float)opt[4];
-            u.vx = (float)opt[5]; u.vy = (float)opt[6]; u.omega = (float)opt[7];
-            s = contensou_contact_new_rolling_f32(&c32, &spec, field_of[0] >= 0 ? &g : NULL, field_of[1] >= 0 ? &nu : NULL,
-                                                  law, form, &column);
-            if (s == CONTENSOU_STATUS_OK)
-                s = contensou_contact_step_f32(&c32, &step, &roll, (float)v[11], &w, has_free ? &u : NULL, &o, &column);
-            out[0] = o.n; out[1] = o.fx; out[2] = o.fy; out[3] = o.tz;
-        } else {
-            contensou_spec_f64 spec;
-            contensou_step_f64 step;
-            contensou_rolling_step_f64 roll;
-            contensou_inverse_mass_f64 w;
-            contensou_step_velocity_f64 u;
-            contensou_step_wrench_f64 o = {0, 0, 0, 0};
-            spec.p = v[0]; spec.q = v[1]; spec.estar = v[2]; spec.cd = v[3]; spec.f = v[4]; spec.delta = v[5];
-            step.h = v[6]; step.hdot = v[7]; step.vx = v[8]; step.vy = v[9]; step.omega = v[10];
-            roll.vrx = opt[2]; roll.vry = opt[3];
-            w.nn = v[12]; w.nx = v[13]; w.ny = v[14]; w.nw = v[15]; w.xx = v[16];
-            w.xy = v[17]; w.xw = v[18]; w.yy = v[19]; w.yw = v[20]; w.ww = v[21];
-            u.vn = opt[4]; u.vx = opt[5]; u.vy = opt[6]; u.omega = opt[7];
-            s = contensou_contact_new_rolling_f64(&c64, &spec, field_of[0] >= 0 ? &opt[0] : NULL,
-                                                  field_of[1] >= 0 ? &opt[1] : NULL, law, form, &column);
-            if (s == CONTENSOU_STATUS_OK)
-                s = contensou_contact_step_f64(&c64, &step, &roll, v[11], &w, has_free ? &u : NULL, &o, &column);
-            out[0] = o.n; out[1] = o.fx; out[2] = o.fy; out[3] = o.tz;
-        }
+        if (f32) STEP_ROW(f32, float, c32);
+        else STEP_ROW(f64, double, c64);
         if (s != CONTENSOU_STATUS_OK) {
             bad_field = column < 11 ? (int)column
                       : column >= CONTENSOU_COLUMN_G && column <= CONTENSOU_COLUMN_VRY ? field_of[column - CONTENSOU_COLUMN_G]

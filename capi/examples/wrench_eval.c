@@ -47,11 +47,37 @@ static const char *const JACOBIAN_NAMES =
 /* The optional columns, in contensou_column order from CONTENSOU_COLUMN_G. */
 static const char *const OPTIONAL_NAMES[OPTIONAL] = {"G", "nu", "vrx", "vry"};
 
-static int usage(const char *why) {
-    fprintf(stderr, "wrench_eval: %s\nusage: wrench_eval [jacobian] [--law NAME] [--form fixed|varying] "
-                    "[--precision f32|f64] < in.csv > out.csv\n", why);
-    return 2;
-}
+/* One row in precision S (f32, f64; T its C type) on the storage c: builds the contact (or, in
+ * the varying form, updates its curvatures), then its wrench or Jacobian into out. */
+#define WRENCH_ROW(S, T, c)                                                                        \
+    do {                                                                                           \
+        contensou_spec_##S spec;                                                                   \
+        contensou_step_##S step;                                                                   \
+        contensou_rolling_step_##S roll;                                                           \
+        contensou_wrench_##S w = {0, 0, 0, 0, 0, 0, 0};                                            \
+        T g = (T)opt[0], nu = (T)opt[1];                                                           \
+        CONTRACT_COLUMNS(T, spec, step, roll, v, opt);                                             \
+        if (same_but_curvatures) s = contensou_contact_set_curvatures_##S(&c, spec.p, spec.q, &column); \
+        else if (has_contact_option)                                                               \
+            s = contensou_contact_new_rolling_##S(&c, &spec, field_of[0] >= 0 ? &g : NULL,         \
+                                                  field_of[1] >= 0 ? &nu : NULL, law, form, &column); \
+        else s = contensou_contact_new_##S(&c, &spec, law, form, &column);                        \
+        if (s == CONTENSOU_STATUS_OK && jacobian) {                                                \
+            contensou_jacobian_##S j;                                                              \
+            memset(&j, 0, sizeof j);                                                               \
+            s = has_step_option ? contensou_contact_jacobian_rolling_##S(&c, &step, &roll, &j, &column) \
+                                : contensou_contact_jacobian_##S(&c, &step, &j, &column);         \
+            JACOBIAN_OUT(out, j);                                                                  \
+        } else {                                                                                   \
+            if (s == CONTENSOU_STATUS_OK)                                                          \
+                s = has_step_option ? contensou_contact_wrench_rolling_##S(&c, &step, &roll, &w, &column) \
+                                    : contensou_contact_wrench_##S(&c, &step, &w, &column);       \
+            out[0] = w.n; out[1] = w.fx; out[2] = w.fy; out[3] = w.tz;                             \
+            out[4] = w.a; out[5] = w.b; out[6] = w.e2;                                             \
+        }                                                                                          \
+    } while (0)
+
+static int usage(const char *why) { return usage_error("wrench_eval", "[jacobian] [--law NAME] [--form fixed|varying] [--precision f32|f64]", why); }
 
 /* The name of field k: a contract column, or the optional column `field_of` puts there. */
 static const char *field_name(int k, const void *field_of) {
@@ -116,60 +142,8 @@ int main(int argc, char **argv) {
             if (field_of[k] >= 0)
                 same_but_curvatures = same_but_curvatures && memcmp(&v[field_of[k]], &prev[field_of[k]], sizeof v[0]) == 0;
         have_prev = 0;
-        if (f32) {
-            contensou_spec_f32 spec;
-            contensou_step_f32 step;
-            contensou_rolling_step_f32 roll;
-            contensou_wrench_f32 w = {0, 0, 0, 0, 0, 0, 0};
-            float g = (float)opt[0], nu = (float)opt[1];
-            spec.p = (float)v[0]; spec.q = (float)v[1]; spec.estar = (float)v[2];
-            spec.cd = (float)v[3]; spec.f = (float)v[4]; spec.delta = (float)v[5];
-            step.h = (float)v[6]; step.hdot = (float)v[7]; step.vx = (float)v[8];
-            step.vy = (float)v[9]; step.omega = (float)v[10];
-            roll.vrx = (float)opt[2]; roll.vry = (float)opt[3];
-            if (same_but_curvatures) s = contensou_contact_set_curvatures_f32(&c32, spec.p, spec.q, &column);
-            else if (has_contact_option)
-                s = contensou_contact_new_rolling_f32(&c32, &spec, field_of[0] >= 0 ? &g : NULL, field_of[1] >= 0 ? &nu : NULL,
-                                                      law, form, &column);
-            else s = contensou_contact_new_f32(&c32, &spec, law, form, &column);
-            if (s == CONTENSOU_STATUS_OK && jacobian) {
-                contensou_jacobian_f32 j;
-                memset(&j, 0, sizeof j);
-                s = has_step_option ? contensou_contact_jacobian_rolling_f32(&c32, &step, &roll, &j, &column)
-                                    : contensou_contact_jacobian_f32(&c32, &step, &j, &column);
-                JACOBIAN_OUT(out, j);
-            } else {
-                if (s == CONTENSOU_STATUS_OK)
-                    s = has_step_option ? contensou_contact_wrench_rolling_f32(&c32, &step, &roll, &w, &column)
-                                        : contensou_contact_wrench_f32(&c32, &step, &w, &column);
-                out[0] = w.n; out[1] = w.fx; out[2] = w.fy; out[3] = w.tz; out[4] = w.a; out[5] = w.b; out[6] = w.e2;
-            }
-        } else {
-            contensou_spec_f64 spec;
-            contensou_step_f64 step;
-            contensou_rolling_step_f64 roll;
-            contensou_wrench_f64 w = {0, 0, 0, 0, 0, 0, 0};
-            spec.p = v[0]; spec.q = v[1]; spec.estar = v[2]; spec.cd = v[3]; spec.f = v[4]; spec.delta = v[5];
-            step.h = v[6]; step.hdot = v[7]; step.vx = v[8]; step.vy = v[9]; step.omega = v[10];
-            roll.vrx = opt[2]; roll.vry = opt[3];
-            if (same_but_curvatures) s = contensou_contact_set_curvatures_f64(&c64, spec.p, spec.q, &column);
-            else if (has_contact_option)
-                s = contensou_contact_new_rolling_f64(&c64, &spec, field_of[0] >= 0 ? &opt[0] : NULL,
-                                                      field_of[1] >= 0 ? &opt[1] : NULL, law, form, &column);
-            else s = contensou_contact_new_f64(&c64, &spec, law, form, &column);
-            if (s == CONTENSOU_STATUS_OK && jacobian) {
-                contensou_jacobian_f64 j;
-                memset(&j, 0, sizeof j);
-                s = has_step_option ? contensou_contact_jacobian_rolling_f64(&c64, &step, &roll, &j, &column)
-                                    : contensou_contact_jacobian_f64(&c64, &step, &j, &column);
-                JACOBIAN_OUT(out, j);
-            } else {
-                if (s == CONTENSOU_STATUS_OK)
-                    s = has_step_option ? contensou_contact_wrench_rolling_f64(&c64, &step, &roll, &w, &column)
-                                        : contensou_contact_wrench_f64(&c64, &step, &w, &column);
-                out[0] = w.n; out[1] = w.fx; out[2] = w.fy; out[3] = w.tz; out[4] = w.a; out[5] = w.b; out[6] = w.e2;
-            }
-        }
+        if (f32) WRENCH_ROW(f32, float, c32);
+        else WRENCH_ROW(f64, double, c64);
         if (s != CONTENSOU_STATUS_OK) {
             bad_field = column < COLUMNS ? (int)column
                       : column >= CONTENSOU_COLUMN_G && column <= CONTENSOU_COLUMN_VRY ? field_of[column - CONTENSOU_COLUMN_G]

@@ -48,6 +48,29 @@ macro_rules! twins {
     };
 }
 
+/// A geometry helper, `Curvatures::$new` of the `float` (`double`) arguments, as twins writing
+/// `*out`.
+macro_rules! curvatures_twins {
+    (
+        $(#[doc = $doc:literal])*
+        fn $f32:ident, $f64:ident = $new:ident($($arg:ident),*)
+    ) => {
+        twins! {
+            $(#[doc = $doc])*
+            ///
+            /// # Safety
+            /// `out` is NULL or writable.
+            fn $f32, $f64(
+                $($arg: f32 | f64,)*
+                out: *mut contensou_curvatures<f32> | *mut contensou_curvatures<f64>,
+            ) -> contensou_status {
+                unsafe { shell::curvatures(out, || Ok(Curvatures::$new($($arg),*)?)) }
+            }
+            twin safety: " `out` is NULL or writable."
+        }
+    };
+}
+
 mod jacobian;
 mod rolling;
 mod step;
@@ -99,48 +122,19 @@ pub unsafe extern "C" fn contensou_form_from_name(
     unsafe { shell::from_name(name, form, Form::from_name, shell::form_code) }
 }
 
-twins! {
+curvatures_twins! {
     /// Curvatures from z = p x'² + q y'² in any order: P = min, Q = max, `major_angle` 0 or π/2.
-    ///
-    /// # Safety
-    /// `out` is NULL or writable.
-    fn contensou_curvatures_new_f32, contensou_curvatures_new_f64(
-        p: f32 | f64,
-        q: f32 | f64,
-        out: *mut contensou_curvatures<f32> | *mut contensou_curvatures<f64>,
-    ) -> contensou_status {
-        unsafe { shell::curvatures(out, || Ok(Curvatures::new(p, q)?)) }
-    }
-    twin safety: " `out` is NULL or writable."
+    fn contensou_curvatures_new_f32, contensou_curvatures_new_f64 = new(p, q)
 }
 
-twins! {
+curvatures_twins! {
     /// Sphere of radius `r` (m) on a plane: P = Q = 1/(2r).
-    ///
-    /// # Safety
-    /// `out` is NULL or writable.
-    fn contensou_curvatures_sphere_plane_f32, contensou_curvatures_sphere_plane_f64(
-        r: f32 | f64,
-        out: *mut contensou_curvatures<f32> | *mut contensou_curvatures<f64>,
-    ) -> contensou_status {
-        unsafe { shell::curvatures(out, || Ok(Curvatures::sphere_plane(r)?)) }
-    }
-    twin safety: " `out` is NULL or writable."
+    fn contensou_curvatures_sphere_plane_f32, contensou_curvatures_sphere_plane_f64 = sphere_plane(r)
 }
 
-twins! {
+curvatures_twins! {
     /// Two spheres of signed radii (m; negative = concave cup): P = Q = ½(1/r_a + 1/r_b).
-    ///
-    /// # Safety
-    /// `out` is NULL or writable.
-    fn contensou_curvatures_sphere_sphere_f32, contensou_curvatures_sphere_sphere_f64(
-        r_a: f32 | f64,
-        r_b: f32 | f64,
-        out: *mut contensou_curvatures<f32> | *mut contensou_curvatures<f64>,
-    ) -> contensou_status {
-        unsafe { shell::curvatures(out, || Ok(Curvatures::sphere_sphere(r_a, r_b)?)) }
-    }
-    twin safety: " `out` is NULL or writable."
+    fn contensou_curvatures_sphere_sphere_f32, contensou_curvatures_sphere_sphere_f64 = sphere_sphere(r_a, r_b)
 }
 
 twins! {

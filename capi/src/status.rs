@@ -7,7 +7,7 @@ use core::ffi::{c_char, CStr};
 
 use contensou::Error;
 
-use crate::cstr::c_str;
+use crate::cstr::{c_str, c_strs};
 
 /// What a call did: [`contensou_status::Ok`] or why it refused (nothing was written then,
 /// except the `column` out-parameter).
@@ -94,69 +94,67 @@ pub enum contensou_status {
 
 impl From<Error> for contensou_status {
     fn from(e: Error) -> Self {
-        match e {
-            Error::NonFinite(_) => contensou_status::NonFinite,
-            Error::EllipticParameterOutOfDomain => contensou_status::EllipticParameterOutOfDomain,
-            Error::CurvatureNotPositive => contensou_status::CurvatureNotPositive,
-            Error::CurvaturesNotOrdered => contensou_status::CurvaturesNotOrdered,
-            Error::CurvatureRatioOutOfRange => contensou_status::CurvatureRatioOutOfRange,
-            Error::ModulusNotPositive => contensou_status::ModulusNotPositive,
-            Error::PoissonRatioOutOfRange => contensou_status::PoissonRatioOutOfRange,
-            Error::FrictionCoefficientNegative => contensou_status::FrictionCoefficientNegative,
-            Error::LengthNotPositive => contensou_status::LengthNotPositive,
-            Error::RegularizationSpeedNegative => contensou_status::RegularizationSpeedNegative,
-            Error::DampingNegative => contensou_status::DampingNegative,
-            Error::ShearModulusNotPositive => contensou_status::ShearModulusNotPositive,
-            Error::RollingPoissonRatioOutOfRange => contensou_status::RollingPoissonRatioOutOfRange,
-            Error::RollingAspectOutOfRange => contensou_status::RollingAspectOutOfRange,
-            Error::ColumnLengthMismatch => contensou_status::ColumnLengthMismatch,
-            Error::StepNotPositive => contensou_status::StepNotPositive,
-            Error::InverseMassNotSymmetric => contensou_status::InverseMassNotSymmetric,
-            Error::InverseMassNotPositiveSemidefinite => {
-                contensou_status::InverseMassNotPositiveSemidefinite
-            }
-            Error::MassNotPositive => contensou_status::MassNotPositive,
-            Error::InertiaNotPositiveDefinite => contensou_status::InertiaNotPositiveDefinite,
-            Error::BodyIndexInvalid => contensou_status::BodyIndexInvalid,
-            _ => contensou_status::UnknownError,
-        }
+        Self::of_error(e)
     }
 }
 
-/// The library error's message, NUL-terminated at compile time.
-macro_rules! error_message {
-    ($e:expr) => {
-        c_str!($e.as_str())
-    };
+/// The library errors' messages ([`Error::as_str`]), NUL-terminated at compile time, in
+/// [`Error::ALL`] order: code k's is entry k − 1.
+const ERROR_MESSAGES: [&CStr; Error::ALL.len()] = c_strs!(error_texts(); 21);
+
+const fn error_texts() -> [&'static str; Error::ALL.len()] {
+    let mut out = [""; Error::ALL.len()];
+    let mut k = 0;
+    while k < out.len() {
+        out[k] = Error::ALL[k].as_str();
+        k += 1;
+    }
+    out
 }
 
+// Codes 1 … 21 are the library's errors in `Error::ALL` order.
+const _: () = {
+    let mut k = 0;
+    while k < Error::ALL.len() {
+        assert!(contensou_status::of_error(Error::ALL[k]) as usize == k + 1);
+        k += 1;
+    }
+};
+
 impl contensou_status {
+    /// The status of a library error (codes 1 … 21, in [`Error::ALL`] order).
+    pub(crate) const fn of_error(e: Error) -> Self {
+        match e {
+            Error::NonFinite(_) => Self::NonFinite,
+            Error::EllipticParameterOutOfDomain => Self::EllipticParameterOutOfDomain,
+            Error::CurvatureNotPositive => Self::CurvatureNotPositive,
+            Error::CurvaturesNotOrdered => Self::CurvaturesNotOrdered,
+            Error::CurvatureRatioOutOfRange => Self::CurvatureRatioOutOfRange,
+            Error::ModulusNotPositive => Self::ModulusNotPositive,
+            Error::PoissonRatioOutOfRange => Self::PoissonRatioOutOfRange,
+            Error::FrictionCoefficientNegative => Self::FrictionCoefficientNegative,
+            Error::LengthNotPositive => Self::LengthNotPositive,
+            Error::RegularizationSpeedNegative => Self::RegularizationSpeedNegative,
+            Error::DampingNegative => Self::DampingNegative,
+            Error::ShearModulusNotPositive => Self::ShearModulusNotPositive,
+            Error::RollingPoissonRatioOutOfRange => Self::RollingPoissonRatioOutOfRange,
+            Error::RollingAspectOutOfRange => Self::RollingAspectOutOfRange,
+            Error::ColumnLengthMismatch => Self::ColumnLengthMismatch,
+            Error::StepNotPositive => Self::StepNotPositive,
+            Error::InverseMassNotSymmetric => Self::InverseMassNotSymmetric,
+            Error::InverseMassNotPositiveSemidefinite => Self::InverseMassNotPositiveSemidefinite,
+            Error::MassNotPositive => Self::MassNotPositive,
+            Error::InertiaNotPositiveDefinite => Self::InertiaNotPositiveDefinite,
+            Error::BodyIndexInvalid => Self::BodyIndexInvalid,
+            _ => Self::UnknownError,
+        }
+    }
+
     /// The message of a raw code (any `u32`: unknown codes get a message too).
     pub fn message_of(code: u32) -> &'static CStr {
         use contensou_status as S;
-        const ALL: [contensou_status; 32] = [
+        const OWN: [contensou_status; 11] = [
             S::Ok,
-            S::NonFinite,
-            S::EllipticParameterOutOfDomain,
-            S::CurvatureNotPositive,
-            S::CurvaturesNotOrdered,
-            S::CurvatureRatioOutOfRange,
-            S::ModulusNotPositive,
-            S::PoissonRatioOutOfRange,
-            S::FrictionCoefficientNegative,
-            S::LengthNotPositive,
-            S::RegularizationSpeedNegative,
-            S::DampingNegative,
-            S::ShearModulusNotPositive,
-            S::RollingPoissonRatioOutOfRange,
-            S::RollingAspectOutOfRange,
-            S::ColumnLengthMismatch,
-            S::StepNotPositive,
-            S::InverseMassNotSymmetric,
-            S::InverseMassNotPositiveSemidefinite,
-            S::MassNotPositive,
-            S::InertiaNotPositiveDefinite,
-            S::BodyIndexInvalid,
             S::NullPointer,
             S::Misaligned,
             S::NotInitialized,
@@ -168,7 +166,11 @@ impl contensou_status {
             S::UnknownError,
             S::ContactCountOutOfRange,
         ];
-        match ALL.into_iter().find(|s| *s as u32 == code) {
+        let k = (code as usize).wrapping_sub(1);
+        if k < ERROR_MESSAGES.len() {
+            return ERROR_MESSAGES[k];
+        }
+        match OWN.into_iter().find(|s| *s as u32 == code) {
             Some(s) => s.message(),
             None => c_str!("unknown contensou_status code"),
         }
@@ -179,31 +181,6 @@ impl contensou_status {
         use contensou_status as S;
         match self {
             S::Ok => c_str!("ok"),
-            S::NonFinite => error_message!(Error::NonFinite("")),
-            S::EllipticParameterOutOfDomain => error_message!(Error::EllipticParameterOutOfDomain),
-            S::CurvatureNotPositive => error_message!(Error::CurvatureNotPositive),
-            S::CurvaturesNotOrdered => error_message!(Error::CurvaturesNotOrdered),
-            S::CurvatureRatioOutOfRange => error_message!(Error::CurvatureRatioOutOfRange),
-            S::ModulusNotPositive => error_message!(Error::ModulusNotPositive),
-            S::PoissonRatioOutOfRange => error_message!(Error::PoissonRatioOutOfRange),
-            S::FrictionCoefficientNegative => error_message!(Error::FrictionCoefficientNegative),
-            S::LengthNotPositive => error_message!(Error::LengthNotPositive),
-            S::RegularizationSpeedNegative => error_message!(Error::RegularizationSpeedNegative),
-            S::DampingNegative => error_message!(Error::DampingNegative),
-            S::ShearModulusNotPositive => error_message!(Error::ShearModulusNotPositive),
-            S::RollingPoissonRatioOutOfRange => {
-                error_message!(Error::RollingPoissonRatioOutOfRange)
-            }
-            S::RollingAspectOutOfRange => error_message!(Error::RollingAspectOutOfRange),
-            S::ColumnLengthMismatch => error_message!(Error::ColumnLengthMismatch),
-            S::StepNotPositive => error_message!(Error::StepNotPositive),
-            S::InverseMassNotSymmetric => error_message!(Error::InverseMassNotSymmetric),
-            S::InverseMassNotPositiveSemidefinite => {
-                error_message!(Error::InverseMassNotPositiveSemidefinite)
-            }
-            S::MassNotPositive => error_message!(Error::MassNotPositive),
-            S::InertiaNotPositiveDefinite => error_message!(Error::InertiaNotPositiveDefinite),
-            S::BodyIndexInvalid => error_message!(Error::BodyIndexInvalid),
             S::NullPointer => c_str!("a pointer parameter is NULL"),
             S::Misaligned => c_str!("a pointer parameter is misaligned for its type"),
             S::NotInitialized => {
@@ -219,6 +196,15 @@ impl contensou_status {
             S::UnknownError => c_str!("contensou error unknown to this C API version"),
             S::ContactCountOutOfRange => {
                 c_str!("contact count outside 1 ... CONTENSOU_STEP_MAX_CONTACTS (8)")
+            }
+            // codes 1 … 21: the library's errors
+            _ => {
+                let k = (self as usize).wrapping_sub(1);
+                if k < ERROR_MESSAGES.len() {
+                    ERROR_MESSAGES[k]
+                } else {
+                    c_str!("")
+                }
             }
         }
     }

@@ -88,25 +88,39 @@ pub const CONTENSOU_CONTACT_F64_SIZE: usize = 5896;
 /// Alignment (bytes) of both contact storage types.
 pub const CONTENSOU_CONTACT_ALIGN: usize = 8;
 
-/// Caller-owned storage of one `float` contact: opaque, [`CONTENSOU_CONTACT_F32_SIZE`] bytes,
-/// 8-byte aligned. Initialised by `contensou_contact_new_f32`: other calls on storage it did
-/// not initialise (zeroed, as static memory is) return `CONTENSOU_STATUS_NOT_INITIALIZED`.
-/// Plain data (may be copied with `memcpy` or assignment); no destructor. No global state:
-/// `contensou_contact_wrench_f32` only reads the contact, so threads may share one.
-#[repr(C)]
-#[derive(Debug)]
-pub struct contensou_contact_f32 {
-    /// Opaque.
-    pub opaque: [u64; 408],
+/// Codes of a C enumeration (`$ty` constants), each documented by its column's name: a row
+/// `NAME = value, "name";` is ``/// `name`.`` and `pub const NAME: $ty = value;`.
+macro_rules! codes {
+    ($ty:ty: $($name:ident = $value:literal, $column:literal;)*) => {$(
+        #[doc = concat!(" `", $column, "`.")]
+        pub const $name: $ty = $value;
+    )*};
 }
 
-/// Caller-owned storage of one `double` contact: opaque, [`CONTENSOU_CONTACT_F64_SIZE`]
-/// bytes, 8-byte aligned. As [`contensou_contact_f32`].
-#[repr(C)]
-#[derive(Debug)]
-pub struct contensou_contact_f64 {
-    /// Opaque.
-    pub opaque: [u64; 737],
+/// Opaque caller-owned storage structs, `[u64; words]` each (8-byte aligned), with their docs.
+macro_rules! storage {
+    ($($(#[doc = $doc:literal])* $name:ident: $words:literal;)*) => {$(
+        $(#[doc = $doc])*
+        #[repr(C)]
+        #[derive(Debug)]
+        pub struct $name {
+            /// Opaque.
+            pub opaque: [u64; $words],
+        }
+    )*};
+}
+pub(crate) use storage;
+
+storage! {
+    /// Caller-owned storage of one `float` contact: opaque, [`CONTENSOU_CONTACT_F32_SIZE`] bytes,
+    /// 8-byte aligned. Initialised by `contensou_contact_new_f32`: other calls on storage it did
+    /// not initialise (zeroed, as static memory is) return `CONTENSOU_STATUS_NOT_INITIALIZED`.
+    /// Plain data (may be copied with `memcpy` or assignment); no destructor. No global state:
+    /// `contensou_contact_wrench_f32` only reads the contact, so threads may share one.
+    contensou_contact_f32: 408;
+    /// Caller-owned storage of one `double` contact: opaque, [`CONTENSOU_CONTACT_F64_SIZE`]
+    /// bytes, 8-byte aligned. As [`contensou_contact_f32`].
+    contensou_contact_f64: 737;
 }
 
 /// What a storage holds: a tag that only its constructor writes, then the contact.
@@ -188,28 +202,21 @@ pub const CONTENSOU_RACE_OUTER: contensou_race = 1;
 /// optional rolling columns from [`CONTENSOU_COLUMN_G`]), or [`CONTENSOU_COLUMN_NONE`]: which
 /// input an error came from.
 pub type contensou_column = u32;
-/// `P`.
-pub const CONTENSOU_COLUMN_P: contensou_column = 0;
-/// `Q`.
-pub const CONTENSOU_COLUMN_Q: contensou_column = 1;
-/// `estar`.
-pub const CONTENSOU_COLUMN_ESTAR: contensou_column = 2;
-/// `cd`.
-pub const CONTENSOU_COLUMN_CD: contensou_column = 3;
-/// `f`.
-pub const CONTENSOU_COLUMN_F: contensou_column = 4;
-/// `delta`.
-pub const CONTENSOU_COLUMN_DELTA: contensou_column = 5;
-/// `h`.
-pub const CONTENSOU_COLUMN_H: contensou_column = 6;
-/// `hdot`.
-pub const CONTENSOU_COLUMN_HDOT: contensou_column = 7;
-/// `vx`.
-pub const CONTENSOU_COLUMN_VX: contensou_column = 8;
-/// `vy`.
-pub const CONTENSOU_COLUMN_VY: contensou_column = 9;
-/// `omega`.
-pub const CONTENSOU_COLUMN_OMEGA: contensou_column = 10;
+codes! {
+    contensou_column:
+    CONTENSOU_COLUMN_P = 0, "P";
+    CONTENSOU_COLUMN_Q = 1, "Q";
+    CONTENSOU_COLUMN_ESTAR = 2, "estar";
+    CONTENSOU_COLUMN_CD = 3, "cd";
+    CONTENSOU_COLUMN_F = 4, "f";
+    CONTENSOU_COLUMN_DELTA = 5, "delta";
+    CONTENSOU_COLUMN_H = 6, "h";
+    CONTENSOU_COLUMN_HDOT = 7, "hdot";
+    CONTENSOU_COLUMN_VX = 8, "vx";
+    CONTENSOU_COLUMN_VY = 9, "vy";
+    CONTENSOU_COLUMN_OMEGA = 10, "omega";
+}
+
 /// No column: success, or an error not tied to a contract column (a NULL pointer, …).
 pub const CONTENSOU_COLUMN_NONE: contensou_column = 11;
 /// `G` (optional rolling column; after `NONE`, which keeps its value).

@@ -10,35 +10,13 @@ use contensou::Error;
 use contensou_capi::*;
 
 mod common;
-use common::{assert_storage, each_null, spec_in, storage32, storage64, text, SPEC, STEP};
+use common::{copied, each_null, misaligned, spec_in, storage32, storage64, text, SPEC, STEP};
 
 type S = contensou_status;
 
 #[test]
 fn every_library_error_has_its_own_code_and_the_library_message() {
-    let all = [
-        Error::NonFinite("x"),
-        Error::EllipticParameterOutOfDomain,
-        Error::CurvatureNotPositive,
-        Error::CurvaturesNotOrdered,
-        Error::CurvatureRatioOutOfRange,
-        Error::ModulusNotPositive,
-        Error::PoissonRatioOutOfRange,
-        Error::FrictionCoefficientNegative,
-        Error::LengthNotPositive,
-        Error::RegularizationSpeedNegative,
-        Error::DampingNegative,
-        Error::ShearModulusNotPositive,
-        Error::RollingPoissonRatioOutOfRange,
-        Error::RollingAspectOutOfRange,
-        Error::ColumnLengthMismatch,
-        Error::StepNotPositive,
-        Error::InverseMassNotSymmetric,
-        Error::InverseMassNotPositiveSemidefinite,
-        Error::MassNotPositive,
-        Error::InertiaNotPositiveDefinite,
-        Error::BodyIndexInvalid,
-    ];
+    let all = Error::ALL;
     let mut codes: Vec<u32> = all.iter().map(|&e| S::from(e) as u32).collect();
     for (e, &c) in all.iter().zip(&codes) {
         assert_ne!(c, S::UnknownError as u32, "{e:?} is not mapped");
@@ -156,8 +134,7 @@ fn bad_pointers_and_values_are_codes_and_write_nothing() {
         assert_eq!(each_null(&*c, &STEP, wrench), [S::NullPointer; 3]);
         assert_eq!(w, contensou_wrench::default(), "nothing written on error");
         // Misaligned storage (4 bytes off the required 8) and a misaligned step.
-        let bytes = c.opaque.as_mut_ptr().cast::<u8>();
-        let off = bytes.add(4).cast::<contensou_contact_f64>();
+        let off = misaligned::<contensou_contact_f64, _>(c.opaque.as_mut_ptr());
         assert_eq!(
             contensou_contact_new_f64(off, &SPEC, 0, 0, null_mut()),
             S::Misaligned
@@ -167,11 +144,7 @@ fn bad_pointers_and_values_are_codes_and_write_nothing() {
             S::Misaligned
         );
         let steps = [0.0_f64; 8];
-        let odd = steps
-            .as_ptr()
-            .cast::<u8>()
-            .add(4)
-            .cast::<contensou_step<f64>>();
+        let odd = misaligned::<contensou_step<f64>, _>(steps.as_ptr());
         assert_eq!(
             contensou_contact_wrench_f64(&*c, odd, &mut w, null_mut()),
             S::Misaligned
@@ -183,8 +156,7 @@ fn bad_pointers_and_values_are_codes_and_write_nothing() {
             contensou_contact_new_f32(&mut *c32, &spec32, 0, 0, null_mut()),
             S::Ok
         );
-        let mut big = storage64();
-        core::ptr::copy_nonoverlapping(c32.opaque.as_ptr(), big.opaque.as_mut_ptr(), 130);
+        let big = copied::<_, contensou_contact_f64>(&*c32);
         assert_eq!(
             contensou_contact_wrench_f64(&*big, &STEP, &mut w, null_mut()),
             S::NotInitialized
@@ -241,15 +213,10 @@ fn wrench_statuses_follow_the_documented_order() {
             contensou_contact_new_f64(&mut *c, &SPEC, 0, 0, null_mut()),
             S::Ok
         );
-        let off = c
-            .opaque
-            .as_ptr()
-            .cast::<u8>()
-            .add(4)
-            .cast::<contensou_contact_f64>();
+        let off = misaligned::<contensou_contact_f64, _>(c.opaque.as_ptr()).cast_const();
         let words = [0.0_f64; 8];
-        let odd = words.as_ptr().cast::<u8>().add(4);
-        let (odd_step, odd_out) = (odd.cast::<contensou_step<f64>>(), odd.cast_mut().cast());
+        let odd_step = misaligned::<contensou_step<f64>, _>(words.as_ptr()).cast_const();
+        let odd_out = misaligned(words.as_ptr());
         let mut w = contensou_wrench::default();
         let (good, zeroed) = (&*c as *const _, &*zeroed as *const _);
         let cases = [
@@ -551,10 +518,29 @@ fn helpers_are_the_library_constructors_in_contract_order() {
     assert_eq!(e.to_bits(), want.get().to_bits());
 }
 
+/// The storage type `$st` has the size the crate and the header declare as `$size`, and the
+/// header's alignment.
+macro_rules! assert_storage {
+    ($st:ty, $size:ident) => {{
+        let name = stringify!($size);
+        assert_eq!(core::mem::size_of::<$st>(), $size, "{name}");
+        assert_eq!(
+            core::mem::align_of::<$st>(),
+            CONTENSOU_CONTACT_ALIGN,
+            "{name}"
+        );
+        let header = include_str!("../include/contensou.h");
+        assert!(
+            header.contains(&format!("#define {name} {}", $size)),
+            "{name}"
+        );
+    }};
+}
+
 #[test]
 fn storage_sizes_are_the_headers() {
-    let size = CONTENSOU_CONTACT_F32_SIZE;
-    assert_storage::<contensou_contact_f32>("CONTENSOU_CONTACT_F32_SIZE", size);
-    let size = CONTENSOU_CONTACT_F64_SIZE;
-    assert_storage::<contensou_contact_f64>("CONTENSOU_CONTACT_F64_SIZE", size);
+    assert_storage!(contensou_contact_f32, CONTENSOU_CONTACT_F32_SIZE);
+    assert_storage!(contensou_contact_f64, CONTENSOU_CONTACT_F64_SIZE);
+    assert_storage!(contensou_rolling_f32, CONTENSOU_ROLLING_F32_SIZE);
+    assert_storage!(contensou_rolling_f64, CONTENSOU_ROLLING_F64_SIZE);
 }

@@ -57,14 +57,16 @@ sweep() {
 all_laws="best simplified pade ellipsoid coulomb table blend fastsim fastsim-16"
 
 # clean FILE OPTS...: the twin built with ASan + UBSan (build.sh: NAME-san) runs clean on
-# $work/FILE.csv and prints what the plain twin prints.
+# $work/FILE.csv with OPTS and --precision f32, then f64, and prints what the plain twin prints.
 clean() {
-    local file="$1"
+    local file="$1" precision
     shift
-    "${twin[0]}-san" "${twin[@]:1}" "$@" <"$work/$file.csv" >"$work/san.csv" ||
-        { echo "compare: the sanitized ${twin[*]} failed on $file $*" >&2; exit 1; }
-    "${twin[@]}" "$@" <"$work/$file.csv" | cmp -s - "$work/san.csv" ||
-        { echo "compare: the sanitized ${twin[*]} prints other values on $file $*" >&2; exit 1; }
+    for precision in f32 f64; do
+        "${twin[0]}-san" "${twin[@]:1}" "$@" --precision "$precision" <"$work/$file.csv" >"$work/san.csv" ||
+            { echo "compare: the sanitized ${twin[*]} failed on $file $* ($precision)" >&2; exit 1; }
+        "${twin[@]}" "$@" --precision "$precision" <"$work/$file.csv" | cmp -s - "$work/san.csv" ||
+            { echo "compare: the sanitized ${twin[*]} prints other values on $file $* ($precision)" >&2; exit 1; }
+    done
 }
 
 # refused OPTS...: the twin and the reference on $work/in.csv (a bad row in it): their exit
@@ -78,6 +80,29 @@ refused() {
     set -e
     msg_c="$(sed -e "s/^$(basename "${twin[0]}"): //" -e 's/ (status [0-9]*)$//' -e 's/ = [^:]*:/ = _:/' "$work/c.err")"
     msg_r="$(sed -e 's/^contact_eval: //' -e 's/ = [^:]*:/ = _:/' "$work/rust.err")"
+}
+
+# stopped_alike ROW WHAT PRECISION: after `refused`, both exited 1 with the same message at
+# row ROW and wrote the same rows before it (parsed in PRECISION); else a report on WHAT.
+stopped_alike() {
+    if ((rc_c != 1 || rc_r != 1)) || [[ "$msg_c" != "$msg_r" || "$msg_c" != "row $1: "* ]]; then
+        printf 'compare: %s (%s): exit %s / %s, expected 1 at row %s with the same message\n  C:    %s\n  Rust: %s\n' \
+            "$2" "$3" "$rc_c" "$rc_r" "$1" "$msg_c" "$msg_r" >&2
+        exit 1
+    fi
+    "$bits" check "$3" "$work/c.csv" "$work/rust.csv" >/dev/null
+}
+
+# bad_kinds HEADER CHECK: for each kind of bad row in $work/bad.tsv (`bits *-bad`),
+# $work/in.csv = HEADER then that kind's rows, and `CHECK KIND`; $kinds counts them.
+bad_kinds() {
+    local kind
+    kinds=0
+    for kind in $(cut -f1 "$work/bad.tsv" | uniq); do
+        { echo "$1"; grep "^$kind"$'\t' "$work/bad.tsv" | cut -f2-; } >"$work/in.csv"
+        "$2" "$kind"
+        kinds=$((kinds + 1))
+    done
 }
 "$bits" gen >"$work/rows.csv"
 rows=$(($(wc -l <"$work/rows.csv") - 1))
@@ -94,17 +119,13 @@ awk -F, -v OFS=, '{ s = $1; for (k = 2; k <= 11; k++) s = s OFS $k; print s, $15
 rrows=$(($(wc -l <"$work/roll4.csv") - 1))
 runs=0
 sweep "$rrows" "table blend fastsim fastsim-16 best" table roll4 roll2 rollswap
-for precision in f32 f64; do
-    clean roll4 --law table --form varying --precision "$precision"
-done
+clean roll4 --law table --form varying
 echo "compare: rolling columns: $rrows rows × $runs runs (G,nu,vrx,vry: 5 laws; vrx,vry and vry,nu: table; 2 forms × 2 precisions): C = Rust bit for bit; ASan + UBSan clean (table)"
 
 # The C side under AddressSanitizer + UndefinedBehaviorSanitizer (built by build.sh): clean
 # on every row, and the same output.
-for precision in f32 f64; do
-    for form in fixed varying; do
-        clean rows --law best --form "$form" --precision "$precision"
-    done
+for form in fixed varying; do
+    clean rows --law best --form "$form"
 done
 echo "compare: the C twin is clean under ASan + UBSan (best, both forms and precisions)"
 
@@ -116,15 +137,12 @@ ref=(../target/release/contact_eval jacobian)
 runs=0
 sweep "$rows" "$all_laws" "" rows
 sweep "$rrows" "table blend fastsim fastsim-16 best" table roll4 roll2
-for precision in f32 f64; do
-    clean roll4 --law table --form varying --precision "$precision"
-done
+clean roll4 --law table --form varying
 echo "compare: jacobian: $rows rows (9 laws) and $rrows rolling rows (G,nu,vrx,vry: 5 laws; vrx,vry: table) × 2 forms × 2 precisions, $runs runs: C = contact_eval jacobian bit for bit; ASan + UBSan clean (table)"
 
-"$bits" bad >"$work/bad.tsv"
-kinds=0
-for kind in $(cut -f1 "$work/bad.tsv" | uniq); do
-    { echo "$header"; grep "^$kind"$'\t' "$work/bad.tsv" | cut -f2-; } >"$work/in.csv"
+# wrench_bad KIND: the bad rows through `wrench` and `jacobian` in both precisions.
+wrench_bad() {
+    local precision
     for precision in f32 f64 jacobian-f32 jacobian-f64; do
         # jacobian-*: `wrench_eval jacobian` against `contact_eval jacobian`
         twin=("$c"); ref=(../target/release/contact_eval wrench)
@@ -132,28 +150,13 @@ for kind in $(cut -f1 "$work/bad.tsv" | uniq); do
             precision="${precision#jacobian-}"; twin=("$c" jacobian); ref=(../target/release/contact_eval jacobian)
         fi
         refused --law best --form varying --precision "$precision"
-        if ((rc_c != 1 || rc_r != 1)); then
-            echo "compare: bad row '$kind' ($precision): exit $rc_c (C) and $rc_r (Rust), expected 1 and 1" >&2
-            cat "$work/c.err" "$work/rust.err" >&2
-            exit 1
-        fi
-        row_c="$(grep -o 'row [0-9]*' "$work/c.err")"
-        row_r="$(grep -o 'row [0-9]*' "$work/rust.err")"
-        if [[ "$row_c" != "row 4" || "$row_r" != "row 4" ]]; then
-            echo "compare: bad row '$kind' ($precision): C says '$row_c', Rust '$row_r', expected row 4" >&2
-            exit 1
-        fi
-        # The same message (row, column, reason).
-        if [[ "$msg_c" != "$msg_r" ]]; then
-            printf 'compare: bad row %s (%s): messages differ:\n  C:    %s\n  Rust: %s\n' "$kind" "$precision" "$msg_c" "$msg_r" >&2
-            exit 1
-        fi
-        grep -q ' (status [0-9]*)$' "$work/c.err" || [[ "$kind" =~ ^(nan|text|empty|fields)$ ]] ||
-            { echo "compare: C message of '$kind' has no status code: $(cat "$work/c.err")" >&2; exit 1; }
-        "$bits" check "$precision" "$work/c.csv" "$work/rust.csv" >/dev/null
+        stopped_alike 4 "bad row '$1'" "$precision"
+        grep -q ' (status [0-9]*)$' "$work/c.err" || [[ "$1" =~ ^(nan|text|empty|fields)$ ]] ||
+            { echo "compare: C message of '$1' has no status code: $(cat "$work/c.err")" >&2; exit 1; }
     done
-    kinds=$((kinds + 1))
-done
+}
+"$bits" bad >"$work/bad.tsv"
+bad_kinds "$header" wrench_bad
 echo "compare: $kinds kinds of bad row (wrench and jacobian): both stop at row 4 with the same message, exit 1, same rows before it"
 
 # Bad rolling columns (law table): the same row, column and message from both.
@@ -167,11 +170,7 @@ for bad in "50,50,1.15e11,0,0.1,1e-4,1e-6,0,0.01,0,50,-8e10,0.28,2,0" \
     printf '%s\n' "${header},G,nu,vrx,vry" "$good" "$good" "$bad" "$good" >"$work/in.csv"
     for precision in f32 f64; do
         refused --law table --form fixed --precision "$precision"
-        if ((rc_c != 1 || rc_r != 1)) || [[ "$msg_c" != "$msg_r" || "$msg_c" != "row 3: "* ]]; then
-            printf 'compare: bad rolling column %s (%s): exit %s / %s\n  C:    %s\n  Rust: %s\n' "$bad" "$precision" "$rc_c" "$rc_r" "$msg_c" "$msg_r" >&2
-            exit 1
-        fi
-        "$bits" check "$precision" "$work/c.csv" "$work/rust.csv" >/dev/null
+        stopped_alike 3 "bad rolling column $bad" "$precision"
     done
 done
 echo "compare: 5 bad rolling-column rows (G, nu, vrx, vry): both stop at row 3 with the same message"
@@ -189,31 +188,29 @@ for precision in f32 f64; do
         runs=$((runs + 1))
     done
 done
-for precision in f32 f64; do
-    clean rolling --law table --precision "$precision"
-done
+clean rolling --law table
 echo "compare: rolling: $rows rows × $runs runs (6 laws × 2 precisions): C = contact_eval rolling bit for bit; clean under ASan + UBSan (table)"
 
-"$bits" rolling-bad >"$work/bad.tsv"
-kinds=0
-for kind in $(cut -f1 "$work/bad.tsv" | uniq); do
-    { echo "a,b,G,nu,f,N,V,xi,eta,phi"; grep "^$kind"$'\t' "$work/bad.tsv" | cut -f2-; } >"$work/in.csv"
+# rolling_bad KIND: the same row and column from both (contact_eval names a non-finite input
+# in its message, the creepages by their slip: "row 4: xi = 1e-3: omega must be finite" for
+# φ = ∞).
+rolling_bad() {
+    local precision col_c slip
     for precision in f32 f64; do
         refused --precision "$precision"
-        # The same row and column (contact_eval names a non-finite input in its message, the
-        # creepages by their slip: "row 4: xi = 1e-3: omega must be finite" for φ = ∞).
         col_c="$(sed -n 's/^rolling_eval: row 4: \([^ ]*\) = .*/\1/p' "$work/c.err")"
         case "$col_c" in xi) slip=v_x ;; eta) slip=v_y ;; phi) slip=omega ;; *) slip="$col_c" ;; esac
         if ((rc_c != 1 || rc_r != 1)) || [[ -z "$col_c" ]] ||
             ! grep -qE "^contact_eval: row 4: ($col_c = |.*: ($col_c|$slip) must be finite$)" "$work/rust.err"; then
-            echo "compare: rolling bad row '$kind' ($precision): C exit $rc_c, Rust exit $rc_r; expected exit 1 at row 4 naming the same column" >&2
+            echo "compare: rolling bad row '$1' ($precision): C exit $rc_c, Rust exit $rc_r; expected exit 1 at row 4 naming the same column" >&2
             cat "$work/c.err" "$work/rust.err" >&2
             exit 1
         fi
         "$bits" check "$precision" "$work/c.csv" "$work/rust.csv" >/dev/null
     done
-    kinds=$((kinds + 1))
-done
+}
+"$bits" rolling-bad >"$work/bad.tsv"
+bad_kinds "a,b,G,nu,f,N,V,xi,eta,phi" rolling_bad
 echo "compare: rolling: $kinds kinds of bad row: both stop at row 4 naming the same column, exit 1, same rows before it"
 
 # The step-aware wrench (examples/step_eval.c, contensou_contact_step_*) against
@@ -228,23 +225,17 @@ srows=$(($(wc -l <"$work/step.csv") - 1))
 twin=(target/release/step_eval); ref=(../target/release/contact_eval step)
 runs=0
 sweep "$srows" "$all_laws" "best table" step step-nofree step-some
-for precision in f32 f64; do
-    clean step --law table --form varying --precision "$precision"
-done
+clean step --law table --form varying
 echo "compare: step: $srows rows × $runs runs (9 laws × 2 forms × 2 precisions with every optional column; best, table without and with two free columns): C = contact_eval step bit for bit; clean under ASan + UBSan (table)"
 
-"$bits" step-bad >"$work/bad.tsv"
-kinds=0
-for kind in $(cut -f1 "$work/bad.tsv" | uniq); do
-    { head -n 1 "$work/step.csv" | cut -d, -f1-22; grep "^$kind"$'\t' "$work/bad.tsv" | cut -f2-; } >"$work/in.csv"
+# step_bad KIND: the same row and message from both.
+step_bad() {
+    local precision
     for precision in f32 f64; do
         refused --precision "$precision"
-        if ((rc_c != 1 || rc_r != 1)) || [[ "$msg_c" != "$msg_r" || "$msg_c" != "row 4: "* ]]; then
-            printf 'compare: bad step row %s (%s): exit %s / %s\n  C:    %s\n  Rust: %s\n' "$kind" "$precision" "$rc_c" "$rc_r" "$msg_c" "$msg_r" >&2
-            exit 1
-        fi
-        "$bits" check "$precision" "$work/c.csv" "$work/rust.csv" >/dev/null
+        stopped_alike 4 "bad step row '$1'" "$precision"
     done
-    kinds=$((kinds + 1))
-done
+}
+"$bits" step-bad >"$work/bad.tsv"
+bad_kinds "$(head -n 1 "$work/step.csv" | cut -d, -f1-22)" step_bad
 echo "compare: step: $kinds kinds of bad row (dt, W, start state): both stop at row 4 with the same message, exit 1, same rows before it"

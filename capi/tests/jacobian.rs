@@ -7,7 +7,7 @@ use contensou::dynamic::{DynContact, Form, Law, RollingSpec, RollingStep, Spec, 
 use contensou_capi::*;
 
 mod common;
-use common::{each_null, spec_in, storage32, storage64, SPEC, STEP};
+use common::{each_null, misaligned, spec_in, storage32, storage64, SPEC, STEP};
 
 type S = contensou_status;
 
@@ -179,11 +179,7 @@ fn errors_are_the_wrenchs_and_write_nothing() {
         assert_eq!(col, CONTENSOU_COLUMN_VRY);
         // A misaligned rolling step, and an f64 contact asked in f32 (the tag differs).
         let raw = [0.0_f64; 4];
-        let odd = raw
-            .as_ptr()
-            .cast::<u8>()
-            .add(4)
-            .cast::<contensou_rolling_step<f64>>();
+        let odd = misaligned::<contensou_rolling_step<f64>, _>(raw.as_ptr());
         assert_eq!(
             contensou_contact_jacobian_rolling_f64(&*c, &STEP, odd, &mut j, null_mut()),
             S::Misaligned

@@ -148,23 +148,10 @@ fn one_contact_of_many_is_the_single_call_bit_for_bit() {
                 let w = full(&BALL_W);
                 let ptrs = [&*c as *const contensou_contact_f64];
                 let mut many = [contensou_step_wrench::default()];
-                let (mut index, mut column) = (99, 99);
-                let fp = if with_free { &free as *const _ } else { null() };
-                let r = unsafe {
-                    contensou_step_many_f64(
-                        ptrs.as_ptr(),
-                        1,
-                        s,
-                        &roll,
-                        dt,
-                        w.as_ptr(),
-                        fp,
-                        many.as_mut_ptr(),
-                        &mut index,
-                        &mut column,
-                    )
-                };
-                assert_eq!((r, index, column), (S::Ok, 1, CONTENSOU_COLUMN_NONE));
+                let free: &[_] = if with_free { &[free] } else { &[] };
+                let steps = core::slice::from_ref(s);
+                let got = step_many(&ptrs, 1, steps, &[roll], dt, &w, free, &mut many);
+                assert_eq!(got, (S::Ok, 1, CONTENSOU_COLUMN_NONE));
                 assert_eq!(
                     bits(&many[0]),
                     bits(&single),
@@ -246,20 +233,7 @@ fn two_contacts_sharing_a_body_are_the_librarys_step_wrenches() {
         ];
         let ptrs = [&*ca as *const _, &*cb as *const _];
         let mut out = [contensou_step_wrench::default(); 2];
-        let r = unsafe {
-            contensou_step_many_f64(
-                ptrs.as_ptr(),
-                2,
-                steps.as_ptr(),
-                rolls.as_ptr(),
-                dt,
-                flat.as_ptr(),
-                frees.as_ptr(),
-                out.as_mut_ptr(),
-                null_mut(),
-                null_mut(),
-            )
-        };
+        let (r, ..) = step_many(&ptrs, 2, &steps, &rolls, dt, &flat, &frees, &mut out);
         assert_eq!(r, S::Ok);
         // The library directly.
         let spec = Spec::from(BALL);
@@ -298,39 +272,31 @@ fn two_contacts_sharing_a_body_are_the_librarys_step_wrenches() {
     }
 }
 
+/// The 4k × 4k inverse mass of k balls each on its own plane: `BALL_W` block-diagonal.
+fn ball_blocks(k: usize) -> Vec<f64> {
+    let mut w = vec![0.0; 16 * k * k];
+    let b = full(&BALL_W);
+    for i in 0..k {
+        for r in 0..4 {
+            for col in 0..4 {
+                w[(4 * i + r) * 4 * k + 4 * i + col] = b[4 * r + col];
+            }
+        }
+    }
+    w
+}
+
 #[test]
 fn every_count_dispatches_and_decoupled_contacts_are_each_ones_own() {
     let dt = 1e-3;
     let c = contact(CONTENSOU_LAW_BEST);
     for k in 1..=CONTENSOU_STEP_MAX_CONTACTS {
         // k balls, each on its own plane: W block-diagonal.
-        let mut w = vec![0.0; 16 * k * k];
-        let b = full(&BALL_W);
-        for i in 0..k {
-            for r in 0..4 {
-                for col in 0..4 {
-                    w[(4 * i + r) * 4 * k + 4 * i + col] = b[4 * r + col];
-                }
-            }
-        }
+        let w = ball_blocks(k);
         let steps: Vec<_> = (0..k).map(|i| STEPS[i % 3]).collect();
         let ptrs: Vec<*const contensou_contact_f64> = (0..k).map(|_| &*c as *const _).collect();
         let mut out = vec![contensou_step_wrench::default(); k];
-        let mut index = 99;
-        let r = unsafe {
-            contensou_step_many_f64(
-                ptrs.as_ptr(),
-                k,
-                steps.as_ptr(),
-                null(),
-                dt,
-                w.as_ptr(),
-                null(),
-                out.as_mut_ptr(),
-                &mut index,
-                null_mut(),
-            )
-        };
+        let (r, index, _) = step_many(&ptrs, k, &steps, &[], dt, &w, &[], &mut out);
         assert_eq!((r, index), (S::Ok, k));
         for i in 0..k {
             let mut one = contensou_step_wrench::default();
@@ -360,6 +326,46 @@ fn every_count_dispatches_and_decoupled_contacts_are_each_ones_own() {
     }
 }
 
+/// The slice's pointer, NULL when it is empty.
+fn or_null<T>(s: &[T]) -> *const T {
+    if s.is_empty() {
+        null()
+    } else {
+        s.as_ptr()
+    }
+}
+
+/// `contensou_step_many_f64` over `k` contacts of `ptrs` (the count as given, for the tests
+/// of a wrong one), an empty `rolls` or `free` passed as NULL: the status, `*index`, `*column`.
+#[allow(clippy::too_many_arguments)]
+fn step_many(
+    ptrs: &[*const contensou_contact_f64],
+    k: usize,
+    steps: &[contensou_step<f64>],
+    rolls: &[contensou_rolling_step<f64>],
+    dt: f64,
+    w: &[f64],
+    free: &[contensou_step_free<f64>],
+    out: &mut [contensou_step_wrench<f64>],
+) -> (S, usize, u32) {
+    let (mut index, mut column) = (99, 99);
+    let r = unsafe {
+        contensou_step_many_f64(
+            ptrs.as_ptr(),
+            k,
+            steps.as_ptr(),
+            or_null(rolls),
+            dt,
+            w.as_ptr(),
+            or_null(free),
+            out.as_mut_ptr(),
+            &mut index,
+            &mut column,
+        )
+    };
+    (r, index, column)
+}
+
 /// `contensou_step_many_f64` on two ball contacts, with `edit` applied to its inputs first.
 fn many_error(
     edit: impl FnOnce(
@@ -376,14 +382,7 @@ fn many_error(
     let mut steps = [STEPS[0], STEPS[1]];
     let mut dt = 1e-3;
     let mut w = [0.0; 64];
-    let b = full(&BALL_W);
-    for i in 0..2 {
-        for r in 0..4 {
-            for col in 0..4 {
-                w[(4 * i + r) * 8 + 4 * i + col] = b[4 * r + col];
-            }
-        }
-    }
+    w.copy_from_slice(&ball_blocks(2));
     let mut free = steps.map(|s| contensou_step_free {
         u: contensou_step_velocity {
             vn: -s.hdot,
@@ -399,23 +398,9 @@ fn many_error(
         second.map_or(&*c as *const _, |s| s as *const _),
     ];
     let mut out = [contensou_step_wrench::default(); 2];
-    let (mut index, mut column) = (99, 99);
-    let r = unsafe {
-        contensou_step_many_f64(
-            ptrs.as_ptr(),
-            k,
-            steps.as_ptr(),
-            null(),
-            dt,
-            w.as_ptr(),
-            free.as_ptr(),
-            out.as_mut_ptr(),
-            &mut index,
-            &mut column,
-        )
-    };
-    assert!(r == S::Ok || out.iter().all(|o| *o == contensou_step_wrench::default()));
-    (r, index, column)
+    let got = step_many(&ptrs, k, &steps, &[], dt, &w, &free, &mut out);
+    assert!(got.0 == S::Ok || out.iter().all(|o| *o == contensou_step_wrench::default()));
+    got
 }
 
 #[test]

@@ -28,21 +28,18 @@ pub fn register() {
     }
 }
 
+/// The red, green and blue bytes of a `0xRRGGBB` colour.
+fn channels(hex: u32) -> [u8; 3] {
+    [(hex >> 16) as u8, (hex >> 8) as u8, hex as u8]
+}
+
 /// Distinct colours for series (Tableau 10).
 pub fn colour(i: usize) -> RGBColor {
-    const C: [(u8, u8, u8); 10] = [
-        (31, 119, 180),
-        (255, 127, 14),
-        (44, 160, 44),
-        (214, 39, 40),
-        (148, 103, 189),
-        (140, 86, 75),
-        (227, 119, 194),
-        (127, 127, 127),
-        (188, 189, 34),
-        (23, 190, 207),
+    const C: [u32; 10] = [
+        0x1f77b4, 0xff7f0e, 0x2ca02c, 0xd62728, 0x9467bd, 0x8c564b, 0xe377c2, 0x7f7f7f, 0xbcbd22,
+        0x17becf,
     ];
-    let (r, g, b) = C[i % C.len()];
+    let [r, g, b] = channels(C[i % C.len()]);
     RGBColor(r, g, b)
 }
 
@@ -333,22 +330,15 @@ pub fn lines(
     Ok(())
 }
 
-/// Viridis-like colour map, t in [0, 1].
+/// Viridis-like colour map, t in [0, 1]: six stops of viridis, interpolated per channel.
 fn viridis(t: f64) -> RGBColor {
-    const P: [(f64, f64, f64); 6] = [
-        (68.0, 1.0, 84.0),
-        (65.0, 68.0, 135.0),
-        (42.0, 120.0, 142.0),
-        (34.0, 168.0, 132.0),
-        (122.0, 209.0, 81.0),
-        (253.0, 231.0, 37.0),
-    ];
+    const P: [u32; 6] = [0x440154, 0x414487, 0x2a788e, 0x22a884, 0x7ad151, 0xfde725];
     let t = t.clamp(0.0, 1.0) * (P.len() - 1) as f64;
     let i = (t.floor() as usize).min(P.len() - 2);
     let f = t - i as f64;
-    let lerp = |a: f64, b: f64| (a + (b - a) * f).round() as u8;
-    let (a, b) = (P[i], P[i + 1]);
-    RGBColor(lerp(a.0, b.0), lerp(a.1, b.1), lerp(a.2, b.2))
+    let (a, b) = (channels(P[i]), channels(P[i + 1]));
+    let lerp = |k: usize| (a[k] as f64 + (b[k] as f64 - a[k] as f64) * f).round() as u8;
+    RGBColor(lerp(0), lerp(1), lerp(2))
 }
 
 /// One heat-map panel: title and cells (x0, x1, y0, y1, value) in axis units (x already

@@ -25,49 +25,26 @@ fn inputs() -> [f32; 32] {
     })
 }
 
-#[inline(never)]
-fn call(x: f32) -> f32 {
-    x
+/// The measured functions, `f32 → f32`, each `#[inline(never)]`: `name(x) = body`.
+macro_rules! measured {
+    ($($name:ident($x:ident) = $body:expr;)*) => {$(
+        #[inline(never)]
+        fn $name($x: f32) -> f32 {
+            $body
+        }
+    )*};
 }
 
-#[inline(never)]
-fn sqrt_vsqrt(x: f32) -> f32 {
-    Real::sqrt(x)
-}
-
-#[inline(never)]
-fn sqrt_libm(x: f32) -> f32 {
-    libm::sqrtf(x)
-}
-
-#[inline(never)]
-fn ln_libm(x: f32) -> f32 {
-    Real::ln(x)
-}
-
-#[inline(never)]
-fn exp_libm(x: f32) -> f32 {
-    Real::exp(x)
-}
-
-#[inline(never)]
-fn sqrt_micromath(x: f32) -> f32 {
-    Micromath::sqrt(x)
-}
-
-#[inline(never)]
-fn ln_micromath(x: f32) -> f32 {
-    Micromath::ln(x)
-}
-
-#[inline(never)]
-fn ln_raw_micromath(x: f32) -> f32 {
-    micromath::F32(x).ln().0
-}
-
-#[inline(never)]
-fn exp_micromath(x: f32) -> f32 {
-    Micromath::exp(x)
+measured! {
+    call(x) = x;
+    sqrt_vsqrt(x) = Real::sqrt(x);
+    sqrt_libm(x) = libm::sqrtf(x);
+    ln_libm(x) = Real::ln(x);
+    exp_libm(x) = Real::exp(x);
+    sqrt_micromath(x) = Micromath::sqrt(x);
+    ln_micromath(x) = Micromath::ln(x);
+    ln_raw_micromath(x) = micromath::F32(x).ln().0;
+    exp_micromath(x) = Micromath::exp(x);
 }
 
 pub fn run(r: &Runner) {

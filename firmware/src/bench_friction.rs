@@ -135,29 +135,32 @@ fn best<T: Real>(r: &Runner) {
     r.bench("friction", "best-dimensional", T::NAME, &steps, best_dimensional::<T>);
 }
 
+/// `$f::<f32[, $L]>(r)` then `$f::<f64[, $L]>(r)` for each bench function `$f`.
+macro_rules! f32_f64 {
+    ($r:ident: $($f:ident$(<$L:ty>)?),* $(,)?) => {$(
+        $f::<f32 $(, $L)?>($r);
+        $f::<f64 $(, $L)?>($r);
+    )*};
+}
+
 /// One line per law (each measures f32 and f64).
 pub fn run(r: &Runner) {
-    for_both::<Simplified>(r);
-    for_both::<Pade>(r);
-    for_both::<Ellipsoid>(r);
-    for_both::<Coulomb>(r);
-    // the reference path (adaptive quadrature: data-dependent, not for the hot path)
-    for_both::<Exact>(r);
-    full::<f32, Simplified>(r);
-    full::<f64, Simplified>(r);
-    from_integrals::<f32>(r);
-    from_integrals::<f64>(r);
-    best::<f32>(r);
-    best::<f64>(r);
+    // `f32` then `f64` of each (the law after the precision); `Exact` is the reference path
+    // (adaptive quadrature: data-dependent, not for the hot path)
+    f32_f64!(
+        r: law<Simplified>,
+        law<Pade>,
+        law<Ellipsoid>,
+        law<Coulomb>,
+        law<Exact>,
+        full<Simplified>,
+        from_integrals,
+        best
+    );
     // micromath twins: f32 only (their f64 is libm). `best-micromath` is the per-call form,
     // to compare with `best-varying`.
     law::<f32, SimplifiedMicromath>(r);
     law::<f32, EllipsoidMicromath>(r);
     law::<f32, CoulombMicromath>(r);
     law::<f32, BestMicromath>(r);
-}
-
-fn for_both<L: FrictionLaw>(r: &Runner) {
-    law::<f32, L>(r);
-    law::<f64, L>(r);
 }

@@ -1,4 +1,5 @@
-//! Shared by the `best` tests: the jump of a traction across its inside/outside switch.
+//! Shared by the `best` tests: the jump of a traction across its inside/outside switch; the
+//! thin-end ψ × u grid and its error fold.
 
 use contensou::Real;
 use contensou::friction::Traction;
@@ -29,4 +30,20 @@ pub fn switch_jump<T: Real>(
     let (a, c) = (at(lo).0, at(hi).0);
     let d = |p: T, q: T| (p.to_f64() - q.to_f64()).abs();
     d(a.fx, c.fx).max(d(a.fy, c.fy)).max(d(a.tz, c.tz))
+}
+
+/// The thin-end grid: ψ = 0.001 + 0.0524·i (i < 30) × u = 10^(−3 + 6j/80) (j < 80).
+pub fn thin_grid() -> impl Iterator<Item = (f64, f64)> {
+    (0..30).flat_map(|i| {
+        let psi = 0.001 + i as f64 * 0.0524;
+        (0..80).map(move |j| (psi, 10f64.powf(-3.0 + 6.0 * j as f64 / 80.0)))
+    })
+}
+
+/// Folds the error of `t` against the reference `r` into `e` = (largest |ΔF_x|, |ΔF_y|;
+/// largest |ΔT_z|).
+pub fn worst<T: Real>(e: &mut (f64, f64), t: &Traction<T>, r: &Traction<f64>) {
+    let d = |p: T, q: f64| (p.to_f64() - q).abs();
+    e.0 = e.0.max(d(t.fx, r.fx).max(d(t.fy, r.fy)));
+    e.1 = e.1.max(d(t.tz, r.tz));
 }

@@ -164,6 +164,23 @@ pub fn refused(args: &[&str], input: &str, message: &str, context: &str) -> std:
     out
 }
 
+/// A valid row of the wrench contract (the columns of `contensou::dynamic::INPUTS`).
+#[allow(dead_code)] // not every test of the contract runs the binary
+pub const GOOD: &str = "10,400,1.15e11,0.3,0.2,1e-4,2e-6,0.01,-3e-3,2e-3,25";
+
+/// Each `(bad, message)` row after the `good` one (under `header`) is refused by every
+/// subcommand in `subs`: exit code 1 and `row 2: message` on stderr.
+#[allow(dead_code)] // not every test of the contract checks refusals this way
+pub fn refuses_after_good(subs: &[&str], header: &str, good: &str, bad_rows: &[(&str, &str)]) {
+    for (bad, message) in bad_rows {
+        let input = format!("{header}\n{good}\n{bad}\n");
+        for sub in subs {
+            let context = format!("{sub} {bad}");
+            refused(&[sub], &input, &format!("row 2: {message}"), &context);
+        }
+    }
+}
+
 /// The stdout of a successful `contact_eval args…` run on `input` (a failure shows `args` and
 /// the stderr).
 #[allow(dead_code)] // not every test of the contract runs the binary
@@ -182,4 +199,31 @@ pub fn stdout_with(sub: &str, law: Law, form: Form, precision: &str, input: &str
         &[sub, "--law", law, "--form", form, "--precision", precision],
         input,
     )
+}
+
+/// `contact_eval sub` on `input` for every law × form in precision `T`: the header line is
+/// `header`, then exactly `rows` lines, each checked by `check(law, form, i, fields, line)`
+/// with its fields parsed as `T`.
+#[allow(dead_code)] // not every test of the contract runs the binary
+pub fn each_law_form<T: Real>(
+    sub: &str,
+    input: &str,
+    header: &str,
+    rows: usize,
+    mut check: impl FnMut(Law, Form, usize, &[T], &str),
+) {
+    for law in Law::ALL {
+        for form in Form::ALL {
+            let stdout = stdout_with(sub, law, form, T::NAME, input);
+            let mut lines = stdout.lines();
+            assert_eq!(lines.next(), Some(header), "{sub} {law:?} {form:?}");
+            let mut n = 0;
+            for (i, line) in lines.by_ref().take(rows).enumerate() {
+                let got: Vec<T> = line.split(',').map(|f| f.parse().ok().unwrap()).collect();
+                check(law, form, i, &got, line);
+                n += 1;
+            }
+            assert_eq!((n, lines.next()), (rows, None), "{sub} {law:?} {form:?}");
+        }
+    }
 }

@@ -143,6 +143,23 @@ fn expect<V: core::fmt::Debug>(
     }
 }
 
+/// A damping law built from the coefficient `x`: refused below zero.
+fn expect_damping<V: core::fmt::Debug, T: Real>(r: &Result<V, Error>, x: T, who: &str) {
+    expect(r, x.is_finite(), x >= T::ZERO, Error::DampingNegative, who);
+}
+
+/// `f::<L, T>(args…)` for each sliding law, in the order the fuzz inputs are read.
+macro_rules! every_law {
+    ($f:ident::<_, $t:ty>($($arg:expr),*)) => {
+        $f::<Simplified, $t>($($arg),*);
+        $f::<Pade, $t>($($arg),*);
+        $f::<Ellipsoid, $t>($($arg),*);
+        $f::<Coulomb, $t>($($arg),*);
+        $f::<Exact, $t>($($arg),*);
+        $f::<Best, $t>($($arg),*);
+    };
+}
+
 fn integrals_ok<T: Real>(i: &Integrals<T>, who: &str) {
     for (v, n) in [(i.k, "K"), (i.e, "E"), (i.b, "B"), (i.d, "D")] {
         fin(v, who);
@@ -169,26 +186,21 @@ fn constants_ok<T: Real>(k: &Constants<T>, who: &str) {
 /// Elliptic parameter, integrals by every method, friction constants, the exact traction.
 pub fn elliptic<T: Fz>(inp: &mut Input<'_>) {
     let min = Parameter::<T>::min_complement();
-    let m: T = inp.val();
-    let r = Parameter::new(m);
-    let in_domain = m >= T::ZERO && T::ONE - m >= min;
-    expect(
-        &r,
-        m.is_finite(),
-        in_domain,
-        Error::EllipticParameterOutOfDomain,
-        "Parameter::new",
-    );
-    let m1: T = inp.val();
-    let rc = Parameter::from_complement(m1);
-    let in_domain = m1 >= min && m1 <= T::ONE;
-    expect(
-        &rc,
-        m1.is_finite(),
-        in_domain,
-        Error::EllipticParameterOutOfDomain,
-        "Parameter::from_complement",
-    );
+    let (m, m1): (T, T) = (inp.val(), inp.val());
+    let (r, rc) = (Parameter::new(m), Parameter::from_complement(m1));
+    // m and m₁ = 1 − m, each within its domain
+    for (got, x, in_domain, who) in [
+        (&r, m, m >= T::ZERO && T::ONE - m >= min, "Parameter::new"),
+        (
+            &rc,
+            m1,
+            m1 >= min && m1 <= T::ONE,
+            "Parameter::from_complement",
+        ),
+    ] {
+        let err = Error::EllipticParameterOutOfDomain;
+        expect(got, x.is_finite(), in_domain, err, who);
+    }
     let (vx, vy, w): (T, T, T) = (inp.val(), inp.val(), inp.val());
     for p in [r, rc].into_iter().flatten() {
         integrals_ok(&Agm::integrals(p), "Agm");
@@ -362,21 +374,9 @@ pub fn normal<T: Fz>(inp: &mut Input<'_>) {
     );
     let (cd, d): (T, T) = (inp.val(), inp.val());
     let hc = HuntCrossley::new(cd);
-    expect(
-        &hc,
-        cd.is_finite(),
-        cd >= T::ZERO,
-        Error::DampingNegative,
-        "HuntCrossley::new",
-    );
+    expect_damping(&hc, cd, "HuntCrossley::new");
     let cdamp = CompressionDamping::new(d);
-    expect(
-        &cdamp,
-        d.is_finite(),
-        d >= T::ZERO,
-        Error::DampingNegative,
-        "CompressionDamping::new",
-    );
+    expect_damping(&cdamp, d, "CompressionDamping::new");
     let (p, q, h, hdot): (T, T, T, T) = (inp.val(), inp.val(), inp.val(), inp.val());
     let (Ok(c), Ok(e)) = (Curvatures::new(p, q), e) else {
         return;
@@ -572,21 +572,11 @@ pub fn friction<T: Fz>(inp: &mut Input<'_>) {
             );
         }
         assert!(st.d() > T::ZERO, "slip state d");
-        law_core::<Simplified, T>(&k, &st);
-        law_core::<Pade, T>(&k, &st);
-        law_core::<Ellipsoid, T>(&k, &st);
-        law_core::<Coulomb, T>(&k, &st);
-        law_core::<Exact, T>(&k, &st);
-        law_core::<Best, T>(&k, &st);
+        every_law!(law_core::<_, T>(&k, &st));
     }
     let Ok(slip) = slip else { return };
     let boxed = Box::small(vx, 1e12) && Box::small(vy, 1e12) && Box::small(om, 1e12);
-    law_dimensional::<Simplified, T>(inp, &k, slip, boxed);
-    law_dimensional::<Pade, T>(inp, &k, slip, boxed);
-    law_dimensional::<Ellipsoid, T>(inp, &k, slip, boxed);
-    law_dimensional::<Coulomb, T>(inp, &k, slip, boxed);
-    law_dimensional::<Exact, T>(inp, &k, slip, boxed);
-    law_dimensional::<Best, T>(inp, &k, slip, boxed);
+    every_law!(law_dimensional::<_, T>(inp, &k, slip, boxed));
 }
 
 fn wrench_ok<T: Real, B: core::fmt::Debug>(
@@ -658,12 +648,7 @@ pub fn wrench<T: Fz>(inp: &mut Input<'_>) {
     let boxed = Box::within(c.p(), 1e-6, 1e9)
         && Box::within(c.q(), 1e-6, 1e9)
         && Box::within(e.get(), 1e3, 1e13);
-    contact_law::<Simplified, T>(inp, &c, e, boxed);
-    contact_law::<Pade, T>(inp, &c, e, boxed);
-    contact_law::<Ellipsoid, T>(inp, &c, e, boxed);
-    contact_law::<Coulomb, T>(inp, &c, e, boxed);
-    contact_law::<Exact, T>(inp, &c, e, boxed);
-    contact_law::<Best, T>(inp, &c, e, boxed);
+    every_law!(contact_law::<_, T>(inp, &c, e, boxed));
 }
 
 /// Everything, in `f32` then `f64`, the first byte choosing the area (for a single target).

@@ -172,6 +172,10 @@ impl BestBlock {
         );
         [t.fx, t.fy]
     }
+}
+
+impl Settles for BestBlock {
+    type V = [f64; 2];
 
     /// Does `scheme` at step h keep a perturbation of the equilibrium `v_eq` bounded? The
     /// perturbation starts at `dv0` (|dv0| ≪ δ: the linearisation, unless v_eq = 0 without spin,
@@ -179,7 +183,7 @@ impl BestBlock {
     /// unstable if |v − v_eq| ever exceeds 10·|dv0|, stable if it does not within `steps`
     /// steps and ends below |dv0| (a growth by (1 + 2η) per step reaches 10 within 2,000 steps
     /// for η > 5.8e-4).
-    pub fn settles(
+    fn settles(
         &self,
         v_eq: [f64; 2],
         dv0: [f64; 2],
@@ -219,24 +223,9 @@ impl BestBlock {
         }
         size(v) < d0
     }
+}
 
-    /// The largest step at which [`BestBlock::settles`] holds, bisected (`halvings` times) in
-    /// [lo, hi].
-    #[allow(clippy::too_many_arguments)]
-    pub fn measured_step(
-        &self,
-        v_eq: [f64; 2],
-        dv0: [f64; 2],
-        scheme: Explicit,
-        steps: usize,
-        range: (f64, f64),
-        halvings: usize,
-    ) -> f64 {
-        bisect(range, halvings, |h| {
-            self.settles(v_eq, dv0, h, scheme, steps)
-        })
-    }
-
+impl BestBlock {
     /// Largest eigenvalue (Euler's |λ|²/Re λ for a complex pair) of the stiffness −∂F/∂v at v,
     /// by one-sided differences (towards larger |v_x|, |v_y|), in units of fN/δ.
     pub fn stiffness(&self, v: [f64; 2]) -> f64 {
@@ -251,6 +240,31 @@ impl BestBlock {
             [-(fx[1] - f0[1]) / sx, -(fy[1] - f0[1]) / sy],
         ];
         eig_euler(k) * self.law.delta() / (self.law.coefficient() * self.n)
+    }
+}
+
+/// A body held at an equilibrium velocity by a constant drive ([`BestBlock`], [`SpinBody`]):
+/// does a perturbation decay under an explicit scheme, and up to which step.
+pub trait Settles {
+    /// The integrated velocity: (v_x, v_y) of the block, ω of the spinning body.
+    type V: Copy;
+
+    /// Does `scheme` at step h bring a perturbation `d0` of the equilibrium `eq` back (each
+    /// body's rule in its impl)?
+    fn settles(&self, eq: Self::V, d0: Self::V, h: f64, scheme: Explicit, steps: usize) -> bool;
+
+    /// The largest step at which [`Settles::settles`] holds, bisected (`halvings` times) in
+    /// [lo, hi].
+    fn measured_step(
+        &self,
+        eq: Self::V,
+        d0: Self::V,
+        scheme: Explicit,
+        steps: usize,
+        range: (f64, f64),
+        halvings: usize,
+    ) -> f64 {
+        bisect(range, halvings, |h| self.settles(eq, d0, h, scheme, steps))
     }
 }
 
@@ -455,11 +469,15 @@ impl<L: FrictionLaw> SpinBody<L> {
             )
             .tz
     }
+}
+
+impl<L: FrictionLaw> Settles for SpinBody<L> {
+    type V = f64;
 
     /// Does `scheme` at step h bring a perturbation `dw0` of the equilibrium `w_eq` back? Unstable
     /// if |ω − ω_eq| ever exceeds 10·|dw0|, stable if it does not within `steps` steps and ends
     /// below |dw0|.
-    pub fn settles(&self, w_eq: f64, dw0: f64, h: f64, scheme: Explicit, steps: usize) -> bool {
+    fn settles(&self, w_eq: f64, dw0: f64, h: f64, scheme: Explicit, steps: usize) -> bool {
         let t_eq = self.torque(w_eq);
         let inv_i = 1.0 / self.inertia;
         let acc = |w: f64| (self.torque(w) - t_eq) * inv_i;
@@ -473,23 +491,9 @@ impl<L: FrictionLaw> SpinBody<L> {
         }
         (w - w_eq).abs() < dw0.abs()
     }
+}
 
-    /// The largest step at which [`SpinBody::settles`] holds, bisected (`halvings` times) in
-    /// [lo, hi].
-    pub fn measured_step(
-        &self,
-        w_eq: f64,
-        dw0: f64,
-        scheme: Explicit,
-        steps: usize,
-        range: (f64, f64),
-        halvings: usize,
-    ) -> f64 {
-        bisect(range, halvings, |h| {
-            self.settles(w_eq, dw0, h, scheme, steps)
-        })
-    }
-
+impl<L: FrictionLaw> SpinBody<L> {
     /// −∂T_z/∂ω at ω by a one-sided difference (towards larger |ω|), in units of fN·a²/δ.
     pub fn stiffness(&self, omega: f64) -> f64 {
         let h = 1e-7 * self.law.delta() / self.a;

@@ -86,76 +86,75 @@ def option(name, gravity):
   <option timestep="{f(run_models.SHIPPED_DT)}" integrator="implicitfast" gravity="0 0 -{f(gravity)}">"""
 
 
+def sliding(p):
+    """The plugin's config lines for the `best` law with module `p`'s E*, c_d, f and δ."""
+    return config(estar=f(p.ESTAR), cd=f(p.CD), f=f(p.F), delta=f(p.DELTA), law="best")
+
+
+def model(title, scene, gravity, floor, body, source, law, inertial, launch, notes=("", ""), keys=""):
+    """One free body carrying the plugin on a floor plane: `law` the plugin's config lines (the
+    step-aware ones of `scene` follow), `inertial` the body's <inertial> and <geom> lines,
+    `launch` keyframe 0's (qpos, qvel); `notes` comment lines before the body and the sensor,
+    `keys` more keyframes."""
+    qpos, qvel = launch
+    return HEADER.format(source=source) + f"""<mujoco model="{title}">
+  <extension>
+    <plugin plugin="contensou.contact">
+      <instance name="contact">
+{law}{aware(scene)}
+      </instance>
+    </plugin>
+  </extension>
+{option(scene, gravity)}
+{NO_NATIVE}
+  </option>
+  <worldbody>
+    <geom name="floor" type="plane" size="{floor}"/>
+{notes[0]}    <body name="{body}">
+      <freejoint/>
+      <plugin instance="contact"/>
+{inertial}
+    </body>
+  </worldbody>
+  <sensor>
+{notes[1]}    <plugin name="contacts" instance="contact"/>
+  </sensor>
+  <keyframe>
+    <key name="launch" qpos="{vec(qpos)}" qvel="{vec(qvel)}"/>{keys}
+  </keyframe>
+</mujoco>
+"""
+
+
 def tippe_top():
     m = top.model(dt=top.DT, integrator=top.INTEGRATOR, native=False)
     import mujoco
 
     d = mujoco.MjData(m)
     top.launch(m, d)
-    return HEADER.format(source="python/examples/mujoco_tippe_top.py (src/scenes/tippe_top.rs, Params::paper)") + f"""<mujoco model="tippe top (contensou.contact)">
-  <extension>
-    <plugin plugin="contensou.contact">
-      <instance name="contact">
-{config(estar=f(top.ESTAR), cd=f(top.CD), f=f(top.F), delta=f(top.DELTA), law="best")}{aware("tippe_top")}
-      </instance>
-    </plugin>
-  </extension>
-{option("tippe_top", top.G)}
-{NO_NATIVE}
-  </option>
-  <worldbody>
-    <geom name="floor" type="plane" size="1 1 0.1"/>
-    <body name="top">
-      <freejoint/>
-      <plugin instance="contact"/>
-      <inertial pos="0 0 0" mass="{f(top.MASS)}" diaginertia="{vec([top.I_EQ, top.I_EQ, top.I_POLAR])}"/>
+    return model(
+        "tippe top (contensou.contact)", "tippe_top", top.G, "1 1 0.1", "top",
+        source="python/examples/mujoco_tippe_top.py (src/scenes/tippe_top.rs, Params::paper)",
+        law=sliding(top),
+        inertial=f"""      <inertial pos="0 0 0" mass="{f(top.MASS)}" diaginertia="{vec([top.I_EQ, top.I_EQ, top.I_POLAR])}"/>
       <!-- MuJoCo's own contact off for the plugin's geoms (the plugin refuses the model otherwise). -->
       <geom name="big" type="sphere" size="{f(top.R_BIG)}" pos="0 0 {f(top.E_BIG)}" contype="0" conaffinity="0"/>
-      <geom name="small" type="sphere" size="{f(top.R_SMALL)}" pos="0 0 {f(top.E_SMALL)}" contype="0" conaffinity="0"/>
-    </body>
-  </worldbody>
-  <sensor>
-    <!-- Per contact (big/floor, small/floor): N, Fx, Fy, Tz, a, b, h. -->
-    <plugin name="contacts" instance="contact"/>
-  </sensor>
-  <keyframe>
-    <key name="launch" qpos="{vec(d.qpos)}" qvel="{vec(d.qvel)}"/>
-  </keyframe>
-</mujoco>
-"""
+      <geom name="small" type="sphere" size="{f(top.R_SMALL)}" pos="0 0 {f(top.E_SMALL)}" contype="0" conaffinity="0"/>""",
+        launch=(d.qpos, d.qvel),
+        notes=("", "    <!-- Per contact (big/floor, small/floor): N, Fx, Fy, Tz, a, b, h. -->\n"),
+    )
 
 
 def ball_model():
     qpos = [0, 0, ball.R - ball.H_STATIC, 1, 0, 0, 0]
     qvel = [ball.V0, 0, 0, 0, 0, ball.SPIN0]
-    return HEADER.format(source="python/examples/mujoco_ball.py") + f"""<mujoco model="ball (contensou.contact)">
-  <extension>
-    <plugin plugin="contensou.contact">
-      <instance name="contact">
-{config(estar=f(ball.ESTAR), cd=f(ball.CD), f=f(ball.F), delta=f(ball.DELTA), law="best")}{aware("ball")}
-      </instance>
-    </plugin>
-  </extension>
-{option("ball", ball.G)}
-{NO_NATIVE}
-  </option>
-  <worldbody>
-    <geom name="floor" type="plane" size="5 5 0.1"/>
-    <body name="ball">
-      <freejoint/>
-      <plugin instance="contact"/>
-      <inertial pos="0 0 0" mass="{f(ball.MASS)}" diaginertia="{vec([ball.INERTIA] * 3)}"/>
-      <geom name="ball" type="sphere" size="{f(ball.R)}" contype="0" conaffinity="0"/>
-    </body>
-  </worldbody>
-  <sensor>
-    <plugin name="contacts" instance="contact"/>
-  </sensor>
-  <keyframe>
-    <key name="launch" qpos="{vec(qpos)}" qvel="{vec(qvel)}"/>
-  </keyframe>
-</mujoco>
-"""
+    return model(
+        "ball (contensou.contact)", "ball", ball.G, "5 5 0.1", "ball",
+        source="python/examples/mujoco_ball.py", law=sliding(ball),
+        inertial=f"""      <inertial pos="0 0 0" mass="{f(ball.MASS)}" diaginertia="{vec([ball.INERTIA] * 3)}"/>
+      <geom name="ball" type="sphere" size="{f(ball.R)}" contype="0" conaffinity="0"/>""",
+        launch=(qpos, qvel),
+    )
 
 
 def quat_mul(a, b):
@@ -237,36 +236,18 @@ def rattleback(rolling=False):
     else:
         law = config(estar=f(RB_ESTAR), cd=f(RB_CD), f=f(RB_F), delta=f(RB_DELTA), law="best")
         name, keys = "rattleback (contensou.contact)", ""
-    return HEADER.format(source="src/scenes/rattleback.rs (Params::kane_levinson) and examples/rattleback.rs") + f"""<mujoco model="{name}">
-  <extension>
-    <plugin plugin="contensou.contact">
-      <instance name="contact">
-{law}{aware("rattleback_rolling" if rolling else "rattleback")}
-      </instance>
-    </plugin>
-  </extension>
-{option("rattleback_rolling" if rolling else "rattleback", RB_G)}
-{NO_NATIVE}
-  </option>
-  <worldbody>
-    <geom name="floor" type="plane" size="2 2 0.1"/>
-    <!-- Body frame = the ellipsoid's curvature frame, origin at G (ε below the centre O);
+    return model(
+        name, "rattleback_rolling" if rolling else "rattleback", RB_G, "2 2 0.1", "rattleback",
+        source="src/scenes/rattleback.rs (Params::kane_levinson) and examples/rattleback.rs",
+        law=law,
+        inertial=f"""      <inertial pos="0 0 0" quat="{vec(iquat)}" mass="{f(RB_MASS)}" diaginertia="{vec(RB_INERTIA)}"/>
+      <geom name="shell" type="ellipsoid" size="{vec(RB_AXES)}" pos="0 0 {f(RB_EPS)}" contype="0" conaffinity="0"/>""",
+        launch=(qpos, qvel),
+        notes=(f"""    <!-- Body frame = the ellipsoid's curvature frame, origin at G (ε below the centre O);
          the principal axes of inertia turned by the skew δ = {RB_SKEW:.6f} rad about e₃. -->
-    <body name="rattleback">
-      <freejoint/>
-      <plugin instance="contact"/>
-      <inertial pos="0 0 0" quat="{vec(iquat)}" mass="{f(RB_MASS)}" diaginertia="{vec(RB_INERTIA)}"/>
-      <geom name="shell" type="ellipsoid" size="{vec(RB_AXES)}" pos="0 0 {f(RB_EPS)}" contype="0" conaffinity="0"/>
-    </body>
-  </worldbody>
-  <sensor>
-    <plugin name="contacts" instance="contact"/>
-  </sensor>
-  <keyframe>
-    <key name="launch" qpos="{vec(qpos)}" qvel="{vec(qvel)}"/>{keys}
-  </keyframe>
-</mujoco>
-"""
+""", ""),
+        keys=keys,
+    )
 
 
 MODELS = {"tippe_top.xml": tippe_top, "ball.xml": ball_model, "rattleback.xml": rattleback,

@@ -143,6 +143,7 @@ typedef struct {
   mjtNum* body_v;   /* per body: the free end velocity of its origin (3), */
   mjtNum* body_w;   /* its ω (3), */
   mjtNum* body_p;   /* its origin drifted by θ·Δt (3) */
+  mjtNum* body_jac; /* per body: mj_jac at its origin at this state (6 × nv; drift_pose) */
   mjtNum* w;        /* W = J M⁻¹ Jᵀ, 4·count × 4·count, row-major, cross blocks included */
   mjtNum* jac;      /* J, 4·cap × nv */
   mjtNum* work;     /* 4·cap × nv */

@@ -35,6 +35,7 @@ int step_work_init(step_work* s, const mjModel* m, int npair, double point) {
   s->body_w = calloc((size_t)3 * (size_t)m->nbody, sizeof(mjtNum));
   s->body_p = calloc((size_t)3 * (size_t)m->nbody, sizeof(mjtNum));
   size_t nv = (size_t)(m->nv ? m->nv : 1);
+  s->body_jac = calloc((size_t)6 * nv * (size_t)m->nbody, sizeof(mjtNum));
   size_t rows = (size_t)4 * (size_t)(npair ? npair : 1);
   s->cap = npair;
   s->jac = calloc(rows * nv, sizeof(mjtNum));
@@ -54,7 +55,7 @@ int step_work_init(step_work* s, const mjModel* m, int npair, double point) {
   s->index = calloc(rows / 4, sizeof(int));
   if (!s->jac || !s->work || !s->scratch || !s->w || !s->qfrc || !s->qvel || !s->u || !s->u_free || !s->geom ||
       !s->index || !s->h_free || !s->roll || !s->geom_xpos || !s->geom_xmat || !s->done ||
-      !s->body_v || !s->body_w || !s->body_p) {
+      !s->body_v || !s->body_w || !s->body_p || !s->body_jac) {
     step_work_free(s);
     return -1;
   }
@@ -78,6 +79,7 @@ void step_work_free(step_work* s) {
   free(s->body_v);
   free(s->body_w);
   free(s->body_p);
+  free(s->body_jac);
   free(s->geom);
   free(s->index);
   memset(s, 0, sizeof(*s));
@@ -98,9 +100,20 @@ static void free_velocity(const mjModel* m, mjData* d, step_work* s) {
   for (int i = 0; i < nv; i++) s->qvel[i] = d->qvel[i] + m->opt.timestep * s->qvel[i];
 }
 
+/* res = a·b, 3 × 3 row-major (mju_mulMatMat's sums, in its order, without its general loops:
+ * drift_pose runs it per geom up to three times a step). */
+static void mat3_product(mjtNum res[9], const mjtNum a[9], const mjtNum b[9]) {
+  for (int i = 0; i < 3; i++) {
+    for (int j = 0; j < 3; j++) {
+      res[3 * i + j] = a[3 * i] * b[j] + a[3 * i + 1] * b[3 + j] + a[3 * i + 2] * b[6 + j];
+    }
+  }
+}
+
 /* The geoms' poses at the free end of the step (module docs) in s->geom_xpos, s->geom_xmat:
- * every geom of a body that moves (body_weldid ≠ 0), the others as they are. */
-static void drift_pose(const mjModel* m, const mjData* d, step_work* s, double fraction) {
+ * every geom of a body that moves (body_weldid ≠ 0), the others as they are; the bodies'
+ * Jacobians taken afresh if `fresh` (else those of the last fresh call: the same state). */
+static void drift_pose(const mjModel* m, const mjData* d, step_work* s, double fraction, int fresh) {
   int nv = m->nv;
   double dt = m->opt.timestep * fraction;
   mju_copy(s->geom_xpos, d->geom_xpos, 3 * m->ngeom);
@@ -108,9 +121,9 @@ static void drift_pose(const mjModel* m, const mjData* d, step_work* s, double f
   for (int b = 1; b < m->nbody; b++) {
     if (m->body_weldid[b] == 0 || m->body_geomnum[b] == 0) continue;
     const mjtNum* p = d->xpos + 3 * b;
-    mjtNum* jp = s->scratch;
-    mjtNum* jr = s->scratch + 3 * nv;
-    mj_jac(m, d, jp, jr, p, b);
+    mjtNum* jp = s->body_jac + (size_t)6 * (size_t)nv * (size_t)b;
+    mjtNum* jr = jp + 3 * nv;
+    if (fresh) mj_jac(m, d, jp, jr, p, b);
     double v[3], w[3];
     for (int i = 0; i < 3; i++) {
       v[i] = mju_dot(jp + i * nv, s->qvel, nv);
@@ -132,7 +145,7 @@ static void drift_pose(const mjModel* m, const mjData* d, step_work* s, double f
       double r[3] = {x[0] - p[0], x[1] - p[1], x[2] - p[2]}, rr[3];
       mju_mulMatVec3(rr, rot, r);
       for (int i = 0; i < 3; i++) s->geom_xpos[3 * g + i] = p[i] + dt * v[i] + rr[i];
-      mju_mulMatMat(s->geom_xmat + 9 * g, rot, d->geom_xmat + 9 * g, 3, 3, 3);
+      mat3_product(s->geom_xmat + 9 * g, rot, d->geom_xmat + 9 * g);
     }
   }
 }
@@ -178,7 +191,7 @@ static void drifted_velocity(const mjModel* m, const step_work* s, const pair* k
 int step_prepare(const mjModel* m, mjData* d, const pair* pairs, int npair, step_work* s) {
   int nv = m->nv;
   free_velocity(m, d, s);
-  drift_pose(m, d, s, 1.0);
+  drift_pose(m, d, s, 1.0, 1);
   int k = 0;
   for (int i = 0; i < npair; i++) {
     geometry* g = &s->geom[k];
@@ -198,7 +211,7 @@ int step_prepare(const mjModel* m, mjData* d, const pair* pairs, int npair, step
   s->count = k;
   if (s->point > 0.0) {
     /* step_point θ > 0: u_free at the contact point and frame of the pose drifted by θ·Δt. */
-    if (s->point != 1.0) drift_pose(m, d, s, s->point);
+    if (s->point != 1.0) drift_pose(m, d, s, s->point, 0);
     for (int t = 0; t < k; t++) {
       geometry e;
       pair_geometry_at(m, s->geom_xpos, s->geom_xmat, &pairs[s->index[t]], &e);
@@ -250,9 +263,11 @@ int step_solve(const contensou_contact_f64* const* contacts, int k, double dt, c
  *   r(N) = N − N_law(h⁺(N), ḣ⁺(N)),   h⁺ = h_free − Δt²·(c₀ + W_nn·N),   ḣ⁺ = −(u_free,n + Δt·(c₀ + W_nn·N))
  *
  * (c₀ the other rows' part of (W·w)_n), increasing in N (N_law grows with h and ḣ), r(0) ≤ 0:
- * on the bracket [0, N] if r(N) > 0, else [N, N_law(h⁺(N), ḣ⁺(N))], NORMAL_STEPS Illinois
- * steps. Only when |r(N)| > NORMAL_TOLERANCE·N (one law call per pair otherwise: the library's N
- * is consistent to ≈ 1e-5 on the other steps), pair after pair, NORMAL_SWEEPS sweeps (pairs
+ * on a bracket from one Newton step (normal_row), at most NORMAL_STEPS Illinois steps, ending
+ * early where the next secant step would move N by less than NORMAL_EXACT·N (|r| ≤
+ * NORMAL_EXACT·N·r', r' from the bracket; r' is in the hundreds at 2 ms: Δt²·W_nn·∂N_law/∂h).
+ * Only when |r(N)| > NORMAL_TOLERANCE·N (one law call per pair otherwise: the library's N is
+ * consistent to ≈ 1e-5 on the other steps), pair after pair, NORMAL_SWEEPS sweeps (pairs
  * sharing a body: a ball on a ball on the floor rests with both contacts at the law's value to
  * 8e-4 at 2 ms, the upper one 32 % off without). If the new N makes the pair's friction do work at
  * u⁺ (its power α·a + α²·b for the friction scaled by α, b = Δt·f·W_ff·f ≥ 0), the friction is
@@ -260,6 +275,7 @@ int step_solve(const contensou_contact_f64* const* contacts, int k, double dt, c
  */
 #define NORMAL_STEPS 8
 #define NORMAL_TOLERANCE 1e-3
+#define NORMAL_EXACT 1e-9
 #define NORMAL_SWEEPS 2
 
 static double normal_residual(const contensou_contact_f64* c, double h_free, double un_free, double dt, double c0,
@@ -283,18 +299,50 @@ static int normal_row(const contensou_contact_f64* c, const step_work* s, int t,
   }
   double r = normal_residual(c, s->h_free[t], s->u_free[i], dt, c0, wnn, n, &law);
   if (!(mju_abs(r) > NORMAL_TOLERANCE * n)) return 0;
-  double a = 0.0, b = n, fa = normal_residual(c, s->h_free[t], s->u_free[i], dt, c0, wnn, 0.0, &law), fb = r;
-  if (r < 0.0) {
-    a = n;
-    fa = r;
-    normal_residual(c, s->h_free[t], s->u_free[i], dt, c0, wnn, n, &b);
-    fb = normal_residual(c, s->h_free[t], s->u_free[i], dt, c0, wnn, b, &law);
+  /* The bracket, from a Newton step on r at N with the Hertz slope r' ≈ 1 + 1.5·Δt²·W_nn·N_law/h⁺
+   * (∂N_law/∂h = 1.5·N_law/h at a fixed ḣ; the damping's ∂N_law/∂ḣ left out, so r' is
+   * underestimated and the step long): x is kept as one end if r(x) has the other sign than r(N),
+   * else it replaces N and N_law(x) is the other end (r(N_law(x)) has the other sign than r(x):
+   * N_law falls as N grows). Past N_sep the end approach h⁺(N) ≤ 0: N_law = 0 and r(N) = N there,
+   * a flat branch the secant crawls along (measured on the top at 2 ms with its N re-solved at
+   * MuJoCo's end pose, mujoco/README.md: 8 steps from [N, N_law(N)] left a 2.5 % bracket); the
+   * root lies below N_sep (r ≤ 0 needs N_law > 0, h⁺ > 0), so N_sep caps the upper end. */
+  double nsep = wnn > 0.0 ? (s->h_free[t] / (dt * dt) - c0) / wnn : mjMAXVAL;
+  double hplus = s->h_free[t] - dt * dt * (c0 + wnn * n);
+  double x0 = law > 0.0 && hplus > 0.0 ? n - r / (1.0 + 1.5 * dt * dt * wnn * law / hplus) : law;
+  if (r < 0.0 && !(x0 < nsep)) x0 = 0.5 * (n + nsep);
+  if (!(x0 >= 0.0)) x0 = 0.0;
+  double lx, f0 = normal_residual(c, s->h_free[t], s->u_free[i], dt, c0, wnn, x0, &lx);
+  double a = n, b = x0, fa = r, fb = f0;
+  if ((r < 0.0) == (f0 < 0.0)) {
+    /* x0 on N's side: x0 and N_law(x0). */
+    a = x0;
+    fa = f0;
+    b = lx;
+    fb = normal_residual(c, s->h_free[t], s->u_free[i], dt, c0, wnn, b, &lx);
+  }
+  if (a > b) {
+    double y = a, fy = fa;
+    a = b;
+    fa = fb;
+    b = y;
+    fb = fy;
   }
   if (!(fa <= 0.0 && fb >= 0.0)) return 0;
+  if (nsep > a && nsep < b) {
+    b = nsep;
+    fb = nsep;
+  }
   int side = 0;
   for (int step = 0; step < NORMAL_STEPS && fb - fa > 0.0; step++) {
-    double x = b - fb * (b - a) / (fb - fa);
+    double slope = (fb - fa) / (b - a), x = b - fb / slope;
     double fx = normal_residual(c, s->h_free[t], s->u_free[i], dt, c0, wnn, x, &law);
+    if (mju_abs(fx) <= NORMAL_EXACT * x * slope) {
+      /* Converged: the next secant step would move N by less than NORMAL_EXACT·N. */
+      a = b = x;
+      fa = fb = 0.0;
+      break;
+    }
     if (fx > 0.0) {
       b = x;
       fb = fx;

@@ -714,7 +714,7 @@ def test_step_aware_rattleback_stalls_as_the_rust_scene(dt):
 @pytest.mark.parametrize("key", ["launch", "steady"])
 def test_step_aware_rolling_rattleback_keeps_the_rust_scenes_outcome(dt, key):
     """step_point 0.55, the friction passive at MuJoCo's end velocity: measured reversal −0.2 %
-    (0.5 ms), −0.5 % (1 ms); steady stall −6.4 %, −9.2 %; at 2 ms the same outcomes (1.846 s,
+    (0.5 ms), −0.5 % (1 ms); steady stall −6.3 %, −9.2 %; at 2 ms the same outcomes (1.848 s,
     1.610 s)."""
     event, t_rust = RUST_RATTLEBACK_TABLE[key]
     m = mujoco.MjModel.from_xml_path(str(run_models.MODELS / "rattleback_rolling.xml"))

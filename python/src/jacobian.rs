@@ -2,36 +2,15 @@
 //! (h, ḣ, v_x, v_y, ω), row by row over broadcast arguments — each row
 //! [`DynContact::jacobian_rolling`], bit for bit `contact_eval jacobian`.
 
-use ::contensou::dynamic::{DynContact, Form, Invalid, Law};
+use ::contensou::dynamic::{DynContact, Invalid};
 use ::contensou::jacobian::OUTPUTS;
-use pyo3::prelude::*;
-use pyo3::types::PyDict;
 
 use crate::columns::Column;
 use crate::rows::{Precision, StepColumns, evaluate_each_py, step_at};
-use crate::{contract_function, with_contract_rows, with_step_columns};
-
-/// The per-row Jacobian in precision `T`.
-fn jacobian_in<'py, T: Precision>(
-    py: Python<'py>,
-    values: [&Bound<'py, PyAny>; 11],
-    optional: [Option<&Bound<'py, PyAny>>; 4],
-    law: Law,
-    form: Form,
-) -> PyResult<Bound<'py, PyDict>> {
-    with_contract_rows::<T, _>(
-        values,
-        optional,
-        law,
-        form,
-        |shape, steps, rolling, c, named| {
-            evaluate_each_py(py, shape, c, row_of(steps, rolling), &OUTPUTS, named)
-        },
-    )
-}
+use crate::{contract_function, with_contract_rows};
 
 /// The Jacobian of row i from the step columns and the optional rolling velocity.
-fn row_of<'a, T: Precision>(
+pub fn row_of<'a, T: Precision>(
     steps: &'a StepColumns<'a, T>,
     rolling: [Option<&'a Column<'a, T>>; 2],
 ) -> impl Fn(&DynContact<T>, usize) -> Result<[T; 24], Invalid> + Send + Sync + 'a {
@@ -39,18 +18,6 @@ fn row_of<'a, T: Precision>(
         let (step, rolling) = step_at(steps, rolling, i);
         c.jacobian_rolling(&step, &rolling).map(|j| j.to_array())
     }
-}
-
-/// `Contact.jacobian`: the step columns of a built contact.
-pub fn built_in<'py, T: Precision>(
-    py: Python<'py>,
-    contact: &DynContact<T>,
-    values: [&Bound<'py, PyAny>; 5],
-    rolling: [Option<&Bound<'py, PyAny>>; 2],
-) -> PyResult<Bound<'py, PyDict>> {
-    with_step_columns::<T, _>(values, rolling, |shape, steps, rolling, named| {
-        evaluate_each_py(py, shape, contact, row_of(steps, rolling), &OUTPUTS, named)
-    })
 }
 
 contract_function! {
@@ -63,5 +30,9 @@ contract_function! {
     /// of the broadcast shape — bit for bit `contact_eval jacobian`. Forward-mode dual numbers
     /// through the library's code: at a law's kink the derivative of the branch the value takes;
     /// h ≤ 0 gives zeros. `ValueError` as `wrench` (argument, index, reason).
-    pub fn jacobian => jacobian_in, [], []
+    pub fn jacobian[][] => |py, values, optional, law, form| {
+        with_contract_rows::<T, _>(values, optional, law, form, |shape, steps, rolling, c, named| {
+            evaluate_each_py(py, shape, c, row_of(steps, rolling), &OUTPUTS, named)
+        })
+    }
 }

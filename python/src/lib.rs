@@ -35,7 +35,10 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
 use columns::{Column, with_columns};
-use rows::{Named, PerRow, Precision, StepColumns, contract_named, evaluate_py, step_named};
+use rows::{
+    Named, PerRow, Precision, StepColumns, contract_named, evaluate_each_py, evaluate_py,
+    step_named,
+};
 
 /// The value of `option` called `name` among `all`, or a `ValueError` listing the names.
 fn named<V: Copy>(
@@ -75,19 +78,21 @@ fn is_f32(precision: &str) -> PyResult<bool> {
 
 /// A `#[pyfunction]` over the contract's columns: `P, Q, estar, cd, f, delta, h, hdot, vx, vy,
 /// omega`, then the `[$extra]` ones; keyword-only `law`, `precision`, `form`, the optional
-/// `G, nu, vrx, vry`, then the optional `[$optional]` ones. Its body: `$in::<T>(py, values,
-/// optional, law, form)` in the precision asked for, the arguments in that order.
+/// `G, nu, vrx, vry`, then the optional `[$optional]` ones. Its body is `$body` with `values`
+/// (the required arguments in that order), `optional` (`Option`s in that order), `law`, `form`
+/// and `py` bound to the names given, once for each precision: `T` is `f32` or `f64` as asked.
 macro_rules! contract_function {
     (
         $(#[$doc:meta])*
-        $vis:vis fn $name:ident => $in:ident, [$($extra:ident),*], [$($optional:ident),*]
+        $vis:vis fn $name:ident[$($extra:ident),*][$($optional:ident),*]
+            => |$py:ident, $values:ident, $optionals:ident, $law:ident, $form:ident| $body:expr
     ) => {
         $(#[$doc])*
         #[::pyo3::pyfunction]
         #[pyo3(signature = (P, Q, estar, cd, f, delta, h, hdot, vx, vy, omega, $($extra,)* *, law = "best", precision = "f64", form = "fixed", G = None, nu = None, vrx = None, vry = None $(, $optional = None)*))]
         #[allow(non_snake_case, clippy::too_many_arguments)]
         $vis fn $name<'py>(
-            py: ::pyo3::Python<'py>,
+            $py: ::pyo3::Python<'py>,
             P: &::pyo3::Bound<'py, ::pyo3::PyAny>,
             Q: &::pyo3::Bound<'py, ::pyo3::PyAny>,
             estar: &::pyo3::Bound<'py, ::pyo3::PyAny>,
@@ -109,13 +114,15 @@ macro_rules! contract_function {
             vry: Option<&::pyo3::Bound<'py, ::pyo3::PyAny>>,
             $($optional: Option<&::pyo3::Bound<'py, ::pyo3::PyAny>>,)*
         ) -> ::pyo3::PyResult<::pyo3::Bound<'py, ::pyo3::types::PyDict>> {
-            let (law, form) = ($crate::law_of(law)?, $crate::form_of(form)?);
-            let values = [P, Q, estar, cd, f, delta, h, hdot, vx, vy, omega $(, $extra)*];
-            let optional = [G, nu, vrx, vry $(, $optional)*];
+            let ($law, $form) = ($crate::law_of(law)?, $crate::form_of(form)?);
+            let $values = [P, Q, estar, cd, f, delta, h, hdot, vx, vy, omega $(, $extra)*];
+            let $optionals = [G, nu, vrx, vry $(, $optional)*];
             if $crate::is_f32(precision)? {
-                $in::<f32>(py, values, optional, law, form)
+                type T = f32;
+                $body
             } else {
-                $in::<f64>(py, values, optional, law, form)
+                type T = f64;
+                $body
             }
         }
     };
@@ -156,23 +163,6 @@ fn with_contract_rows<'py, T: Precision, R>(
     )
 }
 
-/// The per-row function in precision `T`.
-fn wrench_in<'py, T: Precision>(
-    py: Python<'py>,
-    values: [&Bound<'py, PyAny>; 11],
-    optional: [Option<&Bound<'py, PyAny>>; 4],
-    law: Law,
-    form: Form,
-) -> PyResult<Bound<'py, PyDict>> {
-    with_contract_rows::<T, _>(
-        values,
-        optional,
-        law,
-        form,
-        |shape, steps, rolling, c, named| evaluate_py(py, shape, steps, rolling, c, named),
-    )
-}
-
 contract_function! {
     /// The wrench of the contract, row by row over the broadcast arguments.
     ///
@@ -183,7 +173,11 @@ contract_function! {
     /// shape (numpy scalars if every argument is a scalar), dtype float32 for `precision="f32"`.
     /// Raises `ValueError` naming the argument, the index and the reason for any invalid value,
     /// an unknown `law`, `precision` or `form`, or shapes that do not broadcast.
-    fn wrench => wrench_in, [], []
+    fn wrench[][] => |py, values, optional, law, form| {
+        with_contract_rows::<T, _>(values, optional, law, form, |shape, steps, rolling, c, named| {
+            evaluate_py(py, shape, steps, rolling, c, named)
+        })
+    }
 }
 
 /// A value in either precision: a built contact (one per `Contact` or `RollingContact`
@@ -290,15 +284,29 @@ fn with_step_columns<'py, T: Precision, R>(
     })
 }
 
-/// One step (or an array of steps) of a built contact in precision `T`.
+/// A built contact's step columns in precision `T`: the dict of `wrench`, or with `jacobian`
+/// that of `jacobian`.
 fn steps_in<'py, T: Precision>(
     py: Python<'py>,
     contact: &DynContact<T>,
     values: [&Bound<'py, PyAny>; 5],
     rolling: [Option<&Bound<'py, PyAny>>; 2],
+    jacobian: bool,
 ) -> PyResult<Bound<'py, PyDict>> {
     with_step_columns::<T, _>(values, rolling, |shape, steps, rolling, named| {
-        evaluate_py(py, shape, steps, rolling, contact, named)
+        if jacobian {
+            let row = jacobian::row_of(steps, rolling);
+            evaluate_each_py(
+                py,
+                shape,
+                contact,
+                row,
+                &::contensou::jacobian::OUTPUTS,
+                named,
+            )
+        } else {
+            evaluate_py(py, shape, steps, rolling, contact, named)
+        }
     })
 }
 
@@ -356,7 +364,7 @@ impl Contact {
         vry: Option<&Bound<'py, PyAny>>,
     ) -> PyResult<Bound<'py, PyDict>> {
         let values = [h, hdot, vx, vy, omega];
-        each!(&self.built, c => steps_in(py, c, values, [vrx, vry]))
+        each!(&self.built, c => steps_in(py, c, values, [vrx, vry], false))
     }
 
     /// The wrench and its Jacobian at the step columns (scalars or arrays that broadcast),
@@ -376,7 +384,7 @@ impl Contact {
         vry: Option<&Bound<'py, PyAny>>,
     ) -> PyResult<Bound<'py, PyDict>> {
         let values = [h, hdot, vx, vy, omega];
-        each!(&self.built, c => jacobian::built_in(py, c, values, [vrx, vry]))
+        each!(&self.built, c => steps_in(py, c, values, [vrx, vry], true))
     }
 
     /// One scalar step for tight Python loops (a physics engine's callback): Python floats in,

@@ -41,3 +41,14 @@ def with_bad(good, name, value, index=None, shape=(5,)):
         column[index] = value
         args[name] = column
     return args
+
+
+def every_law_form_precision(test):
+    """`test(law, form, precision)` run for every law, form and precision (pytest parameters)."""
+    import pytest
+
+    import contensou
+
+    for name, values in [("law", contensou.LAWS), ("form", contensou.FORMS), ("precision", ["f64", "f32"])]:
+        test = pytest.mark.parametrize(name, values)(test)
+    return test

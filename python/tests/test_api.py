@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 import contensou
-from rows import contract_rows
+from rows import contract_rows, every_law_form_precision
 
 SPEC = {"P": 20.0, "Q": 50.0, "estar": 1.15e11, "cd": 0.0, "f": 0.3, "delta": 1e-4}
 STEP = {"h": 1e-6, "hdot": 0.0, "vx": 0.01, "vy": -0.002, "omega": 30.0}
@@ -62,9 +62,7 @@ def test_empty_arrays():
     assert all(v.shape == (0, 3) for v in w.values())
 
 
-@pytest.mark.parametrize("precision", ["f64", "f32"])
-@pytest.mark.parametrize("form", contensou.FORMS)
-@pytest.mark.parametrize("law", contensou.LAWS)
+@every_law_form_precision
 def test_contact_equals_per_row(law, form, precision):
     dtype = np.float32 if precision == "f32" else np.float64
     steps = contract_rows(200, seed=11, dtype=dtype)

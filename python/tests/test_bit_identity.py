@@ -18,7 +18,7 @@ import numpy as np
 import pytest
 
 import contensou
-from rows import contract_rows
+from rows import contract_rows, every_law_form_precision
 
 REPO = Path(__file__).resolve().parents[2]
 DTYPES = {"f32": np.float32, "f64": np.float64}
@@ -73,9 +73,7 @@ def assert_same_bits(got, want, precision, outputs=None):
         assert bad.size == 0, f"{c}: {bad.size} rows differ, first {bad[:3]}: {g[bad[:3]]} vs {w[bad[:3]]}"
 
 
-@pytest.mark.parametrize("precision", ["f64", "f32"])
-@pytest.mark.parametrize("form", contensou.FORMS)
-@pytest.mark.parametrize("law", contensou.LAWS)
+@every_law_form_precision
 def test_wrench_matches_the_cli(law, form, precision):
     rows = contract_rows(400, seed=zlib.crc32(f"{law}/{form}".encode()), dtype=DTYPES[precision])
     want = reference(rows, law, form, precision)
@@ -117,9 +115,7 @@ def rolling_columns(rows, seed):
     return {k: v.astype(dtype) for k, v in extra.items()}
 
 
-@pytest.mark.parametrize("precision", ["f64", "f32"])
-@pytest.mark.parametrize("form", contensou.FORMS)
-@pytest.mark.parametrize("law", contensou.LAWS)
+@every_law_form_precision
 def test_rolling_columns_match_the_cli(law, form, precision):
     """The optional columns G, nu, vrx, vry through contensou.wrench and the CLI: every law (the
     sliding laws ignore them: the bits of the plain call), and subsets (defaults)."""

@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 
 import contensou
-from rows import contract_rows
+from rows import contract_rows, every_law_form_precision
 from test_bit_identity import DTYPES, REPO, assert_same_bits, reference, reference_command, rolling_columns, text
 
 J = list(contensou.JACOBIAN_OUTPUTS)
@@ -52,9 +52,7 @@ def step_rows(n, seed, dtype):
     return {k: v.astype(dtype) for k, v in rows.items()}
 
 
-@pytest.mark.parametrize("precision", ["f64", "f32"])
-@pytest.mark.parametrize("form", contensou.FORMS)
-@pytest.mark.parametrize("law", contensou.LAWS)
+@every_law_form_precision
 def test_jacobian_matches_the_cli(law, form, precision):
     dtype = DTYPES[precision]
     rows = contract_rows(200, seed=zlib.crc32(f"jac/{law}/{form}".encode()), dtype=dtype)
@@ -73,9 +71,7 @@ def test_jacobian_matches_the_cli(law, form, precision):
     assert_same_bits(got, want, precision, J)
 
 
-@pytest.mark.parametrize("precision", ["f64", "f32"])
-@pytest.mark.parametrize("form", contensou.FORMS)
-@pytest.mark.parametrize("law", contensou.LAWS)
+@every_law_form_precision
 def test_step_matches_the_cli(law, form, precision):
     dtype = DTYPES[precision]
     rows = step_rows(150, seed=zlib.crc32(f"step/{law}/{form}".encode()), dtype=dtype)

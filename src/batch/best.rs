@@ -12,24 +12,9 @@ use crate::friction::best::{
 };
 use crate::friction::{BestContact, Constants};
 
-/// The quartic's coefficients of a few contacts.
-#[derive(Clone, Copy, Debug)]
-pub struct QuarticLanes<V> {
-    a: V,
-    b: V,
-    c: V,
-    k22: V,
-    k40: V,
-    k40m: V,
-    hb: V,
-    ha: V,
-    t40: V,
-    t22: V,
-    t40m: V,
-    m1: V,
-}
-
-impl<V: Lanes> QuarticLanes<V> {
+/// The quartic's coefficients of a few contacts, lane by lane ([`Quartic::eval`] serves
+/// scalars and lanes alike).
+impl<V: Lanes> Quartic<V> {
     #[inline(always)]
     fn of(q: &[Quartic<V::T>]) -> Self {
         let lane = |f: fn(&Quartic<V::T>) -> V::T| {
@@ -42,7 +27,7 @@ impl<V: Lanes> QuarticLanes<V> {
         // every field, lane i from the contact i (cycling)
         macro_rules! by_lane {
             ($($field:ident),*) => {
-                QuarticLanes {
+                Quartic {
                     $($field: V::from_array(&lane(|q| q.$field)),)*
                 }
             };
@@ -67,7 +52,7 @@ impl<V: Lanes> QuarticLanes<V> {
         let three = splat::<V>(3.0);
         let t40 = three * c40;
         let im1 = V::splat(V::T::ONE) / m1;
-        QuarticLanes {
+        Quartic {
             a,
             b,
             c: k.c,
@@ -85,7 +70,7 @@ impl<V: Lanes> QuarticLanes<V> {
 
     /// `Quartic::boundary`: the coefficients at the ellipse (z = 0).
     #[inline(always)]
-    fn boundary(&self, gamma: V) -> [V; 7] {
+    fn lane_boundary(&self, gamma: V) -> [V; 7] {
         let (a, b, c, m1) = (self.a, self.b, self.c, self.m1);
         let half = V::splat(V::T::HALF);
         let two = V::splat(V::T::TWO);
@@ -103,18 +88,6 @@ impl<V: Lanes> QuarticLanes<V> {
             three * (c40 * (one + m1) - c22 * m1),
         ]
     }
-
-    /// `Quartic::eval`.
-    #[inline(always)]
-    fn eval(&self, x: V, y: V) -> (V, V, V) {
-        let (x2, y2) = (x * x, y * y);
-        let fx = y * (self.a + self.k22 * x2 + self.k40m * y2);
-        let fy = x * (self.b + self.k40 * x2 + self.k22 * y2);
-        let tz = -self.c
-            + x2 * (self.hb + self.t40 * x2 + self.t22 * y2)
-            + y2 * (self.ha + self.t40m * y2);
-        (fx, fy, tz)
-    }
 }
 
 /// A constant in every lane.
@@ -126,7 +99,7 @@ fn splat<V: Lanes>(x: f64) -> V {
 /// The per-contact form splatted: quartic, m, 1 + γ, the number of pieces used and the pieces.
 #[derive(Clone, Copy, Debug)]
 pub struct Fixed<V: Lanes> {
-    quartic: QuarticLanes<V>,
+    quartic: Quartic<V>,
     m: V,
     g1: V,
     /// The pieces used (8, or 12 for the thin patches), as `T`.
@@ -149,7 +122,7 @@ impl<V: Lanes> Fixed<V> {
                 .unwrap_or(V::T::ZERO)
         };
         Fixed {
-            quartic: QuarticLanes::of(core::slice::from_ref(q)),
+            quartic: Quartic::of(core::slice::from_ref(q)),
             m: V::splat(m),
             g1: V::splat(g1),
             nt: V::splat(nt),
@@ -160,7 +133,7 @@ impl<V: Lanes> Fixed<V> {
 
 /// `inside`: the traction of the lanes inside the ellipse (rest included), and that mask.
 #[inline(always)]
-fn inside<V: Lanes>(q: &QuarticLanes<V>, s: &State<V>) -> (Tr<V>, V::Mask) {
+fn inside<V: Lanes>(q: &Quartic<V>, s: &State<V>) -> (Tr<V>, V::Mask) {
     let zero = V::splat(V::T::ZERO);
     let (x, y, w) = (s.x, s.y, s.w);
     let is_inside = V::not((x * x + q.m1 * y * y).gt(q.m1 * w * w));
@@ -271,7 +244,7 @@ pub(crate) fn fixed<V: Lanes>(p: &Fixed<V>, s: &State<V>) -> Tr<V> {
 #[inline(always)]
 pub(crate) fn varying<V: Lanes>(k: &[Constants<V::T>], s: &State<V>) -> Tr<V> {
     let shape = Shape::<V>::of_lanes(k);
-    let q = QuarticLanes::from_shape(&shape);
+    let q = Quartic::from_shape(&shape);
     let (ins, is_inside) = inside(&q, s);
     if !V::any(V::not(is_inside)) {
         return ins;
@@ -283,7 +256,7 @@ pub(crate) fn varying<V: Lanes>(k: &[Constants<V::T>], s: &State<V>) -> Tr<V> {
     let (c, sn, tau, one_minus) = confocal(shape.m, g1, s.x, s.y, s.w);
     let z = one_minus.larger(zero).sqrt();
     // The ends of `coefficients`: the quartic's boundary values and the limits at z = 1.
-    let ends0 = q.boundary(gamma);
+    let ends0 = q.lane_boundary(gamma);
     let g4 = V::splat(V::T::from_f64(0.4));
     let ends1 = [
         one,

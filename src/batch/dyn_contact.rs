@@ -103,7 +103,7 @@ impl<T: BatchReal> DynContact<T> {
                 column: e.column,
                 error: e.error,
             })?;
-            put(out, i, o.to_array());
+            put(out, i, o);
         }
         Ok(())
     }

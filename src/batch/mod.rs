@@ -85,6 +85,7 @@ mod x86;
 use core::sync::atomic::{AtomicU8, Ordering};
 
 use crate::contact::{Contact, VaryingContact};
+use crate::dynamic::Output;
 use crate::friction::{Best, Constants, Coulomb, Ellipsoid, FrictionLaw, Pade, Simplified, Slip};
 use crate::geometry::Curvatures;
 use crate::normal::{Hertz, Modulus};
@@ -402,7 +403,8 @@ fn step_row<T: Real>(steps: &Steps<'_, T>, i: usize) -> Result<(T, T, Slip<T>), 
 
 /// Writes row i of the outputs.
 #[inline]
-pub(crate) fn put<T: Copy>(out: &mut Wrenches<'_, T>, i: usize, row: [T; 7]) {
+pub(crate) fn put<T: Copy>(out: &mut Wrenches<'_, T>, i: usize, row: impl Into<Output<T>>) {
+    let row = row.into().to_array();
     let cols = [
         &mut *out.n,
         &mut *out.fx,
@@ -520,11 +522,7 @@ impl<T: BatchReal, D: BatchDamping<T>, L: BatchLaw> Contact<T, Hertz<T>, D, L> {
         for i in done..n {
             let (h, hdot, slip) = step_row(steps, i)?;
             let w = self.wrench(h, hdot, slip);
-            put(
-                out,
-                i,
-                [w.n, w.fx, w.fy, w.tz, w.patch.a, w.patch.b, w.patch.e2],
-            );
+            put(out, i, w);
         }
         Ok(())
     }
@@ -647,24 +645,7 @@ impl<T: BatchReal, D: BatchDamping<T>, L: BatchLaw> VaryingContact<T, D, L> {
         steps: &Steps<'_, T>,
         out: &mut Wrenches<'_, T>,
     ) -> Result<(), RowError> {
-        let n = check_lengths(Some(curvatures), steps, out)?;
-        let done = T::dispatch(VaryingKernel {
-            contact: self,
-            curvatures: Source::Columns(curvatures),
-            steps,
-            out: &mut *out,
-        });
-        for i in done..n {
-            let curv = curvature_row(curvatures, i)?;
-            let (h, hdot, slip) = step_row(steps, i)?;
-            let w = self.wrench(&curv, h, hdot, slip);
-            put(
-                out,
-                i,
-                [w.n, w.fx, w.fy, w.tz, w.patch.a, w.patch.b, w.patch.e2],
-            );
-        }
-        Ok(())
+        self.many(Source::Columns(curvatures), steps, out)
     }
 
     /// [`VaryingContact::wrench_many`] with the same curvatures on every row (the shape
@@ -676,21 +657,35 @@ impl<T: BatchReal, D: BatchDamping<T>, L: BatchLaw> VaryingContact<T, D, L> {
         steps: &Steps<'_, T>,
         out: &mut Wrenches<'_, T>,
     ) -> Result<(), RowError> {
-        let n = check_lengths(None, steps, out)?;
+        self.many(Source::One(curvatures), steps, out)
+    }
+
+    /// The kernel over the rows it takes, then the scalar call over the rest (the first bad
+    /// row's curvatures, then its step columns, reported).
+    fn many(
+        &self,
+        curvatures: Source<'_, '_, T>,
+        steps: &Steps<'_, T>,
+        out: &mut Wrenches<'_, T>,
+    ) -> Result<(), RowError> {
+        let columns = match curvatures {
+            Source::Columns(c) => Some(c),
+            Source::One(_) => None,
+        };
+        let n = check_lengths(columns, steps, out)?;
         let done = T::dispatch(VaryingKernel {
             contact: self,
-            curvatures: Source::One(curvatures),
+            curvatures,
             steps,
             out: &mut *out,
         });
         for i in done..n {
+            let curv = match curvatures {
+                Source::Columns(c) => curvature_row(c, i)?,
+                Source::One(c) => *c,
+            };
             let (h, hdot, slip) = step_row(steps, i)?;
-            let w = self.wrench(curvatures, h, hdot, slip);
-            put(
-                out,
-                i,
-                [w.n, w.fx, w.fy, w.tz, w.patch.a, w.patch.b, w.patch.e2],
-            );
+            put(out, i, self.wrench(&curv, h, hdot, slip));
         }
         Ok(())
     }

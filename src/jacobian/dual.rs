@@ -94,27 +94,22 @@ impl<T: Real, const K: usize> PartialEq for Dual<T, K> {
     }
 }
 
+/// The order of dual numbers: that of their values.
+macro_rules! compare {
+    ($($f:ident $op:tt),*) => {$(
+        #[inline(always)]
+        fn $f(&self, other: &Self) -> bool {
+            self.v $op other.v
+        }
+    )*};
+}
+
 impl<T: Real, const K: usize> PartialOrd for Dual<T, K> {
     #[inline(always)]
     fn partial_cmp(&self, other: &Self) -> Option<Ordering> {
         self.v.partial_cmp(&other.v)
     }
-    #[inline(always)]
-    fn lt(&self, other: &Self) -> bool {
-        self.v < other.v
-    }
-    #[inline(always)]
-    fn le(&self, other: &Self) -> bool {
-        self.v <= other.v
-    }
-    #[inline(always)]
-    fn gt(&self, other: &Self) -> bool {
-        self.v > other.v
-    }
-    #[inline(always)]
-    fn ge(&self, other: &Self) -> bool {
-        self.v >= other.v
-    }
+    compare!(lt <, le <=, gt >, ge >=);
 }
 
 impl<T: Real, const K: usize> fmt::Display for Dual<T, K> {
@@ -132,28 +127,27 @@ impl<T: Real, const K: usize> FromStr for Dual<T, K> {
     }
 }
 
-impl<T: Real, const K: usize> Add for Dual<T, K> {
-    type Output = Self;
-    #[inline(always)]
-    fn add(self, o: Self) -> Self {
-        let mut d = self.d;
-        for (x, &y) in d.iter_mut().zip(o.d.iter()) {
-            *x += y;
+/// `impl $tr for Dual`: the values and the derivatives entry by entry by `$op` (a sum or a
+/// difference).
+macro_rules! additive {
+    ($($tr:ident, $f:ident, $op:tt, $op_assign:tt;)*) => {$(
+        impl<T: Real, const K: usize> $tr for Dual<T, K> {
+            type Output = Self;
+            #[inline(always)]
+            fn $f(self, o: Self) -> Self {
+                let mut d = self.d;
+                for (x, &y) in d.iter_mut().zip(o.d.iter()) {
+                    *x $op_assign y;
+                }
+                Dual { v: self.v $op o.v, d }
+            }
         }
-        Dual { v: self.v + o.v, d }
-    }
+    )*};
 }
 
-impl<T: Real, const K: usize> Sub for Dual<T, K> {
-    type Output = Self;
-    #[inline(always)]
-    fn sub(self, o: Self) -> Self {
-        let mut d = self.d;
-        for (x, &y) in d.iter_mut().zip(o.d.iter()) {
-            *x -= y;
-        }
-        Dual { v: self.v - o.v, d }
-    }
+additive! {
+    Add, add, +, +=;
+    Sub, sub, -, -=;
 }
 
 impl<T: Real, const K: usize> Mul for Dual<T, K> {
@@ -214,6 +208,26 @@ fn sign<T: Real>(x: T) -> T {
     T::ONE.copysign(x)
 }
 
+/// `Real`'s conversions into a dual number: constants (zero derivatives).
+macro_rules! constants {
+    ($($f:ident($t:ty)),*) => {$(
+        #[inline(always)]
+        fn $f(x: $t) -> Self {
+            Self::constant(T::$f(x))
+        }
+    )*};
+}
+
+/// `Real`'s reads of a dual number: those of its value.
+macro_rules! of_value {
+    ($($f:ident -> $t:ty),*) => {$(
+        #[inline(always)]
+        fn $f(self) -> $t {
+            self.v.$f()
+        }
+    )*};
+}
+
 impl<T: Real, const K: usize> crate::real::sealed::Sealed for Dual<T, K> {}
 
 impl<T: Real, const K: usize> Real for Dual<T, K> {
@@ -239,30 +253,13 @@ impl<T: Real, const K: usize> Real for Dual<T, K> {
     ) -> &'a [[Self::Base; W]; C] {
         T::of_precision(single, double)
     }
-    #[inline(always)]
-    fn from_base(x: Self::Base) -> Self {
-        Self::constant(T::from_base(x))
-    }
-    #[inline(always)]
-    fn from_f64(x: f64) -> Self {
-        Self::constant(T::from_f64(x))
-    }
-    #[inline(always)]
-    fn from_f32(x: f32) -> Self {
-        Self::constant(T::from_f32(x))
-    }
-    #[inline(always)]
-    fn to_f64(self) -> f64 {
-        self.v.to_f64()
-    }
-    #[inline(always)]
-    fn from_usize(i: usize) -> Self {
-        Self::constant(T::from_usize(i))
-    }
-    #[inline(always)]
-    fn trunc_usize(self) -> usize {
-        self.v.trunc_usize()
-    }
+    constants!(
+        from_base(Self::Base),
+        from_f64(f64),
+        from_f32(f32),
+        from_usize(usize)
+    );
+    of_value!(to_f64 -> f64, trunc_usize -> usize, is_finite -> bool, is_positive_normal -> bool);
     #[inline(always)]
     fn sqrt(self) -> Self {
         let r = self.v.sqrt();
@@ -364,14 +361,6 @@ impl<T: Real, const K: usize> Real for Dual<T, K> {
     #[inline(always)]
     fn floor(self) -> Self {
         Self::constant(self.v.floor())
-    }
-    #[inline(always)]
-    fn is_finite(self) -> bool {
-        self.v.is_finite()
-    }
-    #[inline(always)]
-    fn is_positive_normal(self) -> bool {
-        self.v.is_positive_normal()
     }
 }
 

@@ -9,25 +9,23 @@ use crate::geometry::Curvatures;
 
 use super::lift::LinearLaw;
 
-impl<T: Real, L: LinearLaw> Formed<T, L> {
-    #[inline]
-    fn jacobian(&self, curvatures: &Curvatures<T>, s: &State<T>) -> Jacobian<T> {
-        match self {
-            Formed::Fixed(c) => c.linearize(s),
-            Formed::Varying(c) => c.at(curvatures).linearize(s),
+/// The Jacobian of a contact in either form (a varying one at this step's curvatures), for
+/// the sliding and the rolling laws.
+macro_rules! either_form {
+    ($($formed:ident<$law:ident>),*) => {$(
+        impl<T: Real, L: $law> $formed<T, L> {
+            #[inline]
+            fn jacobian(&self, curvatures: &Curvatures<T>, s: &State<T>) -> Jacobian<T> {
+                match self {
+                    $formed::Fixed(c) => c.linearize(s),
+                    $formed::Varying(c) => c.at(curvatures).linearize(s),
+                }
+            }
         }
-    }
+    )*};
 }
 
-impl<T: Real, L: RollingLaw> RollingFormed<T, L> {
-    #[inline]
-    fn jacobian(&self, curvatures: &Curvatures<T>, s: &State<T>) -> Jacobian<T> {
-        match self {
-            RollingFormed::Fixed(c) => c.linearize(s),
-            RollingFormed::Varying(c) => c.at(curvatures).linearize(s),
-        }
-    }
-}
+either_form!(Formed<LinearLaw>, RollingFormed<RollingLaw>);
 
 impl<T: Real> DynContact<T> {
     /// The wrench (N, F_x, F_y, T_z) and its Jacobian with respect to (h, ḣ, v_x, v_y, ω) for

@@ -9,6 +9,8 @@ use crate::friction::{
     Best, BestSeries, Constants, Coulomb, Ellipsoid, FrictionLaw, Pade, Simplified, SlipState,
     Traction,
 };
+#[cfg(feature = "micromath")]
+use crate::normal::HertzMicromath;
 use crate::normal::{
     CompressionDamping, Damping, Fitted, Hertz, HuntCrossley, NormalLaw, Undamped, Volumetric,
 };
@@ -51,39 +53,32 @@ fn lift<T: Real>(x: T) -> D5<T> {
     Dual::constant(x)
 }
 
-impl<T: Real> LinearNormal<T> for Hertz<T> {
-    type Dual = Hertz<D5<T>>;
-    #[inline(always)]
-    fn lift(&self) -> Self::Dual {
-        self.map(lift)
-    }
+/// `impl $tr<T> for $ty<T>`, the law over duals `$ty<D5<T>>` built by `$body` from the
+/// receiver (bound to `$s`).
+macro_rules! lifted {
+    ($($(#[$attr:meta])* $tr:ident for $ty:ident, |$s:ident| $body:expr;)*) => {$(
+        $(#[$attr])*
+        impl<T: Real> $tr<T> for $ty<T> {
+            type Dual = $ty<D5<T>>;
+            #[inline(always)]
+            fn lift(&self) -> Self::Dual {
+                let $s = self;
+                $body
+            }
+        }
+    )*};
 }
 
-impl<T: Real> LinearNormal<T> for Volumetric<T> {
-    type Dual = Volumetric<D5<T>>;
-    #[inline(always)]
-    fn lift(&self) -> Self::Dual {
-        Volumetric(self.0.map(lift))
-    }
-}
-
-impl<T: Real> LinearNormal<T> for Fitted<T> {
-    type Dual = Fitted<D5<T>>;
-    #[inline(always)]
-    fn lift(&self) -> Self::Dual {
-        Fitted(self.0.map(lift))
-    }
-}
-
-/// The derivative is that of the exact √h (a dual number takes libm's square root; the value
-/// part is then exact Hertz, not micromath's, within the law's stated 6.1e-2).
-#[cfg(feature = "micromath")]
-impl<T: Real> LinearNormal<T> for crate::normal::HertzMicromath<T> {
-    type Dual = crate::normal::HertzMicromath<D5<T>>;
-    #[inline(always)]
-    fn lift(&self) -> Self::Dual {
-        crate::normal::HertzMicromath(self.0.map(lift))
-    }
+lifted! {
+    LinearNormal for Hertz, |s| s.map(lift);
+    LinearNormal for Volumetric, |s| Volumetric(s.0.map(lift));
+    LinearNormal for Fitted, |s| Fitted(s.0.map(lift));
+    /// The derivative is that of the exact √h (a dual number takes libm's square root; the
+    /// value part is then exact Hertz, not micromath's, within the law's stated 6.1e-2).
+    #[cfg(feature = "micromath")]
+    LinearNormal for HertzMicromath, |s| HertzMicromath(s.0.map(lift));
+    LinearDamping for HuntCrossley, |s| s.map(lift);
+    LinearDamping for CompressionDamping, |s| s.map(lift);
 }
 
 impl<T: Real> LinearDamping<T> for Undamped {
@@ -91,22 +86,6 @@ impl<T: Real> LinearDamping<T> for Undamped {
     #[inline(always)]
     fn lift(&self) -> Undamped {
         Undamped
-    }
-}
-
-impl<T: Real> LinearDamping<T> for HuntCrossley<T> {
-    type Dual = HuntCrossley<D5<T>>;
-    #[inline(always)]
-    fn lift(&self) -> Self::Dual {
-        self.map(lift)
-    }
-}
-
-impl<T: Real> LinearDamping<T> for CompressionDamping<T> {
-    type Dual = CompressionDamping<D5<T>>;
-    #[inline(always)]
-    fn lift(&self) -> Self::Dual {
-        self.map(lift)
     }
 }
 

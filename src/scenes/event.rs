@@ -247,16 +247,9 @@ impl<T: Real, const N: usize> Crossing<T, N> {
 
 #[cfg(test)]
 mod tests {
+    use super::super::integrate::tests::Osc;
     use super::super::integrate::{Tolerance, dopri45, rk4};
     use super::*;
-
-    /// y'' = −y from (1, 0): y = cos t.
-    struct Osc;
-    impl Ode<f64, 2> for Osc {
-        fn rhs(&self, _t: f64, y: &[f64; 2]) -> [f64; 2] {
-            [y[1], -y[0]]
-        }
-    }
 
     /// First time cos t = 0.3 with RK4 at step h (falling).
     fn rk4_event(h: f64) -> f64 {
@@ -352,17 +345,11 @@ mod tests {
 
     #[test]
     fn f32_locates_within_its_resolution() {
-        struct Osc32;
-        impl Ode<f32, 2> for Osc32 {
-            fn rhs(&self, _t: f32, y: &[f32; 2]) -> [f32; 2] {
-                [y[1], -y[0]]
-            }
-        }
         let g = |y: &[f32; 2]| y[0];
         let mut c = Crossing::new(Direction::Falling);
         c.start(0.0, &[1.0, 0.0], g);
-        rk4(&Osc32, 0.0, [1.0f32, 0.0], 0.05, 40, |_, t, y| {
-            c.update(&Osc32, t, y, g);
+        rk4(&Osc, 0.0, [1.0f32, 0.0], 0.05, 40, |_, t, y| {
+            c.update(&Osc, t, y, g);
         });
         assert!((c.first().unwrap() - core::f32::consts::FRAC_PI_2).abs() < 1e-5);
     }

@@ -97,35 +97,60 @@ pub struct Stats {
     pub finished: bool,
 }
 
-// Dormand–Prince 5(4) tableau.
-const A21: f64 = 1.0 / 5.0;
-const A31: f64 = 3.0 / 40.0;
-const A32: f64 = 9.0 / 40.0;
-const A41: f64 = 44.0 / 45.0;
-const A42: f64 = -56.0 / 15.0;
-const A43: f64 = 32.0 / 9.0;
-const A51: f64 = 19372.0 / 6561.0;
-const A52: f64 = -25360.0 / 2187.0;
-const A53: f64 = 64448.0 / 6561.0;
-const A54: f64 = -212.0 / 729.0;
-const A61: f64 = 9017.0 / 3168.0;
-const A62: f64 = -355.0 / 33.0;
-const A63: f64 = 46732.0 / 5247.0;
-const A64: f64 = 49.0 / 176.0;
-const A65: f64 = -5103.0 / 18656.0;
-const B1: f64 = 35.0 / 384.0;
-const B3: f64 = 500.0 / 1113.0;
-const B4: f64 = 125.0 / 192.0;
-const B5: f64 = -2187.0 / 6784.0;
-const B6: f64 = 11.0 / 84.0;
-// Error weights: 5th-order minus embedded 4th-order weights.
-const E1: f64 = 71.0 / 57600.0;
-const E3: f64 = -71.0 / 16695.0;
-const E4: f64 = 71.0 / 1920.0;
-const E5: f64 = -17253.0 / 339200.0;
-const E6: f64 = 22.0 / 525.0;
-const E7: f64 = -1.0 / 40.0;
-const C: [f64; 6] = [0.2, 0.3, 0.8, 8.0 / 9.0, 1.0, 1.0];
+// Dormand–Prince 5(4) tableau: row s of `A` gives stage s + 2 from stages 1..=s + 1, at
+// t + C[s]·h; `B` the 5th-order weights, `E` the 5th- minus embedded 4th-order weights (the
+// zero weights B2, E2 are skipped, not multiplied: a zero times a non-finite stage is NaN).
+const A: [&[f64]; 5] = [
+    &[1.0 / 5.0],
+    &[3.0 / 40.0, 9.0 / 40.0],
+    &[44.0 / 45.0, -56.0 / 15.0, 32.0 / 9.0],
+    &[
+        19372.0 / 6561.0,
+        -25360.0 / 2187.0,
+        64448.0 / 6561.0,
+        -212.0 / 729.0,
+    ],
+    &[
+        9017.0 / 3168.0,
+        -355.0 / 33.0,
+        46732.0 / 5247.0,
+        49.0 / 176.0,
+        -5103.0 / 18656.0,
+    ],
+];
+const B: [f64; 6] = [
+    35.0 / 384.0,
+    0.0,
+    500.0 / 1113.0,
+    125.0 / 192.0,
+    -2187.0 / 6784.0,
+    11.0 / 84.0,
+];
+const E: [f64; 7] = [
+    71.0 / 57600.0,
+    0.0,
+    -71.0 / 16695.0,
+    71.0 / 1920.0,
+    -17253.0 / 339200.0,
+    22.0 / 525.0,
+    -1.0 / 40.0,
+];
+const C: [f64; 5] = [0.2, 0.3, 0.8, 8.0 / 9.0, 1.0];
+
+/// y + h·Σ wᵢkᵢ over the nonzero weights, in order (as [`combine`]).
+#[inline(always)]
+fn weighted<T: Real, const N: usize>(y: &[T; N], h: T, w: &[f64], k: &[[T; N]]) -> [T; N] {
+    let mut out = *y;
+    for (&wi, ki) in w.iter().zip(k) {
+        if wi != 0.0 {
+            let hc = h * T::from_f64(wi);
+            for (o, kij) in out.iter_mut().zip(ki.iter()) {
+                *o += hc * *kij;
+            }
+        }
+    }
+    out
+}
 
 /// Adaptive Dormand–Prince 5(4) from (t0, y0) to t_end, first trial step `h0`, steps capped at
 /// `h_max`, at most `max_steps` attempts. `observe(t, y)` is called after each accepted step.
@@ -155,63 +180,15 @@ pub fn dopri45<T: Real, S: Ode<T, N>, const N: usize>(
             break;
         }
         let h_step = h.min(t_end - t);
-        let k2 = sys.rhs(t + c(C[0]) * h_step, &combine(&y, h_step, &[(c(A21), &k1)]));
-        let k3 = sys.rhs(
-            t + c(C[1]) * h_step,
-            &combine(&y, h_step, &[(c(A31), &k1), (c(A32), &k2)]),
-        );
-        let k4 = sys.rhs(
-            t + c(C[2]) * h_step,
-            &combine(&y, h_step, &[(c(A41), &k1), (c(A42), &k2), (c(A43), &k3)]),
-        );
-        let k5 = sys.rhs(
-            t + c(C[3]) * h_step,
-            &combine(
-                &y,
-                h_step,
-                &[(c(A51), &k1), (c(A52), &k2), (c(A53), &k3), (c(A54), &k4)],
-            ),
-        );
-        let k6 = sys.rhs(
-            t + h_step,
-            &combine(
-                &y,
-                h_step,
-                &[
-                    (c(A61), &k1),
-                    (c(A62), &k2),
-                    (c(A63), &k3),
-                    (c(A64), &k4),
-                    (c(A65), &k5),
-                ],
-            ),
-        );
-        let y_new = combine(
-            &y,
-            h_step,
-            &[
-                (c(B1), &k1),
-                (c(B3), &k3),
-                (c(B4), &k4),
-                (c(B5), &k5),
-                (c(B6), &k6),
-            ],
-        );
-        let k7 = sys.rhs(t + h_step, &y_new);
+        // k[0] = k1 (first same as last), k[1..6] the stages, k[6] at the trial end.
+        let mut k = [k1; 7];
+        for (s, (row, cs)) in A.iter().zip(C).enumerate() {
+            k[s + 1] = sys.rhs(t + c(cs) * h_step, &weighted(&y, h_step, row, &k));
+        }
+        let y_new = weighted(&y, h_step, &B, &k);
+        k[6] = sys.rhs(t + h_step, &y_new);
         stats.rhs_evals += 6;
-        let zero = [T::ZERO; N];
-        let e = combine(
-            &zero,
-            h_step,
-            &[
-                (c(E1), &k1),
-                (c(E3), &k3),
-                (c(E4), &k4),
-                (c(E5), &k5),
-                (c(E6), &k6),
-                (c(E7), &k7),
-            ],
-        );
+        let e = weighted(&[T::ZERO; N], h_step, &E, &k);
         let mut err = T::ZERO;
         for (((ei, yi), yn), at) in e
             .iter()
@@ -236,7 +213,7 @@ pub fn dopri45<T: Real, S: Ode<T, N>, const N: usize>(
             y = y_new;
             sys.project(&mut y);
             // First same as last (the projection moves y by round-off only).
-            k1 = k7;
+            k1 = k[6];
             stats.accepted += 1;
             observe(t, &y);
             h = (h_step * fac).min(h_max);
@@ -252,13 +229,13 @@ pub fn dopri45<T: Real, S: Ode<T, N>, const N: usize>(
 }
 
 #[cfg(test)]
-mod tests {
+pub(super) mod tests {
     use super::*;
 
-    /// Harmonic oscillator y'' = −y.
-    struct Osc;
-    impl Ode<f64, 2> for Osc {
-        fn rhs(&self, _t: f64, y: &[f64; 2]) -> [f64; 2] {
+    /// Harmonic oscillator y'' = −y (also the event tests' system).
+    pub(in crate::scenes) struct Osc;
+    impl<T: Real> Ode<T, 2> for Osc {
+        fn rhs(&self, _t: T, y: &[T; 2]) -> [T; 2] {
             [y[1], -y[0]]
         }
     }

@@ -47,25 +47,16 @@ pub const CONTENSOU_ROLLING_F32_SIZE: usize = 4096;
 /// Bytes of [`contensou_rolling_f64`] (3,568 bytes used in this version on 64-bit hosts).
 pub const CONTENSOU_ROLLING_F64_SIZE: usize = 8192;
 
-/// Caller-owned storage of one `float` rolling contact: opaque,
-/// [`CONTENSOU_ROLLING_F32_SIZE`] bytes, 8-byte aligned (`CONTENSOU_CONTACT_ALIGN`).
-/// Initialised by `contensou_rolling_new_f32`; other calls on storage it did not initialise
-/// return `CONTENSOU_STATUS_NOT_INITIALIZED`. Plain data (may be copied), no destructor;
-/// `contensou_rolling_wrench_f32` only reads it, so threads may share one.
-#[repr(C)]
-#[derive(Debug)]
-pub struct contensou_rolling_f32 {
-    /// Opaque.
-    pub opaque: [u64; 512],
-}
-
-/// Caller-owned storage of one `double` rolling contact: opaque,
-/// [`CONTENSOU_ROLLING_F64_SIZE`] bytes, 8-byte aligned. As [`contensou_rolling_f32`].
-#[repr(C)]
-#[derive(Debug)]
-pub struct contensou_rolling_f64 {
-    /// Opaque.
-    pub opaque: [u64; 1024],
+super::storage! {
+    /// Caller-owned storage of one `float` rolling contact: opaque,
+    /// [`CONTENSOU_ROLLING_F32_SIZE`] bytes, 8-byte aligned (`CONTENSOU_CONTACT_ALIGN`).
+    /// Initialised by `contensou_rolling_new_f32`; other calls on storage it did not initialise
+    /// return `CONTENSOU_STATUS_NOT_INITIALIZED`. Plain data (may be copied), no destructor;
+    /// `contensou_rolling_wrench_f32` only reads it, so threads may share one.
+    contensou_rolling_f32: 512;
+    /// Caller-owned storage of one `double` rolling contact: opaque,
+    /// [`CONTENSOU_ROLLING_F64_SIZE`] bytes, 8-byte aligned. As [`contensou_rolling_f32`].
+    contensou_rolling_f64: 1024;
 }
 
 /// What a rolling storage holds: a tag only the constructor writes, the contact and its law.

@@ -22,6 +22,24 @@ fn zeroed<St>() -> Box<St> {
     unsafe { Box::from_raw(p) }
 }
 
+/// Storage of kind `B` holding the bytes of `from` (as many as fit; the rest zero): a contact
+/// of another precision or kind, which `B`'s calls must refuse by its tag.
+pub fn copied<A, B>(from: &A) -> Box<B> {
+    let mut to = zeroed::<B>();
+    let n = size_of::<A>().min(size_of::<B>());
+    let (src, dst) = (
+        (from as *const A).cast::<u8>(),
+        (&mut *to as *mut B).cast::<u8>(),
+    );
+    unsafe { core::ptr::copy_nonoverlapping(src, dst, n) };
+    to
+}
+
+/// `p` 4 bytes on, as a `T` pointer: misaligned for the `double` types (8-byte aligned).
+pub fn misaligned<T, U>(p: *const U) -> *mut T {
+    p.cast::<u8>().wrapping_add(4).cast_mut().cast()
+}
+
 /// Zeroed storage of one `float` contact.
 pub fn storage32() -> Box<contensou_contact_f32> {
     zeroed()
@@ -58,19 +76,6 @@ pub fn each_null<St, In, O: Default + PartialEq + core::fmt::Debug>(
     ];
     assert_eq!(out, O::default(), "nothing written on error");
     statuses
-}
-
-/// The storage `St` has the size the crate and the header declare as `name` = `size`, and
-/// the header's alignment.
-pub fn assert_storage<St>(name: &str, size: usize) {
-    assert_eq!(core::mem::size_of::<St>(), size, "{name}");
-    assert_eq!(
-        core::mem::align_of::<St>(),
-        CONTENSOU_CONTACT_ALIGN,
-        "{name}"
-    );
-    let header = include_str!("../../include/contensou.h");
-    assert!(header.contains(&format!("#define {name} {size}")), "{name}");
 }
 
 /// The reference contact: P = 10, Q = 50 (1/m), E* = 1.15e11 Pa, c_d = 0.1, f = 0.1,

@@ -119,42 +119,24 @@ fn main() -> ! {
         }
     }
     hprintln!("INPUTS wrench rust f32 slips=64 fnv1a64={:016x}", hash);
+    // One row of stage `wrench-dispatch` in f32.
+    macro_rules! dispatch {
+        ($name:literal, $inputs:expr, $f:ident) => {
+            r.bench("wrench-dispatch", $name, "f32", &$inputs, $f)
+        };
+    }
     let a: [Undamp<'_>; SET] = core::array::from_fn(|i| (&contact, h, slips[i]));
-    r.bench(
-        "wrench-dispatch",
-        "fixed-generic-undamped",
-        "f32",
-        &a,
-        generic_undamped,
-    );
+    dispatch!("fixed-generic-undamped", a, generic_undamped);
     let b: [Hc<'_>; SET] = core::array::from_fn(|i| (&contact_hc, h, slips[i]));
-    r.bench(
-        "wrench-dispatch",
-        "fixed-generic-hc0",
-        "f32",
-        &b,
-        generic_hc0,
-    );
+    dispatch!("fixed-generic-hc0", b, generic_hc0);
     let c: [Dyn<'_>; SET] = core::array::from_fn(|i| (&fixed_dyn, step(&slips[i])));
-    r.bench("wrench-dispatch", "fixed-dynamic", "f32", &c, dynamic);
+    dispatch!("fixed-dynamic", c, dynamic);
     let d: [VUndamp<'_>; SET] = core::array::from_fn(|i| (&varying, &curv, h, slips[i]));
-    r.bench(
-        "wrench-dispatch",
-        "varying-generic-undamped",
-        "f32",
-        &d,
-        varying_undamped,
-    );
+    dispatch!("varying-generic-undamped", d, varying_undamped);
     let e: [VHc<'_>; SET] = core::array::from_fn(|i| (&varying_hc, &curv, h, slips[i]));
-    r.bench(
-        "wrench-dispatch",
-        "varying-generic-hc0",
-        "f32",
-        &e,
-        varying_hc0,
-    );
+    dispatch!("varying-generic-hc0", e, varying_hc0);
     let f: [Dyn<'_>; SET] = core::array::from_fn(|i| (&varying_dyn, step(&slips[i])));
-    r.bench("wrench-dispatch", "varying-dynamic", "f32", &f, dynamic);
+    dispatch!("varying-dynamic", f, dynamic);
     debug::exit(debug::EXIT_SUCCESS);
     #[allow(clippy::empty_loop)]
     loop {}

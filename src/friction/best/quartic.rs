@@ -1,6 +1,8 @@
 //! The exact quartic of `best` inside the ellipse, and the outside coefficients it gives on
 //! the boundary.
 
+use core::ops::{Add, Mul, Neg};
+
 use crate::Real;
 use crate::friction::Constants;
 
@@ -59,6 +61,22 @@ impl<T: Copy> Quartic<T> {
     }
 }
 
+impl<T: Copy + Add<Output = T> + Mul<Output = T> + Neg<Output = T>> Quartic<T> {
+    /// (−F_x, −F_y, T_z) for X = y/|w|, Y = x/|w| (T_z for w > 0): F_x is odd in Y and even in
+    /// X, F_y the reverse, T_z even in both. Scalar or lane-wise (src/batch/best.rs): the arithmetic alone.
+    #[inline(always)]
+    pub(crate) fn eval(&self, x: T, y: T) -> (T, T, T) {
+        let (x2, y2) = (x * x, y * y);
+        let fx = y * (self.a + self.k22 * x2 + self.k40m * y2);
+        let fy = x * (self.b + self.k40 * x2 + self.k22 * y2);
+        // −Ψ + XΨ_X + YΨ_Y: the quadratic terms once, the quartic ones three times.
+        let tz = -self.c
+            + x2 * (self.hb + self.t40 * x2 + self.t22 * y2)
+            + y2 * (self.ha + self.t40m * y2);
+        (fx, fy, tz)
+    }
+}
+
 impl<T: Real> Quartic<T> {
     #[inline(always)]
     pub(crate) fn new(k: &Constants<T>) -> Self {
@@ -91,20 +109,6 @@ impl<T: Real> Quartic<T> {
             t40m: t40 * im1,
             m1,
         }
-    }
-
-    /// (−F_x, −F_y, T_z) for X = y/|w|, Y = x/|w| (T_z for w > 0): F_x is odd in Y and even in
-    /// X, F_y the reverse, T_z even in both.
-    #[inline(always)]
-    pub(crate) fn eval(&self, x: T, y: T) -> (T, T, T) {
-        let (x2, y2) = (x * x, y * y);
-        let fx = y * (self.a + self.k22 * x2 + self.k40m * y2);
-        let fy = x * (self.b + self.k40 * x2 + self.k22 * y2);
-        // −Ψ + XΨ_X + YΨ_Y: the quadratic terms once, the quartic ones three times.
-        let tz = -self.c
-            + x2 * (self.hb + self.t40 * x2 + self.t22 * y2)
-            + y2 * (self.ha + self.t40m * y2);
-        (fx, fy, tz)
     }
 
     /// The seven outside coefficients on the boundary (a_c = 1, τ = 1), from the quartic at

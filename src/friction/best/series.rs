@@ -148,18 +148,26 @@ impl BestSeries {
     }
 }
 
-impl FrictionLaw for BestSeries {
-    const NAME: &'static str = "best-series";
-    type Branch = Branch;
-    const RAMP_BELOW_DELTA: bool = true;
+/// `impl FrictionLaw for $law`: the per-call series with the backend `$backend` (its `ln`).
+macro_rules! series_law {
+    ($(#[$attr:meta])* $law:ident, $name:literal, $backend:ty) => {
+        $(#[$attr])*
+        impl FrictionLaw for $law {
+            const NAME: &'static str = $name;
+            type Branch = Branch;
+            const RAMP_BELOW_DELTA: bool = true;
 
-    super::best_ramps!();
-    crate::friction::law::constants_are_prepared!();
+            super::best_ramps!();
+            crate::friction::law::constants_are_prepared!();
 
-    fn traction<T: Real>(k: &Constants<T>, s: &SlipState<T>) -> (Traction<T>, Branch) {
-        Self::per_call::<Libm, T>(k, s)
-    }
+            fn traction<T: Real>(k: &Constants<T>, s: &SlipState<T>) -> (Traction<T>, Branch) {
+                BestSeries::per_call::<$backend, T>(k, s)
+            }
+        }
+    };
 }
+
+series_law!(BestSeries, "best-series", Libm);
 
 /// [`BestSeries`] with micromath's `ln` for the series' λ = 1 + log₁₀ m₁ (feature
 /// `micromath`; `f32` only, libm for `f64`). The square roots stay [`Real::sqrt`] (the
@@ -178,17 +186,10 @@ impl FrictionLaw for BestSeries {
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct BestMicromath;
 
-#[cfg(feature = "micromath")]
-#[cfg_attr(docsrs, doc(cfg(feature = "micromath")))]
-impl FrictionLaw for BestMicromath {
-    const NAME: &'static str = "best-micromath";
-    type Branch = Branch;
-    const RAMP_BELOW_DELTA: bool = true;
-
-    super::best_ramps!();
-    crate::friction::law::constants_are_prepared!();
-
-    fn traction<T: Real>(k: &Constants<T>, s: &SlipState<T>) -> (Traction<T>, Branch) {
-        BestSeries::per_call::<crate::math::Micromath, T>(k, s)
-    }
-}
+series_law!(
+    #[cfg(feature = "micromath")]
+    #[cfg_attr(docsrs, doc(cfg(feature = "micromath")))]
+    BestMicromath,
+    "best-micromath",
+    crate::math::Micromath
+);

@@ -78,28 +78,10 @@ use crate::Real;
 /// ln 20.
 const LN20: f64 = 2.995_732_273_553_991;
 
-/// Cubic Hermite through `y(i)`, i < n, at x0 + i·h, finite-difference slopes (one-sided at the
-/// ends), x clamped to the nodes' range. Total (`y` out of range: 0).
+/// Cubic Hermite through `y(i)`, i < n, at x0 + i·h (see [`super::hermite`]), x clamped to
+/// the nodes' range.
 fn hermite(n: usize, y: impl Fn(usize) -> f64, x0: f64, h: f64, x: f64) -> f64 {
-    let last = n.saturating_sub(1);
-    let t = super::within((x - x0) / h, 0.0, last as f64);
-    let i = (t as usize).min(n.saturating_sub(2));
-    let u = t - i as f64;
-    let slope = |k: usize| {
-        if k == 0 {
-            y(1) - y(0)
-        } else if k >= last {
-            y(last) - y(last - 1)
-        } else {
-            0.5 * (y(k + 1) - y(k - 1))
-        }
-    };
-    let (y0, y1, m0, m1) = (y(i), y(i + 1), slope(i), slope(i + 1));
-    let (u2, u3) = (u * u, u * u * u);
-    (2.0 * u3 - 3.0 * u2 + 1.0) * y0
-        + (u3 - 2.0 * u2 + u) * m0
-        + (-2.0 * u3 + 3.0 * u2) * y1
-        + (u3 - u2) * m1
+    super::hermite(n, y, (x - x0) / h)
 }
 
 /// Quadratic in ν through ν = 0, ¼, ½.

@@ -164,25 +164,12 @@ pub fn table_node(narrow: bool, i: usize, j: usize) -> Option<[f64; 3]> {
     Some([*row.get(j)?, *row.get(3 + j)?, *row.get(6 + j)?])
 }
 
-/// Cubic Hermite interpolation of a column over g ∈ [0.1, 1] on 10 uniform nodes, with
-/// finite-difference slopes (one-sided at the ends).
+/// Cubic Hermite interpolation of a column over g ∈ [0.1, 1] on 10 uniform nodes
+/// ([`super::hermite`]).
 fn hermite(rows: &[[f64; 9]; 10], col: usize, g: f64) -> f64 {
-    let t = super::within((g - 0.1) * 10.0, 0.0, 9.0);
-    let i = (t as usize).min(8);
-    let u = t - i as f64;
     // `get`: no bounds-check panic path (k ≤ 9 and col ≤ 8 by construction)
     let y = |k: usize| rows.get(k).and_then(|r| r.get(col)).copied().unwrap_or(0.0);
-    let slope = |k: usize| match k {
-        0 => y(1) - y(0),
-        9 => y(9) - y(8),
-        _ => 0.5 * (y(k + 1) - y(k - 1)),
-    };
-    let (y0, y1, m0, m1) = (y(i), y(i + 1), slope(i), slope(i + 1));
-    let (u2, u3) = (u * u, u * u * u);
-    (2.0 * u3 - 3.0 * u2 + 1.0) * y0
-        + (u3 - 2.0 * u2 + u) * m0
-        + (-2.0 * u3 + 3.0 * u2) * y1
-        + (u3 - u2) * m1
+    super::hermite(10, y, (g - 0.1) * 10.0)
 }
 
 /// 1/C quadratic in ν through the columns ν = 0, 0.25, 0.5.

@@ -95,6 +95,31 @@ pub use slip::{RollingSlip, Scaled};
 pub use table::Table;
 pub use velocity::RollingVelocity;
 
+/// Cubic Hermite through `y(i)`, i < n, at the node coordinate `t` (node i at t = i; clamped
+/// to [0, n − 1]), finite-difference slopes (one-sided at the ends): Table E3's columns
+/// ([`Kalker::new`]) and the creep-matrix tables. Total (`y` out of range: whatever `y` says).
+pub(crate) fn hermite(n: usize, y: impl Fn(usize) -> f64, t: f64) -> f64 {
+    let last = n.saturating_sub(1);
+    let t = within(t, 0.0, last as f64);
+    let i = (t as usize).min(n.saturating_sub(2));
+    let u = t - i as f64;
+    let slope = |k: usize| {
+        if k == 0 {
+            y(1) - y(0)
+        } else if k >= last {
+            y(last) - y(last - 1)
+        } else {
+            0.5 * (y(k + 1) - y(k - 1))
+        }
+    };
+    let (y0, y1, m0, m1) = (y(i), y(i + 1), slope(i), slope(i + 1));
+    let (u2, u3) = (u * u, u * u * u);
+    (2.0 * u3 - 3.0 * u2 + 1.0) * y0
+        + (u3 - 2.0 * u2 + u) * m0
+        + (-2.0 * u3 + 3.0 * u2) * y1
+        + (u3 - u2) * m1
+}
+
 /// `x.clamp(lo, hi)` for constant bounds lo ≤ hi without `clamp`'s bounds assertion (a panic
 /// path that survives at `opt-level = "z"`, `tools/no-panic.sh`'s variant); the same value for
 /// every x, NaN included.

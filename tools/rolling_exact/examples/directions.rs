@@ -101,13 +101,7 @@ fn main() {
     let s = 3.0 * NL;
     // rows are written as they are solved (a run cut short keeps what it has); the grids and
     // the time are comments at the end
-    let mut file = std::io::BufWriter::new(std::fs::File::create(out).expect("create csv"));
-    let mut line = |text: &str| {
-        use std::io::Write as _;
-        writeln!(file, "{text}")
-            .and_then(|()| file.flush())
-            .expect("write csv");
-    };
+    let mut line = rolling_exact::line_writer(out);
     line(&format!(
         "# Exact steady-rolling reference, mode `{mode}` of tools/rolling_exact/examples/directions.rs"
     ));

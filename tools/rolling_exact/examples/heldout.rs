@@ -80,13 +80,7 @@ fn main() {
     // elements on the finest grid (the held-out set's 1,024; fewer for a cheaper training set)
     let elements: usize = args.get(4).map_or(1024, |s| s.parse().expect("ELEMENTS"));
     let started = Instant::now();
-    let mut file = std::io::BufWriter::new(std::fs::File::create(out).expect("create csv"));
-    let mut line = |text: &str| {
-        use std::io::Write as _;
-        writeln!(file, "{text}")
-            .and_then(|()| file.flush())
-            .expect("write csv");
-    };
+    let mut line = rolling_exact::line_writer(out);
     if first == 0 {
         line(
             "# Exact steady-rolling reference: the held-out set over the whole domain, tools/rolling_exact/examples/heldout.rs",

@@ -70,13 +70,7 @@ fn main() {
         _ => panic!("mode: aligned, skewed or check"),
     }
     let started = Instant::now();
-    let mut file = std::io::BufWriter::new(std::fs::File::create(&out).expect("create csv"));
-    let mut line = |text: &str| {
-        use std::io::Write as _;
-        writeln!(file, "{text}")
-            .and_then(|()| file.flush())
-            .expect("write csv");
-    };
+    let mut line = rolling_exact::line_writer(&out);
     line(&format!(
         "# Kalker's linear creep matrix by the exact theory, mode `{mode}` of tools/rolling_exact/examples/linear_table.rs (see there)."
     ));

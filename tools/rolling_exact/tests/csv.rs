@@ -99,11 +99,18 @@ fn creep_curves_are_monotone() {
     assert_eq!(pairs, 280);
 }
 
+/// The checks `check` makes on each row of `family`, summed.
+fn checks_of(family: &str, check: impl Fn([f64; 11]) -> usize) -> usize {
+    rows()
+        .iter()
+        .filter(|r| r.family == family)
+        .map(|r| check(r.v))
+        .sum()
+}
+
 #[test]
 fn linear_family_matches_table_e3() {
-    let mut n = 0;
-    for r in rows().iter().filter(|r| r.family == "linear") {
-        let [aob, nu, nl, xi, eta, phi, fx, fy, mz, _, _] = r.v;
+    let n = checks_of("linear", |[aob, nu, nl, xi, eta, phi, fx, fy, mz, _, _]| {
         let (c11, c22, c23) = coefficients_nu(aob, nu).expect("table row");
         let checks: Vec<(f64, f64)> = if xi != 0.0 {
             vec![(-fx * nl / xi, c11)]
@@ -112,22 +119,20 @@ fn linear_family_matches_table_e3() {
         } else {
             vec![(-fy * nl / phi, c23)]
         };
-        for (got, want) in checks {
+        for &(got, want) in &checks {
             assert!(
                 (got / want - 1.0).abs() <= 0.01,
                 "a/b {aob} nu {nu}: {got} vs {want}"
             );
-            n += 1;
         }
-    }
+        checks.len()
+    });
     assert_eq!(n, 60);
 }
 
 #[test]
 fn fullslip_family_matches_exact_integrals() {
-    let mut n = 0;
-    for r in rows().iter().filter(|r| r.family == "fullslip") {
-        let [aob, _, _, xi, eta, phi, fx, fy, mz, _, _] = r.v;
+    let n = checks_of("fullslip", |[aob, _, _, xi, eta, phi, fx, fy, mz, _, _]| {
         let (a, b) = (aob.sqrt(), 1.0 / aob.sqrt());
         let (ex, ey, em) = if a >= b {
             let t = traction(
@@ -151,8 +156,8 @@ fn fullslip_family_matches_exact_integrals() {
             df <= 1e-3 && dm <= 1e-3,
             "a/b {aob} ({xi},{eta},{phi}): dF {df:e} dM {dm:e}"
         );
-        n += 1;
-    }
+        1
+    });
     assert_eq!(n, 25);
 }
 
