@@ -13,6 +13,7 @@ RK4 references).
 import csv
 import json
 import os
+import pathlib
 import statistics as st
 import subprocess
 import sys
@@ -90,9 +91,7 @@ def main():
                     v += f": {100 * (mu / refm[k] - 1):+.1f} %"
             cells.append(v)
         md.append(f"| {label} | {dt * 1e6:g} µs | " + " | ".join(cells) + " |")
-    md.append("")
-    with open("bench-results/bearing-ensemble.md", "w") as f:
-        f.write("\n".join(md))
+    pathlib.Path("bench-results/bearing-ensemble.md").write_text("\n".join(md + [""]))
 
 
 if __name__ == "__main__":
