@@ -6,11 +6,11 @@
 //! `scene` runner reports. Run in release in CI (a few seconds).
 
 use contensou::friction::rolling::Table;
-use contensou::friction::{Best, Coulomb, Friction, FrictionLaw};
+use contensou::friction::{Best, Coulomb, Friction, FrictionLaw, Simplified};
 use contensou::scenes::ball::{Ball, BallEvents};
 use contensou::scenes::integrate::rk4_step;
 use contensou::scenes::rattleback::{
-    BEST_DELTA, COULOMB_DELTA, Creeping, FloorLaw, Params, Rattleback, SpinEvents,
+    BEST_DELTA, COULOMB_DELTA, Creeping, FloorLaw, Params, Rattleback, SIMPLIFIED_DELTA, SpinEvents,
 };
 use contensou::scenes::step_aware::Warm;
 use contensou::scenes::tippe_top::{Params as TopParams, TippeTop};
@@ -22,6 +22,9 @@ const TOP_TOUCH: f64 = 1.74371;
 /// The rattleback's fine-step RK4 stalls (`best`, δ = `BEST_DELTA` = 0.1 mm/s, the δ → 0 limit;
 /// h = 2.5 µs, the same to 1e-9 s at 20 µs): ω₀ = −2, +2 rad/s.
 const RB_STALL: [f64; 2] = [0.836502, 1.173077];
+/// The same for `simplified` at δ = `SIMPLIFIED_DELTA` = 0.1 mm/s (h = 10 µs; the same to 1 µs
+/// at 5 µs and at δ = 0.05 … 0.005 mm/s: bench-results/rattleback-delta.md).
+const RB_STALL_SIMPLIFIED: [f64; 2] = [1.166063, 2.211180];
 /// The rattleback's fine-step RK4 reversals at ω₀ = −2 rad/s: `coulomb` (δ = `COULOMB_DELTA`
 /// = 0.01 mm/s, the δ → 0 limit within 1 ms; h = 2 µs, the same to 1e-8 s at 0.5 µs;
 /// bench-results/rattleback-delta.md) and the rolling law `table` (h = 50 µs)
@@ -255,6 +258,24 @@ fn rattleback_best_outcome_is_the_delta_to_zero_limit() {
     let e = rattle(&sliding::<Best>(1e-3), 1e-4, -2.0, 1.5);
     let late = e.stall().expect("stall at 1 mm/s") - RB_STALL[0];
     assert!(late > 0.01, "δ = 1 mm/s: {late} s late");
+}
+
+/// `simplified` at its δ → 0 limit: stalls, never reverses, within 1.5 % of the fine-step RK4
+/// stall at 0.1 ms (measured +0.40 % / +0.80 %: the step-aware wrench's limit-set projection,
+/// not the step, keeps it off RK4; docs/guide/src/scenes-large-steps.md).
+#[test]
+fn rattleback_simplified_stalls_on_time_at_its_delta() {
+    let rb = sliding::<Simplified>(SIMPLIFIED_DELTA);
+    for (k, spin) in [-2.0, 2.0].into_iter().enumerate() {
+        let e = rattle(&rb, 1e-4, spin, RB_STALL_SIMPLIFIED[k] + 0.1);
+        let stall = e.stall().expect("stall");
+        assert!(e.reversal().is_none(), "ω₀ = {spin}");
+        assert!(
+            (stall / RB_STALL_SIMPLIFIED[k] - 1.0).abs() < 0.015,
+            "ω₀ = {spin}: stall {stall} vs {}",
+            RB_STALL_SIMPLIFIED[k]
+        );
+    }
 }
 
 #[test]
