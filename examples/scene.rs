@@ -4,15 +4,16 @@
 //! ```sh
 //! cargo run --release --features scenes --example scene -- NAME --law L --dt H \
 //!     [--integrator rk4|step-aware] [--end T] [--spin ±2] [--geometry 209|paper] \
-//!     [--ring start|predicted] [--ramp T]
+//!     [--ring start|predicted] [--ramp T] [--delta D]
 //! ```
 //!
 //! NAME: `tippe-top` (laws `best`, `simplified`, `coulomb`; θ₀ = 0.1 rad, 180 rad/s, f = 0.3,
 //! δ = 1e-4 m/s; default end 2.5 s), `ball` (`best`, `coulomb`; the guide's steel ball,
-//! f = 0.1, δ = 1e-4 m/s; default end 0.9 s), `rattleback` (`best` with δ = 0.1 mm/s, the δ → 0
-//! limit: `BEST_DELTA`; `simplified`, `ellipsoid`, `coulomb`, δ = 1 mm/s; or the rolling laws
-//! `table`, `blend`; Kane & Levinson's start,
-//! `--spin` ω₀ (default −2 rad/s); default end 4 s), `bearing` (`best` full slip, δ = 0.05 m/s,
+//! f = 0.1, δ = 1e-4 m/s; default end 0.9 s), `rattleback` (the sliding laws at their δ → 0
+//! limits: `best`, `simplified` δ = 0.1 mm/s (`BEST_DELTA`, `SIMPLIFIED_DELTA`), `coulomb`
+//! 0.01 mm/s (`COULOMB_DELTA`), `ellipsoid` (ignores δ); `--delta D` another δ (m/s) for them;
+//! or the rolling laws `table`, `blend`; Kane & Levinson's start,
+//! `--spin` ω₀ (default −2 rad/s); default end 3 s), `bearing` (`best` full slip, δ = 0.05 m/s,
 //! or the creep laws `table`, `blend`; `--geometry 209|paper`; the step-aware integrator's
 //! `--ring start|predicted` (where the balls see the inner ring within a step, default `start`:
 //! `RingCoupling`); `--ramp T` the load's ramp time (default 5 ms: the reference's own
@@ -87,7 +88,7 @@ struct Args {
 
 fn parse() -> Result<Args, String> {
     let mut it = std::env::args().skip(1);
-    let name = it.next().ok_or("usage: scene NAME --law L --dt H [--integrator rk4|step-aware] [--end T] [--spin ±2] [--geometry 209|paper] [--ring start|predicted] [--ramp T]")?;
+    let name = it.next().ok_or("usage: scene NAME --law L --dt H [--integrator rk4|step-aware] [--end T] [--spin ±2] [--geometry 209|paper] [--ring start|predicted] [--ramp T] [--delta D]")?;
     let mut a = Args {
         name,
         law: "best".into(),
