@@ -29,7 +29,7 @@
 //! - rattleback: `reversal`, `stall` (10 % of |ω₀|), `peak_reversed` (largest spin against ω₀);
 //! - bearing: `ring_torque` (inner ring, N·m), `spin_moment_inner`, `spin_moment_outer`
 //!   (Σ|T_z| over the balls, N·m), `cage` (mean orbital speed / ω_c − 1), means over the last
-//!   quarter of the run.
+//!   quarter of the run; `ring_vibration` the RMS speed of the inner ring's centre there (m/s).
 //!
 //! **Stability** (`stable: false` with a `reason`, and `events` null, instead of figures):
 //! a non-finite state; an energy rise — the largest rise of the mechanical energy (incl. the
@@ -472,6 +472,8 @@ fn bearing_run<C: RaceLaw<f64>>(a: &Args, b: &Bearing<f64, C>) -> Report {
     let mut y = b.initial_state();
     let mut warm = [Warm::default(); BALLS];
     let (mut count, mut ring, mut sm_in, mut sm_out, mut cage) = (0.0f64, 0.0, 0.0, 0.0, 0.0);
+    // The inner ring's vibration: its centre's mean squared velocity.
+    let mut ring_v2 = 0.0f64;
     let (mut checks, mut over) = (0usize, 0usize);
     let mut finite = true;
     let mut done = 0;
@@ -553,6 +555,7 @@ fn bearing_run<C: RaceLaw<f64>>(a: &Args, b: &Bearing<f64, C>) -> Report {
                 orbit += (s[0] * s[4] - s[1] * s[3]) / (s[0] * s[0] + s[1] * s[1]);
             }
             cage += orbit / BALLS as f64 / wc - 1.0;
+            ring_v2 += y[3] * y[3] + y[4] * y[4] + y[5] * y[5];
         }
     }
     let reason = if !finite {
@@ -575,6 +578,7 @@ fn bearing_run<C: RaceLaw<f64>>(a: &Args, b: &Bearing<f64, C>) -> Report {
             ("spin_moment_inner", Some(sm_in / c)),
             ("spin_moment_outer", Some(sm_out / c)),
             ("cage", Some(cage / c)),
+            ("ring_vibration", Some((ring_v2 / c).sqrt())),
         ],
     }
 }
