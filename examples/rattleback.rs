@@ -10,9 +10,9 @@
 //! ```
 //!
 //! `RATTLEBACK_H` (s), `RATTLEBACK_ESTAR` (Pa), `RATTLEBACK_SAMPLE` (s, the output
-//! interval, default 10 ms), `RATTLEBACK_DELTA` (m/s, the full-slip laws' δ, default 1 mm/s)
-//! and `RATTLEBACK_T` (s, default 20) override the step, E* (the rolling laws' G scales with
-//! it), the sampling, δ and the run's length (docs/guide/src/rattleback.md: step, stiffness, sampling and δ checks);
+//! interval, default 10 ms), `RATTLEBACK_DELTA` (m/s, the full-slip laws' δ, default each
+//! law's converged δ, below) and `RATTLEBACK_T` (s, default 20) override the step (for every
+//! law), E* (the rolling laws' G scales with it), the sampling, δ and the run's length (docs/guide/src/rattleback.md: step, stiffness, sampling and δ checks);
 //! `RATTLEBACK_LAWS=table,blend` runs only the named laws; `RATTLEBACK_STIFFNESS=1` prints
 //! h × the friction's tangential rate against RK4's bound (before / after the event).
 //!
@@ -30,8 +30,11 @@
 //! and f = 0.3, rolling at 5 rad/s needs more than f (the friction ratio saturates within
 //! 0.1 s and the body slides), at 2 rad/s the peak |F_t|/N is 0.23–0.25 < f (printed per
 //! run; the `Ellipsoid` law touches f briefly).
-//! Friction f = 0.3, δ = 1 mm/s; RK4, h = 0.1 ms (h·ω ≈ 0.25 for the 400 Hz contact mode and
-//! ≈ 0.45 for the friction regularisation), 20 s.
+//! Friction f = 0.3; each full-slip law at the δ → 0 limit of its events
+//! (bench-results/rattleback-delta.md): `best` and `simplified` δ = 0.1 mm/s (`BEST_DELTA`,
+//! `SIMPLIFIED_DELTA`), RK4 h = 10 µs; `coulomb` δ = 0.01 mm/s (`COULOMB_DELTA`), h = 2 µs;
+//! `ellipsoid` (ignores δ) h = 25 µs; the rolling laws (no δ) h = 0.1 ms — each step gives the
+//! same events to ≤ 1 µs at half of it. 20 s; ≈ 1 min in all.
 //!
 //! - **reversal**: the first time the spin has turned and reached 10 % of |ω₀| the other way;
 //! - **stall**: no reversal within the run, and the spin was braked to below 10 % of |ω₀|:
@@ -42,21 +45,26 @@ use std::fmt::Write as _;
 use contensou::friction::rolling::{Blend, RollingLaw, Table};
 use contensou::friction::{Best, Coulomb, Ellipsoid, Friction, FrictionLaw, Simplified};
 use contensou::scenes::integrate::rk4;
-use contensou::scenes::rattleback::{Creeping, FloorLaw, Params, Probe, Rattleback, SpinEvents};
+use contensou::scenes::rattleback::{
+    BEST_DELTA, COULOMB_DELTA, Creeping, FloorLaw, Params, Probe, Rattleback, SIMPLIFIED_DELTA,
+    SpinEvents,
+};
 use plotters::prelude::*;
 use plotters::style::{FontStyle, register_font};
 
 const F: f64 = 0.3;
-/// The full-slip laws' regularisation speed δ (m/s); `RATTLEBACK_DELTA` overrides it (the
-/// the guide's δ study; the rolling laws do not use it).
-fn delta() -> f64 {
-    env_or("RATTLEBACK_DELTA", 1e-3)
+/// A full-slip law's regularisation speed δ (m/s): the law's converged `default` (the limit
+/// δ → 0: `BEST_DELTA`, `SIMPLIFIED_DELTA`, `COULOMB_DELTA`); `RATTLEBACK_DELTA` overrides it
+/// for every law (the guide's δ study; the rolling laws do not use it, `Ellipsoid` ignores it).
+fn delta(default: f64) -> f64 {
+    env_or("RATTLEBACK_DELTA", default)
 }
 const TILT_DEG: f64 = 0.5;
 const SPIN: f64 = 2.0;
-/// RK4 step (s); `RATTLEBACK_H` overrides it (the step-size check in the guide).
-fn step() -> f64 {
-    env_or("RATTLEBACK_H", 1e-4)
+/// RK4 step (s): the law's `default` (small enough for its δ: the same events to 1 µs at half
+/// of it); `RATTLEBACK_H` overrides it for every law (the step-size check in the guide).
+fn step(default: f64) -> f64 {
+    env_or("RATTLEBACK_H", default)
 }
 /// Simulated time (s); `RATTLEBACK_T` overrides it.
 fn t_end() -> f64 {
@@ -136,29 +144,23 @@ fn run<L: FloorLaw<f64>>(
     law: &'static str,
     direction: &'static str,
     spin0: f64,
+    h: f64,
 ) -> Run {
     let y0 = rb.initial_state(TILT_DEG.to_radians(), spin0);
     let mut rows = vec![(0.0, rb.probe(&y0))];
     let mut events = SpinEvents::new(rb, 0.0, &y0, spin0, 0.1);
-    let every = ((sample() / step()).round() as usize).max(1);
+    let every = ((sample() / h).round() as usize).max(1);
     let track = std::env::var("RATTLEBACK_STIFFNESS").is_ok();
     let mut stiff = Vec::new();
-    rk4(
-        rb,
-        0.0,
-        y0,
-        step(),
-        (t_end() / step()).round() as usize,
-        |i, t, y| {
-            events.update(rb, t, y);
-            if i % every == 0 {
-                rows.push((t, rb.probe(y)));
-            }
-            if track {
-                stiff.push((t, step() * friction_rate(rb, y)));
-            }
-        },
-    );
+    rk4(rb, 0.0, y0, h, (t_end() / h).round() as usize, |i, t, y| {
+        events.update(rb, t, y);
+        if i % every == 0 {
+            rows.push((t, rb.probe(y)));
+        }
+        if track {
+            stiff.push((t, h * friction_rate(rb, y)));
+        }
+    });
     Run {
         law,
         direction,
@@ -201,28 +203,32 @@ fn friction_rate<L: FloorLaw<f64>>(rb: &Rattleback<f64, L>, y: &[f64; 13]) -> f6
     rate
 }
 
-fn both<L: FloorLaw<f64>>(rb: &Rattleback<f64, L>, law: &'static str) -> [Run; 2] {
+/// Both directions at the RK4 step `h`.
+fn both<L: FloorLaw<f64>>(rb: &Rattleback<f64, L>, law: &'static str, h: f64) -> [Run; 2] {
+    println!("{law}: RK4 h = {h:e} s");
     // δ > 0 for these parameters: the negative spin is the unstable one.
     [
-        run(rb, law, "unstable", -SPIN),
-        run(rb, law, "steady", SPIN),
+        run(rb, law, "unstable", -SPIN, h),
+        run(rb, law, "steady", SPIN, h),
     ]
 }
 
-/// Both directions with the full-slip law `L`.
-fn sliding<L: FrictionLaw>(law: &'static str) -> [Run; 2] {
-    let rb = Rattleback::new(&params(), Friction::<f64, L>::with_law(F, delta()).unwrap()).unwrap();
-    both(&rb, law)
+/// Both directions with the full-slip law `L` at its δ ([`delta`]) and RK4 step ([`step`]).
+fn sliding<L: FrictionLaw>(law: &'static str, delta_default: f64, h_default: f64) -> [Run; 2] {
+    let d = delta(delta_default);
+    println!("{law}: δ = {d:e} m/s");
+    let rb = Rattleback::new(&params(), Friction::<f64, L>::with_law(F, d).unwrap()).unwrap();
+    both(&rb, law, step(h_default))
 }
 
 /// Both directions with the rolling law `L` (Kalker's creep saturating to `Best`'s full slip;
 /// the contact's δ is not used) and the polymer-on-glass elasticity ([`Params::elasticity`]).
 fn creeping<L: RollingLaw>(law: &'static str) -> [Run; 2] {
     let p = params();
-    let friction = Friction::<f64, Best>::with_law(F, delta()).unwrap();
+    let friction = Friction::<f64, Best>::with_law(F, delta(1e-3)).unwrap();
     let rb =
         Rattleback::<f64, Creeping<L>>::rolling(&p, friction, p.elasticity().unwrap()).unwrap();
-    both(&rb, law)
+    both(&rb, law, step(1e-4))
 }
 
 /// A law's two runs (both spin directions), labelled with its name.
@@ -251,12 +257,10 @@ fn main() {
     }
     let p = params();
     println!(
-        "Kane–Levinson rattleback: δ = {:.5} rad, I = {:?} kg·m², E* = {:e} Pa, f = {F}, δ_v = {} m/s, ω₀ = ±{SPIN} rad/s, tilt {TILT_DEG}°, RK4 h = {} s, T = {} s, output every {} s",
+        "Kane–Levinson rattleback: δ = {:.5} rad, I = {:?} kg·m², E* = {:e} Pa, f = {F}, ω₀ = ±{SPIN} rad/s, tilt {TILT_DEG}°, T = {} s, output every {} s",
         p.skew,
         p.inertia,
         p.estar,
-        delta(),
-        step(),
         t_end(),
         sample()
     );
@@ -267,10 +271,12 @@ fn main() {
         el.nu()
     );
     let all: [(&'static str, Runs); 6] = [
-        ("best", sliding::<Best>),
-        ("simplified", sliding::<Simplified>),
-        ("ellipsoid", sliding::<Ellipsoid>),
-        ("coulomb", sliding::<Coulomb>),
+        ("best", |n| sliding::<Best>(n, BEST_DELTA, 1e-5)),
+        ("simplified", |n| {
+            sliding::<Simplified>(n, SIMPLIFIED_DELTA, 1e-5)
+        }),
+        ("ellipsoid", |n| sliding::<Ellipsoid>(n, 1e-3, 2.5e-5)),
+        ("coulomb", |n| sliding::<Coulomb>(n, COULOMB_DELTA, 2e-6)),
         ("table", creeping::<Table>),
         ("blend", creeping::<Blend>),
     ];
@@ -340,6 +346,13 @@ fn main() {
 
 /// ω·ẑ(t) of both directions of one law.
 fn plot(runs: &[Run; 2], path: &str) -> Result<(), Box<dyn std::error::Error>> {
+    // ±1.1 |ω₀|, or the largest |spin| of the runs (`coulomb` spins up past |ω₀| after the
+    // reversal) with the same 10 % margin.
+    let top = 1.1
+        * runs
+            .iter()
+            .flat_map(|r| r.rows.iter().map(|(_, p)| p.spin.abs()))
+            .fold(SPIN, f64::max);
     let root = BitMapBackend::new(path, (900, 500)).into_drawing_area();
     root.fill(&WHITE)?;
     let mut chart = ChartBuilder::on(&root)
@@ -353,7 +366,7 @@ fn plot(runs: &[Run; 2], path: &str) -> Result<(), Box<dyn std::error::Error>> {
         .margin(15)
         .x_label_area_size(40)
         .y_label_area_size(55)
-        .build_cartesian_2d(0.0..t_end(), -1.1 * SPIN..1.1 * SPIN)?;
+        .build_cartesian_2d(0.0..t_end(), -top..top)?;
     chart
         .configure_mesh()
         .x_desc("t (s)")

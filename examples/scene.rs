@@ -4,15 +4,16 @@
 //! ```sh
 //! cargo run --release --features scenes --example scene -- NAME --law L --dt H \
 //!     [--integrator rk4|step-aware] [--end T] [--spin ±2] [--geometry 209|paper] \
-//!     [--ring start|predicted] [--ramp T]
+//!     [--ring start|predicted] [--ramp T] [--delta D]
 //! ```
 //!
 //! NAME: `tippe-top` (laws `best`, `simplified`, `coulomb`; θ₀ = 0.1 rad, 180 rad/s, f = 0.3,
 //! δ = 1e-4 m/s; default end 2.5 s), `ball` (`best`, `coulomb`; the guide's steel ball,
-//! f = 0.1, δ = 1e-4 m/s; default end 0.9 s), `rattleback` (`best` with δ = 0.1 mm/s, the δ → 0
-//! limit: `BEST_DELTA`; `simplified`, `ellipsoid`, `coulomb`, δ = 1 mm/s; or the rolling laws
-//! `table`, `blend`; Kane & Levinson's start,
-//! `--spin` ω₀ (default −2 rad/s); default end 4 s), `bearing` (`best` full slip, δ = 0.05 m/s,
+//! f = 0.1, δ = 1e-4 m/s; default end 0.9 s), `rattleback` (the sliding laws at their δ → 0
+//! limits: `best`, `simplified` δ = 0.1 mm/s (`BEST_DELTA`, `SIMPLIFIED_DELTA`), `coulomb`
+//! 0.01 mm/s (`COULOMB_DELTA`), `ellipsoid` (ignores δ); `--delta D` another δ (m/s) for them;
+//! or the rolling laws `table`, `blend`; Kane & Levinson's start,
+//! `--spin` ω₀ (default −2 rad/s); default end 3 s), `bearing` (`best` full slip, δ = 0.05 m/s,
 //! or the creep laws `table`, `blend`; `--geometry 209|paper`; the step-aware integrator's
 //! `--ring start|predicted` (where the balls see the inner ring within a step, default `start`:
 //! `RingCoupling`); `--ramp T` the load's ramp time (default 5 ms: the reference's own
@@ -28,7 +29,7 @@
 //! - rattleback: `reversal`, `stall` (10 % of |ω₀|), `peak_reversed` (largest spin against ω₀);
 //! - bearing: `ring_torque` (inner ring, N·m), `spin_moment_inner`, `spin_moment_outer`
 //!   (Σ|T_z| over the balls, N·m), `cage` (mean orbital speed / ω_c − 1), means over the last
-//!   quarter of the run.
+//!   quarter of the run; `ring_vibration` the RMS speed of the inner ring's centre there (m/s).
 //!
 //! **Stability** (`stable: false` with a `reason`, and `events` null, instead of figures):
 //! a non-finite state; an energy rise — the largest rise of the mechanical energy (incl. the
@@ -50,7 +51,7 @@ use contensou::scenes::ball::{Ball, BallEvents};
 use contensou::scenes::bearing::{BALLS, Bearing, Geometry, RaceLaw, RingCoupling};
 use contensou::scenes::integrate::{Ode, rk4_step};
 use contensou::scenes::rattleback::{
-    BEST_DELTA, Creeping, FloorLaw, Params, Rattleback, SpinEvents,
+    BEST_DELTA, COULOMB_DELTA, Creeping, FloorLaw, Params, Rattleback, SIMPLIFIED_DELTA, SpinEvents,
 };
 use contensou::scenes::step_aware::Warm;
 use contensou::scenes::tippe_top::{Events, Params as TopParams, TippeTop};
@@ -82,11 +83,12 @@ struct Args {
     geometry: String,
     ring: RingCoupling,
     ramp: Option<f64>,
+    delta: Option<f64>,
 }
 
 fn parse() -> Result<Args, String> {
     let mut it = std::env::args().skip(1);
-    let name = it.next().ok_or("usage: scene NAME --law L --dt H [--integrator rk4|step-aware] [--end T] [--spin ±2] [--geometry 209|paper] [--ring start|predicted] [--ramp T]")?;
+    let name = it.next().ok_or("usage: scene NAME --law L --dt H [--integrator rk4|step-aware] [--end T] [--spin ±2] [--geometry 209|paper] [--ring start|predicted] [--ramp T] [--delta D]")?;
     let mut a = Args {
         name,
         law: "best".into(),
@@ -97,6 +99,7 @@ fn parse() -> Result<Args, String> {
         geometry: "209".into(),
         ring: RingCoupling::Start,
         ramp: None,
+        delta: None,
     };
     while let Some(k) = it.next() {
         let v = it.next().ok_or(format!("{k} needs a value"))?;
@@ -108,6 +111,7 @@ fn parse() -> Result<Args, String> {
             "--spin" => a.spin = num()?,
             "--geometry" => a.geometry = v.clone(),
             "--ramp" => a.ramp = Some(num()?),
+            "--delta" => a.delta = Some(num()?),
             "--ring" => {
                 a.ring = match v.as_str() {
                     "start" => RingCoupling::Start,
@@ -225,25 +229,28 @@ impl Linear {
     }
 }
 
-/// Steps from `y` to `end`: `advance(t, y)` gives the state after one step from t; `observe(t,
-/// y)` sees it and returns its energy. Stops early once the run has failed ([`Watch`]).
-/// Returns the steps taken and the watch.
+/// Steps from `y` to `end` — RK4 or, with `--integrator step-aware`, `step_aware(y)` (the
+/// state after one step) — and `observe(t, y)` sees each step's end and returns its energy.
+/// Stops early once the run has failed ([`Watch`]).
 fn drive<const N: usize, S: Ode<f64, N>>(
     a: &Args,
     sys: &S,
     end: f64,
     y: &mut [f64; N],
     e0: f64,
-    mut advance: impl FnMut(f64, &[f64; N]) -> [f64; N],
+    mut step_aware: impl FnMut(&[f64; N]) -> [f64; N],
     mut observe: impl FnMut(f64, &[f64; N]) -> f64,
-) -> (usize, Watch) {
+) -> Driven {
     let mut watch = Watch::new(e0);
-    let mut done = 0;
+    let mut steps = 0;
     let sample = ((1e-3 / a.dt).round() as usize).max(1);
     for i in 0..steps_of(end, a.dt) {
         let t0 = a.dt * i as f64;
-        *y = advance(t0, y);
-        done += 1;
+        *y = match a.integrator {
+            Integrator::Rk4 => rk4_step(sys, t0, y, a.dt),
+            Integrator::StepAware => step_aware(y),
+        };
+        steps += 1;
         if !watch.see(observe(t0 + a.dt, y), y) {
             break;
         }
@@ -251,7 +258,27 @@ fn drive<const N: usize, S: Ode<f64, N>>(
             watch.mode(a.dt * contact_rate(sys, y));
         }
     }
-    (done, watch)
+    Driven { end, steps, watch }
+}
+
+/// A run [`drive`] has made: its length, its steps and its watch.
+struct Driven {
+    end: f64,
+    steps: usize,
+    watch: Watch,
+}
+
+impl Driven {
+    /// The report of this run with the scene's `events`.
+    fn report(self, events: Vec<(&'static str, Option<f64>)>) -> Report {
+        Report {
+            end: self.end,
+            steps: self.steps,
+            reason: self.watch.verdict(),
+            energy_max_rise: self.watch.rise,
+            events,
+        }
+    }
 }
 
 /// The stiffest contact rate at `y` (1/s) for a state [G, Ġ, …]: the larger of the vertical
@@ -286,16 +313,13 @@ fn tippe<L: FrictionLaw>(a: &Args, delta: f64) -> Report {
     touch.see(0.0, -top.penetrations(&y)[1]);
     let mut warm = Warm::default();
     let e0 = top.probe(&y).energy;
-    let (done, watch) = drive(
+    let run = drive(
         a,
         &top,
         end,
         &mut y,
         e0,
-        |t, y| match a.integrator {
-            Integrator::Rk4 => rk4_step(&top, t, y, a.dt),
-            Integrator::StepAware => top.step_aware(y, a.dt, &mut warm),
-        },
+        |y| top.step_aware(y, a.dt, &mut warm),
         |t, y| {
             if a.integrator == Integrator::Rk4 {
                 events.update(&top, t, y);
@@ -311,18 +335,12 @@ fn tippe<L: FrictionLaw>(a: &Args, delta: f64) -> Report {
         Integrator::StepAware => (half.first, touch.first),
     };
     let p = top.probe(&y);
-    Report {
-        end,
-        steps: done,
-        reason: watch.verdict(),
-        energy_max_rise: watch.rise,
-        events: vec![
-            ("half", h),
-            ("touch", t),
-            ("theta_end", Some(p.theta)),
-            ("spin_end", Some(p.spin)),
-        ],
-    }
+    run.report(vec![
+        ("half", h),
+        ("touch", t),
+        ("theta_end", Some(p.theta)),
+        ("spin_end", Some(p.spin)),
+    ])
 }
 
 // ---------------------------------------------------------------- ball
@@ -335,34 +353,25 @@ fn ball<L: FrictionLaw>(a: &Args) -> Report {
     ev.update(&b, 0.0, &y);
     let mut warm = b.initial_warm();
     let e0 = b.energy(&y);
-    let (done, watch) = drive(
+    let run = drive(
         a,
         &b,
         end,
         &mut y,
         e0,
-        |t, y| match a.integrator {
-            Integrator::Rk4 => rk4_step(&b, t, y, a.dt),
-            Integrator::StepAware => b.step_aware(y, a.dt, &mut warm),
-        },
+        |y| b.step_aware(y, a.dt, &mut warm),
         |t, y| {
             ev.update(&b, t, y);
             b.energy(y)
         },
     );
     let an = b.analytic();
-    Report {
-        end,
-        steps: done,
-        reason: watch.verdict(),
-        energy_max_rise: watch.rise,
-        events: vec![
-            ("roll", ev.roll()),
-            ("spin_rate", ev.spin_rate()),
-            ("roll_analytic", Some(an.t_roll)),
-            ("spin_rate_analytic", Some(an.spin_rate)),
-        ],
-    }
+    run.report(vec![
+        ("roll", ev.roll()),
+        ("spin_rate", ev.spin_rate()),
+        ("roll_analytic", Some(an.t_roll)),
+        ("spin_rate_analytic", Some(an.spin_rate)),
+    ])
 }
 
 // ---------------------------------------------------------------- rattleback
@@ -380,16 +389,13 @@ fn rattle<L: FloorLaw<f64>>(a: &Args, rb: &Rattleback<f64, L>) -> Report {
     let mut peak: f64 = 0.0;
     let mut warm = Warm::default();
     let e0 = rb.probe(&y).energy;
-    let (done, watch) = drive(
+    let run = drive(
         a,
         rb,
         end,
         &mut y,
         e0,
-        |t, y| match a.integrator {
-            Integrator::Rk4 => rk4_step(rb, t, y, a.dt),
-            Integrator::StepAware => rb.step_aware(y, a.dt, &mut warm),
-        },
+        |y| rb.step_aware(y, a.dt, &mut warm),
         |t, y| {
             let s = rb.spin(y) * sign;
             peak = peak.max(-s);
@@ -413,18 +419,13 @@ fn rattle<L: FloorLaw<f64>>(a: &Args, rb: &Rattleback<f64, L>) -> Report {
             },
         ),
     };
-    Report {
-        end,
-        steps: done,
-        reason: watch.verdict(),
-        energy_max_rise: watch.rise,
-        events: vec![
-            ("reversal", r),
-            ("stall", st),
-            ("peak_reversed", Some(peak)),
-            ("spin_end", Some(rb.spin(&y))),
-        ],
-    }
+    let spin_end = rb.spin(&y);
+    run.report(vec![
+        ("reversal", r),
+        ("stall", st),
+        ("peak_reversed", Some(peak)),
+        ("spin_end", Some(spin_end)),
+    ])
 }
 
 fn rattle_law(a: &Args) -> Result<Report, String> {
@@ -435,10 +436,11 @@ fn rattle_law(a: &Args) -> Result<Report, String> {
             rattle(a, &rb)
         }
         Some(match a.law.as_str() {
-            "best" => go::<Best>(a, &p, BEST_DELTA),
-            "simplified" => go::<Simplified>(a, &p, 1e-3),
-            "ellipsoid" => go::<Ellipsoid>(a, &p, 1e-3),
-            "coulomb" => go::<Coulomb>(a, &p, 1e-3),
+            "best" => go::<Best>(a, &p, a.delta.unwrap_or(BEST_DELTA)),
+            "simplified" => go::<Simplified>(a, &p, a.delta.unwrap_or(SIMPLIFIED_DELTA)),
+            // Ignores δ (Coulomb's sign law at rest).
+            "ellipsoid" => go::<Ellipsoid>(a, &p, a.delta.unwrap_or(1e-3)),
+            "coulomb" => go::<Coulomb>(a, &p, a.delta.unwrap_or(COULOMB_DELTA)),
             _ => return None,
         })
     };
@@ -470,6 +472,8 @@ fn bearing_run<C: RaceLaw<f64>>(a: &Args, b: &Bearing<f64, C>) -> Report {
     let mut y = b.initial_state();
     let mut warm = [Warm::default(); BALLS];
     let (mut count, mut ring, mut sm_in, mut sm_out, mut cage) = (0.0f64, 0.0, 0.0, 0.0, 0.0);
+    // The inner ring's vibration: its centre's mean squared velocity.
+    let mut ring_v2 = 0.0f64;
     let (mut checks, mut over) = (0usize, 0usize);
     let mut finite = true;
     let mut done = 0;
@@ -551,6 +555,7 @@ fn bearing_run<C: RaceLaw<f64>>(a: &Args, b: &Bearing<f64, C>) -> Report {
                 orbit += (s[0] * s[4] - s[1] * s[3]) / (s[0] * s[0] + s[1] * s[1]);
             }
             cage += orbit / BALLS as f64 / wc - 1.0;
+            ring_v2 += y[3] * y[3] + y[4] * y[4] + y[5] * y[5];
         }
     }
     let reason = if !finite {
@@ -573,6 +578,7 @@ fn bearing_run<C: RaceLaw<f64>>(a: &Args, b: &Bearing<f64, C>) -> Report {
             ("spin_moment_inner", Some(sm_in / c)),
             ("spin_moment_outer", Some(sm_out / c)),
             ("cage", Some(cage / c)),
+            ("ring_vibration", Some((ring_v2 / c).sqrt())),
         ],
     }
 }

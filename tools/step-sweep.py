@@ -20,12 +20,15 @@ PLAN = [
     ("tippe-top", "best", None, 2.5, 1e-5, [1e-4, 2e-4, 3e-4, 1e-3],
      [1e-4, 5e-4, 1e-3, 1.5e-3, 2e-3], []),
 ]
-for law in ["best", "coulomb", "table"]:
+for law in ["best", "simplified", "coulomb", "table"]:
     # The creep law's reference at 50 µs: at 0.1 ms RK4 does not follow its stall (README);
-    # `best` (δ = 0.1 mm/s: scenes::rattleback::BEST_DELTA) at 10 µs: from 20 µs (spin +2) the
-    # friction ramp's mode exceeds RK4's step.
+    # the sliding laws at their δ → 0 limits (scenes::rattleback::BEST_DELTA, SIMPLIFIED_DELTA
+    # 0.1 mm/s: 10 µs, from 20 µs (spin +2) the friction ramp's mode exceeds RK4's step;
+    # COULOMB_DELTA 0.01 mm/s: 2 µs; bench-results/rattleback-delta.md).
     ref, rk = {"table": (5e-5, [1e-4, 2e-4, 5e-4, 1e-3]),
-               "best": (1e-5, [2e-5, 1e-4, 5e-4, 1e-3])}.get(law, (1e-4, [2e-4, 5e-4, 1e-3]))
+               "best": (1e-5, [2e-5, 1e-4, 5e-4, 1e-3]),
+               "simplified": (1e-5, [2e-5, 1e-4, 5e-4, 1e-3]),
+               "coulomb": (2e-6, [5e-6, 1e-4, 1e-3])}[law]
     for spin in [-2, 2]:
         PLAN.append(("rattleback", law, spin, 3.0, ref, rk,
                      [5e-5, 1e-4, 2e-4, 5e-4, 1e-3, 2e-3], []))

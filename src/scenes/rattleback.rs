@@ -86,6 +86,33 @@ use core::marker::PhantomData;
 /// the step-aware integrator ([`Rattleback::step_aware`]) holds to 2 ms.
 pub const BEST_DELTA: f64 = 1e-4;
 
+/// The slip scale δ (m/s) for runs of this scene with `Simplified`: 0.1 mm/s, the δ → 0 limit
+/// as for [`BEST_DELTA`]. Kane & Levinson's start at ω₀ = ∓2 rad/s, fine-step RK4 (h = 0.1·δ/(1
+/// mm/s) ms, the same to 1 µs at h/2): stall at 1.16606 s / 2.21118 s, the same to 1 µs at
+/// 0.05, 0.02, 0.01 and 0.005 mm/s; at 0.2 mm/s the steady stall is 14 ms early (2.1972 s), at
+/// 1 mm/s the unstable spin *reverses* (1.9351 s) and the steady one stalls at 2.3256 s (table:
+/// bench-results/rattleback-delta.md; docs/guide/src/time-stepping.md, "The slip scale δ of the
+/// scenes"). RK4 needs h ≤ 10 µs at this δ. The step-aware integrator gives the same outcome
+/// at every step to 2 ms, within 0.8 % at 0.1 ms and 0.9 % at 1 ms — but not RK4's times as
+/// the step shrinks (+3.0 % at 10 µs, +2): the step-aware wrench's limit-set projection
+/// assumes a maximally dissipative law, which `Simplified` is not.
+pub const SIMPLIFIED_DELTA: f64 = 1e-4;
+
+/// The slip scale δ (m/s) for runs of this scene with `Coulomb` (point contact): 0.01 mm/s.
+/// Unlike the Contensou laws, Coulomb's rolling is held by the regularisation alone (no
+/// drilling torque, no patch): the contact creeps at |v_P| ≈ δ·|F_t|/(fN) and dissipates
+/// ≈ |F_t|²δ/(fN), so the reversal moves linearly with δ, ≈ 80 ms per mm/s, down to δ → 0.
+/// Fine-step RK4 at ω₀ = −2 rad/s (h = 0.2·δ/(1 mm/s) ms, the same to 1e-8 s at h/4): reversal
+/// at 2.4305 s (δ = 1 mm/s), 2.3687 s (0.1), 2.3725 s (0.05), 2.3749 s (0.02), **2.37570 s**
+/// (0.01), 2.3761 s (0.005): within 1 ms of the limit ≈ 2.3765 s from 0.01 mm/s down — the
+/// rigid no-slip rolling model's 2.376 s (`tools/rattleback_noslip.py`, independent of the
+/// crate). ω₀ = +2 rad/s neither reverses nor stalls within 3 s at any δ; at this δ it reverses
+/// at 23.54 s (no-slip: 23.37 s).
+/// RK4 needs h ≤ 2 µs at this δ; the step-aware integrator holds to 1 ms within 0.06 % (at
+/// 2 ms the energy check fails: docs/guide/src/scenes-large-steps.md). `Ellipsoid` needs no
+/// such constant: it ignores δ (Coulomb's sign law at rest).
+pub const COULOMB_DELTA: f64 = 1e-5;
+
 /// Number of scalars in the state.
 pub const N: usize = 13;
 
