@@ -718,13 +718,16 @@ fn random_run<L: FrictionLaw>(n: usize, seed: u64) -> Worst {
 }
 
 /// Limit-set bound per law: 2e-3 relative for the laws whose full-slip value is the support
-/// point of their own limit set (maximal dissipation: `best`, `coulomb`, `ellipsoid`; measured
-/// on 1e5 states: 1.4e-3, 1.0e-3, 1.0e-3 — the projection's 1e-3 tolerance); the
+/// point of their own limit set (maximal dissipation: `coulomb`, `ellipsoid`; measured on 1e5
+/// states: 1.0e-3, 1.0e-3 — the projection's 1e-3 tolerance) and 3e-3 for `best`, whose
+/// projection works on its table's full-slip values (measured 1.4e-3 before the step's normal
+/// re-solve, 2.0e-3 with it: the friction follows the re-solved N through the limit set on
+/// more states, 29,909 of 1e5 projected); the
 /// measured excess for `simplified` (0.13 on 1e5 states), whose full-slip values are not (the
 /// supporting plane at the ellipsoidal dual then does not bound the set); `pade` is checked for
 /// passivity only (its full-slip values are far from support points: 0.47 by this measure).
 const LIMIT_BOUND: [(&str, f64); 5] = [
-    ("best", 2e-3),
+    ("best", 3e-3),
     ("coulomb", 2e-3),
     ("ellipsoid", 2e-3),
     ("simplified", 0.2),
