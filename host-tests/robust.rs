@@ -350,4 +350,20 @@ mod jacobian_step_findings {
             checks::step::<f64>(&mut i);
         }
     }
+
+    /// The normal re-solve at h = f32::MAX with E* ≈ 1e-38 and Δt ≈ 1.7e-14 (out of the box):
+    /// N(h) = (h₀ − h)/c overflowed (c ≈ 7e-29) and the friction's scaling by it gave N = NaN;
+    /// N̄ is now kept there.
+    #[test]
+    fn step_normal_resolve_overflow() {
+        let data = [
+            0xf5, 0xf5, 0xf5, 0xf5, 0xf5, 0x26, 0xf5, 0xf5, 0x0a, 0xf5, 0x42, 0x05, 0x07, 0x01,
+            0x29, 0x52, 0x4f, 0x52, 0x72, 0x11, 0x52, 0x52, 0xf5, 0xf5, 0x8b, 0x8b, 0x8b, 0x8b,
+            0x8b, 0x8b, 0x69, 0x3f, 0x12, 0x6b, 0xb1, 0x05, 0xf5, 0x69, 0x7f, 0x69, 0x69, 0x69,
+            0x69,
+        ];
+        let mut i = Input::new(&data);
+        checks::step::<f32>(&mut i);
+        checks::step::<f64>(&mut i);
+    }
 }

@@ -240,6 +240,12 @@ fn resolve<T: Real, const K: usize>(
     } else {
         T::ZERO
     };
+    // N(h) = (h₀ − h)/c overflows when h₀ is near the float's largest value and c is tiny
+    // (its rounding alone, ulp(h₀)/c, is then beyond range): N̄ is kept, as finite as the
+    // linear solve left it.
+    if !x.is_finite() {
+        return false;
+    }
     // N to x; the friction with it if it was modelled as scaling with N.
     let k = if slope == T::ZERO {
         T::ZERO
