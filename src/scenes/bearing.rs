@@ -183,6 +183,9 @@ pub struct RaceContact<T> {
     /// Torque about the bearing axis through the ring's centre on the ring from this contact
     /// (N·m): the friction forces' moment plus the drilling torque's axial part.
     pub ring_torque: T,
+    /// The drilling torque's part of [`RaceContact::ring_torque`], −ẑ·(T_z z) (N·m): the rest
+    /// is the friction forces' moment.
+    pub ring_torque_spin: T,
     /// Force on the ball, world frame (N).
     pub force: Vec3<T>,
     /// Torque on the ball about its centre, world frame (N·m).
@@ -328,7 +331,8 @@ impl<T: Real, C: RaceLaw<T>> Raceway<T, C> {
                 .step_rolling(&self.curvatures, h, frame.approach_rate(vp), slip, rolling);
         let load = frame.on_b(&wrench, arm.into());
         let force: Vec3<T> = load.force.into();
-        let ring_torque = -((rel + arm).cross(force).z + z.z * wrench.tz);
+        let ring_torque_spin = -z.z * wrench.tz;
+        let ring_torque = ring_torque_spin - (rel + arm).cross(force).z;
         RaceContact {
             h,
             n: wrench.n,
@@ -341,6 +345,7 @@ impl<T: Real, C: RaceLaw<T>> Raceway<T, C> {
             roll: (w_rel - z * slip.omega()).norm(),
             rolling: [vrx, vry],
             ring_torque,
+            ring_torque_spin,
             force,
             torque: load.torque.into(),
         }
