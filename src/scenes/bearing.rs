@@ -752,25 +752,26 @@ impl<T: Real, C: RaceLaw<T>> Bearing<T, C> {
 
 /// Where the balls see the inner ring within a large step ([`Bearing::step_aware_with`]).
 ///
-/// The bearing rings: the ring on the balls' Hertz contacts has lightly damped modes (0.5–3
-/// kHz in the 209 at 2 kN; its 15–20 ms means carry their rectified effect: the spin moments
-/// fall as the slip fluctuates, Contensou's T_z being concave in it). Measured (creep law
-/// `table`, the races' analytic Jacobians, means over 15–20 ms of 20 ms, against RK4 at
-/// 0.1 µs; mean over five runs whose
-/// load ramp is 4.9, 4.95, 5, 5.05 and 5.1 ms — the RK4 figures themselves spread by 10 %
-/// (ring torque) and 3 % (spin moments) over those five, so one run cannot resolve 2 %):
+/// The ring on the balls' Hertz contacts has lightly damped modes: the load's ramp leaves it
+/// vibrating axially (≈ 500 Hz, ≈ 35 mm/s), which decays over ≈ 150 ms, and its radial mode is
+/// ≈ 3 kHz. Measured in the steady state (creep law `table`, the load ramped over 5 ms, means
+/// over 200–400 ms of a 400 ms run against RK4 at 0.1 µs: ring torque −15.074 ± 0.031 N·mm,
+/// the ± a batch-means standard error; `examples/bearing.rs`'s `steady`):
 ///
 /// | coupling | step | ring torque | Σ\|T_z\| inner / outer | cage speed |
 /// |---|---|---|---|---|
-/// | `Start` | 10 µs | +0.7 % | −0.0 / +0.2 % | −0.08 % |
-/// | `Start` | 20 µs | −0.2 % | −0.0 / +0.2 % | −0.08 % |
-/// | `Start` | 30 µs | +0.4 % | +0.1 / +0.4 % | −0.10 % |
-/// | `Start` | 40 µs | −4.7 % | −1.4 / −1.1 % | −0.09 % |
-/// | `Start` | 50 µs | +1.2 % | −0.5 / −0.1 % | −0.15 % |
-/// | `Predicted` | 20 µs | +5.1 % | +2.1 / +1.6 % | −0.23 % |
-/// | `Predicted` | 50 µs | +0.8 % | +2.6 / +1.7 % | −0.49 % |
+/// | `Start` | 10 µs | +0.01 % | −0.05 / −0.05 % | −0.005 % |
+/// | `Start` | 20 µs | +0.28 % | −0.05 / −0.05 % | −0.011 % |
+/// | `Start` | 30 µs | +0.66 % | −0.04 / −0.04 % | −0.018 % |
+/// | `Start` | 40 µs | +1.30 % | −0.05 / −0.05 % | −0.018 % |
+/// | `Start` | 50 µs | +0.14 ± 1.2 % (bursts of the radial mode) | −0.28 / −0.28 % | −0.015 % |
+/// | `Predicted` | 20 µs | +0.33 % | −0.03 / −0.03 % | −0.011 % |
+/// | `Predicted` | 30 µs | +0.71 % | −0.03 / −0.03 % | −0.018 % |
+/// | `Predicted` | 50 µs | −2.9 ± 1.8 % (bursts) | −1.2 / −1.2 % | −0.015 % |
 ///
-/// Both diverge at 100 µs (the runner reports it: the balls leave the races).
+/// `Start` diverges from 80 µs, `Predicted` from 70 µs (the runner reports it: the balls
+/// leave the races). Before the ring's vibration has decayed the two differ: `Predicted`
+/// damps it, `Start` keeps it as RK4 does.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub enum RingCoupling {
     /// At its start position R over the whole step: the balls' reactions are the ring's
@@ -781,8 +782,9 @@ pub enum RingCoupling {
     Start,
     /// Moved with its start velocity (mid-step R + ½Δt·Ṙ for the geometry, R + Δt·Ṙ for the
     /// gaps): the reactions are the ring's at its predicted end position, which damps its modes
-    /// (|λ|² = 1/(1 + Δt²K/M) per step for a linear K); the damped vibrations bias the means by
-    /// 2–5 % (table above).
+    /// (|λ|² = 1/(1 + Δt²K/M) per step for a linear K): while the ring still vibrates after
+    /// the load's ramp that shifts the means (the 15–20 ms ones by 2–5 %); in the steady state
+    /// the two agree (table above).
     Predicted,
 }
 
