@@ -10,9 +10,10 @@
 //! cargo run --release --features scenes --example bearing -- out steady step-aware 2e-5 0.4   # steady-state means ± batch-means error
 //! ```
 //!
-//! `steady [rk4|step-aware] [dt] [end] [ramp]` (defaults step-aware, 20 µs, 0.4 s, 5 ms): the
-//! creep bearing's steady state, means over the second half of the run with their batch-means
-//! standard errors, and the series in out/bearing_steady_*.csv (RK4 at 0.1 µs to 0.4 s: ≈ 2.5 min).
+//! `steady [rk4|step-aware] [dt] [end] [ramp] [from]` (defaults step-aware, 20 µs, 0.4 s, 5 ms,
+//! end/2): the creep bearing's steady state, means over `from`–`end` with their batch-means
+//! standard errors (also as one JSON line), and the series in out/bearing_steady_*.csv (RK4 at
+//! 0.1 µs to 0.4 s: ≈ 2.5 min).
 //!
 //! `rolling [best|table|blend|all] [end] [209|paper]`: the 209 (or the paper's e² = 0.687
 //! inner groove) with full-slip `best` (δ = 0.05, 0.02 m/s;
@@ -334,10 +335,10 @@ fn table_bearing(g: &Geometry<f64>, delta: f64) -> Bearing<f64, impl RaceLaw<f64
 /// examples/scene.rs): one run of `integrator` (`rk4` or `step-aware`) at step `dt` to `end`,
 /// the load ramped over `ramp`; writes `dir`/bearing_steady_<integrator>_<dt>.csv (every µs or
 /// every step: ring torque and its drilling part, Σ|T_z| inner / outer, cage speed / ω_c − 1,
-/// the ring's axial speed) and prints the means over the second half of the run with their
+/// the ring's axial speed) and prints the means over `from`–`end` with their
 /// standard errors by batch means (20 ms batches: the ring torque's own fluctuation is
 /// correlated over milliseconds, so the samples' spread alone would understate it).
-fn steady(dir: &str, integrator: &str, dt: f64, end: f64, ramp: f64) {
+fn steady(dir: &str, integrator: &str, dt: f64, end: f64, ramp: f64, from: f64) {
     use contensou::scenes::integrate::rk4_step;
     use contensou::scenes::step_aware::Warm;
     let mut g = Geometry::<f64>::bearing_209();
@@ -353,7 +354,7 @@ fn steady(dir: &str, integrator: &str, dt: f64, end: f64, ramp: f64) {
     let mut y = b.initial_state();
     let mut warm = [Warm::default(); BALLS];
     let mut csv = String::from("t,ring_torque,ring_torque_spin,sm_inner,sm_outer,cage,ring_vz\n");
-    // (t, [ring torque, Σ|T_z| inner, outer, cage]) over the second half.
+    // (t, [ring torque, Σ|T_z| inner, outer, cage]) from `from` on.
     let mut rows: Vec<(f64, [f64; 4])> = Vec::new();
     for i in 0..steps {
         let t = dt * (i + 1) as f64;
@@ -389,7 +390,7 @@ fn steady(dir: &str, integrator: &str, dt: f64, end: f64, ramp: f64) {
             sm[0], sm[1], y[5]
         )
         .unwrap();
-        if t > 0.5 * end {
+        if t > from {
             rows.push((t, [ring, sm[0], sm[1], cage]));
         }
     }
@@ -397,8 +398,9 @@ fn steady(dir: &str, integrator: &str, dt: f64, end: f64, ramp: f64) {
     let path = format!("{dir}/bearing_steady_{integrator}_{dt:e}.csv");
     std::fs::write(&path, csv).unwrap();
     let batch = 0.02;
-    let nb = ((0.5 * end / batch).floor() as usize).max(2);
-    let t0 = 0.5 * end;
+    let nb = (((end - from) / batch).floor() as usize).max(2);
+    let t0 = from;
+    let mut json = Vec::new();
     for (j, name) in [
         "ring torque (N·mm)",
         "Σ|T_z| inner (N·mm)",
@@ -423,6 +425,16 @@ fn steady(dir: &str, integrator: &str, dt: f64, end: f64, ramp: f64) {
             .collect();
         let m = bm.iter().sum::<f64>() / nb as f64;
         let var = bm.iter().map(|x| (x - m) * (x - m)).sum::<f64>() / (nb - 1) as f64;
+        let key = [
+            "ring_torque",
+            "spin_moment_inner",
+            "spin_moment_outer",
+            "cage",
+        ][j];
+        json.push(format!(
+            "\"{key}\":{mean:e},\"{key}_se\":{:e}",
+            (var / nb as f64).sqrt()
+        ));
         println!(
             "{name}: {:.4} ± {:.4} (mean over {:.0}–{:.0} ms ± batch-means standard error)",
             scale * mean,
@@ -432,6 +444,7 @@ fn steady(dir: &str, integrator: &str, dt: f64, end: f64, ramp: f64) {
         );
     }
     println!("series: {path}");
+    println!("{{{}}}", json.join(","));
 }
 
 fn main() {
@@ -441,7 +454,15 @@ fn main() {
         let integrator = std::env::args()
             .nth(3)
             .unwrap_or_else(|| "step-aware".into());
-        steady(&dir, &integrator, arg(4, 2e-5), arg(5, 0.4), arg(6, 5e-3));
+        let end = arg(5, 0.4);
+        steady(
+            &dir,
+            &integrator,
+            arg(4, 2e-5),
+            end,
+            arg(6, 5e-3),
+            arg(7, 0.5 * end),
+        );
         return;
     }
     if std::env::args().nth(2).as_deref() == Some("rolling") {

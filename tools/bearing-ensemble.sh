@@ -4,5 +4,5 @@
 # (tools/bearing-ensemble.py). ≈ 8 minutes of CPU (two runs at a time).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-cargo build --release --features scenes --example scene
+cargo build --release --features scenes --example scene --example bearing
 python3 tools/bearing-ensemble.py
