@@ -366,4 +366,20 @@ mod jacobian_step_findings {
         checks::step::<f32>(&mut i);
         checks::step::<f64>(&mut i);
     }
+
+    /// `fastsim-16` out of the box (h ≈ 1.6e21, Δt = 1): the re-solved N (3.2e19) scaled a
+    /// friction already at 1e21 / 1e31 by N's ratio past f32's range, and the next round read
+    /// infinities as NaN; a re-solve or a friction update whose sums are not finite is now not
+    /// taken (the step keeps what it had).
+    #[test]
+    fn step_friction_scaled_past_the_range() {
+        let data = [
+            0xad, 0x15, 0x15, 0x15, 0x05, 0x15, 0x15, 0xa1, 0x15, 0x15, 0x21, 0x63, 0xa1, 0x26,
+            0x3d, 0xa1, 0x3d, 0xa1, 0xb1, 0xa1, 0xad, 0x15, 0xa1, 0x15, 0x15, 0x3d, 0xa1, 0xb1,
+            0xa1, 0xad, 0x15, 0xa1, 0x15, 0x15, 0x15, 0xa1, 0xad, 0x15,
+        ];
+        let mut i = Input::new(&data);
+        checks::step::<f32>(&mut i);
+        checks::step::<f64>(&mut i);
+    }
 }
