@@ -18,11 +18,19 @@ Correction variants (`--variant`, several allowed; each the same base):
 - `lawson`: `log` refitted with Lawson's reweighting (weights × the row's error relative to the
   target, normalised, 6 rounds): a step towards the minimax fit instead of least squares.
 
-    "$(tools/venv.sh)" tools/fit_rolling_long.py [--no-long2] [--variant log bounded gated lawson]
-        [--kfold 5] [--ridge 1e-4] [--families] [--md OUT]
+Base (`--strip`): the reach base blended with the 1-D long-patch base of tools/rolling_strip1d.py by
+the aligned shape along x (weight 0 up to a/b = 4 along x, 1 from 12; `--strip-band r₀ r₁`).
+`--refit-base`: the reach base's 14 parameters refitted (fit_rolling_reach.py's Nelder–Mead and
+objective) on its 6,000-row subset plus every long-patch row, written to /tmp/roll/reach_prm_long.npy;
+`--prm-long` reuses them; otherwise `--prm FILE` (default /tmp/roll/reach_prm.npy, what
+`tools/fit_rolling_reach.py` writes). `--sparse K …`: K greedy terms (fit_rolling_reach.sparse_select).
 
-The base's 14 parameters: /tmp/roll/reach_prm.npy (`tools/fit_rolling_reach.py` fits and writes them;
-they are fitted on training rows only).
+    "$(tools/venv.sh)" tools/fit_rolling_reach.py --degree 3          # the reach base's parameters (≈ 6 min)
+    "$(tools/venv.sh)" tools/fit_rolling_long.py --refit-base --strip --variant log --kfold 0   # ≈ 3 min
+    "$(tools/venv.sh)" tools/fit_rolling_long.py --prm-long --strip --variant log gated --sparse 100 150 \
+        --kfold 5 --families --md bench-results/rolling-long.md                                  # ≈ 8 min
+
+Everything is fitted on training rows only; the held-out set is only measured.
 """
 import math
 import pathlib
@@ -60,12 +68,15 @@ def load_long2():
 
 def base_of(d, prm, strip=False):
     """The reach base; strip: blended with the 1-D long-patch base (tools/rolling_strip1d.py) by the
-    weight w = smoothstep((t − 0.5)/0.28) of the aligned shape along x, t = (a − b)/(a + b)
-    (w = 0 up to a/b = 3 along x, 1 from a/b = 8)."""
+    weight w = smoothstep((t − t₀)/(t₁ − t₀)) of the aligned shape along x, t = (a − b)/(a + b)
+    (w = 0 up to a/b = r₀ along x, 1 from r₁: `--strip-band r₀ r₁`, default 4 and 12, chosen by the
+    k-fold validation's worst among (3, 8), (4, 12), (5, 10), (6, 15))."""
     if strip:
         import rolling_strip1d as S
         w0, rho, lam = base_of(d, prm)
-        u = np.clip((aligned_t(d) - 0.5) / 0.28, 0.0, 1.0)
+        r0, r1 = (float(x) for x in F.args("--strip-band", ["4", "12"]))
+        t0, t1 = (r0 - 1) / (r0 + 1), (r1 - 1) / (r1 + 1)
+        u = np.clip((aligned_t(d) - t0) / (t1 - t0), 0.0, 1.0)
         w = u * u * (3 - 2 * u)
         ws = np.concatenate([S.strip_base({k: v[lo:lo + 2000] for k, v in d.items()})[0]
                              for lo in range(0, len(d["aob"]), 2000)])
@@ -136,6 +147,26 @@ def fit(a, res, ref, basew, lam, lawson):
     return c
 
 
+def refit_base(tr, l2, out):
+    """The reach base's 14 parameters refitted as fit_rolling_reach.py fits them (Nelder–Mead, the same
+    objective and steps, 16 × 32 quadrature) on its 6,000-row subset of the training rows plus every
+    long-patch row, from the parameters fit_rolling_reach.py gives (`--prm`)."""
+    from scipy.optimize import minimize
+    rng = np.random.default_rng(1)
+    sub = rng.choice(len(tr["aob"]), size=6000, replace=False)
+    d = {k: np.concatenate([tr[k][sub], l2[k]]) for k in tr}
+    q = R.Quad(16, 32)
+    xy = q.geometry(d)
+    fs = q.wrench(xy, d["s"])
+    start = np.load(F.args("--prm", ["/tmp/roll/reach_prm.npy"])[0])
+    simplex = np.vstack([start] + [start + np.eye(R.NPRM)[i] * R.STEPS[i] for i in range(R.NPRM)])
+    r = minimize(lambda p: R.score(R.reach(d, d["lin"], fs, p, q, xy)[0], d["ref"]), start, method="Nelder-Mead",
+                 options=dict(maxiter=1500, xatol=1e-3, fatol=1e-4, initial_simplex=simplex))
+    print("refitted base:", r.fun, np.round(r.x, 4).tolist(), flush=True)
+    np.save(out, r.x)
+    return r.x
+
+
 def groups(d):
     """A patch (a/b, ν) and its mirror image: the same group."""
     key = np.round(np.log(d["aob"]), 6) * 1e3 + np.round(d["nu"], 6)
@@ -150,7 +181,13 @@ def main():
         l2 = load_long2()
         tr = {k: np.concatenate([tr[k], l2[k]]) for k in tr}
         print(f"long-patch rows (with mirrors): {len(l2['aob'])}", flush=True)
-    prm = np.load(F.args("--prm", ["/tmp/roll/reach_prm.npy"])[0])
+    if "--refit-base" in sys.argv:
+        c0 = dict(np.load(R.CACHE))
+        prm = refit_base(R.split(c0, "tr"), load_long2(), "/tmp/roll/reach_prm_long.npy")
+    elif "--prm-long" in sys.argv:  # the last --refit-base
+        prm = np.load("/tmp/roll/reach_prm_long.npy")
+    else:
+        prm = np.load(F.args("--prm", ["/tmp/roll/reach_prm.npy"])[0])
     strip = "--strip" in sys.argv
     bt, bh = base_of(tr, prm, strip), base_of(ho, prm, strip)
     lam = float(F.args("--ridge", ["1e-4"])[0])
@@ -191,6 +228,26 @@ def main():
             ef, em = F.errors(bt[0] + pred, tr["ref"])
             lines.append(row(name, f"{kf}-fold validation (by patch)", ef, em))
             lines.append(row(name, f"{kf}-fold validation, a/b > 10 along x", ef[long_tr], em[long_tr]))
+            t = aligned_t(tr)
+            sig = F.spin_share(tr)
+            for j in np.argsort(-np.maximum(ef / 0.03, em / 0.05))[:8:2]:  # rows come with their mirror image
+                print(f"    validation worst: ΔF {ef[j]:.3f} ΔM {em[j]:.3f} at a/b {tr['aob'][j]:.2f} θ {math.degrees(tr['theta'][j]):.0f}° "
+                      f"(a/b along x {(1 + t[j]) / (1 - t[j]):.2f}) ν {tr['nu'][j]:.2f} ρ {bt[1][j]:.2f} σ {sig[j]:.2f}", flush=True)
+        for kk in [int(x) for x in F.args("--sparse", [])]:  # greedy subset (fit_rolling_reach.sparse_select)
+            sc = np.maximum(np.sqrt((a * a).mean(0)), 1e-12)
+            sel = R.sparse_select(a / sc, res, kk, lam)
+            cs = solve(a[:, sel], res, lam)
+            ws, npro = F.passive(bh[0] + ah[:, sel] @ cs, ho)
+            nm = f"{bname} + {variant}, {kk} greedy terms × 3"
+            lines.append(row(nm, "training", *F.errors(bt[0] + a[:, sel] @ cs, tr["ref"])))
+            lines.append(row(nm, f"held-out (projected: {npro})", *F.errors(ws, ho["ref"])))
+            laws[f"{bname} + {variant} s{kk}"] = ws
+            if kf > 1:
+                pred = np.zeros_like(res)
+                for k in range(kf):
+                    t = fold != k
+                    pred[~t] = a[~t][:, sel] @ solve(a[t][:, sel], res[t], lam)
+                lines.append(row(nm, f"{kf}-fold validation (by patch; the selection on all rows)", *F.errors(bt[0] + pred, tr["ref"])))
         print("\n".join(lines[-5:]), flush=True)
         np.save(f"/tmp/roll/long_coef_{variant}.npy", coef)
     if "--families" in sys.argv:
