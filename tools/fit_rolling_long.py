@@ -7,6 +7,7 @@ on it) and by k-fold validation on the training rows, grouped by patch (a shape,
 image in one fold: a fold's patches were never seen by its fit). Prototype, Python.
 
 Correction variants (`--variant`, several allowed; each the same base):
+- `log2`: the same features, degree 2 (105 terms);
 - `log`: fit_rolling_reach's 12 features + λ (ln(major/minor)/ln 20, cos 2ψ, sin 2ψ, 2ν, Ŵ_lin, τ,
   W_fs, 2σ − 1, 2λ − 1), degree 3 — the previous session's correction;
 - `bounded`: the shape as bounded functions instead of the log: the aligned shape along the rolling
@@ -117,7 +118,7 @@ def long_weight(d):
 
 def design(d, b, variant):
     x, fac = feats(d, b, "bounded" if variant == "bounded" else "log")
-    a = F.design(x, fac, F.monomials(x.shape[1], 3))
+    a = F.design(x, fac, F.monomials(x.shape[1], 2 if variant == "log2" else 3))
     if variant == "gated":
         a = np.column_stack([a, F.design(x, fac * long_weight(d), F.monomials(x.shape[1], 2))])
     return a
@@ -174,15 +175,23 @@ def groups(d):
     return inv
 
 
+def reach_cache():
+    """fit_rolling_reach.py's prepared training and held-out rows (built and cached if absent)."""
+    if not R.CACHE.exists():
+        R.CACHE.parent.mkdir(parents=True, exist_ok=True)
+        np.savez(R.CACHE, **R.load())
+    return dict(np.load(R.CACHE))
+
+
 def main():
-    c = dict(np.load(R.CACHE))
+    c = reach_cache()
     tr, ho = R.split(c, "tr"), R.split(c, "ho")
     if "--no-long2" not in sys.argv:
         l2 = load_long2()
         tr = {k: np.concatenate([tr[k], l2[k]]) for k in tr}
         print(f"long-patch rows (with mirrors): {len(l2['aob'])}", flush=True)
     if "--refit-base" in sys.argv:
-        c0 = dict(np.load(R.CACHE))
+        c0 = reach_cache()
         prm = refit_base(R.split(c0, "tr"), load_long2(), "/tmp/roll/reach_prm_long.npy")
     elif "--prm-long" in sys.argv:  # the last --refit-base
         prm = np.load("/tmp/roll/reach_prm_long.npy")

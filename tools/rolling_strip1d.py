@@ -172,7 +172,7 @@ def strip_base(d, steps=64):
 
 def main():
     steps = int(F.args("--steps", ["64"])[0])
-    c = dict(np.load(R.CACHE))
+    c = L.reach_cache()
     ho = R.split(c, "ho")
     l2 = L.load_long2()
     prm = np.load(F.args("--prm", ["/tmp/roll/reach_prm.npy"])[0])
