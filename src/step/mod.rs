@@ -162,10 +162,10 @@
 //!    that moves the end approach, and N̄ would no longer be the normal law's value there
 //!    (measured before this step: off by more than 1e-3 on about half the random states of
 //!    `host-tests/step_normal.rs`, up to 100 %). Each active contact's N is re-solved at the
-//!    end state with the other rows fixed (its friction scaling with N), by Newton steps on
-//!    the end approach, then the friction follows (limit set, power) — [`normal`]. Measured:
-//!    within 1e-3 of the law on every state for `coulomb`, on all but 0.7 % for `best` (the
-//!    last projection moving the friction again).
+//!    end state with the other rows fixed (its force scaling with N, its torque with N and the
+//!    patch: a pair on the limit set's boundary stays on it), by Newton steps on the end
+//!    approach, then the friction follows (limit set, power) — [`normal`]. Measured: within
+//!    1e-3 of the law on every state for `coulomb` and `best` (damped or not).
 //!
 //! Flags in [`Outcome`] tell which of these acted.
 //!
