@@ -22,13 +22,19 @@ include!("../../benches/wrench_set.rs");
 
 const N: usize = SET;
 
+/// A fixed contact and the state it is linearised at.
+type FixedInput<'a> = (&'a Contact<f32, Hertz<f32>, Undamped, Best>, State<f32>);
+
 #[inline(never)]
-fn fixed(x: (&Contact<f32, Hertz<f32>, Undamped, Best>, State<f32>)) -> Jacobian<f32> {
+fn fixed(x: FixedInput<'_>) -> Jacobian<f32> {
     x.0.linearize(&x.1)
 }
 
+/// A varying contact at its curvatures and the state it is linearised at.
+type VaryingInput<'a, 'c> = (&'a At<'c, VaryingContact<f32, Undamped, Best>, f32>, State<f32>);
+
 #[inline(never)]
-fn varying(x: (&At<'_, VaryingContact<f32, Undamped, Best>, f32>, State<f32>)) -> Jacobian<f32> {
+fn varying(x: VaryingInput<'_, '_>) -> Jacobian<f32> {
     x.0.linearize(&x.1)
 }
 

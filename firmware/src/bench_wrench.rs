@@ -144,10 +144,10 @@ fn best_worst(r: &Runner) {
                 .expect("finite slip");
             x.3 = slip;
         }
-        if let Some((x, n)) = r.costliest(&inputs, table_each_step::<T, Best>) {
-            if worst.is_none_or(|(_, w)| n > w) {
-                worst = Some((x, n));
-            }
+        if let Some((x, n)) = r.costliest(&inputs, table_each_step::<T, Best>)
+            && worst.is_none_or(|(_, w)| n > w)
+        {
+            worst = Some((x, n));
         }
     }
     if let Some((x, _)) = worst {

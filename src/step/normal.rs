@@ -289,8 +289,7 @@ fn resolve<T: Real, const K: usize>(
         (T::ZERO, T::ZERO)
     };
     let d = [x - n, wi[1] * kf, wi[2] * kf, wi[3] * kt];
-    add(dt, w, i, d, wbar, u_end);
-    true
+    add(dt, w, i, d, wbar, u_end)
 }
 
 /// Newton steps on the Hertz model's end approach (arithmetic only, no wrench call).
@@ -335,7 +334,9 @@ fn cbrt_below<T: Real>(r: T) -> T {
     }
 }
 
-/// Adds `d` to contact i's wrench and Δt·W·d to every end velocity.
+/// Adds `d` to contact i's wrench and Δt·W·d to every end velocity, all or nothing: false (and
+/// nothing changed) when a sum is not finite — far outside the physical range, where N(h) or the
+/// friction scaled with it overflows the float, the step keeps what it had.
 fn add<T: Real, const K: usize>(
     dt: T,
     w: &InverseMass<T, K>,
@@ -343,19 +344,32 @@ fn add<T: Real, const K: usize>(
     d: [T; 4],
     wbar: &mut [[T; 4]; K],
     u_end: &mut [[T; 4]; K],
-) {
+) -> bool {
     let mut delta = [[T::ZERO; 4]; K];
-    if let (Some(di), Some(wi)) = (delta.get_mut(i), wbar.get_mut(i)) {
-        *di = d;
-        for c in 0..4 {
-            wi[c] += d[c];
+    let mut wi = match (delta.get_mut(i), wbar.get(i)) {
+        (Some(di), Some(&wi)) => {
+            *di = d;
+            wi
+        }
+        _ => return false,
+    };
+    for c in 0..4 {
+        wi[c] += d[c];
+    }
+    let mut u = *u_end;
+    for (j, uj) in u.iter_mut().enumerate() {
+        for (a, x) in uj.iter_mut().enumerate() {
+            *x += dt * w.row_times(4 * j + a, &delta);
         }
     }
-    for j in 0..K {
-        for a in 0..4 {
-            u_end[j][a] += dt * w.row_times(4 * j + a, &delta);
+    let finite = wi.iter().chain(u.iter().flatten()).all(|x| x.is_finite());
+    if finite {
+        if let Some(slot) = wbar.get_mut(i) {
+            *slot = wi;
         }
+        *u_end = u;
     }
+    finite
 }
 
 /// The friction of contact i after its N changed: into the limit set at the new N (the
@@ -381,20 +395,23 @@ fn follow<T: Real, const K: usize>(
     if !(before[0] > T::ZERO) {
         // Apart at the end of the step: no normal force, no friction.
         let d = [-before[0], -before[1], -before[2], -before[3]];
-        add(dt, w, i, d, wbar, u_end);
+        if !add(dt, w, i, d, wbar, u_end) {
+            return false;
+        }
         flags.active = false;
         return before[1] != T::ZERO || before[2] != T::ZERO || before[3] != T::ZERO;
     }
     let mut p = before;
     if super::project::into_limit_set(contact, lin, jac.value[0], &mut p) {
-        flags.limited = true;
         let d = [
             p[0] - before[0],
             p[1] - before[1],
             p[2] - before[2],
             p[3] - before[3],
         ];
-        add(dt, w, i, d, wbar, u_end);
+        if add(dt, w, i, d, wbar, u_end) {
+            flags.limited = true;
+        }
     }
     if !coupled || injects_total(dt, w, free, i, wbar, u_end) {
         if scale_part(dt, w, i, Part::Force, wbar, u_end) {

@@ -110,12 +110,14 @@ case!(
     "b 1f", "1:", "b 1f", "1:"
 );
 
+/// A probe: its name, the block, and the TRM cycles of the block for refill P = 1, 2, 3.
+type Case = (&'static str, fn(f32) -> f32, [u32; 3]);
+
 #[entry]
 fn main() -> ! {
     let r = Runner::new();
     let xs = [1.5f32, 2.0, 3.0, 0.75];
-    // (case, function, TRM cycles of the block for refill P = 1, 2, 3)
-    let cases: [(&str, fn(f32) -> f32, [u32; 3]); 8] = [
+    let cases: [Case; 8] = [
         ("empty", empty, [0, 0, 0]),
         ("vdiv-chain-16", vdiv_chain_16, [16 * 14; 3]),
         ("vsqrt-chain-16", vsqrt_chain_16, [16 * 14; 3]),
