@@ -146,7 +146,10 @@
 //!    regularised law, the zero-slip Jacobian is the ramp's stiffness κ·fN/δ: a sticking
 //!    contact keeps |v⁺| ≈ |v_free|·δ/(Δt·W·κ·fN) < δ.
 //! 3. **Limit set.** The friction pair (F, T_z) of each contact is moved into the law's
-//!    full-slip limit set at the solved N̄ ([`project`]'s supporting-plane test).
+//!    full-slip limit set at the solved N̄ ([`project`]'s supporting-plane test; for a law
+//!    that is not maximally dissipative, [`Linearize::maximally_dissipative`] `false`, the
+//!    cylinder |F| ≤ F_max, |T_z| ≤ T_max, which holds its plain values: as Δt → 0 the step
+//!    tends to the plain wrench for every law).
 //! 4. **Power.** With u⁺ recomputed, friction must inject no energy over the step, checked for
 //!    the force and the drilling torque **separately** (the linear solve can return a drilling
 //!    torque of the wrong sign; a combined check would then zero all friction) — for a rolling
