@@ -20,8 +20,11 @@
 //! sensitivity); default end 20 ms).
 //!
 //! Output keys: `scene`, `law`, `integrator`, `dt`, `end`, `steps`, `stable`, `reason` (null
-//! when stable), `energy_max_rise`, `events`, `cpu_s` (the run's thread CPU time; per simulated
-//! second: `cpu_s / end`). Events (s, rad/s, rad/s², N·m, or relative):
+//! when stable), `energy_max_rise`, `energy_split` (the step-aware rattleback: where the energy
+//! went over the run, of the start energy — `rotation` (the rotation update's own error),
+//! `normal` (the normal force with gravity), `friction`: `Rattleback::step_aware_split`; null
+//! otherwise), `events`, `cpu_s` (the run's thread CPU time; per simulated second:
+//! `cpu_s / end`). Events (s, rad/s, rad/s², N·m, or relative):
 //!
 //! - tippe-top: `half` (first θ = π/2), `touch` (the small sphere's first touch-down);
 //! - ball: `roll` (pure rolling: slip speed 1e-3·v₀), `spin_rate` (−dω_z/dt over 0.05–0.45 s
@@ -196,6 +199,9 @@ struct Report {
     reason: Option<String>,
     energy_max_rise: f64,
     events: Vec<(&'static str, Option<f64>)>,
+    /// The rattleback's step-aware energy split over the run, of E₀: rotation, normal with
+    /// gravity, friction (`Rattleback::step_aware_split`).
+    split: Option<[f64; 3]>,
 }
 
 fn json_num(x: Option<f64>) -> String {
@@ -277,6 +283,7 @@ impl Driven {
             reason: self.watch.verdict(),
             energy_max_rise: self.watch.rise,
             events,
+            split: None,
         }
     }
 }
@@ -389,13 +396,20 @@ fn rattle<L: FloorLaw<f64>>(a: &Args, rb: &Rattleback<f64, L>) -> Report {
     let mut peak: f64 = 0.0;
     let mut warm = Warm::default();
     let e0 = rb.probe(&y).energy;
+    let mut split = [0.0; 3];
     let run = drive(
         a,
         rb,
         end,
         &mut y,
         e0,
-        |y| rb.step_aware(y, a.dt, &mut warm),
+        |y| {
+            let (y1, s) = rb.step_aware_split(y, a.dt, &mut warm);
+            for (sum, part) in split.iter_mut().zip([s.rotation, s.normal, s.friction]) {
+                *sum += part / e0;
+            }
+            y1
+        },
         |t, y| {
             let s = rb.spin(y) * sign;
             peak = peak.max(-s);
@@ -420,12 +434,16 @@ fn rattle<L: FloorLaw<f64>>(a: &Args, rb: &Rattleback<f64, L>) -> Report {
         ),
     };
     let spin_end = rb.spin(&y);
-    run.report(vec![
+    let mut report = run.report(vec![
         ("reversal", r),
         ("stall", st),
         ("peak_reversed", Some(peak)),
         ("spin_end", Some(spin_end)),
-    ])
+    ]);
+    if a.integrator == Integrator::StepAware {
+        report.split = Some(split);
+    }
+    report
 }
 
 fn rattle_law(a: &Args) -> Result<Report, String> {
@@ -573,6 +591,7 @@ fn bearing_run<C: RaceLaw<f64>>(a: &Args, b: &Bearing<f64, C>) -> Report {
         steps: done,
         reason,
         energy_max_rise: f64::NAN,
+        split: None,
         events: vec![
             ("ring_torque", Some(ring / c)),
             ("spin_moment_inner", Some(sm_in / c)),
@@ -698,7 +717,7 @@ fn main() {
         format!("{{{}}}", body.join(","))
     };
     println!(
-        "{{\"scene\":\"{}\",\"law\":\"{}\",\"integrator\":\"{}\",\"dt\":{:e},\"end\":{},\"steps\":{},\"stable\":{},\"reason\":{},\"energy_max_rise\":{},\"events\":{},\"cpu_s\":{:.4}}}",
+        "{{\"scene\":\"{}\",\"law\":\"{}\",\"integrator\":\"{}\",\"dt\":{:e},\"end\":{},\"steps\":{},\"stable\":{},\"reason\":{},\"energy_max_rise\":{},\"energy_split\":{},\"events\":{},\"cpu_s\":{:.4}}}",
         a.name,
         a.law,
         if a.integrator == Integrator::Rk4 {
@@ -714,6 +733,13 @@ fn main() {
             .as_ref()
             .map_or("null".into(), |s| format!("\"{}\"", s.replace('"', "'"))),
         json_num(Some(r.energy_max_rise)),
+        r.split
+            .map_or("null".into(), |[rot, normal, friction]| format!(
+                "{{\"rotation\":{},\"normal\":{},\"friction\":{}}}",
+                json_num(Some(rot)),
+                json_num(Some(normal)),
+                json_num(Some(friction))
+            )),
         events,
         cpu_s
     );

@@ -12,11 +12,16 @@ Modes (own seeds, never the held-out set's 29):
   NPER magnitudes per direction with ρ log-uniform in [RMIN, RMAX].
 - `aligned-long SEED N NPER RMIN RMAX OUT`: aligned patches (θ = 0) with abs(ln a/b) in [ln 5, ln 20], the
   prototype's worst family (long along the rolling direction, translation-dominated, ρ 2–5).
+- `long SEED N NPER RMIN RMAX OUT`: patches long along the rolling direction at any skew: the own ratio
+  major/minor log-uniform in [5, 20], the major axis along x for 40 % of them, else at ψ uniform up to the skew where
+  the patch's extent along x is 3 times its width (its aligned a/b along the rolling direction ≥ 3); the spin component of the direction ×2.5 for half of them (the corner where the
+  reach base and its correction err most: a/b 10–20 at ρ 1–10).
 - `thin SEED N NPER RMIN RMAX OUT`: the same but abs(ln a/b) ≥ ln 5 for 60 % of the shapes and the spin
   component of the direction ×2.5 for half of them.
 
 Committed: `general 7001 1000 3 0.5 40`, `thin 7002 1000 3 0.7 15` and `aligned-long 7003 200 3 0.8 12` (the first points of their
-interleaved halves were solved: tools/data/rolling_ref_train_active.csv says how many).
+interleaved halves were solved: tools/data/rolling_ref_train_active.csv says how many); `long 7004 1500 2 0.5 20`
+(tools/data/rolling_ref_train_long2.csv: the first cases of the list, in its order).
 """
 import pathlib
 import sys
@@ -42,6 +47,16 @@ def main():
         theta = np.zeros(n)
         nu = 0.5 * rng.random(n)
         d = rng.normal(size=(n, 3))
+    elif mode == "long":
+        aob = np.exp(np.log(5) + (np.log(20) - np.log(5)) * rng.random(n))
+        # skew ψ up to where the patch's extent along x, 1/√A (A = cos²ψ/r + r sin²ψ, c = 1), still
+        # makes it ≥ 3 times longer than wide along the rolling direction: A ≤ 1/3
+        psi_max = np.arcsin(np.sqrt(np.clip((1 / 3 - 1 / aob) / (aob - 1 / aob), 0.0, 1.0)))
+        theta = np.where(rng.random(n) < 0.4, 0.0, psi_max * rng.uniform(-1.0, 1.0, n))
+        theta = np.mod(theta, np.pi)
+        nu = 0.5 * rng.random(n)
+        d = rng.normal(size=(n, 3))
+        d[:, 2] *= np.where(rng.random(n) < 0.5, 2.5, 1.0)
     else:
         ext = rng.random(n) < 0.6
         lr = np.where(ext, np.log(5) + (np.log(20) - np.log(5)) * rng.random(n), np.log(5) * rng.random(n))

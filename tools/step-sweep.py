@@ -2,7 +2,8 @@
 """Step sweep of the scenes: plain RK4 against the step-aware integrator (examples/scene.rs).
 
 Run by tools/step-sweep.sh (which builds the runner first). Writes bench-results/step-sweep.csv
-(one row per run: the runner's JSON flattened) and bench-results/step-sweep.md (per scene, law
+(one row per run: the runner's JSON flattened, the rattleback's energy split in the last
+columns) and bench-results/step-sweep.md (per scene, law
 and spin: outcome, event times and their deviation from the fine-step RK4 reference row,
 energy rise, CPU seconds per simulated second).
 """
@@ -50,6 +51,9 @@ EVENTS = {
     "bearing": ["ring_torque", "spin_moment_inner", "spin_moment_outer", "cage"],
 }
 ALL_EVENTS = [e for v in EVENTS.values() for e in v]
+# The step-aware rattleback's energy split over the run, of E₀ (the runner's `energy_split`:
+# the rotation update, the normal force with gravity, friction).
+SPLIT = ["rotation", "normal", "friction"]
 
 
 def run(scene, law, spin, end, dt, integrator, extra):
@@ -76,7 +80,8 @@ def main():
         w = csv.writer(f)
         w.writerow(["scene", "law", "spin", "integrator", "options", "dt", "end", "reference",
                     "stable",
-                    "energy_max_rise"] + ALL_EVENTS + ["cpu_s", "cpu_per_sim_s", "reason"])
+                    "energy_max_rise"] + ALL_EVENTS + ["cpu_s", "cpu_per_sim_s", "reason"]
+                   + ["energy_" + p for p in SPLIT])
         for r in rows:
             ev = r["events"] or {}
             w.writerow([r["scene"], r["law"], "" if r["spin"] is None else r["spin"],
@@ -86,7 +91,9 @@ def main():
                         "" if r["energy_max_rise"] is None else f"{r['energy_max_rise']:.3e}"]
                        + ["" if ev.get(e) is None else f"{ev[e]:.6g}" for e in ALL_EVENTS]
                        + [f"{r['cpu_s']:.3f}", f"{r['cpu_s'] / r['end']:.3f}",
-                          r["reason"] or ""])
+                          r["reason"] or ""]
+                       + ["" if not r.get("energy_split") else f"{r['energy_split'][p]:.3e}"
+                          for p in SPLIT])
     md = ["# Step sweep: plain RK4 against the step-aware integrator",
           "",
           "Regenerate: `tools/step-sweep.sh` (this file and step-sweep.csv). Deviations are "

@@ -57,7 +57,8 @@ use super::event::{Crossing, Direction};
 use super::integrate::Ode;
 use super::rigid::{Quat, Vec3, euler_rate};
 use super::step_aware::{
-    Candidate, InvInertia, Site, StepContact, Warm, rigid_w, rotate_by, solve_library,
+    Candidate, InvInertia, Site, StepContact, Warm, rigid_w, rotate_by, solve_consistent_gap,
+    solve_library,
 };
 use crate::contact::Rolling;
 use crate::contact::VaryingContact;
@@ -108,8 +109,9 @@ pub const SIMPLIFIED_DELTA: f64 = 1e-4;
 /// rigid no-slip rolling model's 2.376 s (`tools/rattleback_noslip.py`, independent of the
 /// crate). ω₀ = +2 rad/s neither reverses nor stalls within 3 s at any δ; at this δ it reverses
 /// at 23.54 s (no-slip: 23.37 s).
-/// RK4 needs h ≤ 2 µs at this δ; the step-aware integrator holds to 1 ms within 0.06 % (at
-/// 2 ms the energy check fails: docs/guide/src/scenes-large-steps.md). `Ellipsoid` needs no
+/// RK4 needs h ≤ 2 µs at this δ; the step-aware integrator holds to 2 ms: the reversal
+/// −0.11 % at 1 ms, −0.63 % at 2 ms (energy rise 5.3e-4 of E₀;
+/// docs/guide/src/scenes-large-steps.md). `Ellipsoid` needs no
 /// such constant: it ignores δ (Coulomb's sign law at rest).
 pub const COULOMB_DELTA: f64 = 1e-5;
 
@@ -210,6 +212,23 @@ pub struct Geometry<T> {
     pub lowest: Vec3<T>,
     /// P, Q of the gap z = P x² + Q y² and the major axis' angle from world x.
     pub curvatures: Curvatures<T>,
+}
+
+/// Where the energy change of one step-aware step went (J; [`Rattleback::step_aware_split`]).
+/// The parts sum to the change of [`Probe::energy`] over the step, to rounding.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct EnergySplit<T> {
+    /// The rotation update's own error: the change of the rotational energy ½L·I⁻¹L over the
+    /// two torque-free half-turns (L fixed in each; zero for an exact torque-free rotation).
+    pub rotation: T,
+    /// The normal force and gravity: the normal impulse's work, gravity's kick and the change
+    /// of the potential energy m·g·G_z and of the contact's elastic energy. ≤ 0 on average for a
+    /// step consistent with the normal law (the backward-Euler normal and Hunt–Crossley damp);
+    /// its per-step value swings with the load (the step's bounded O(Δt²) energy error).
+    pub normal: T,
+    /// The friction impulse's work (F_x, F_y, T_z): at the mid-step pose, with the mean of the
+    /// contact velocities before and after the impulse.
+    pub friction: T,
 }
 
 /// What the contact does at a state.
@@ -630,6 +649,22 @@ impl<T: Real, L: FloorLaw<T>> Rattleback<T, L> {
         )
     }
 
+    /// The contact's elastic energy (2/5)k_H h^{5/2} at the geometry `g` (0 when apart).
+    fn elastic(&self, g: &Geometry<T>) -> T {
+        if g.h > T::ZERO {
+            Hertz::new::<Newton>(&g.curvatures, self.estar)
+                .map(|k| k.energy(g.h))
+                .unwrap_or(T::ZERO)
+        } else {
+            T::ZERO
+        }
+    }
+
+    /// [`Rattleback::elastic`] at G = `r` and the unit attitude `q`.
+    fn elastic_at(&self, r: Vec3<T>, q: Quat<T>) -> T {
+        self.elastic(&self.geometry_at(r, q).0)
+    }
+
     /// The spin ω·ẑ (rad/s, world vertical component) at state `y`: the event function of
     /// [`SpinEvents`], cheaper than [`Rattleback::probe`] (no contact evaluation).
     #[inline]
@@ -643,13 +678,7 @@ impl<T: Real, L: FloorLaw<T>> Rattleback<T, L> {
         let (r, v, q, omega) = split(y);
         let q = q.normalized();
         let (contact, g) = self.contact_at(r, v, q, omega);
-        let elastic = if g.h > T::ZERO {
-            Hertz::new::<Newton>(&g.curvatures, self.estar)
-                .map(|k| k.energy(g.h))
-                .unwrap_or(T::ZERO)
-        } else {
-            T::ZERO
-        };
+        let elastic = self.elastic(&g);
         let energy = T::HALF * (self.mass * v.dot(v) + omega.dot(self.inertia.mul_elem(omega)))
             + self.mass * self.gravity * r.z
             + elastic;
@@ -695,8 +724,41 @@ impl<T: Real, L: FloorLaw<T>> Rattleback<T, L> {
     /// within 0.004 % at 0.1 ms and 0.06 % at 1 ms. The drift term then makes 0.5–1 ms
     /// right (without it, −9 % at 0.5 ms and −14 % at 1 ms).
     ///
+    /// The normal force is solved at the approach the step really ends at
+    /// ([`super::step_aware::solve_consistent_gap`]): the end pose's approach responds to
+    /// the impulse through the contact arm over the second half-step, which turns as the patch
+    /// runs over the body; the library's linear response (W at the mid-step pose) missed it by
+    /// up to 1.3 µm at 2 ms, over half the static approach, and the normal and gravity gained energy
+    /// ([`EnergySplit`]; `coulomb` −2 at 2 ms: +1.1e-2 of E₀ over 3 s, the runner's energy
+    /// check failing at 1.24 s; now −2.6e-3, the reversal 0.63 % early). Cost: a second
+    /// library solve per step.
+    ///
     /// `warm` carries the solution ([`Warm::default`] at the start).
     pub fn step_aware(&self, y: &State<T>, dt: T, warm: &mut Warm<T>) -> State<T> {
+        self.step_aware_inner(y, dt, warm, None)
+    }
+
+    /// [`Rattleback::step_aware`], and where the step's energy change went
+    /// ([`EnergySplit`]; its parts sum to the change of [`Probe::energy`] to rounding).
+    /// Costs about one more contact evaluation per step than [`Rattleback::step_aware`].
+    pub fn step_aware_split(
+        &self,
+        y: &State<T>,
+        dt: T,
+        warm: &mut Warm<T>,
+    ) -> (State<T>, EnergySplit<T>) {
+        let mut split = EnergySplit::default();
+        let y1 = self.step_aware_inner(y, dt, warm, Some(&mut split));
+        (y1, split)
+    }
+
+    fn step_aware_inner(
+        &self,
+        y: &State<T>,
+        dt: T,
+        warm: &mut Warm<T>,
+        audit: Option<&mut EnergySplit<T>>,
+    ) -> State<T> {
         let (r, v, q, omega) = split(y);
         let q = q.normalized();
         let inv = Vec3::new(
@@ -763,13 +825,38 @@ impl<T: Real, L: FloorLaw<T>> Rattleback<T, L> {
         // The library's step-aware wrench, Strang scheme: θ = ½ (the drift's share 0 unless
         // the slip reverses), the gap's response ½W (both halves of the pose move with the
         // new velocities over the second half-step only).
-        let sol = solve_library(dt, &wm, &[&floor], &cand, &Scheme::strang(), warm);
-        let (f, t) = site.load(&sol.w[0]);
-        let v1 = v_free + f * (dt / self.mass);
-        let l1 = l + t * dt;
-        let r1 = r_mid + v1 * second;
-        let q1 = turn(q_mid, l1, second);
+        // The second half-step with the wrench w: Ġ⁺, L⁺, G⁺, q⁺.
+        let end = |w: &[T; 4]| {
+            let (f, t) = site.load(w);
+            let v1 = v_free + f * (dt / self.mass);
+            let l1 = l + t * dt;
+            (v1, l1, r_mid + v1 * second, turn(q_mid, l1, second))
+        };
+        let sol = solve_consistent_gap(
+            &cand,
+            |c| solve_library(dt, &wm, &[&floor], c, &Scheme::strang(), warm),
+            |w| {
+                let (_, _, r1, q1) = end(&w[0]);
+                [self.geometry_at(r1, q1).0.h]
+            },
+        );
+        let (v1, l1, r1, q1) = end(&sol.w[0]);
         let w1 = q1.rotate_inv(l1).mul_elem(inv);
+        if let Some(e) = audit {
+            let rot = |q: Quat<T>, l: Vec3<T>| T::HALF * l.dot(InvInertia::new(q, inv).apply(l));
+            let w = &sol.w[0];
+            // The impulse's work at the mid-step pose: w̄·Δt times the mean of the contact
+            // velocities before (u_free) and after it (exact for a rigid body).
+            let after = site.velocity(v1, iw.apply(l1));
+            let work = |i: usize| dt * w[i] * T::HALF * (u_free[i] + after[i]);
+            e.rotation = rot(q_mid, l) - rot(q, l) + rot(q1, l1) - rot(q_mid, l1);
+            e.normal = work(0)
+                + self.mass * self.gravity * (r1.z - r.z)
+                + T::HALF * self.mass * (v_free.dot(v_free) - v.dot(v))
+                + self.elastic_at(r1, q1)
+                - self.elastic_at(r, q);
+            e.friction = work(1) + work(2) + work(3);
+        }
         pack(r1, v1, q1, w1)
     }
 }

@@ -507,6 +507,10 @@ pub fn step_wrenches_with<T: Real, const K: usize>(
         &mut u_end,
         &mut flags,
     );
+    // The end velocity afresh from the final wrench: the re-solve's and the scalings' updates
+    // were incremental, and where N̄ fell by orders of magnitude (f32: 9.3e7 N → 8 N) their
+    // rounding left u⁺ off by more than the power it decides (a fuzz finding).
+    u_end = end_velocity(dt_, w, free, &wbar);
     for _ in 0..(2 * K + 1) {
         let mut clean = true;
         for i in 0..K {
@@ -517,6 +521,7 @@ pub fn step_wrenches_with<T: Real, const K: usize>(
                 if injects(dt_, w, free, i, part, &wbar, &u_end) {
                     clean = false;
                     rescale(dt_, w, i, part, T::ZERO, &mut wbar, &mut u_end);
+                    u_end = end_velocity(dt_, w, free, &wbar);
                     match part {
                         Part::Force => flags[i].force_scaled = true,
                         Part::Torque => flags[i].torque_scaled = true,
