@@ -7,7 +7,13 @@
 //! cargo run --release --features scenes --example bearing          # writes out/bearing_*.csv, out/bearing_fy.png
 //! cargo run --release --features scenes --example bearing -- out rolling   # the guide's creep vs full slip table (≈ 2 min)
 //! cargo run --release --features scenes --example bearing -- out rolling table 0.05   # one rolling run to 50 ms
+//! cargo run --release --features scenes --example bearing -- out steady step-aware 2e-5 0.4   # steady-state means ± batch-means error
 //! ```
+//!
+//! `steady [rk4|step-aware] [dt] [end] [ramp] [from]` (defaults step-aware, 20 µs, 0.4 s, 5 ms,
+//! end/2): the creep bearing's steady state, means over `from`–`end` with their batch-means
+//! standard errors (also as one JSON line), and the series in out/bearing_steady_*.csv (RK4 at
+//! 0.1 µs to 0.4 s: ≈ 2.5 min).
 //!
 //! `rolling [best|table|blend|all] [end] [209|paper]`: the 209 (or the paper's e² = 0.687
 //! inner groove) with full-slip `best` (δ = 0.05, 0.02 m/s;
@@ -291,14 +297,9 @@ fn rolling_table(which: Option<&str>, end: f64, g: Geometry<f64>) {
     // G = E*(1 − ν) = 80 GPa, ν = 0.3 (steel); δ is not used by it. Its creep stiffness
     // G c² C₁₁/V (≈ 2.2e4 N·s/m at the inner race at 900 N) needs h ≤ 0.1 µs with RK4 (at
     // 0.25 µs a numerical limit cycle drives the ring).
-    type RollingRace = Scene<Elliptic, Fixed, Rolls, ExactGrade, f64>;
-    let table = |delta: f64, race| {
-        let friction = Friction::new(0.07, delta).unwrap();
-        RollingRace::build(&g.curvatures(race).unwrap(), estar, damping, friction).unwrap()
-    };
     if runs("table") {
         for (delta, h) in first(&[(0.05, H_ROLL), (0.05, H_ROLL / 2.0), (0.02, H_ROLL)]) {
-            let b = Bearing::new(&g, table(delta, Race::Inner), table(delta, Race::Outer)).unwrap();
+            let b = table_bearing(&g, delta);
             print_row("table (creep)", delta, h, &summarize(&b, h, end));
         }
     }
@@ -313,8 +314,157 @@ fn rolling_table(which: Option<&str>, end: f64, g: Geometry<f64>) {
 /// RK4 step of the rolling runs (s).
 const H_ROLL: f64 = 1e-7;
 
+/// The bearing `g` with the rolling law `select` picks where the patch rolls (`table` over
+/// `best`, f = 0.07, slip scale `delta`), both races.
+fn table_bearing(g: &Geometry<f64>, delta: f64) -> Bearing<f64, impl RaceLaw<f64>> {
+    let (estar, damping, _) = parts();
+    let table = |race| {
+        let friction = Friction::new(0.07, delta).unwrap();
+        Scene::<Elliptic, Fixed, Rolls, ExactGrade, f64>::build(
+            &g.curvatures(race).unwrap(),
+            estar,
+            damping,
+            friction,
+        )
+        .unwrap()
+    };
+    Bearing::new(g, table(Race::Inner), table(Race::Outer)).unwrap()
+}
+
+/// The steady state of the 209 with the creep law `table` (the runner's setup,
+/// examples/scene.rs): one run of `integrator` (`rk4` or `step-aware`) at step `dt` to `end`,
+/// the load ramped over `ramp`; writes `dir`/bearing_steady_<integrator>_<dt>.csv (every µs or
+/// every step: ring torque and its drilling part, Σ|T_z| inner / outer, cage speed / ω_c − 1,
+/// the ring's axial speed) and prints the means over `from`–`end` with their
+/// standard errors by batch means (20 ms batches: the ring torque's own fluctuation is
+/// correlated over milliseconds, so the samples' spread alone would understate it).
+fn steady(dir: &str, integrator: &str, dt: f64, end: f64, ramp: f64, from: f64) {
+    use contensou::scenes::integrate::rk4_step;
+    use contensou::scenes::step_aware::Warm;
+    let mut g = Geometry::<f64>::bearing_209();
+    g.ramp = ramp;
+    let b = table_bearing(&g, 0.05);
+    let rk4 = match integrator {
+        "rk4" => true,
+        "step-aware" => false,
+        x => panic!("unknown integrator {x} (rk4, step-aware)"),
+    };
+    let steps = (end / dt).round() as usize;
+    let every = ((1e-6 / dt).round() as usize).max(1);
+    let mut y = b.initial_state();
+    let mut warm = [Warm::default(); BALLS];
+    let mut csv = String::from("t,ring_torque,ring_torque_spin,sm_inner,sm_outer,cage,ring_vz\n");
+    // (t, [ring torque, Σ|T_z| inner, outer, cage]) from `from` on.
+    let mut rows: Vec<(f64, [f64; 4])> = Vec::new();
+    for i in 0..steps {
+        let t = dt * (i + 1) as f64;
+        let loads = if rk4 {
+            y = rk4_step(&b, t - dt, &y, dt);
+            None
+        } else {
+            let (y1, l) = b.step_aware(t - dt, &y, dt, &mut warm);
+            y = y1;
+            Some(l)
+        };
+        if (i + 1) % every != 0 {
+            continue;
+        }
+        let (ring, spin, sm) = match loads {
+            Some(l) => (l.ring_torque, l.ring_torque_spin, l.spin_moment),
+            None => {
+                let (mut spin, mut sm) = (0.0, [0.0; 2]);
+                for k in 0..BALLS {
+                    let (ci, co) = b.contacts(&y, k);
+                    sm[0] += ci.tz.abs();
+                    sm[1] += co.tz.abs();
+                    spin += ci.ring_torque_spin;
+                }
+                (b.inner_ring_torque(&y), spin, sm)
+            }
+        };
+        let cage =
+            (0..BALLS).map(|k| orbit(&y, k)).sum::<f64>() / BALLS as f64 / g.cage_speed() - 1.0;
+        writeln!(
+            csv,
+            "{t:.7},{ring:.6e},{spin:.6e},{:.6e},{:.6e},{cage:.6e},{:.4e}",
+            sm[0], sm[1], y[5]
+        )
+        .unwrap();
+        if t > from {
+            rows.push((t, [ring, sm[0], sm[1], cage]));
+        }
+    }
+    std::fs::create_dir_all(dir).unwrap();
+    let path = format!("{dir}/bearing_steady_{integrator}_{dt:e}.csv");
+    std::fs::write(&path, csv).unwrap();
+    let batch = 0.02;
+    let nb = (((end - from) / batch).floor() as usize).max(2);
+    let t0 = from;
+    let mut json = Vec::new();
+    for (j, name) in [
+        "ring torque (N·mm)",
+        "Σ|T_z| inner (N·mm)",
+        "Σ|T_z| outer (N·mm)",
+        "cage speed / ω_c − 1 (%)",
+    ]
+    .iter()
+    .enumerate()
+    {
+        let scale = if j == 3 { 100.0 } else { 1e3 };
+        let mean = rows.iter().map(|r| r.1[j]).sum::<f64>() / rows.len() as f64;
+        let bm: Vec<f64> = (0..nb)
+            .map(|k| {
+                let (a, z) = (t0 + batch * k as f64, t0 + batch * (k + 1) as f64);
+                let v: Vec<f64> = rows
+                    .iter()
+                    .filter(|r| r.0 > a && r.0 <= z)
+                    .map(|r| r.1[j])
+                    .collect();
+                v.iter().sum::<f64>() / v.len().max(1) as f64
+            })
+            .collect();
+        let m = bm.iter().sum::<f64>() / nb as f64;
+        let var = bm.iter().map(|x| (x - m) * (x - m)).sum::<f64>() / (nb - 1) as f64;
+        let key = [
+            "ring_torque",
+            "spin_moment_inner",
+            "spin_moment_outer",
+            "cage",
+        ][j];
+        json.push(format!(
+            "\"{key}\":{mean:e},\"{key}_se\":{:e}",
+            (var / nb as f64).sqrt()
+        ));
+        println!(
+            "{name}: {:.4} ± {:.4} (mean over {:.0}–{:.0} ms ± batch-means standard error)",
+            scale * mean,
+            scale * (var / nb as f64).sqrt(),
+            1e3 * t0,
+            1e3 * end
+        );
+    }
+    println!("series: {path}");
+    println!("{{{}}}", json.join(","));
+}
+
 fn main() {
     let dir = std::env::args().nth(1).unwrap_or_else(|| "out".into());
+    if std::env::args().nth(2).as_deref() == Some("steady") {
+        let arg = |i: usize, d: f64| std::env::args().nth(i).map_or(d, |e| e.parse().unwrap());
+        let integrator = std::env::args()
+            .nth(3)
+            .unwrap_or_else(|| "step-aware".into());
+        let end = arg(5, 0.4);
+        steady(
+            &dir,
+            &integrator,
+            arg(4, 2e-5),
+            end,
+            arg(6, 5e-3),
+            arg(7, 0.5 * end),
+        );
+        return;
+    }
     if std::env::args().nth(2).as_deref() == Some("rolling") {
         let end = std::env::args()
             .nth(4)

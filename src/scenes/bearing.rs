@@ -183,6 +183,9 @@ pub struct RaceContact<T> {
     /// Torque about the bearing axis through the ring's centre on the ring from this contact
     /// (N·m): the friction forces' moment plus the drilling torque's axial part.
     pub ring_torque: T,
+    /// The drilling torque's part of [`RaceContact::ring_torque`], −ẑ·(T_z z) (N·m): the rest
+    /// is the friction forces' moment.
+    pub ring_torque_spin: T,
     /// Force on the ball, world frame (N).
     pub force: Vec3<T>,
     /// Torque on the ball about its centre, world frame (N·m).
@@ -328,7 +331,8 @@ impl<T: Real, C: RaceLaw<T>> Raceway<T, C> {
                 .step_rolling(&self.curvatures, h, frame.approach_rate(vp), slip, rolling);
         let load = frame.on_b(&wrench, arm.into());
         let force: Vec3<T> = load.force.into();
-        let ring_torque = -((rel + arm).cross(force).z + z.z * wrench.tz);
+        let ring_torque_spin = -z.z * wrench.tz;
+        let ring_torque = ring_torque_spin - (rel + arm).cross(force).z;
         RaceContact {
             h,
             n: wrench.n,
@@ -341,6 +345,7 @@ impl<T: Real, C: RaceLaw<T>> Raceway<T, C> {
             roll: (w_rel - z * slip.omega()).norm(),
             rolling: [vrx, vry],
             ring_torque,
+            ring_torque_spin,
             force,
             torque: load.torque.into(),
         }
@@ -363,59 +368,93 @@ struct Kin<T: Real> {
     rolling_world: Vec3<T>,
 }
 
-/// One race contact as the large step sees it: its geometry at the mid-step pose.
+/// Where a large step sees a ball and a ring: their centres where the impulse acts, where the
+/// velocities are read and at the free end of the step ([`Bearing::step_aware_with`]).
+struct Poses<T> {
+    ball: [Vec3<T>; 3],
+    ring: [Vec3<T>; 3],
+}
+
+/// One race contact as the large step sees it: its site where the impulse acts and its candidate.
 struct RaceStep<T> {
     site: Site<T>,
     cand: Candidate<T>,
 }
 
 impl<T: Real, C: RaceLaw<T>> Raceway<T, C> {
-    /// The contact of a ball at `p` (mid-step) with this race on a ring at `c` (mid-step)
-    /// moving with `vr`, spinning at `wr`; the gap predicted at the free end pose (`p_end`,
-    /// `c_end`); u_free from the ball's velocity `v`, `w` (no contact). None when the gap is
-    /// open at both.
+    /// The contact of a ball with this race on a ring moving with `vr`, spinning at `wr`, at
+    /// the `poses`: its site (W's rows) and u_free from the ball's velocity `v`, `w` (no
+    /// contact) where the impulse acts (the start pose); the same velocities read at the
+    /// mid-step pose minus u_free as the drift, so that the law sees the end velocity at
+    /// mid-step (see [`Bearing::step_aware_with`]); the gap predicted at the free end pose.
+    /// None for a degenerate geometry (a ball centre on the axis or on a
+    /// groove's centre circle).
     fn step_site(
         &self,
-        (c, vr, wr): (Vec3<T>, Vec3<T>, T),
-        (p, v, w): (Vec3<T>, Vec3<T>, Vec3<T>),
+        poses: &Poses<T>,
+        (vr, wr): (Vec3<T>, T),
+        (v, w): (Vec3<T>, Vec3<T>),
         rb: T,
-        (p_end, c_end): (Vec3<T>, Vec3<T>),
     ) -> Option<RaceStep<T>> {
+        let [p, p_read, p_end] = poses.ball;
+        let [c, c_read, c_end] = poses.ring;
         let rel = p - c;
         let (rho, e_rho, g, d) = self.torus(rel);
+        let rel_read = p_read - c_read;
+        let read = self.torus(rel_read);
         let h_end = self.torus(p_end - c_end).3 + rb - self.groove;
-        if !(rho > T::ZERO && d > T::ZERO && h_end.is_finite()) {
+        if !(rho > T::ZERO
+            && d > T::ZERO
+            && read.0 > T::ZERO
+            && read.3 > T::ZERO
+            && h_end.is_finite())
+        {
             return None;
         }
-        let Kin {
-            z,
-            frame,
-            arm,
-            ring_p,
-            rolling_world,
-            ..
-        } = self.kin((rel, rho, e_rho, g, d), (vr, wr), (v, w), rb);
-        let [vrx, vry, _] = frame.to_contact(rolling_world.into());
-        let site = Site {
-            arm,
-            axes: [frame.x().into(), frame.y().into(), z],
-        };
-        let ball_u = site.velocity(v, w);
-        let ring_u = [
-            z.dot(ring_p),
-            Vec3::from(frame.x()).dot(ring_p),
-            Vec3::from(frame.y()).dot(ring_p),
-            z.z * wr,
-        ];
+        let kin = self.kin((rel, rho, e_rho, g, d), (vr, wr), (v, w), rb);
+        let (site, u_free) = kin.free(v, w, wr);
+        let kin_read = self.kin(
+            (rel_read, read.0, read.1, read.2, read.3),
+            (vr, wr),
+            (v, w),
+            rb,
+        );
+        let [vrx, vry, _] = kin_read.frame.to_contact(kin_read.rolling_world.into());
+        let (_, u_read) = kin_read.free(v, w, wr);
         Some(RaceStep {
             site,
             cand: Candidate {
                 h_pred: h_end,
-                u_free: [0, 1, 2, 3].map(|i| ball_u[i] - ring_u[i]),
+                u_free,
                 rolling: RollingVelocity::new(vrx, vry).unwrap_or(RollingVelocity::ZERO),
-                drift: [T::ZERO; 4],
+                drift: [0, 1, 2, 3].map(|i| u_read[i] - u_free[i]),
             },
         })
+    }
+}
+
+impl<T: Real> Kin<T> {
+    /// The step's site and u = (v_n, v_x, v_y, ω) of the ball (velocity `v`, angular velocity
+    /// `w`) relative to the ring (spin `wr`) at P in this frame.
+    #[inline(always)]
+    fn free(&self, v: Vec3<T>, w: Vec3<T>, wr: T) -> (Site<T>, [T; 4]) {
+        let (x, y, z) = (
+            Vec3::from(self.frame.x()),
+            Vec3::from(self.frame.y()),
+            self.z,
+        );
+        let site = Site {
+            arm: self.arm,
+            axes: [x, y, z],
+        };
+        let ball_u = site.velocity(v, w);
+        let ring_u = [
+            z.dot(self.ring_p),
+            x.dot(self.ring_p),
+            y.dot(self.ring_p),
+            z.z * wr,
+        ];
+        (site, [0, 1, 2, 3].map(|i| ball_u[i] - ring_u[i]))
     }
 }
 
@@ -425,6 +464,9 @@ pub struct StepLoads<T> {
     /// The friction torque on the inner ring about the bearing axis (N·m, as
     /// [`Bearing::inner_ring_torque`]).
     pub ring_torque: T,
+    /// The drilling torques' part of [`StepLoads::ring_torque`]: −Σ ẑ_bearing·(T_z z) over the
+    /// balls' inner contacts (N·m; the rest is the friction forces' moment).
+    pub ring_torque_spin: T,
     /// Σ over balls of |T_z| at the inner and the outer race (N·m).
     pub spin_moment: [T; 2],
 }
@@ -573,10 +615,28 @@ impl<T: Real, C: RaceLaw<T>> Bearing<T, C> {
 
     /// One large step of `dt` from (`t`, `y`) ([`super::step_aware`]): each ball's two race
     /// contacts solved together (W of the ball, a sphere, over both contacts; an active set),
-    /// with the ring where `coupling` puts it over the step ([`RingCoupling`]); the ball's
-    /// geometry at mid-step (moved by half a step with its start velocity), each gap predicted
-    /// at the free end pose, backward Euler (θ = 1: the creep law is a stiff damper). Then each
-    /// ball's kick–drift, and the ring's with the balls' reactions F of this step and the
+    /// with the ring where `coupling` puts it over the step ([`RingCoupling`]), each gap
+    /// predicted at the free end pose, backward Euler (θ = 1: the creep law is a stiff damper).
+    /// Then each ball's kick–drift, v⁺ = v + Δt·F/m, p⁺ = p + Δt·v⁺.
+    ///
+    /// **Where the impulse acts and where the slip is read.** In that kick–drift the velocities
+    /// live half a step off the positions: p⁺ − p = Δt·v⁺ makes v⁺ the chord velocity of the
+    /// step, the velocity at mid-step. In the steady state the balls' velocities (v and ω,
+    /// whose part in the orbit plane, ≈ 41 rad/s for the 209, turns with the orbit) turn by
+    /// ω_c·Δt per step, and the kick v⁺ − v is centred between them — at the start pose p. So
+    /// the impulse acts at the start pose (W and the impulse's directions from the contact
+    /// frames there) and the law reads the end velocity v⁺, ω⁺ at the mid-step pose
+    /// p + ½Δt·v (through the candidate's drift: the start velocities read there minus read at
+    /// p). Both at mid-step, as this step did before, turn the balls' centripetal force ahead by
+    /// ½ω_c·Δt: a spurious brake m·v·ω_c²·Δt/2 on each ball's orbit (1.4 mN at 20 µs for the
+    /// 209) that the inner ring's friction made up — the ring torque came out +0.074 % per µs
+    /// of step too large (steady state against RK4 at 0.1 µs: +0.74 / +1.46 / +2.29 % at
+    /// 10 / 20 / 30 µs, the cage speed −0.02 / −0.04 / −0.07 %); with the split, +0.03 / +0.30 /
+    /// +0.63 % (second order) and −0.004 / −0.008 / −0.017 %. With the impulse at mid-step
+    /// and the end velocity read at the end pose, the error has the other sign (−3.5 % per
+    /// 10 µs).
+    ///
+    /// The ring's update, with the balls' reactions F of this step and the
     /// load, linearly implicit in the ring's own displacement:
     /// (M + Δt²·K)(Ṙ⁺ − Ṙ) = Δt(F + load(t + Δt)), R⁺ = R + Δt·Ṙ⁺, K the balls' solved Hertz
     /// tangents 3N/(2h), inner and outer in series, along each inner normal (without K the
@@ -601,9 +661,11 @@ impl<T: Real, C: RaceLaw<T>> Bearing<T, C> {
         let inv_i = T::ONE / self.ball_inertia;
         let iw = InvInertia::new(Quat::identity(), Vec3::new(inv_i, inv_i, inv_i));
         let half = T::HALF * dt;
-        let (c_mid, c_end) = match coupling {
-            RingCoupling::Start => (c, c),
-            RingCoupling::Predicted => (c + vr * half, c + vr * dt),
+        // The ring where the impulse acts, where the velocities are read (mid-step) and at
+        // the end of the step.
+        let (c_kick, c_mid, c_end) = match coupling {
+            RingCoupling::Start => (c, c, c),
+            RingCoupling::Predicted => (c + vr * half, c + vr * half, c + vr * dt),
         };
         let mut out = *y;
         let mut ring_force = Vec3::zero();
@@ -615,23 +677,31 @@ impl<T: Real, C: RaceLaw<T>> Bearing<T, C> {
         {
             let (p, v, w) = ball(b);
             let wk = &mut warm[k];
-            // The geometry at mid-step from the start velocity alone. (Adding half of the last
-            // step's impulse, as this step did before, extrapolates the ball's stiff normal
-            // force explicitly: Δt²·k/m ≈ 300 at 100 µs, the ball then alternated between its
-            // races and the run diverged after 17 steps.)
+            // The impulse at the start pose, the velocities read at mid-step from the start
+            // velocity alone (see above; adding half of the last step's impulse, as this step
+            // did before, extrapolates the ball's stiff normal force explicitly: Δt²·k/m ≈ 300
+            // at 100 µs, the ball then alternated between its races and the run diverged after
+            // 17 steps).
             let p_mid = p + v * half;
+            let ball_poses = [p, p_mid, p + v * dt];
             let (si, so) = (
                 self.inner.step_site(
-                    (c_mid, vr, g.omega_inner),
-                    (p_mid, v, w),
+                    &Poses {
+                        ball: ball_poses,
+                        ring: [c_kick, c_mid, c_end],
+                    },
+                    (vr, g.omega_inner),
+                    (v, w),
                     rb,
-                    (p + v * dt, c_end),
                 ),
                 self.outer.step_site(
-                    (Vec3::zero(), Vec3::zero(), T::ZERO),
-                    (p_mid, v, w),
+                    &Poses {
+                        ball: ball_poses,
+                        ring: [Vec3::zero(); 3],
+                    },
+                    (Vec3::zero(), T::ZERO),
+                    (v, w),
                     rb,
-                    (p + v * dt, Vec3::zero()),
                 ),
             );
             let (Some(si), Some(so)) = (si, so) else {
@@ -659,8 +729,9 @@ impl<T: Real, C: RaceLaw<T>> Bearing<T, C> {
             );
             let (fi, ti) = si.site.load(&sol.w[0]);
             let (fo, to) = so.site.load(&sol.w[1]);
-            let rel_p = p_mid - c_mid + si.site.arm;
+            let rel_p = p - c_kick + si.site.arm;
             loads.ring_torque -= rel_p.cross(fi).z + si.site.axes[2].z * sol.w[0][3];
+            loads.ring_torque_spin -= si.site.axes[2].z * sol.w[0][3];
             loads.spin_moment[0] += sol.w[0][3].abs();
             loads.spin_moment[1] += sol.w[1][3].abs();
             ring_force = ring_force - fi;
@@ -681,25 +752,26 @@ impl<T: Real, C: RaceLaw<T>> Bearing<T, C> {
 
 /// Where the balls see the inner ring within a large step ([`Bearing::step_aware_with`]).
 ///
-/// The bearing rings: the ring on the balls' Hertz contacts has lightly damped modes (0.5–3
-/// kHz in the 209 at 2 kN; its 15–20 ms means carry their rectified effect: the spin moments
-/// fall as the slip fluctuates, Contensou's T_z being concave in it). Measured (creep law
-/// `table`, the races' analytic Jacobians, means over 15–20 ms of 20 ms, against RK4 at
-/// 0.1 µs; mean over five runs whose
-/// load ramp is 4.9, 4.95, 5, 5.05 and 5.1 ms — the RK4 figures themselves spread by 10 %
-/// (ring torque) and 3 % (spin moments) over those five, so one run cannot resolve 2 %):
+/// The ring on the balls' Hertz contacts has lightly damped modes: the load's ramp leaves it
+/// vibrating axially (≈ 500 Hz, ≈ 35 mm/s), which decays over ≈ 150 ms, and its radial mode is
+/// ≈ 3 kHz. Measured in the steady state (creep law `table`, the load ramped over 5 ms, means
+/// over 200–400 ms of a 400 ms run against RK4 at 0.1 µs: ring torque −15.074 ± 0.031 N·mm,
+/// the ± a batch-means standard error; `examples/bearing.rs`'s `steady`):
 ///
 /// | coupling | step | ring torque | Σ\|T_z\| inner / outer | cage speed |
 /// |---|---|---|---|---|
-/// | `Start` | 10 µs | +0.7 % | −0.0 / +0.2 % | −0.08 % |
-/// | `Start` | 20 µs | −0.2 % | −0.0 / +0.2 % | −0.08 % |
-/// | `Start` | 30 µs | +0.4 % | +0.1 / +0.4 % | −0.10 % |
-/// | `Start` | 40 µs | −4.7 % | −1.4 / −1.1 % | −0.09 % |
-/// | `Start` | 50 µs | +1.2 % | −0.5 / −0.1 % | −0.15 % |
-/// | `Predicted` | 20 µs | +5.1 % | +2.1 / +1.6 % | −0.23 % |
-/// | `Predicted` | 50 µs | +0.8 % | +2.6 / +1.7 % | −0.49 % |
+/// | `Start` | 10 µs | +0.01 % | −0.05 / −0.05 % | −0.005 % |
+/// | `Start` | 20 µs | +0.28 % | −0.05 / −0.05 % | −0.011 % |
+/// | `Start` | 30 µs | +0.66 % | −0.04 / −0.04 % | −0.018 % |
+/// | `Start` | 40 µs | +1.30 % | −0.05 / −0.05 % | −0.018 % |
+/// | `Start` | 50 µs | +0.14 ± 1.2 % (bursts of the radial mode) | −0.28 / −0.28 % | −0.015 % |
+/// | `Predicted` | 20 µs | +0.33 % | −0.03 / −0.03 % | −0.011 % |
+/// | `Predicted` | 30 µs | +0.71 % | −0.03 / −0.03 % | −0.018 % |
+/// | `Predicted` | 50 µs | −2.9 ± 1.8 % (bursts) | −1.2 / −1.2 % | −0.015 % |
 ///
-/// Both diverge at 100 µs (the runner reports it: the balls leave the races).
+/// `Start` diverges from 80 µs, `Predicted` from 70 µs (the runner reports it: the balls
+/// leave the races). Before the ring's vibration has decayed the two differ: `Predicted`
+/// damps it, `Start` keeps it as RK4 does.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub enum RingCoupling {
     /// At its start position R over the whole step: the balls' reactions are the ring's
@@ -710,8 +782,9 @@ pub enum RingCoupling {
     Start,
     /// Moved with its start velocity (mid-step R + ½Δt·Ṙ for the geometry, R + Δt·Ṙ for the
     /// gaps): the reactions are the ring's at its predicted end position, which damps its modes
-    /// (|λ|² = 1/(1 + Δt²K/M) per step for a linear K); the damped vibrations bias the means by
-    /// 2–5 % (table above).
+    /// (|λ|² = 1/(1 + Δt²K/M) per step for a linear K): while the ring still vibrates after
+    /// the load's ramp that shifts the means (the 15–20 ms ones by 2–5 %); in the steady state
+    /// the two agree (table above).
     Predicted,
 }
 

@@ -520,8 +520,14 @@ pub fn step_wrenches_with<T: Real, const K: usize>(
             for part in [Part::Force, Part::Torque] {
                 if injects(dt_, w, free, i, part, &wbar, &u_end) {
                     clean = false;
-                    rescale(dt_, w, i, part, T::ZERO, &mut wbar, &mut u_end);
+                    // To no power first (step 4's scaling at the exact u⁺), to zero only if
+                    // that leaves it injecting.
+                    scale_part(dt_, w, i, part, &mut wbar, &mut u_end);
                     u_end = end_velocity(dt_, w, free, &wbar);
+                    if injects(dt_, w, free, i, part, &wbar, &u_end) {
+                        rescale(dt_, w, i, part, T::ZERO, &mut wbar, &mut u_end);
+                        u_end = end_velocity(dt_, w, free, &wbar);
+                    }
                     match part {
                         Part::Force => flags[i].force_scaled = true,
                         Part::Torque => flags[i].torque_scaled = true,
