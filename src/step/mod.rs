@@ -511,7 +511,7 @@ pub fn step_wrenches_with<T: Real, const K: usize>(
     // were incremental, and where N̄ fell by orders of magnitude (f32: 9.3e7 N → 8 N) their
     // rounding left u⁺ off by more than the power it decides (a fuzz finding).
     u_end = end_velocity(dt_, w, free, &wbar);
-    for _ in 0..(2 * K + 1) {
+    for pass in 0..(2 * K + 1) {
         let mut clean = true;
         for i in 0..K {
             if !gate(i, &wbar, &u_end) {
@@ -520,10 +520,14 @@ pub fn step_wrenches_with<T: Real, const K: usize>(
             for part in [Part::Force, Part::Torque] {
                 if injects(dt_, w, free, i, part, &wbar, &u_end) {
                     clean = false;
-                    // To no power first (step 4's scaling at the exact u⁺), to zero only if
-                    // that leaves it injecting.
-                    scale_part(dt_, w, i, part, &mut wbar, &mut u_end);
-                    u_end = end_velocity(dt_, w, free, &wbar);
+                    // To no power first (step 4's scaling at the exact u⁺; first pass only:
+                    // scaling one part moves the other's u⁺ and a scaled part can be left
+                    // just injecting again, so the later passes zero), to zero if that leaves
+                    // it injecting.
+                    if pass == 0 {
+                        scale_part(dt_, w, i, part, &mut wbar, &mut u_end);
+                        u_end = end_velocity(dt_, w, free, &wbar);
+                    }
                     if injects(dt_, w, free, i, part, &wbar, &u_end) {
                         rescale(dt_, w, i, part, T::ZERO, &mut wbar, &mut u_end);
                         u_end = end_velocity(dt_, w, free, &wbar);
