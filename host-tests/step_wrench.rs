@@ -674,6 +674,30 @@ fn random_run<L: FrictionLaw>(n: usize, seed: u64) -> Worst {
             // The limit set at N̄: the patch of h = (N̄/k)^{2/3}, full slip at 1e4 m/s.
             let hn = (w[0] / k).powf(2.0 / 3.0);
             let a_n = (R * hn).sqrt();
+            if !L::MAXIMALLY_DISSIPATIVE {
+                // The cylinder |F| ≤ F_max (pure translation along −F), |T_z| ≤ T_max (pure
+                // spin), at N̄ (src/step/project.rs).
+                let (ex, ey) = if fmag > 0.0 {
+                    (w[1] / fmag, w[2] / fmag)
+                } else {
+                    (1.0, 0.0)
+                };
+                let tr = c.wrench(hn, 0.0, Slip::new(-1e4 * ex, -1e4 * ey, 0.0).unwrap());
+                let sp = c.wrench(
+                    hn,
+                    0.0,
+                    Slip::new(0.0, 0.0, -1e4 * w[3].signum() / a_n).unwrap(),
+                );
+                let f_max = tr.fx.hypot(tr.fy) * w[0] / tr.n;
+                let t_max = sp.tz.abs() * w[0] / sp.n;
+                let excess = (fmag / f_max - 1.0).max(if t_max > 0.0 {
+                    w[3].abs() / t_max - 1.0
+                } else {
+                    0.0
+                });
+                worst.limit = worst.limit.max(excess);
+                continue;
+            }
             let mut dirs: Vec<[f64; 3]> = vec![
                 [1.0, 0.0, 0.0],
                 [-1.0, 0.0, 0.0],
@@ -705,9 +729,17 @@ fn random_run<L: FrictionLaw>(n: usize, seed: u64) -> Worst {
                 let dsup = -(pf.fx * s3[0] + pf.fy * s3[1] + pf.tz * s3[2]) * scale;
                 let dp = -(w[1] * s3[0] + w[2] * s3[1] + w[3] * s3[2]);
                 let excess = (dp - dsup) / dsup.abs().max(1e-300);
-                if excess > 3e-3 && std::env::var("STEP_DEBUG").is_ok() {
+                if std::env::var("STEP_DEBUG")
+                    .ok()
+                    .and_then(|v| v.parse::<f64>().ok())
+                    .is_some_and(|t| excess > t)
+                {
                     eprintln!(
-                        "excess {excess:.3e} d {d:?} hn {hn:e} o {o:?} dt {dt:e} delta {delta:e} s {s:?} u {u:?} f {f}"
+                        "{} excess {excess:.3e} d {d:?} hn {hn:e} o {o:?} dt {dt:e} delta {delta:e} s {s:?} u {u:?} f {f} case {case} W {:?}",
+                        std::any::type_name::<L>(),
+                        (0..4)
+                            .map(|r| (0..4).map(|q| wm.get(r, q)).collect::<Vec<_>>())
+                            .collect::<Vec<_>>()
                     );
                 }
                 worst.limit = worst.limit.max(excess);
@@ -719,19 +751,21 @@ fn random_run<L: FrictionLaw>(n: usize, seed: u64) -> Worst {
 
 /// Limit-set bound per law: 2e-3 relative for the laws whose full-slip value is the support
 /// point of their own limit set (maximal dissipation: `coulomb`, `ellipsoid`; measured on 1e5
-/// states: 1.0e-3, 1.0e-3 — the projection's 1e-3 tolerance) and 3e-3 for `best`, whose
-/// projection works on its table's full-slip values (measured 1.4e-3 before the step's normal
-/// re-solve, 2.0e-3 with it: the friction follows the re-solved N through the limit set on
-/// more states, 29,909 of 1e5 projected); the
-/// measured excess for `simplified` (0.13 on 1e5 states), whose full-slip values are not (the
-/// supporting plane at the ellipsoidal dual then does not bound the set); `pade` is checked for
-/// passivity only (its full-slip values are far from support points: 0.47 by this measure).
+/// states: 1.0e-3, 1.0e-3 — the projection's 1e-3 tolerance) and for `best`, whose projection
+/// works on its table's full-slip values (measured 1.42e-3: the one supporting plane tested at
+/// the pair's dual direction). The normal re-solve (src/step/normal.rs) scales the torque with
+/// the patch as well as with N, so that a friction pair on the boundary of the set at the old N
+/// stays on it at the new one (scaled with N alone, a torque at a falling N lay outside by
+/// (N_old/N)^{1/3}, up to 2.004e-3 by this measure, which the one-plane test let through).
+/// `simplified` and `pade` (not maximally dissipative) are checked against their cylinder
+/// |F| ≤ F_max, |T_z| ≤ T_max (src/step/project.rs), 2e-3 as well (measured 1.0e-3 and
+/// 9.6e-4 on 1e5 states: the projection's tolerance).
 const LIMIT_BOUND: [(&str, f64); 5] = [
-    ("best", 3e-3),
+    ("best", 2e-3),
     ("coulomb", 2e-3),
     ("ellipsoid", 2e-3),
-    ("simplified", 0.2),
-    ("pade", f64::INFINITY),
+    ("simplified", 2e-3),
+    ("pade", 2e-3),
 ];
 
 fn run_all(n: usize, seed: u64) {

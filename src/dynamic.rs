@@ -145,6 +145,19 @@ impl Law {
         }
     }
 
+    /// Whether the law is maximally dissipative ([`FrictionLaw::MAXIMALLY_DISSIPATIVE`]; the
+    /// rolling laws count as `true`: their full-slip limit is `best`'s).
+    pub const fn maximally_dissipative(self) -> bool {
+        match self {
+            Law::Simplified => Simplified::MAXIMALLY_DISSIPATIVE,
+            Law::Pade => Pade::MAXIMALLY_DISSIPATIVE,
+            Law::Best => Best::MAXIMALLY_DISSIPATIVE,
+            Law::Ellipsoid => Ellipsoid::MAXIMALLY_DISSIPATIVE,
+            Law::Coulomb => Coulomb::MAXIMALLY_DISSIPATIVE,
+            Law::Table | Law::Blend | Law::Fastsim | Law::Fastsim16 => true,
+        }
+    }
+
     /// A rolling law ([`Law::ROLLING`])?
     pub const fn is_rolling(self) -> bool {
         matches!(

@@ -47,7 +47,7 @@ impl Coulomb {
 }
 
 super::twin::libm_and_micromath! {
-    Coulomb: "coulomb", Branch,
+    Coulomb: "coulomb", Branch, maximally_dissipative true,
     slip_ramp
     /// The ramp F = −fN·v_P/δ below δ: κ = 1.
     T::ONE,

@@ -50,7 +50,7 @@ impl Ellipsoid {
 }
 
 super::twin::libm_and_micromath! {
-    Ellipsoid: "ellipsoid", Smooth,
+    Ellipsoid: "ellipsoid", Smooth, maximally_dissipative true,
     /// [`Ellipsoid`] with micromath's square root of v² + R̄²ω² (feature `micromath`; `f32` only,
     /// libm for `f64`).
     ///

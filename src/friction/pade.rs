@@ -50,6 +50,7 @@ impl Pade {
 impl FrictionLaw for Pade {
     const NAME: &'static str = "pade";
     type Branch = Smooth;
+    const MAXIMALLY_DISSIPATIVE: bool = false;
     super::law::constants_are_prepared!();
 
     #[inline]

@@ -122,7 +122,7 @@ fn zone<T: Real>(v: T, width: T, d: T) -> Zone {
 }
 
 super::twin::libm_and_micromath! {
-    Simplified: "simplified", Branch,
+    Simplified: "simplified", Branch, maximally_dissipative false,
     slip_ramp
     /// The ramp of width δ (widened, never steepened, by the spin): κ = 1.
     T::ONE,

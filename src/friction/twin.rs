@@ -8,11 +8,12 @@
 
 /// Declares the twin `$twin` (with its docs, under the feature `micromath`) and implements
 /// `FrictionLaw` for `$law` (backend `Libm`) and `$twin` (backend `Micromath`), both calling
-/// the module's `traction::<B, T>(k, s)`; optionally the ramps κ, κ_T (each with its doc
-/// line) for a law that has them.
+/// the module's `traction::<B, T>(k, s)`, with `maximally_dissipative` as
+/// [`FrictionLaw::MAXIMALLY_DISSIPATIVE`](super::FrictionLaw::MAXIMALLY_DISSIPATIVE);
+/// optionally the ramps κ, κ_T (each with its doc line) for a law that has them.
 macro_rules! libm_and_micromath {
     (
-        $law:ident: $name:literal, $branch:ty,
+        $law:ident: $name:literal, $branch:ty, maximally_dissipative $md:literal,
         $(slip_ramp #[doc = $slip_doc:literal] $slip:expr,
           spin_ramp #[doc = $spin_doc:literal] $spin:expr,)?
         $(#[$twin_doc:meta])*
@@ -24,18 +25,19 @@ macro_rules! libm_and_micromath {
         #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
         pub struct $twin;
 
-        $crate::friction::twin::libm_and_micromath!(@impl $law, $name, $branch, $crate::math::Libm
-            $(, $slip_doc $slip, $spin_doc $spin)?);
+        $crate::friction::twin::libm_and_micromath!(@impl $law, $name, $branch, $md,
+            $crate::math::Libm $(, $slip_doc $slip, $spin_doc $spin)?);
         #[cfg(feature = "micromath")]
         #[cfg_attr(docsrs, doc(cfg(feature = "micromath")))]
         $crate::friction::twin::libm_and_micromath!(@impl $twin, concat!($name, "-micromath"),
-            $branch, $crate::math::Micromath $(, $slip_doc $slip, $spin_doc $spin)?);
+            $branch, $md, $crate::math::Micromath $(, $slip_doc $slip, $spin_doc $spin)?);
     };
-    (@impl $law:ident, $name:expr, $branch:ty, $backend:ty
+    (@impl $law:ident, $name:expr, $branch:ty, $md:literal, $backend:ty
         $(, $slip_doc:literal $slip:expr, $spin_doc:literal $spin:expr)?) => {
         impl $crate::friction::FrictionLaw for $law {
             const NAME: &'static str = $name;
             type Branch = $branch;
+            const MAXIMALLY_DISSIPATIVE: bool = $md;
             $crate::friction::law::constants_are_prepared!();
             $(
                 #[doc = $slip_doc]

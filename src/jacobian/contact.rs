@@ -153,6 +153,12 @@ where
         self.normal().damped_patch(s.h, s.hdot, self.damping()).n
     }
 
+    /// The law's [`FrictionLaw::MAXIMALLY_DISSIPATIVE`](crate::friction::FrictionLaw).
+    #[inline]
+    fn maximally_dissipative(&self) -> bool {
+        L::MAXIMALLY_DISSIPATIVE
+    }
+
     /// The wrench and its Jacobian, by forward-mode dual numbers through the same code as
     /// [`Contact::wrench`] (value bit for bit that of `wrench`; see the [module docs](super)).
     #[inline]
@@ -209,6 +215,12 @@ where
     fn wrench4(&self, s: &State<T>) -> [T; 4] {
         let w = self.contact.wrench(&self.curvatures, s.h, s.hdot, s.slip);
         [w.n, w.fx, w.fy, w.tz]
+    }
+
+    /// The law's [`FrictionLaw::MAXIMALLY_DISSIPATIVE`](crate::friction::FrictionLaw).
+    #[inline]
+    fn maximally_dissipative(&self) -> bool {
+        L::MAXIMALLY_DISSIPATIVE
     }
 
     /// [`VaryingContact::wrench`]'s N: this step's Hertz law alone.

@@ -281,4 +281,10 @@ pub trait Linearize<T: Real> {
     }
     /// The wrench and its Jacobian with respect to (h, ḣ, v_Px, v_Py, ω).
     fn linearize(&self, s: &State<T>) -> Jacobian<T>;
+    /// Whether the friction law is maximally dissipative
+    /// ([`crate::friction::FrictionLaw::MAXIMALLY_DISSIPATIVE`]): which limit set the
+    /// step-aware wrench projects onto ([`crate::step::project`]). Default `true`.
+    fn maximally_dissipative(&self) -> bool {
+        true
+    }
 }

@@ -48,6 +48,10 @@ impl<'a, T: Real> Row<'a, T> {
 }
 
 impl<T: Real> Linearize<T> for Row<'_, T> {
+    fn maximally_dissipative(&self) -> bool {
+        self.contact.law().maximally_dissipative()
+    }
+
     fn wrench4(&self, s: &State<T>) -> [T; 4] {
         let step = Step {
             h: s.h,

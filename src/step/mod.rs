@@ -146,7 +146,10 @@
 //!    regularised law, the zero-slip Jacobian is the ramp's stiffness κ·fN/δ: a sticking
 //!    contact keeps |v⁺| ≈ |v_free|·δ/(Δt·W·κ·fN) < δ.
 //! 3. **Limit set.** The friction pair (F, T_z) of each contact is moved into the law's
-//!    full-slip limit set at the solved N̄ ([`project`]'s supporting-plane test).
+//!    full-slip limit set at the solved N̄ ([`project`]'s supporting-plane test; for a law
+//!    that is not maximally dissipative, [`Linearize::maximally_dissipative`] `false`, the
+//!    cylinder |F| ≤ F_max, |T_z| ≤ T_max, which holds its plain values: as Δt → 0 the step
+//!    tends to the plain wrench for every law).
 //! 4. **Power.** With u⁺ recomputed, friction must inject no energy over the step, checked for
 //!    the force and the drilling torque **separately** (the linear solve can return a drilling
 //!    torque of the wrong sign; a combined check would then zero all friction) — for a rolling
@@ -162,10 +165,10 @@
 //!    that moves the end approach, and N̄ would no longer be the normal law's value there
 //!    (measured before this step: off by more than 1e-3 on about half the random states of
 //!    `host-tests/step_normal.rs`, up to 100 %). Each active contact's N is re-solved at the
-//!    end state with the other rows fixed (its friction scaling with N), by Newton steps on
-//!    the end approach, then the friction follows (limit set, power) — [`normal`]. Measured:
-//!    within 1e-3 of the law on every state for `coulomb`, on all but 0.7 % for `best` (the
-//!    last projection moving the friction again).
+//!    end state with the other rows fixed (its force scaling with N, its torque with N and the
+//!    patch: a pair on the limit set's boundary stays on it), by Newton steps on the end
+//!    approach, then the friction follows (limit set, power) — [`normal`]. Measured: within
+//!    1e-3 of the law on every state for `coulomb` and `best` (damped or not).
 //!
 //! Flags in [`Outcome`] tell which of these acted.
 //!
@@ -508,7 +511,7 @@ pub fn step_wrenches_with<T: Real, const K: usize>(
     // were incremental, and where N̄ fell by orders of magnitude (f32: 9.3e7 N → 8 N) their
     // rounding left u⁺ off by more than the power it decides (a fuzz finding).
     u_end = end_velocity(dt_, w, free, &wbar);
-    for _ in 0..(2 * K + 1) {
+    for pass in 0..(2 * K + 1) {
         let mut clean = true;
         for i in 0..K {
             if !gate(i, &wbar, &u_end) {
@@ -517,10 +520,14 @@ pub fn step_wrenches_with<T: Real, const K: usize>(
             for part in [Part::Force, Part::Torque] {
                 if injects(dt_, w, free, i, part, &wbar, &u_end) {
                     clean = false;
-                    // To no power first (step 4's scaling at the exact u⁺), to zero only if
-                    // that leaves it injecting.
-                    scale_part(dt_, w, i, part, &mut wbar, &mut u_end);
-                    u_end = end_velocity(dt_, w, free, &wbar);
+                    // To no power first (step 4's scaling at the exact u⁺; first pass only:
+                    // scaling one part moves the other's u⁺ and a scaled part can be left
+                    // just injecting again, so the later passes zero), to zero if that leaves
+                    // it injecting.
+                    if pass == 0 {
+                        scale_part(dt_, w, i, part, &mut wbar, &mut u_end);
+                        u_end = end_velocity(dt_, w, free, &wbar);
+                    }
                     if injects(dt_, w, free, i, part, &wbar, &u_end) {
                         rescale(dt_, w, i, part, T::ZERO, &mut wbar, &mut u_end);
                         u_end = end_velocity(dt_, w, free, &wbar);

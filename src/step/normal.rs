@@ -16,11 +16,19 @@
 //!
 //! # The re-solve
 //!
-//! Per active contact i, with every other row of w̄ fixed and its own friction f scaling with
-//! N (a law's friction at a fixed slip is N times a function of the slip and the patch; held
-//! fixed instead if W_nn + W_nf·f/N ≤ 0), the end approach h⁺ falls linearly with N:
-//! h⁺ = h₀ − c·N, c = γ·Δt²·(W_nn + W_nf·f/N) > 0, h₀ the end approach at N = 0. N is found
-//! through h⁺, the root of
+//! Per active contact i, with every other row of w̄ fixed and its own friction following N as
+//! a point on the boundary of the limit set does (held fixed instead if that makes the row's
+//! response to N non-positive), the end approach h⁺ falls linearly with N:
+//! h⁺ = h₀ − c·N, c = γ·Δt²·(W_nn + (W_nF·F + W_nω·ρ·T_z)/N̄) > 0, h₀ the end approach at
+//! N = 0. The limit set at N is N·diag(1, 1, a(N))·C₁ for the Contensou laws on a Hertz patch
+//! (their full-slip force is fN times, their torque fNa times, a function of the slip's
+//! direction aω/|v| only), so the force scales with N/N̄ and the torque with (N/N̄)·ρ,
+//! ρ = a(N)/a(N̄) = (N/N̄)^{1/3}: a pair on the boundary at N̄ is on it at N, and a pair inside
+//! stays inside. ρ is taken at the Hertz model's root (below) and from below (`cbrt_below`:
+//! Newton steps on t³ = r, then r/t²), so that the torque never leaves the set by it. (With the
+//! torque scaled as N alone, a torque at a falling N lay outside the set by (N̄/N)^{1/3}: the
+//! friction then moved at every follow round below, and N with it, never settling on the
+//! states where the slip reverses within the step.) N is found through h⁺, the root of
 //!
 //! ```text
 //! ψ(h) = N_law(h, ḣ⁺(h)) − (h₀ − h)/c,   ḣ⁺(h) = −(u_free,n + drift_n + (h_free − h)/(γ·Δt))
@@ -46,15 +54,15 @@
 //!
 //! One wrench call per active contact on a step where N̄ is already consistent; at most
 //! NORMAL_SWEEPS·FOLLOW_ROUNDS·(NORMAL_STEPS + 2 + the limit set's
-//! [`super::project::PATCH_STEPS`] + 5) = 152 wrench calls per contact otherwise (the rounds
-//! after the first only while the friction still moves: rare, see [`FOLLOW_ROUNDS`]).
+//! [`super::project::PATCH_STEPS`] + 5) = 76 wrench calls per contact otherwise (the second
+//! round only while the friction still moves: rare, see [`FOLLOW_ROUNDS`]), and
+//! [`MODEL_STEPS`] + [`CBRT_STEPS`] arithmetic Newton steps per re-solve.
 //! Measured (`host-tests/step_normal.rs`, 3 × 3000 random states, ≈ 2530 in contact each; N
 //! against the law at the returned h⁺, ḣ⁺): off by more than 1e-3 before / after this step on
-//! 1218 / 4 (`best`), 1111 / 0 (`coulomb`, worst after 9.96e-4) and 1179 / 5 (`best` with
-//! Hunt–Crossley damping) states. The 4 and 5 left are states where the limit set at the new N
-//! still moved the friction after the last round, nearly all with the slip reversing within the
-//! step (up to 100 % off there, N > 0 with the body apart at the end: an open point). The
-//! scenes' runs (rattleback, tippe top, bearing) are bit-identical with 2 or 4 rounds.
+//! 1218 / 0 (`best`, worst after 9.83e-4), 1111 / 0 (`coulomb`, 9.96e-4) and 1179 / 0 (`best`
+//! with Hunt–Crossley damping, 9.98e-4) states. (With the torque scaled as N alone: 4 / 0 / 5
+//! left after 4 rounds, up to 100 % off, N > 0 with the body apart at the end, all with the
+//! slip reversing within the step.)
 
 use super::{Flags, Free, InverseMass, Part, injects_total, scale_part};
 use crate::Real;
@@ -71,10 +79,11 @@ pub const NORMAL_TOLERANCE: f64 = 1e-3;
 /// Rounds of (the friction follows N, N re-solved at that friction) after a contact's first
 /// re-solve; they stop as soon as the friction no longer moves. A fixed-point iteration: near
 /// a contact whose friction lifts the body almost as much as N pushes it (W_nf·f ≈ −W_nn·N),
-/// the limit set at the new N moves the friction again and N with it. Measured on
+/// a friction the limit set moves at the new N moves N again. Measured on
 /// `host-tests/step_normal.rs`'s 2 × 3000 `best` states (undamped / damped): N off the law by
-/// more than 1e-3 after 2 rounds on 18 / 17 states, after 4 on 4 / 5, 6 on 2 / 2, 8 on 1 / 2.
-pub const FOLLOW_ROUNDS: usize = 4;
+/// more than 1e-3 after 1 round on 3 / 6 states, after 2 on 0 / 0 (before the torque followed
+/// the patch, ρ: 18 / 17 after 2 rounds, 4 / 5 after 4, 1 / 2 after 8).
+pub const FOLLOW_ROUNDS: usize = 2;
 
 /// Gauss–Seidel sweeps over the contacts (the second only when K > 1 and an N changed).
 pub const NORMAL_SWEEPS: usize = 2;
@@ -142,56 +151,82 @@ fn resolve<T: Real, const K: usize>(
     if !(n > T::ZERO) {
         return false;
     }
-    // The friction's part of (W·w̄)_n, per newton of N: the friction scales with N (a law's
-    // friction at a fixed slip is N times a function of the slip and the patch), unless that
-    // would make the row's response to N non-positive (then the friction is held fixed).
+    // The friction's part of (W·w̄)_n, per newton of N: the force's (s_F) and the drilling
+    // torque's (s_T). The friction follows N as a boundary point of the limit set does
+    // (module docs): the force ∝ N, the torque ∝ N·ρ with ρ = a(N)/a(N̄) the patch's growth
+    // — unless that would make the row's response to N non-positive (then the friction is
+    // held fixed).
     let wnn = w.get(4 * i, 4 * i);
-    let mut wf = T::ZERO;
-    for c in 1..4 {
-        wf += w.get(4 * i, 4 * i + c) * wi[c];
-    }
-    let slope = if wnn + wf / n > T::ZERO {
-        wf / n
-    } else {
-        T::ZERO
-    };
+    let sf = (w.get(4 * i, 4 * i + 1) * wi[1] + w.get(4 * i, 4 * i + 2) * wi[2]) / n;
+    let st = w.get(4 * i, 4 * i + 3) * wi[3] / n;
     let g = gamma * dt * dt;
-    let c = g * (wnn + slope);
-    if !(c > T::ZERO) || !c.is_finite() {
+    // h⁺ with contact i's N and friction removed; at N = N̄ (ρ = 1) the current end approach.
+    let rest = w.row_times(4 * i, wbar) - (wnn + sf + st) * n;
+    let scaled = g * (wnn + sf + st) > T::ZERO && g * (wnn + sf) > T::ZERO;
+    let (h0, c1) = if scaled {
+        (free.h - g * rest, g * (wnn + sf + st))
+    } else {
+        (free.h - g * (rest + (sf + st) * n), g * wnn)
+    };
+    if !(c1 > T::ZERO) || !c1.is_finite() {
         return false;
     }
-    let c0 = w.row_times(4 * i, wbar) - (wnn + slope) * n;
-    let row = Row {
+    let mut row = Row {
         contact,
         free,
         dt,
         gamma,
-        h0: free.h - g * c0,
-        c,
+        h0,
+        c: c1,
         slip: Slip::or_rest(ui[1], ui[2], ui[3]),
         rolling,
     };
     // ψ(h) = N_law(h) − N(h), increasing in h; ψ(0) = −h₀/c < 0, ψ(h₀) = N_law(h₀) ≥ 0.
-    let hn = row.h0 - c * n;
+    let hn = row.h0 - c1 * n;
     let law_n = row.law(hn);
     let psi_n = law_n - n;
     if !(psi_n.abs() > T::from_f64(NORMAL_TOLERANCE) * n) {
         return false;
     }
+    // The patch's growth ρ, from the Hertz model's root through a known point of the law (N
+    // ∝ a³ on a Hertz patch: ρ = (N/N̄)^{1/3}, by `cbrt_below`, never above it: a torque on
+    // the boundary at N̄ stays inside the set at N), and the row's compliance with it.
+    let mut rho = T::ONE;
+    let (hk, lk) = if hn > T::ZERO && law_n > T::ZERO {
+        (hn, law_n)
+    } else if row.h0 > T::ZERO {
+        (row.h0, row.law(row.h0))
+    } else {
+        (row.h0, T::ZERO)
+    };
+    if scaled && wi[3] != T::ZERO && lk > T::ZERO && row.h0 > T::ZERO {
+        let k = lk / (hk * hk.sqrt());
+        let m = model_root(k * c1, row.h0);
+        let nm = row.n_of(m);
+        if nm > T::ZERO && nm.is_finite() {
+            rho = cbrt_below(nm / n);
+            let c = g * (wnn + sf + st * rho);
+            if c > T::ZERO && c.is_finite() {
+                row.c = c;
+            } else {
+                rho = T::ONE;
+            }
+        }
+    }
+    let c = row.c;
     let x = if row.h0 > T::ZERO {
         let (mut a, mut b) = (T::ZERO, row.h0);
-        // The start: the root of the Hertz model N = k̂·h^{3/2} through a known point of the
+        // The start: the root of the Hertz model N = k̂·h^{3/2} through the known point of the
         // law (h⁺ of N̄ if the contact is closed there, else h₀), then Newton's steps on the law.
-        let (hk, lk) = if hn > T::ZERO && law_n > T::ZERO {
+        // (With ρ ≠ 1 the row's c changed: ψ at h⁺ of N̄ is then only known in sign when the
+        // torque's share is small, so the bracket is narrowed only for ρ = 1.)
+        if hk == hn && rho == T::ONE {
             if psi_n > T::ZERO {
                 b = hn;
             } else {
                 a = hn;
             }
-            (hn, law_n)
-        } else {
-            (row.h0, row.law(row.h0))
-        };
+        }
         let mut x = hk;
         if lk > T::ZERO {
             let k = lk / (hk * hk.sqrt());
@@ -246,13 +281,14 @@ fn resolve<T: Real, const K: usize>(
     if !x.is_finite() {
         return false;
     }
-    // N to x; the friction with it if it was modelled as scaling with N.
-    let k = if slope == T::ZERO {
-        T::ZERO
+    // N to x; the friction with it if it was modelled as scaling with N (the torque with the
+    // patch's growth ρ as well).
+    let (kf, kt) = if scaled {
+        (x / n - T::ONE, x / n * rho - T::ONE)
     } else {
-        x / n - T::ONE
+        (T::ZERO, T::ZERO)
     };
-    let d = [x - n, wi[1] * k, wi[2] * k, wi[3] * k];
+    let d = [x - n, wi[1] * kf, wi[2] * kf, wi[3] * kt];
     add(dt, w, i, d, wbar, u_end)
 }
 
@@ -274,6 +310,28 @@ fn model_root<T: Real>(kc: T, h0: T) -> T {
         s -= f / d;
     }
     s * s
+}
+
+/// Newton steps of the re-solve's cube root from below (`cbrt_below`: the patch's growth ρ).
+pub const CBRT_STEPS: usize = 12;
+
+/// A lower bound of r^{1/3} (r > 0; 1 otherwise), tight to rounding for r within
+/// [1e-9, 1e9]: [`CBRT_STEPS`] Newton steps on t³ = r from t₀ = r^{1/4} (every step's
+/// t = (2t + r/t²)/3 ≥ r^{1/3} by the arithmetic–geometric mean inequality), then r/t² ≤ r^{1/3}.
+fn cbrt_below<T: Real>(r: T) -> T {
+    if !(r > T::ZERO) || !r.is_finite() {
+        return T::ONE;
+    }
+    let mut t = r.sqrt().sqrt();
+    for _ in 0..CBRT_STEPS {
+        t = (t + t + r / (t * t)) / T::from_f64(3.0);
+    }
+    let b = r / (t * t);
+    if b > T::ZERO && b.is_finite() {
+        b
+    } else {
+        T::ONE
+    }
 }
 
 /// Adds `d` to contact i's wrench and Δt·W·d to every end velocity, all or nothing: false (and
