@@ -337,6 +337,10 @@ pub trait FloorLaw<T: Real> {
     type Contact: Clone + core::fmt::Debug;
     /// The wrench's branch tag ([`FrictionLaw::Branch`]; `()` for the rolling laws).
     type Branch;
+    /// Whether the law is maximally dissipative
+    /// ([`FrictionLaw::MAXIMALLY_DISSIPATIVE`]; `true` for the rolling laws): the step-aware
+    /// wrench's limit set.
+    const MAXIMALLY_DISSIPATIVE: bool;
     /// The wrench on the rattleback (contact frame) for `step`.
     fn wrench(contact: &Self::Contact, step: &Step<'_, T>) -> Wrench<T, Self::Branch>;
 }
@@ -344,6 +348,7 @@ pub trait FloorLaw<T: Real> {
 impl<T: Real, L: FrictionLaw> FloorLaw<T> for L {
     type Contact = VaryingContact<T, HuntCrossley<T>, L>;
     type Branch = L::Branch;
+    const MAXIMALLY_DISSIPATIVE: bool = L::MAXIMALLY_DISSIPATIVE;
 
     #[inline(always)]
     fn wrench(contact: &Self::Contact, step: &Step<'_, T>) -> Wrench<T, L::Branch> {
@@ -361,6 +366,7 @@ pub struct Creeping<L>(PhantomData<L>);
 impl<T: Real, L: RollingLaw> FloorLaw<T> for Creeping<L> {
     type Contact = Rolling<T, VaryingContact<T, HuntCrossley<T>, Best>, L>;
     type Branch = ();
+    const MAXIMALLY_DISSIPATIVE: bool = true;
 
     #[inline(always)]
     fn wrench(contact: &Self::Contact, step: &Step<'_, T>) -> Wrench<T, ()> {
@@ -881,6 +887,10 @@ impl<T: Real, L: FloorLaw<T>> StepContact<T> for FloorStep<'_, T, L> {
         };
         let w = L::wrench(self.contact, &step);
         [w.n, w.fx, w.fy, w.tz]
+    }
+
+    fn maximally_dissipative(&self) -> bool {
+        L::MAXIMALLY_DISSIPATIVE
     }
 }
 

@@ -111,6 +111,13 @@ pub trait StepContact<T: Real> {
             (T::ZERO, T::ZERO)
         }
     }
+
+    /// Whether the contact's friction law is maximally dissipative
+    /// ([`crate::friction::FrictionLaw::MAXIMALLY_DISSIPATIVE`]): which limit set the
+    /// library's step-aware wrench projects onto ([`crate::step::project`]). Default `true`.
+    fn maximally_dissipative(&self) -> bool {
+        true
+    }
 }
 
 /// Every fixed-geometry contact is one (the rolling velocity is ignored: full slip).
@@ -123,6 +130,10 @@ impl<T: Real, N: NormalLaw<T>, D: Damping<T>, L: FrictionLaw> StepContact<T>
         }
         let w = self.wrench(s.h, s.hdot, s.slip);
         [w.n, w.fx, w.fy, w.tz]
+    }
+
+    fn maximally_dissipative(&self) -> bool {
+        L::MAXIMALLY_DISSIPATIVE
     }
 }
 
@@ -549,6 +560,9 @@ impl<T: Real, C: StepContact<T>> Linearize<T> for AsLinearize<'_, C> {
     }
     fn linearize(&self, s: &State<T>) -> Jacobian<T> {
         self.0.linearize(s)
+    }
+    fn maximally_dissipative(&self) -> bool {
+        self.0.maximally_dissipative()
     }
 }
 
