@@ -94,9 +94,10 @@ pub const BEST_DELTA: f64 = 1e-4;
 /// 1 mm/s the unstable spin *reverses* (1.9351 s) and the steady one stalls at 2.3256 s (table:
 /// bench-results/rattleback-delta.md; docs/guide/src/time-stepping.md, "The slip scale δ of the
 /// scenes"). RK4 needs h ≤ 10 µs at this δ. The step-aware integrator gives the same outcome
-/// at every step to 2 ms, within 0.8 % at 0.1 ms and 0.9 % at 1 ms — but not RK4's times as
-/// the step shrinks (+3.0 % at 10 µs, +2): the step-aware wrench's limit-set projection
-/// assumes a maximally dissipative law, which `Simplified` is not.
+/// at every step to 2 ms, within 0.01 % to 0.5 ms, 0.19 % at 1 ms and 0.71 % at 2 ms
+/// (bench-results/step-sweep.md): `Simplified` is not maximally dissipative, so the step's
+/// limit set for it is the cylinder |F| ≤ F_max, |T_z| ≤ T_max
+/// ([`crate::friction::FrictionLaw::MAXIMALLY_DISSIPATIVE`]).
 pub const SIMPLIFIED_DELTA: f64 = 1e-4;
 
 /// The slip scale δ (m/s) for runs of this scene with `Coulomb` (point contact): 0.01 mm/s.
