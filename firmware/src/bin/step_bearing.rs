@@ -1,9 +1,10 @@
 //! Benchmark firmware, row `scene-step,bearing,f32`: one step-aware step of the 209 bearing
 //! (`contensou::scenes::bearing`) with the creep law `table` on both races, in `f32`, at
 //! Δt = 20 µs (`Bearing::step_aware`, the ring seen at its start: ring torque, spin moments
-//! and cage speed within 2 % of RK4 at every step 10–40 µs in the steady state): nine balls, each ball's two race contacts solved together. The instructions of one
-//! step, to turn into a real-time factor on a 168 MHz Cortex-M4F (Δt·168e6 / cycles; the count
-//! hardly depends on Δt). Inputs: 8 consecutive states (with their warm starts) after 3 ms of
+//! and cage speed within 2 % of RK4 at every step 10–40 µs in the steady state): nine balls,
+//! each ball's two race contacts solved together. The instructions of one step, to turn into a
+//! real-time factor on a 168 MHz Cortex-M4F (compute per simulated time: cycles / (Δt·168e6);
+//! the count hardly depends on Δt). Inputs: 8 consecutive states (with their warm starts) after 3 ms of
 //! 50 µs steps with the ring seen where its velocity takes it (`RingCoupling::Predicted`:
 //! fewer setup instructions; the load's 5 ms ramp at 60 %). A binary of its own (run
 //! by `tools/qemu-bench.sh` after `step_scenes`) so the other rows' code and counts stay as
