@@ -305,6 +305,14 @@ mod rolling_findings {
 mod jacobian_step_findings {
     use super::checks::{self, Input};
 
+    /// One `step` finding: its bytes through the shared check, f32 then f64 on the same
+    /// bytes, as the fuzz target runs them.
+    fn replay_step(data: &[u8]) {
+        let mut i = Input::new(data);
+        checks::step::<f32>(&mut i);
+        checks::step::<f64>(&mut i);
+    }
+
     /// `blend` at v_x = v_y = f32::MAX (out of the box, barely in contact: N ≈ 1e-24 N): the
     /// Jacobian's value was 0, the wrench's F −8.7e-25 — the dual pass read the slip through
     /// `Slip::or_rest`, which gives rest where finite components overflow their sum.
@@ -345,9 +353,7 @@ mod jacobian_step_findings {
             0xc9,
         ];
         for data in [&a[..], &b[..], &c[..]] {
-            let mut i = Input::new(data);
-            checks::step::<f32>(&mut i);
-            checks::step::<f64>(&mut i);
+            replay_step(data);
         }
     }
 
@@ -362,9 +368,7 @@ mod jacobian_step_findings {
             0x8b, 0x8b, 0x69, 0x3f, 0x12, 0x6b, 0xb1, 0x05, 0xf5, 0x69, 0x7f, 0x69, 0x69, 0x69,
             0x69,
         ];
-        let mut i = Input::new(&data);
-        checks::step::<f32>(&mut i);
-        checks::step::<f64>(&mut i);
+        replay_step(&data);
     }
 
     /// `fastsim-16` out of the box (h ≈ 1.6e21, Δt = 1): the re-solved N (3.2e19) scaled a
@@ -378,9 +382,7 @@ mod jacobian_step_findings {
             0x3d, 0xa1, 0x3d, 0xa1, 0xb1, 0xa1, 0xad, 0x15, 0xa1, 0x15, 0x15, 0x3d, 0xa1, 0xb1,
             0xa1, 0xad, 0x15, 0xa1, 0x15, 0x15, 0x15, 0xa1, 0xad, 0x15,
         ];
-        let mut i = Input::new(&data);
-        checks::step::<f32>(&mut i);
-        checks::step::<f64>(&mut i);
+        replay_step(&data);
     }
 
     /// `fastsim-16` at W = 0 (the plain wrench): F·v = −9,137 W and T_z·ω = +29 W — the check
@@ -393,9 +395,7 @@ mod jacobian_step_findings {
             0xb1, 0xa1, 0xa1, 0x3d, 0x3d, 0x3d, 0x3d, 0x3d, 0x31, 0xa1, 0xa1, 0xa1, 0xa1, 0xa1,
             0x01, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x45, 0xcd, 0xa1, 0xa1,
         ];
-        let mut i = Input::new(&data);
-        checks::step::<f32>(&mut i);
-        checks::step::<f64>(&mut i);
+        replay_step(&data);
     }
 
     /// `coulomb` in f32 where the linear solve failed (the plain-wrench fallback, N̄ = 9.3e7 N)
@@ -410,8 +410,6 @@ mod jacobian_step_findings {
             0x75, 0x75, 0x75, 0x75, 0x75, 0x75, 0x59, 0x59, 0x59, 0x75, 0x75, 0x75, 0x75, 0x75,
             0x75, 0x5f, 0x75, 0x0e, 0x9a, 0x26, 0x1a, 0x1a, 0x24, 0xe5, 0xe5, 0xe5, 0x00, 0x1c,
         ];
-        let mut i = Input::new(&data);
-        checks::step::<f32>(&mut i);
-        checks::step::<f64>(&mut i);
+        replay_step(&data);
     }
 }
