@@ -158,7 +158,8 @@ fn glance(md: &mut String, measured: &[Measured], qemu: &Keyed, rolling: Option<
     if let Some(front) = rolling {
         let _ = writeln!(
             md,
-            "| Rolling contact (held-out exact-reference points) | {front} |"
+            "| Rolling contact (worst over the whole-domain held-out set; f64 error, also for \
+             f32) | {front} |"
         );
     }
     md.push('\n');

@@ -1,18 +1,30 @@
-//! Rolling contact: every rolling law's error against the exact steady-rolling
-//! reference on its held-out points, against cost, with the exact solver itself on the host
-//! chart.
+//! Rolling contact: every rolling law's error against Kalker's exact steady-rolling theory,
+//! against cost, with the exact solver itself on the host chart.
 //!
-//! Errors: the 700 creep-curve points of `tools/data/rolling_ref_quarter.csv` (¼ and ¾ of each
-//! interval in ln q between `rolling_ref.csv`'s magnitudes: held out from `table`'s tables, no
-//! law fitted on them), evaluated here through `RollingContact::wrench` exactly as
-//! `python3 tools/fit_rolling_table.py --laws` does through `contact_eval rolling` (a, b with
-//! c = √(ab) = 1, G = 1, f = 1, N = the row's load ratio, V = 1): max |ΔF| (fN) and max |ΔM_z|
-//! (fNc). The exact solver's own error is its estimate (the CSV's err_f, err_m columns).
+//! Charted error (the "at a glance" line, both Pareto charts, the first columns of the table):
+//! the worst over the whole domain, the 500 points of the held-out set
+//! `tools/data/rolling_ref_heldout.csv` (random shape a/b 1/20 … 20, skew of the rolling
+//! direction to the patch axes, ν 0 … 0.5, creepage direction and magnitude; no law fitted on
+//! them), of |ΔF| = |(ΔF_x, ΔF_y)| (fN) and |ΔM_z| (fNc), the laws' outputs read from
+//! `tools/data/rolling_heldout_laws.csv` (written by `python3 tools/rolling_heldout.py` through
+//! `contact_eval wrench`, i.e. the per-step wrench `contact::Rolling` in f64; `--check` in CI
+//! keeps it what the laws give). The exact solver's own error is its estimate (the reference's
+//! err_f, err_m columns).
+//!
+//! Second column, so nothing is lost: the 700 creep-curve points of
+//! `tools/data/rolling_ref_quarter.csv` (aligned a/b ∈ {0.2 … 5}, ν = 0.25: the families
+//! `table` was fitted to; ¼ and ¾ of each interval in ln q between `rolling_ref.csv`'s
+//! magnitudes, not in `table`'s tables), evaluated here through `RollingContact::wrench` in f32
+//! and f64 exactly as `python3 tools/fit_rolling_table.py --laws` does through
+//! `contact_eval rolling` (a, b with c = √(ab) = 1, G = 1, f = 1, N = the row's load ratio,
+//! V = 1).
 //!
 //! Cost: M4F instructions per call (`bench-results/qemu.csv`, stage `rolling`), host ns per
 //! call (`bench-results/host-ns.csv`, stage `rolling`, from `benches/rolling.rs`), and for the
 //! exact solver the host seconds per extrapolated value (`tools/data/rolling_ref_timing.csv`:
 //! the mean solve time on its three grids summed, averaged over the five shapes at ν = 0.25).
+//! The held-out set has f64 outputs only: an f32 point on the charts is f64's whole-domain error
+//! at f32's cost (on the creep curves the two precisions' errors are compared in the text).
 
 use std::fmt::Write as _;
 use std::path::Path;
@@ -27,8 +39,12 @@ use crate::Keyed;
 use crate::inputs::repo;
 use crate::plot::{self, Axis};
 
-/// One reference row: a/b, ν, load ratio, creepages ξ, η, cφ; F_x, F_y (fN), M_z (fNc); the
-/// solver's own error estimates (fN, fNc).
+/// The held-out reference and the laws' outputs on it.
+const HELDOUT_REF: &str = "tools/data/rolling_ref_heldout.csv";
+const HELDOUT_LAWS: &str = "tools/data/rolling_heldout_laws.csv";
+
+/// One creep-curve reference row: a/b, ν, load ratio, creepages ξ, η, cφ; F_x, F_y (fN), M_z
+/// (fNc); the solver's own error estimates (fN, fNc).
 struct Row {
     aob: f64,
     nu: f64,
@@ -38,17 +54,26 @@ struct Row {
     est: [f64; 2],
 }
 
-fn rows(rel: &str) -> Option<Vec<Row>> {
+/// The numeric columns after the first of a reference CSV's data rows.
+fn numeric_rows(rel: &str) -> Option<Vec<Vec<f64>>> {
     let text = std::fs::read_to_string(repo(rel)).ok()?;
     let v = text
         .lines()
         .filter(|l| !l.is_empty() && !l.starts_with('#') && !l.starts_with("family"))
         .filter_map(|l| {
-            let f: Vec<f64> = l
-                .split(',')
+            l.split(',')
                 .skip(1)
                 .map(|x| x.parse().ok())
-                .collect::<Option<_>>()?;
+                .collect::<Option<Vec<f64>>>()
+        })
+        .collect();
+    Some(v)
+}
+
+fn rows(rel: &str) -> Option<Vec<Row>> {
+    let v = numeric_rows(rel)?
+        .into_iter()
+        .filter_map(|f| {
             let [aob, nu, nl, xi, eta, phic, fx, fy, mz, ef, em] = f[..] else {
                 return None;
             };
@@ -65,7 +90,122 @@ fn rows(rel: &str) -> Option<Vec<Row>> {
     Some(v)
 }
 
-/// Max |ΔF| (fN) and |ΔM_z| (fNc) of law `L` in precision `T` over the rows.
+/// One held-out reference row (`rolling_ref_heldout.csv`: a/b, θ, ν, nl, ξ, η, φc, F_x, F_y,
+/// M_z, err_f, err_m, converged, seconds): the exact wrench in the rolling frame (fN, fNc), the
+/// solver's own error estimates, and its seconds for the point.
+struct Held {
+    want: [f64; 3],
+    est: [f64; 2],
+    converged: bool,
+    seconds: f64,
+}
+
+fn heldout_ref() -> Option<Vec<Held>> {
+    let v = numeric_rows(HELDOUT_REF)?
+        .into_iter()
+        .filter_map(|f| {
+            let [_, _, _, _, _, _, _, fx, fy, mz, ef, em, converged, seconds] = f[..] else {
+                return None;
+            };
+            Some(Held {
+                want: [fx, fy, mz],
+                est: [ef, em],
+                converged: converged == 1.0,
+                seconds,
+            })
+        })
+        .collect();
+    Some(v)
+}
+
+/// The laws' outputs on the held-out set (`rolling_heldout_laws.csv`): per law name, its
+/// (F_x/fN, F_y/fN, M_z/(fNc)) per point, in the reference's row order.
+fn heldout_laws() -> Option<Vec<(String, Vec<[f64; 3]>)>> {
+    let text = std::fs::read_to_string(repo(HELDOUT_LAWS)).ok()?;
+    let mut lines = text
+        .lines()
+        .filter(|l| !l.is_empty() && !l.starts_with('#'));
+    let head: Vec<&str> = lines.next()?.split(',').collect();
+    let data: Vec<Vec<f64>> = lines
+        .map(|l| l.split(',').map(|x| x.parse().ok()).collect::<Option<_>>())
+        .collect::<Option<_>>()?;
+    let col = |name: String| head.iter().position(|h| *h == name);
+    let mut out = Vec::new();
+    for h in &head {
+        let Some(law) = h.strip_suffix("_fx") else {
+            continue;
+        };
+        let (x, y, z) = (
+            col(format!("{law}_fx"))?,
+            col(format!("{law}_fy"))?,
+            col(format!("{law}_mz"))?,
+        );
+        let got = data
+            .iter()
+            .map(|r| Some([*r.get(x)?, *r.get(y)?, *r.get(z)?]))
+            .collect::<Option<_>>()?;
+        out.push((law.to_string(), got));
+    }
+    Some(out)
+}
+
+/// Whole-domain errors of one law: worst and median |ΔF| (fN), worst and median |ΔM_z| (fNc).
+#[derive(Clone, Copy)]
+struct Whole {
+    worst: [f64; 2],
+    median: [f64; 2],
+}
+
+fn whole(reference: &[Held], got: &[[f64; 3]]) -> Whole {
+    let (df, dm): (Vec<f64>, Vec<f64>) = reference
+        .iter()
+        .zip(got)
+        .map(|(r, g)| {
+            (
+                (g[0] - r.want[0]).hypot(g[1] - r.want[1]),
+                (g[2] - r.want[2]).abs(),
+            )
+        })
+        .unzip();
+    let max = |v: &[f64]| v.iter().copied().fold(0.0, f64::max);
+    Whole {
+        worst: [max(&df), max(&dm)],
+        median: [crate::median(df), crate::median(dm)],
+    }
+}
+
+/// The held-out set: the reference and every law's whole-domain errors, or why it is absent.
+struct Heldout {
+    reference: Vec<Held>,
+    laws: Vec<(String, Whole)>,
+}
+
+fn heldout() -> Result<Heldout, String> {
+    let reference = heldout_ref().ok_or(format!("No `{HELDOUT_REF}`"))?;
+    let laws = heldout_laws().ok_or(format!("No `{HELDOUT_LAWS}` (or it does not parse)"))?;
+    if reference.is_empty() {
+        return Err(format!("No rows in `{HELDOUT_REF}`"));
+    }
+    let mut out = Vec::new();
+    for (law, got) in laws {
+        if got.len() != reference.len() {
+            return Err(format!(
+                "`{HELDOUT_LAWS}` has {} rows, `{HELDOUT_REF}` {} (re-run `python3 \
+                 tools/rolling_heldout.py`)",
+                got.len(),
+                reference.len()
+            ));
+        }
+        let w = whole(&reference, &got);
+        out.push((law, w));
+    }
+    Ok(Heldout {
+        reference,
+        laws: out,
+    })
+}
+
+/// Max |ΔF| (fN) and |ΔM_z| (fNc) of law `L` in precision `T` over the creep-curve rows.
 fn errors<L: RollingLaw, T: Real>(rows: &[Row]) -> [f64; 2] {
     let x = T::from_f64;
     let mut worst = [0.0f64; 2];
@@ -94,24 +234,21 @@ fn errors<L: RollingLaw, T: Real>(rows: &[Row]) -> [f64; 2] {
     worst
 }
 
-/// One method × precision: its errors and costs.
-struct Point {
+/// One method: its whole-domain errors (f64), its creep-curve errors per precision, its costs.
+struct Method {
     law: &'static str,
-    precision: &'static str,
-    err: [f64; 2],
-    insns: Option<f64>,
-    ns: Option<f64>,
+    whole: Option<Whole>,
+    /// [f32, f64] max |ΔF|, |ΔM_z| on the creep curves
+    curves: Option<[[f64; 2]; 2]>,
+    insns: [Option<f64>; 2],
+    ns: [Option<f64>; 2],
 }
 
-impl Point {
-    fn label(&self) -> String {
-        format!("{} {}", self.law, self.precision)
-    }
-    /// The charted error: the larger of the two, to the three digits the table prints (so
-    /// f32 and f64 of one law tie, and the dearer one is off the front).
-    fn worst(&self) -> f64 {
-        three_digits(self.err[0].max(self.err[1]))
-    }
+const PRECISIONS: [&str; 2] = ["f32", "f64"];
+
+/// The charted error: the larger of the two, to the three digits the table prints.
+fn charted(err: [f64; 2]) -> f64 {
+    three_digits(err[0].max(err[1]))
 }
 
 fn three_digits(x: f64) -> f64 {
@@ -145,47 +282,66 @@ fn exact_ns() -> Option<(f64, f64, f64)> {
     Some((mean, lo, hi))
 }
 
+/// "a / b" to three decimals.
+fn pair(v: [f64; 2]) -> String {
+    format!("{:.3} / {:.3}", v[0], v[1])
+}
+
 /// Writes the section (table + two charts) into `md`, the charts into `dir`; returns the
-/// "at a glance" line (the Pareto front on M4F instructions) if there is one.
+/// "at a glance" line (the Pareto front on M4F instructions against the worst error over the
+/// whole held-out set) if there is one.
 pub fn section(md: &mut String, dir: &Path, host: &Keyed, qemu: &Keyed) -> Option<String> {
     md.push_str("### Rolling contact: Kalker's creep laws against the exact theory\n\n");
-    let Some(quarter) = rows("tools/data/rolling_ref_quarter.csv") else {
-        md.push_str("No `tools/data/rolling_ref_quarter.csv`: section left out.\n\n");
-        return None;
-    };
-    let _ = writeln!(
-        md,
-        "Error: max over the {} held-out creep-curve points of \
-         `tools/data/rolling_ref_quarter.csv` (pure ξ, η, φ, η with φ, ξ with η; a/b ∈ {{0.2, \
-         0.5, 1, 2, 5}}, ν = 0.25; ¼ and ¾ of each interval between `rolling_ref.csv`'s \
-         magnitudes: not in `table`'s tables, no law fitted on them) of |ΔF| (fN) and |ΔM_z| \
-         (fNc, c = √(ab)) against the exact steady-rolling reference (`tools/rolling_exact`), \
-         measured here through `RollingContact::wrench` (as `python3 tools/fit_rolling_table.py \
-         --laws`). Cost: M4F instructions (QEMU stage `rolling`, 64 creep-curve states), host ns \
-         (`benches/rolling.rs`, same states; stage `rolling` of `bench-results/host-ns.csv`). \
-         The exact solver: its own error estimate (err_f, err_m of the CSV) and its host time \
-         per extrapolated value (three grids, `tools/data/rolling_ref_timing.csv`, mean over \
-         the five shapes; a loaded machine, so an upper figure). Charts: the larger of the two \
-         errors.\n",
-        quarter.len()
-    );
+    let held = heldout();
+    let quarter = rows("tools/data/rolling_ref_quarter.csv");
+    match &held {
+        Ok(h) => {
+            let _ = writeln!(
+                md,
+                "Error (the first columns, both charts and the \"at a glance\" line): the worst \
+                 over the {} points of the held-out set over the whole domain (`{HELDOUT_REF}`: \
+                 shape a/b log-uniform in [1/20, 20], one point in three with an axis along the \
+                 rolling direction and the others skewed at any angle, ν ∈ [0, 0.5], creepage \
+                 direction uniform over (ξ, η, cφ) and magnitude log-uniform over three decades; \
+                 {} not converged; no law fitted on them) of |ΔF| = |(ΔF_x, ΔF_y)| (fN) and \
+                 |ΔM_z| (fNc, c = √(ab)) against Kalker's exact steady-rolling theory \
+                 (`tools/rolling_exact`). The laws' outputs are read from `{HELDOUT_LAWS}`, which \
+                 `python3 tools/rolling_heldout.py` writes through `contact_eval wrench` (the \
+                 per-step wrench `contact::Rolling`, which also takes a rolling direction off the \
+                 patch axes; `full-slip` there is `best`) **in f64 only**, and which CI's \
+                 `--check` keeps what the laws give now; the tables per family (direction, \
+                 skew, shape, ν, magnitude) are in `bench-results/rolling-heldout.md`.\n",
+                h.reference.len(),
+                h.reference.iter().filter(|r| !r.converged).count(),
+            );
+        }
+        Err(why) => {
+            let _ = writeln!(
+                md,
+                "{why}: the whole-domain figures, the charts and the \"at a glance\" line are \
+                 left out.\n"
+            );
+        }
+    }
     let key = |law: &str, p: &str| ("rolling".to_string(), law.to_string(), p.to_string());
     let get = |t: &Keyed, law: &str, p: &str| t.as_ref().and_then(|t| t.get(&key(law, p)).copied());
-    let mut pts: Vec<Point> = Vec::new();
+    let mut methods: Vec<Method> = Vec::new();
     macro_rules! law {
         ($l:ty, $name:expr) => {
-            for (p, err) in [
-                ("f32", errors::<$l, f32>(&quarter)),
-                ("f64", errors::<$l, f64>(&quarter)),
-            ] {
-                pts.push(Point {
-                    law: $name,
-                    precision: p,
-                    err,
-                    insns: get(qemu, $name, p),
-                    ns: get(host, $name, p),
-                });
-            }
+            methods.push(Method {
+                law: $name,
+                whole: held.as_ref().ok().and_then(|h| {
+                    h.laws
+                        .iter()
+                        .find(|(l, _)| l.as_str() == $name)
+                        .map(|(_, w)| *w)
+                }),
+                curves: quarter
+                    .as_ref()
+                    .map(|q| [errors::<$l, f32>(q), errors::<$l, f64>(q)]),
+                insns: PRECISIONS.map(|p| get(qemu, $name, p)),
+                ns: PRECISIONS.map(|p| get(host, $name, p)),
+            });
         };
     }
     law!(Table, Table::NAME);
@@ -193,63 +349,161 @@ pub fn section(md: &mut String, dir: &Path, host: &Keyed, qemu: &Keyed) -> Optio
     law!(Fastsim, Fastsim::NAME);
     law!(FastsimGrid<16, 16>, "fastsim-16");
     law!(FullSlip, FullSlip::NAME);
-    let exact_err = quarter
-        .iter()
-        .fold([0.0f64; 2], |w, r| [w[0].max(r.est[0]), w[1].max(r.est[1])]);
     let exact = exact_ns();
 
+    match &quarter {
+        Some(q) => {
+            // how far f32 and f64 differ where both are measured
+            let gap = methods
+                .iter()
+                .filter_map(|m| m.curves)
+                .fold([0.0f64; 2], |g, [a, b]| {
+                    [g[0].max((a[0] - b[0]).abs()), g[1].max((a[1] - b[1]).abs())]
+                });
+            let _ = writeln!(
+                md,
+                "Second column, **on the creep curves `table` was fitted to**: the max over the \
+                 {} creep-curve points of `tools/data/rolling_ref_quarter.csv` (pure ξ, η, φ, η \
+                 with φ, ξ with η; aligned, a/b ∈ {{0.2, 0.5, 1, 2, 5}}, ν = 0.25; ¼ and ¾ of \
+                 each interval between `rolling_ref.csv`'s magnitudes: not in `table`'s tables, \
+                 but on the families it was fitted to), measured here through \
+                 `RollingContact::wrench` in f32 and f64 (as `python3 tools/fit_rolling_table.py \
+                 --laws`); there the two precisions' worst errors differ by at most {:.1e} fN / \
+                 {:.1e} fNc (the f64 figure is printed).\n",
+                q.len(),
+                gap[0],
+                gap[1]
+            );
+        }
+        None => md.push_str(
+            "No `tools/data/rolling_ref_quarter.csv`: the creep-curve column is left out.\n\n",
+        ),
+    }
     md.push_str(
-        "| method | precision | max \\|ΔF\\| (fN) | max \\|ΔM_z\\| (fNc) | M4F insns | host ns |\n\
-         |---|---|---|---|---|---|\n",
+        "Cost: M4F instructions (QEMU stage `rolling`: the law alone, `RollingContact::wrench`, \
+         64 creep-curve states along an axis; the per-step wrench costs more off the axes, \
+         `wrench-skewed` in `bench-results/qemu.csv`), host ns (`benches/rolling.rs`, same \
+         states; stage `rolling` of `bench-results/host-ns.csv`). The exact solver: its own \
+         error estimate (the reference CSVs' err_f, err_m) and its host time per extrapolated \
+         value (three grids, `tools/data/rolling_ref_timing.csv`, mean over the five creep-curve \
+         shapes; a loaded machine, so an upper figure). Charts: the larger of the two worst \
+         whole-domain errors; as the held-out set has f64 outputs only, an **f32 point is f64's \
+         whole-domain error at f32's cost** (an f64 point is measured in full); the red line \
+         joins the Pareto front.\n\n",
+    );
+
+    md.push_str(
+        "| method | whole domain: worst \\|ΔF\\| (fN) | worst \\|ΔM_z\\| (fNc) | median \\|ΔF\\| / \
+         \\|ΔM_z\\| | on the creep curves `table` was fitted to: max \\|ΔF\\| / \\|ΔM_z\\| | \
+         M4F insns f32 | M4F insns f64 | host ns f32 | host ns f64 |\n\
+         |---|---|---|---|---|---|---|---|---|\n",
     );
     let opt = |v: Option<f64>| v.map_or("—".into(), |v| format!("{v:.0}"));
-    for p in &pts {
+    for m in &methods {
+        let (wf, wm, med) = m.whole.map_or(("—".into(), "—".into(), "—".into()), |w| {
+            (
+                format!("{:.3}", w.worst[0]),
+                format!("{:.3}", w.worst[1]),
+                format!("{:.4} / {:.4}", w.median[0], w.median[1]),
+            )
+        });
+        let curves = m.curves.map_or("—".into(), |[_, c64]| pair(c64));
         let _ = writeln!(
             md,
-            "| {} | {} | {:.3} | {:.3} | {} | {} |",
-            p.law,
-            p.precision,
-            p.err[0],
-            p.err[1],
-            opt(p.insns),
-            opt(p.ns)
+            "| {} | {wf} | {wm} | {med} | {curves} | {} | {} | {} | {} |",
+            m.law,
+            opt(m.insns[0]),
+            opt(m.insns[1]),
+            opt(m.ns[0]),
+            opt(m.ns[1])
         );
     }
-    if let Some((mean, lo, hi)) = exact {
+    let est = |it: &mut dyn Iterator<Item = [f64; 2]>| {
+        it.fold([0.0f64; 2], |w, e| [w[0].max(e[0]), w[1].max(e[1])])
+    };
+    let held_est = held
+        .as_ref()
+        .ok()
+        .map(|h| est(&mut h.reference.iter().map(|r| r.est)));
+    let curve_est = quarter.as_ref().map(|q| est(&mut q.iter().map(|r| r.est)));
+    if exact.is_some() || held_est.is_some() {
+        let (wf, wm, med) = match &held {
+            Ok(h) => {
+                let col = |j: usize| crate::median(h.reference.iter().map(|r| r.est[j]).collect());
+                let w = held_est.unwrap_or_default();
+                (
+                    format!("{:.4} (own estimate)", w[0]),
+                    format!("{:.4} (own estimate)", w[1]),
+                    format!("{:.1e} / {:.1e} (own estimate)", col(0), col(1)),
+                )
+            }
+            Err(_) => ("—".into(), "—".into(), "—".into()),
+        };
+        let curves = curve_est.map_or("—".into(), |e| {
+            format!("{:.4} / {:.4} (own estimate)", e[0], e[1])
+        });
+        let ns = match (exact, &held) {
+            (Some((mean, lo, hi)), Ok(h)) => format!(
+                "{mean:.2e} ({lo:.1e} … {hi:.1e} over the creep-curve shapes; the held-out \
+                 set's own solves, 1,024 elements on the finest grid: {:.1e} per point, the mean \
+                 of its `seconds`)",
+                1e9 * h.reference.iter().map(|r| r.seconds).sum::<f64>() / h.reference.len() as f64
+            ),
+            (Some((mean, lo, hi)), Err(_)) => {
+                format!("{mean:.2e} ({lo:.1e} … {hi:.1e} over the creep-curve shapes)")
+            }
+            (None, _) => "—".into(),
+        };
         let _ = writeln!(
             md,
-            "| exact (tools/rolling_exact, 3 grids + extrapolation) | f64 | {:.4} (own estimate) | \
-             {:.4} (own estimate) | — | {:.2e} ({:.1e} … {:.1e} over the shapes) |",
-            exact_err[0], exact_err[1], mean, lo, hi
+            "| exact (tools/rolling_exact, 3 grids + extrapolation) | {wf} | {wm} | {med} | \
+             {curves} | — | — | — | {ns} |"
         );
     }
     md.push('\n');
 
-    let insn_pts: Vec<(String, f64, f64)> = pts
-        .iter()
-        .filter_map(|p| Some((p.label(), p.insns?, p.worst())))
-        .collect();
-    let mut ns_pts: Vec<(String, f64, f64)> = pts
-        .iter()
-        .filter_map(|p| Some((p.label(), p.ns?, p.worst())))
-        .collect();
-    if let Some((mean, _, _)) = exact {
-        ns_pts.push(("exact f64".into(), mean, exact_err[0].max(exact_err[1])));
+    let Ok(h) = &held else {
+        return None;
+    };
+    let mut insn_pts: Vec<(String, f64, f64)> = Vec::new();
+    let mut ns_pts: Vec<(String, f64, f64)> = Vec::new();
+    for m in &methods {
+        let Some(w) = m.whole else { continue };
+        for (i, p) in PRECISIONS.iter().enumerate() {
+            let label = format!("{} {p}", m.law);
+            if let Some(c) = m.insns[i] {
+                insn_pts.push((label.clone(), c, charted(w.worst)));
+            }
+            if let Some(c) = m.ns[i] {
+                ns_pts.push((label, c, charted(w.worst)));
+            }
+        }
+    }
+    if let (Some((mean, _, _)), Some(e)) = (exact, held_est) {
+        ns_pts.push(("exact f64".into(), mean, e[0].max(e[1])));
     }
     let y = Axis {
-        title: "max error on held-out points (|ΔF| in fN, |ΔM_z| in fNc)",
+        title: "worst error, whole-domain held-out set (|ΔF| in fN, |ΔM_z| in fNc)",
         log: true,
     };
     let charts = [
         (
             "pareto-rolling-m4f.png",
-            "Rolling laws: error against Cortex-M4F instructions per call (QEMU)",
-            "Cortex-M4F instructions per call (QEMU)",
+            format!(
+                "Rolling laws, {} held-out points over the whole domain: worst error against \
+                 M4F instructions",
+                h.reference.len()
+            ),
+            "Cortex-M4F instructions per call (QEMU; f32 points: f64's error)",
             &insn_pts,
         ),
         (
             "pareto-rolling-host.png",
-            "Rolling laws and the exact solver: error against host time per call",
+            format!(
+                "Rolling laws and the exact solver, {} held-out points: worst error against \
+                 host time",
+                h.reference.len()
+            ),
             "host ns per call (criterion; exact solver: per extrapolated value)",
             &ns_pts,
         ),
@@ -261,7 +515,7 @@ pub fn section(md: &mut String, dir: &Path, host: &Keyed, qemu: &Keyed) -> Optio
         }
         let r = plot::pareto(
             &dir.join(file),
-            title,
+            &title,
             Axis {
                 title: x,
                 log: true,
@@ -277,11 +531,17 @@ pub fn section(md: &mut String, dir: &Path, host: &Keyed, qemu: &Keyed) -> Optio
         }
     }
     let front = crate::pareto_front(&insn_pts);
-    (!front.is_empty()).then(|| {
-        front
-            .iter()
-            .map(|(l, c, e)| format!("{l} ({c:.0}, {})", crate::e(*e)))
-            .collect::<Vec<_>>()
-            .join("; ")
-    })
+    if front.is_empty() {
+        return None;
+    }
+    let line = front
+        .iter()
+        .map(|(l, c, e)| format!("{l} ({c:.0}, {})", crate::e(*e)))
+        .collect::<Vec<_>>()
+        .join("; ");
+    let _ = writeln!(
+        md,
+        "Pareto front on M4F instructions (worst whole-domain error), cheapest first: {line}.\n"
+    );
+    Some(line)
 }
