@@ -11,8 +11,9 @@
 `links` needs the standard library only. A link is checked when it is relative (resolved from
 the document's directory, anchors dropped) or points into this repository's web view
 (https://github.com/contensou/contensou/blob/main/<path>, raw.githubusercontent.com/...): the
-file must exist. External links are not fetched. The ```sh blocks (commands, run by CI
-elsewhere or too long for it) are checked for what they name: repository paths
+file must exist. So is each mdBook `{{#include PATH[:ANCHOR]}}`: PATH must exist and hold the
+`ANCHOR: name` / `ANCHOR_END: name` pair. External links are not fetched. The ```sh blocks
+(commands, run by CI elsewhere or too long for it) are checked for what they name: repository paths
 (tools/…, capi/…, python/…, mujoco/…, firmware/…) and `--example/--bench/--test/--bin NAME`.
 
 `run` executes each Python block as its own script from the repository root (the blocks use
@@ -36,6 +37,7 @@ REPO_URLS = (
     "https://raw.githubusercontent.com/contensou/contensou/main/",
 )
 LINK = re.compile(r"!?\[[^\]]*\]\(([^)\s]+)\)")
+INCLUDE = re.compile(r"\{\{#include\s+([^}:\s]+)(?::([\w-]+))?\s*\}\}")
 FENCE = re.compile(r"^```(\w*)\s*$")
 
 
@@ -116,6 +118,16 @@ def check_links():
             count += 1
             if not path.exists():
                 bad.append(f"{doc.relative_to(ROOT)}: {target}")
+        for target, anchor in INCLUDE.findall(prose(doc.read_text())):
+            path = doc.parent / target
+            count += 1
+            if not path.exists():
+                bad.append(f"{doc.relative_to(ROOT)}: include {target}")
+            elif anchor and not all(
+                re.search(rf"{kind}:\s*{re.escape(anchor)}\b", path.read_text())
+                for kind in ("ANCHOR", "ANCHOR_END")
+            ):
+                bad.append(f"{doc.relative_to(ROOT)}: include {target}:{anchor} (no such anchor pair)")
         bad += check_commands(doc, names)
     for b in bad:
         print(f"broken link: {b}", file=sys.stderr)

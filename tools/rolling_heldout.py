@@ -227,7 +227,9 @@ def main():
     c = cost()
     costs = {"table": c.get("table"), "blend": c.get("blend"), "fastsim": c.get("fastsim"),
              "fastsim-16": c.get("fastsim-16"), "full-slip": c.get("full-slip")}
+    # the guide (docs/guide/src/rolling.md) includes the parts between the ANCHOR comments
     p("## Whole set, and cost\n")
+    p("<!-- ANCHOR: whole -->")
     p("| law | worst ΔF | worst ΔM | median ΔF | median ΔM | 95 % ΔF | 95 % ΔM | points worse than FASTSIM 32×32 | M4F f32 instructions (law alone) |")
     p("|---|---|---|---|---|---|---|---|---|")
     fs = errs["fastsim"]
@@ -249,6 +251,7 @@ def main():
       f"Pareto front (cost against the worst of ΔF, ΔM): {', '.join(front)}. The per-step wrench "
       f"(`contact::Rolling`, `table`): {c.get('wrench-axis')} instructions along an axis, "
       f"{c.get('wrench-skewed')} skewed, {c.get('wrench-varying')} varying (bench-results/qemu.csv).\n")
+    p("<!-- ANCHOR_END: whole -->\n")
     p("## Subsets\n")
     subsets = [
         ("aligned, a/b in [0.2, 5] (the fitted range of `blend`, `table`)",
@@ -268,9 +271,11 @@ def main():
                          f"({statistics.median(x[0] for x in e):.3f} / {statistics.median(x[1] for x in e):.3f})")
         p(f"| {l} | " + " | ".join(cells) + " |")
     p("")
+    p("## Per family\n")
+    p("<!-- ANCHOR: families -->")
     for name in fam[0]:
         keys = sorted({f[name] for f in fam}, key=_sort_key)
-        p(f"## By {name}\n")
+        p(f"### By {name}\n")
         p("| law | " + " | ".join(f"{k} (n = {sum(1 for f in fam if f[name] == k)})" for k in keys) + " |")
         p("|---|" + "---|" * len(keys))
         for l in LAWS:
@@ -281,6 +286,7 @@ def main():
                              f"({statistics.median(x[0] for x in e):.3f} / {statistics.median(x[1] for x in e):.3f})")
             p(f"| {l} | " + " | ".join(cells) + " |")
         p("")
+    p("<!-- ANCHOR_END: families -->\n")
     p("## The worst points of `table`\n")
     p("| a/b (own) | θ (°) | ν | d (ξ, η, φ) | q | exact F_x, F_y, M_z | table | ΔF / ΔM | fastsim ΔF / ΔM | ref. est. |")
     p("|---|---|---|---|---|---|---|---|---|---|")
