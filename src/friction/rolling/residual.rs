@@ -6,21 +6,85 @@
 use super::table_data::{COARSE, Data, FINE, KNEE_START, KNEE_WIDTH, SHAPES as DATA};
 use crate::Real;
 
-/// One residual curve of one contact: ln m of the first node, 1/Δ(ln m) (coarse spacing),
-/// m₀, m_N, and the residual at the nodes, `C` channels (F_x; F_y, M_z; or all three), read
-/// from the generated data of the two fitted shapes around a/b and mixed at the weight `u` on
-/// each look-up (nothing copied: a curve is a few numbers and two references into flash).
-/// With `N` = 29 + 3 · 8 (the curves with φ) the 8 coarse intervals of the knee window hold
-/// three more nodes each.
+/// One residual curve of one contact: the residual at the nodes, `C` channels (F_x; F_y,
+/// M_z; or all three), read from the generated data of the two fitted shapes around a/b and
+/// mixed at the weight `u` on each look-up (nothing copied: a curve is two references into
+/// flash, the weight and its [`Grid`]). With `N` = 29 + 3 · 8 (the curves with φ) the 8 coarse
+/// intervals of the knee window hold three more nodes each.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Curve<T, const N: usize, const C: usize> {
+    lo: &'static Data<N, C>,
+    hi: &'static Data<N, C>,
+    u: T,
+    /// The grid, when the curve is built once per contact; `None` for a per-call shape
+    /// ([`Tables::at_ln_once`]): each look-up computes what it needs (the same expressions,
+    /// so the same values bit for bit), and curves the law does not read cost nothing.
+    grid: Option<Grid<T>>,
+}
+
+/// A curve's nodes in ln m: ln m of the first node, Δ(ln m) (coarse spacing) and its
+/// inverse, and the tails' factors m₀⁻¹ = e^{−x₀}, m_N = e^{x₀ + (COARSE − 1)Δ} (stored in a
+/// curve's grid; a per-call grid leaves them 0 and the look-up that falls in a tail computes
+/// its one factor).
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct Grid<T> {
     x0: T,
+    dx: T,
     inv_dx: T,
     inv_m0: T,
     m_last: T,
-    lo: &'static [[f32; N]; C],
-    hi: &'static [[f32; N]; C],
-    u: T,
+}
+
+impl<T: Copy> Grid<T> {
+    fn map<U>(&self, f: impl Fn(T) -> U) -> Grid<U> {
+        Grid {
+            x0: f(self.x0),
+            dx: f(self.dx),
+            inv_dx: f(self.inv_dx),
+            inv_m0: f(self.inv_m0),
+            m_last: f(self.m_last),
+        }
+    }
+}
+
+impl<T: Real> Grid<T> {
+    /// ln m₀ and Δ(ln m) linear in `u` between the two shapes' (rounded to `T`); with
+    /// `tails` the two factors too (two `exp`).
+    #[inline(always)]
+    fn new<const N: usize, const C: usize>(
+        lo: &'static Data<N, C>,
+        hi: &'static Data<N, C>,
+        u: T,
+        tails: bool,
+    ) -> Self {
+        let lerp = |p: T, q: T| p + u * (q - p);
+        let x0 = lerp(T::from_f64(lo.0), T::from_f64(hi.0));
+        let dx = lerp(T::from_f64(lo.1), T::from_f64(hi.1));
+        let mut g = Self {
+            x0,
+            dx,
+            inv_dx: T::ONE / dx,
+            inv_m0: T::ZERO,
+            m_last: T::ZERO,
+        };
+        if tails {
+            g.inv_m0 = g.tail_below();
+            g.m_last = g.tail_above();
+        }
+        g
+    }
+
+    /// m₀⁻¹ = e^{−x₀}.
+    #[inline(always)]
+    fn tail_below(&self) -> T {
+        (-self.x0).exp()
+    }
+
+    /// m_N = e^{x₀ + (COARSE − 1)Δ}.
+    #[inline(always)]
+    fn tail_above(&self) -> T {
+        (self.x0 + T::from_usize(COARSE - 1) * self.dx).exp()
+    }
 }
 
 /// Where ln m falls on a curve: node index and fraction, or a tail factor.
@@ -35,48 +99,71 @@ impl<T: Copy, const N: usize, const C: usize> Curve<T, N, C> {
     /// Every `T` field through `f` (the dual form of the Jacobian).
     pub(crate) fn map<U>(&self, f: impl Fn(T) -> U) -> Curve<U, N, C> {
         Curve {
-            x0: f(self.x0),
-            inv_dx: f(self.inv_dx),
-            inv_m0: f(self.inv_m0),
-            m_last: f(self.m_last),
             lo: self.lo,
             hi: self.hi,
             u: f(self.u),
+            grid: self.grid.map(|g| g.map(f)),
         }
     }
 }
 
 impl<T: Real, const N: usize, const C: usize> Curve<T, N, C> {
-    /// The curve for a/b between the shapes `lo` and `hi` at the weight `u` ∈ [0, 1]: ln m₀ and
-    /// Δ(ln m) linear in `u` (rounded to `T`), two `exp`.
+    /// The curve for a/b between the shapes `lo` and `hi` at the weight `u` ∈ [0, 1]; `once`:
+    /// for one look-up (no grid stored: each look-up computes its own), otherwise the grid
+    /// with its tails (two `exp`).
     #[inline]
-    fn between(lo: &'static Data<N, C>, hi: &'static Data<N, C>, u: T) -> Self {
-        let lerp = |p: T, q: T| p + u * (q - p);
-        let x0 = lerp(T::from_f64(lo.0), T::from_f64(hi.0));
-        let dx = lerp(T::from_f64(lo.1), T::from_f64(hi.1));
+    fn between(lo: &'static Data<N, C>, hi: &'static Data<N, C>, u: T, once: bool) -> Self {
         Self {
-            x0,
-            inv_dx: T::ONE / dx,
-            inv_m0: (-x0).exp(),
-            m_last: (x0 + T::from_usize(COARSE - 1) * dx).exp(),
-            lo: &lo.2,
-            hi: &hi.2,
+            lo,
+            hi,
             u,
+            grid: if once {
+                None
+            } else {
+                Some(Grid::new(lo, hi, u, true))
+            },
         }
     }
 
-    /// The same nodes in ln m (so one [`Self::at`] serves both).
+    /// The same nodes in ln m (so one [`Self::at`] serves both). Without stored grids: the
+    /// same data (then the same grid; curves whose grids only round to the same values are
+    /// looked up one by one, with the same result).
     fn same_grid(&self, other: &Self) -> bool {
-        self.x0 == other.x0 && self.inv_dx == other.inv_dx
+        match (&self.grid, &other.grid) {
+            (Some(a), Some(b)) => a.x0 == b.x0 && a.inv_dx == b.inv_dx,
+            _ => {
+                let bits = |d: &'static Data<N, C>| (d.0.to_bits(), d.1.to_bits());
+                bits(self.lo) == bits(other.lo) && bits(self.hi) == bits(other.hi)
+            }
+        }
     }
 
     #[inline(always)]
     fn at(&self, lnm: T, m: T, inv_m: T) -> At<T> {
-        let u = (lnm - self.x0) * self.inv_dx;
+        match &self.grid {
+            Some(g) => Self::locate(g, lnm, m, inv_m, || g.inv_m0, || g.m_last),
+            None => {
+                let g = Grid::new(self.lo, self.hi, self.u, false);
+                Self::locate(&g, lnm, m, inv_m, || g.tail_below(), || g.tail_above())
+            }
+        }
+    }
+
+    /// Where ln m falls on the grid `g`; the tails' factors from `inv_m0`, `m_last`.
+    #[inline(always)]
+    fn locate(
+        g: &Grid<T>,
+        lnm: T,
+        m: T,
+        inv_m: T,
+        inv_m0: impl Fn() -> T,
+        m_last: impl Fn() -> T,
+    ) -> At<T> {
+        let u = (lnm - g.x0) * g.inv_dx;
         if u <= T::ZERO {
-            At::Below((m * self.inv_m0).sq())
+            At::Below((m * inv_m0()).sq())
         } else if u >= T::from_usize(COARSE - 1) {
-            At::Above((self.m_last * inv_m).sq())
+            At::Above((m_last() * inv_m).sq())
         } else {
             // the knee window: four node intervals per coarse one
             let g = if N > COARSE {
@@ -104,7 +191,7 @@ impl<T: Real, const N: usize, const C: usize> Curve<T, N, C> {
     fn value(&self, at: At<T>) -> [T; 3] {
         let mut out = [T::ZERO; 3];
         let first = if C == 2 { 1 } else { 0 };
-        let rows = self.lo.iter().zip(self.hi.iter());
+        let rows = self.lo.2.iter().zip(self.hi.2.iter());
         for (o, (a, b)) in out.iter_mut().skip(first).zip(rows) {
             let node = |k: usize| {
                 let p = T::from_f32(a.get(k).copied().unwrap_or(0.0));
@@ -238,16 +325,27 @@ impl<T: Real> Tables<T> {
     /// the weight between them (linear in ln(a/b), the end shapes outside [0.2, 5]); per curve
     /// two `exp` (24 in all), no node copied.
     pub fn at_ln(x: T) -> Self {
+        Self::build(x, false)
+    }
+
+    /// [`Self::at_ln`] for tables used by one look-up (a per-call shape): no `exp` here; a
+    /// look-up in a tail computes its curve's one factor (the same values bit for bit).
+    pub fn at_ln_once(x: T) -> Self {
+        Self::build(x, true)
+    }
+
+    #[inline(always)]
+    fn build(x: T, lazy: bool) -> Self {
         let (i, u) = super::fitted::between(x);
         let (lo, hi) = (&DATA[i.min(3)], &DATA[i.min(3) + 1]);
         let plane: [Curve<T, FINE, 2>; 6] =
-            core::array::from_fn(|k| Curve::between(&lo.plane[k], &hi.plane[k], u));
+            core::array::from_fn(|k| Curve::between(&lo.plane[k], &hi.plane[k], u, lazy));
         let ring: [Curve<T, FINE, 3>; 3] =
-            core::array::from_fn(|k| Curve::between(&lo.ring[k], &hi.ring[k], u));
+            core::array::from_fn(|k| Curve::between(&lo.ring[k], &hi.ring[k], u, lazy));
         Self {
-            xi: Curve::between(&lo.xi, &hi.xi, u),
-            eta: Curve::between(&lo.eta, &hi.eta, u),
-            xieta: Curve::between(&lo.xieta, &hi.xieta, u),
+            xi: Curve::between(&lo.xi, &hi.xi, u, lazy),
+            eta: Curve::between(&lo.eta, &hi.eta, u, lazy),
+            xieta: Curve::between(&lo.xieta, &hi.xieta, u, lazy),
             plane_shared: core::array::from_fn(|k| plane[k].same_grid(&plane[k + 1])),
             ring_shared: core::array::from_fn(|k| ring[k].same_grid(&ring[k + 1])),
             plane,

@@ -253,7 +253,7 @@ impl<T: Real> ShapePath<T> {
             rho: (T::HALF * x).exp(),
             kalker,
             blend: super::fitted::blend_at_ln(x),
-            table: super::residual::Tables::at_ln(x),
+            table: super::residual::Tables::at_ln_once(x),
         }
     }
 }
