@@ -6,85 +6,25 @@
 use super::table_data::{COARSE, Data, FINE, KNEE_START, KNEE_WIDTH, SHAPES as DATA};
 use crate::Real;
 
-/// One residual curve of one contact: the residual at the nodes, `C` channels (F_x; F_y,
-/// M_z; or all three), read from the generated data of the two fitted shapes around a/b and
-/// mixed at the weight `u` on each look-up (nothing copied: a curve is two references into
-/// flash, the weight and its [`Grid`]). With `N` = 29 + 3 · 8 (the curves with φ) the 8 coarse
-/// intervals of the knee window hold three more nodes each.
+/// One residual curve of one contact: ln m of the first node, 1/Δ(ln m) (coarse spacing),
+/// m₀⁻¹, m_N, and the residual at the nodes, `C` channels (F_x; F_y, M_z; or all three), read
+/// from the generated data of the two fitted shapes around a/b and mixed at the weight `u` on
+/// each look-up (nothing copied: a curve is a few numbers and two references into flash).
+/// With `N` = 29 + 3 · 8 (the curves with φ) the 8 coarse intervals of the knee window hold
+/// three more nodes each.
+///
+/// A curve built per call ([`Tables::at_ln_once`]) stores no grid (`inv_dx` = 0, never the
+/// value of a stored grid): each look-up computes the grid it reads with the same expressions,
+/// so the same values bit for bit, and the curves the law does not read cost nothing.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Curve<T, const N: usize, const C: usize> {
-    lo: &'static Data<N, C>,
-    hi: &'static Data<N, C>,
-    u: T,
-    /// The grid, when the curve is built once per contact; `None` for a per-call shape
-    /// ([`Tables::at_ln_once`]): each look-up computes what it needs (the same expressions,
-    /// so the same values bit for bit), and curves the law does not read cost nothing.
-    grid: Option<Grid<T>>,
-}
-
-/// A curve's nodes in ln m: ln m of the first node, Δ(ln m) (coarse spacing) and its
-/// inverse, and the tails' factors m₀⁻¹ = e^{−x₀}, m_N = e^{x₀ + (COARSE − 1)Δ} (stored in a
-/// curve's grid; a per-call grid leaves them 0 and the look-up that falls in a tail computes
-/// its one factor).
-#[derive(Clone, Copy, Debug, PartialEq)]
-struct Grid<T> {
     x0: T,
-    dx: T,
     inv_dx: T,
     inv_m0: T,
     m_last: T,
-}
-
-impl<T: Copy> Grid<T> {
-    fn map<U>(&self, f: impl Fn(T) -> U) -> Grid<U> {
-        Grid {
-            x0: f(self.x0),
-            dx: f(self.dx),
-            inv_dx: f(self.inv_dx),
-            inv_m0: f(self.inv_m0),
-            m_last: f(self.m_last),
-        }
-    }
-}
-
-impl<T: Real> Grid<T> {
-    /// ln m₀ and Δ(ln m) linear in `u` between the two shapes' (rounded to `T`); with
-    /// `tails` the two factors too (two `exp`).
-    #[inline(always)]
-    fn new<const N: usize, const C: usize>(
-        lo: &'static Data<N, C>,
-        hi: &'static Data<N, C>,
-        u: T,
-        tails: bool,
-    ) -> Self {
-        let lerp = |p: T, q: T| p + u * (q - p);
-        let x0 = lerp(T::from_f64(lo.0), T::from_f64(hi.0));
-        let dx = lerp(T::from_f64(lo.1), T::from_f64(hi.1));
-        let mut g = Self {
-            x0,
-            dx,
-            inv_dx: T::ONE / dx,
-            inv_m0: T::ZERO,
-            m_last: T::ZERO,
-        };
-        if tails {
-            g.inv_m0 = g.tail_below();
-            g.m_last = g.tail_above();
-        }
-        g
-    }
-
-    /// m₀⁻¹ = e^{−x₀}.
-    #[inline(always)]
-    fn tail_below(&self) -> T {
-        (-self.x0).exp()
-    }
-
-    /// m_N = e^{x₀ + (COARSE − 1)Δ}.
-    #[inline(always)]
-    fn tail_above(&self) -> T {
-        (self.x0 + T::from_usize(COARSE - 1) * self.dx).exp()
-    }
+    lo: &'static Data<N, C>,
+    hi: &'static Data<N, C>,
+    u: T,
 }
 
 /// Where ln m falls on a curve: node index and fraction, or a tail factor.
@@ -99,67 +39,113 @@ impl<T: Copy, const N: usize, const C: usize> Curve<T, N, C> {
     /// Every `T` field through `f` (the dual form of the Jacobian).
     pub(crate) fn map<U>(&self, f: impl Fn(T) -> U) -> Curve<U, N, C> {
         Curve {
+            x0: f(self.x0),
+            inv_dx: f(self.inv_dx),
+            inv_m0: f(self.inv_m0),
+            m_last: f(self.m_last),
             lo: self.lo,
             hi: self.hi,
             u: f(self.u),
-            grid: self.grid.map(|g| g.map(f)),
         }
     }
 }
 
 impl<T: Real, const N: usize, const C: usize> Curve<T, N, C> {
-    /// The curve for a/b between the shapes `lo` and `hi` at the weight `u` ∈ [0, 1]; `once`:
-    /// for one look-up (no grid stored: each look-up computes its own), otherwise the grid
-    /// with its tails (two `exp`).
-    #[inline]
+    /// The curve for a/b between the shapes `lo` and `hi` at the weight `u` ∈ [0, 1]: ln m₀ and
+    /// Δ(ln m) linear in `u` (rounded to `T`), two `exp`; `once`: no grid stored (see the type
+    /// docs).
+    #[inline(always)]
     fn between(lo: &'static Data<N, C>, hi: &'static Data<N, C>, u: T, once: bool) -> Self {
-        Self {
+        let mut c = Self {
+            x0: T::ZERO,
+            inv_dx: T::ZERO,
+            inv_m0: T::ZERO,
+            m_last: T::ZERO,
             lo,
             hi,
             u,
-            grid: if once {
-                None
-            } else {
-                Some(Grid::new(lo, hi, u, true))
-            },
+        };
+        if !once {
+            let (x0, dx) = c.grid();
+            c.x0 = x0;
+            c.inv_dx = T::ONE / dx;
+            c.inv_m0 = Self::tail_below(x0);
+            c.m_last = Self::tail_above(x0, dx);
         }
+        c
     }
 
-    /// The same nodes in ln m (so one [`Self::at`] serves both). Without stored grids: the
-    /// same data (then the same grid; curves whose grids only round to the same values are
-    /// looked up one by one, with the same result).
+    /// ln m₀ and Δ(ln m), linear in `u` between the two shapes' (rounded to `T`).
+    #[inline(always)]
+    fn grid(&self) -> (T, T) {
+        let lerp = |p: T, q: T| p + self.u * (q - p);
+        (
+            lerp(T::from_f64(self.lo.0), T::from_f64(self.hi.0)),
+            lerp(T::from_f64(self.lo.1), T::from_f64(self.hi.1)),
+        )
+    }
+
+    /// m₀⁻¹ = e^{−x₀}.
+    #[inline(always)]
+    fn tail_below(x0: T) -> T {
+        (-x0).exp()
+    }
+
+    /// m_N = e^{x₀ + (COARSE − 1)Δ}.
+    #[inline(always)]
+    fn tail_above(x0: T, dx: T) -> T {
+        (x0 + T::from_usize(COARSE - 1) * dx).exp()
+    }
+
+    /// Its grid stored (built once per contact).
+    #[inline(always)]
+    fn stored(&self) -> bool {
+        self.inv_dx != T::ZERO
+    }
+
+    /// The same nodes in ln m (so one [`Self::at`] serves both). Curves built per call: the
+    /// same data (then the same grid; grids that only round to the same values are looked up
+    /// one by one, with the same result).
     fn same_grid(&self, other: &Self) -> bool {
-        match (&self.grid, &other.grid) {
-            (Some(a), Some(b)) => a.x0 == b.x0 && a.inv_dx == b.inv_dx,
-            _ => {
-                let bits = |d: &'static Data<N, C>| (d.0.to_bits(), d.1.to_bits());
-                bits(self.lo) == bits(other.lo) && bits(self.hi) == bits(other.hi)
-            }
+        if self.stored() && other.stored() {
+            self.x0 == other.x0 && self.inv_dx == other.inv_dx
+        } else {
+            let bits = |d: &'static Data<N, C>| (d.0.to_bits(), d.1.to_bits());
+            bits(self.lo) == bits(other.lo) && bits(self.hi) == bits(other.hi)
         }
     }
 
     #[inline(always)]
     fn at(&self, lnm: T, m: T, inv_m: T) -> At<T> {
-        match &self.grid {
-            Some(g) => Self::locate(g, lnm, m, inv_m, || g.inv_m0, || g.m_last),
-            None => {
-                let g = Grid::new(self.lo, self.hi, self.u, false);
-                Self::locate(&g, lnm, m, inv_m, || g.tail_below(), || g.tail_above())
-            }
+        if self.stored() {
+            Self::locate(
+                self.x0,
+                self.inv_dx,
+                lnm,
+                m,
+                inv_m,
+                || self.inv_m0,
+                || self.m_last,
+            )
+        } else {
+            let (x0, dx) = self.grid();
+            let tails = (|| Self::tail_below(x0), || Self::tail_above(x0, dx));
+            Self::locate(x0, T::ONE / dx, lnm, m, inv_m, tails.0, tails.1)
         }
     }
 
-    /// Where ln m falls on the grid `g`; the tails' factors from `inv_m0`, `m_last`.
+    /// Where ln m falls on the grid (x₀, 1/Δ); the tails' factors from `inv_m0`, `m_last`.
     #[inline(always)]
     fn locate(
-        g: &Grid<T>,
+        x0: T,
+        inv_dx: T,
         lnm: T,
         m: T,
         inv_m: T,
         inv_m0: impl Fn() -> T,
         m_last: impl Fn() -> T,
     ) -> At<T> {
-        let u = (lnm - g.x0) * g.inv_dx;
+        let u = (lnm - x0) * inv_dx;
         if u <= T::ZERO {
             At::Below((m * inv_m0()).sq())
         } else if u >= T::from_usize(COARSE - 1) {
@@ -338,16 +324,22 @@ impl<T: Real> Tables<T> {
     fn build(x: T, lazy: bool) -> Self {
         let (i, u) = super::fitted::between(x);
         let (lo, hi) = (&DATA[i.min(3)], &DATA[i.min(3) + 1]);
-        let plane: [Curve<T, FINE, 2>; 6] =
-            core::array::from_fn(|k| Curve::between(&lo.plane[k], &hi.plane[k], u, lazy));
-        let ring: [Curve<T, FINE, 3>; 3] =
-            core::array::from_fn(|k| Curve::between(&lo.ring[k], &hi.ring[k], u, lazy));
+        let p = |k: usize| Curve::between(&lo.plane[k], &hi.plane[k], u, lazy);
+        let plane: [Curve<T, FINE, 2>; 6] = [p(0), p(1), p(2), p(3), p(4), p(5)];
+        let r = |k: usize| Curve::between(&lo.ring[k], &hi.ring[k], u, lazy);
+        let ring: [Curve<T, FINE, 3>; 3] = [r(0), r(1), r(2)];
         Self {
             xi: Curve::between(&lo.xi, &hi.xi, u, lazy),
             eta: Curve::between(&lo.eta, &hi.eta, u, lazy),
             xieta: Curve::between(&lo.xieta, &hi.xieta, u, lazy),
-            plane_shared: core::array::from_fn(|k| plane[k].same_grid(&plane[k + 1])),
-            ring_shared: core::array::from_fn(|k| ring[k].same_grid(&ring[k + 1])),
+            plane_shared: [
+                plane[0].same_grid(&plane[1]),
+                plane[1].same_grid(&plane[2]),
+                plane[2].same_grid(&plane[3]),
+                plane[3].same_grid(&plane[4]),
+                plane[4].same_grid(&plane[5]),
+            ],
+            ring_shared: [ring[0].same_grid(&ring[1]), ring[1].same_grid(&ring[2])],
             plane,
             ring,
         }
