@@ -40,7 +40,7 @@
 //! - [`Table`] (default): [`Blend`] plus per-shape tables of its residual against the exact
 //!   reference over the normalised creepage and the direction of the creepages (12 creep curves
 //!   per shape, η and φ of both signs, the knee of the spin force refined), the limits kept:
-//!   exact at both limits, passive, fixed cost (895 M4F f32 instructions); on held-out points
+//!   exact at both limits, passive, fixed cost (919 M4F f32 instructions); on held-out points
 //!   of the creep curves 0.026 fN / 0.012 fNc from the exact theory at worst (`blend` 0.495 /
 //!   0.489 on the same points), 0.061 / 0.057 at random directions.
 //! - [`Blend`]: Kalker's linear theory and the exact full slip joined channel by

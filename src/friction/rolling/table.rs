@@ -106,7 +106,8 @@
 //!
 //! `blend`'s call plus a square root, two divisions, one `ln` and 1 to 4 curve look-ups (1 to 3
 //! channels each). M4F, f32, the dimensional call (firmware stage `rolling`, 64 creep states on
-//! a spiral of directions): 895 instructions on average (638 … 1,025; `blend` 428; f64: 38,342;
+//! a spiral of directions): 919 instructions on average (647 … 1,055; `blend` 428; f64: 38,622;
+//! 895 before a curve could be built per call without its grid;
 //! before the direction curves 759; 787 while each contact held its own mixed copy of the
 //! nodes); two neighbouring curves on the same magnitudes share one node search. Per contact
 //! 12 curves of a few numbers each and references to the two fitted shapes' nodes in flash,
