@@ -75,14 +75,22 @@ impl<T: Real, const N: usize, const C: usize> Curve<T, N, C> {
         c
     }
 
-    /// ln m₀ and Δ(ln m), linear in `u` between the two shapes' (rounded to `T`).
+    /// ln m₀ and Δ(ln m), linear in `u` between the two shapes' (rounded to `T`: in `f32`
+    /// the data's own `f32` copies, the same values without a run-time conversion).
     #[inline(always)]
     fn grid(&self) -> (T, T) {
         let lerp = |p: T, q: T| p + self.u * (q - p);
-        (
-            lerp(T::from_f64(self.lo.0), T::from_f64(self.hi.0)),
-            lerp(T::from_f64(self.lo.1), T::from_f64(self.hi.1)),
-        )
+        if T::MANTISSA_DIGITS > 24 {
+            (
+                lerp(T::from_f64(self.lo.0), T::from_f64(self.hi.0)),
+                lerp(T::from_f64(self.lo.1), T::from_f64(self.hi.1)),
+            )
+        } else {
+            (
+                lerp(T::from_f32(self.lo.3), T::from_f32(self.hi.3)),
+                lerp(T::from_f32(self.lo.4), T::from_f32(self.hi.4)),
+            )
+        }
     }
 
     /// m₀⁻¹ = e^{−x₀}.
@@ -343,5 +351,34 @@ impl<T: Real> Tables<T> {
             plane,
             ring,
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::DATA;
+
+    /// The data's `f32` copies of ln m₀ and Δ(ln m) are the `f64` values rounded to `f32`, so
+    /// an `f32` look-up reads the same grid either way.
+    #[test]
+    fn f32_copies_are_the_rounded_values() {
+        let mut n = 0;
+        let mut check = |x0: f64, dx: f64, x0_32: f32, dx_32: f32| {
+            assert_eq!((x0 as f32).to_bits(), x0_32.to_bits(), "x0 {x0}");
+            assert_eq!((dx as f32).to_bits(), dx_32.to_bits(), "dx {dx}");
+            n += 1;
+        };
+        for s in DATA.iter() {
+            check(s.xi.0, s.xi.1, s.xi.3, s.xi.4);
+            check(s.eta.0, s.eta.1, s.eta.3, s.eta.4);
+            check(s.xieta.0, s.xieta.1, s.xieta.3, s.xieta.4);
+            for c in &s.plane {
+                check(c.0, c.1, c.3, c.4);
+            }
+            for c in &s.ring {
+                check(c.0, c.1, c.3, c.4);
+            }
+        }
+        assert_eq!(n, 5 * 12);
     }
 }
