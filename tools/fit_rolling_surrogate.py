@@ -215,6 +215,19 @@ def mlp_apply(theta, x, h):
     return a2 @ w3 + b3, (a1, a2)
 
 
+def mlp_grad(theta, x, h, gy, hidden, lam):
+    """The gradient of a loss over the parameters from its gradient gy over the outputs (backprop through
+    mlp_apply's two tanh layers), plus the weight decay 2·lam·theta."""
+    w1, b1, w2, b2, w3, b3 = mlp_unpack(theta, x.shape[1], h)
+    a1, a2 = hidden
+    gw3, gb3 = a2.T @ gy, gy.sum(0)
+    g2 = (gy @ w3.T) * (1 - a2 * a2)
+    gw2, gb2 = a1.T @ g2, g2.sum(0)
+    g1 = (g2 @ w2.T) * (1 - a1 * a1)
+    gw1, gb1 = x.T @ g1, g1.sum(0)
+    return np.concatenate([g.ravel() for g in (gw1, gb1, gw2, gb2, gw3, gb3)]) + 2 * lam * theta
+
+
 def mlp_fit(x, fac, res, h, lam, seed=1, iters=3000):
     """Least squares of fac·MLP(x) against res (tanh, two hidden layers of h), L-BFGS, weight decay lam."""
     from scipy.optimize import minimize
@@ -229,18 +242,11 @@ def mlp_fit(x, fac, res, h, lam, seed=1, iters=3000):
     n = len(x)
 
     def f(theta):
-        w1, b1, w2, b2, w3, b3 = mlp_unpack(theta, nin, h)
         y, (a1, a2) = mlp_apply(theta, x, h)
         r = fac[:, None] * y - res
         loss = (r * r).sum() / n + lam * (theta * theta).sum()
         gy = 2 * fac[:, None] * r / n
-        gw3, gb3 = a2.T @ gy, gy.sum(0)
-        g2 = (gy @ w3.T) * (1 - a2 * a2)
-        gw2, gb2 = a1.T @ g2, g2.sum(0)
-        g1 = (g2 @ w2.T) * (1 - a1 * a1)
-        gw1, gb1 = x.T @ g1, g1.sum(0)
-        grad = np.concatenate([g.ravel() for g in (gw1, gb1, gw2, gb2, gw3, gb3)]) + 2 * lam * theta
-        return loss, grad
+        return loss, mlp_grad(theta, x, h, gy, (a1, a2), lam)
 
     return minimize(f, theta0, jac=True, method="L-BFGS-B", options=dict(maxiter=iters)).x
 
