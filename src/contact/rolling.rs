@@ -88,8 +88,8 @@
 //! reads; 5,025 while every curve's grid and tails were built per call: 24 `exp`); varying
 //! contact 2,610 (5,301). Host (x86-64, criterion, per call, before the curves read their
 //! nodes from flash and before the per-call curves): 377 ns, 1.26 µs, 1.55 µs
-//! (`RollingContact` 338 ns in the same run). Per contact: two [`RollingShape`]s (520 bytes each in `f32`)
-//! and a [`ShapePath`] (fixed), a [`ShapePath`] (varying).
+//! (`RollingContact` 338 ns in the same run). Per contact: two [`RollingShape`]s (520 bytes
+//! each in `f32`) and a [`ShapePath`] (fixed), a [`ShapePath`] (varying).
 //!
 //! # References
 //!

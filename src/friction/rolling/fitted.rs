@@ -13,37 +13,30 @@ pub(super) const SIGMA: [f64; 5] = [6.965, 4.392, 3.517, 2.626, 2.18];
 /// `blend`'s γ at the fitted shapes (`Blend::GAMMA`).
 pub(super) const GAMMA: [f64; 5] = [98.74, 0.3724, 0.0001841, 5.05e-5, 0.1578];
 
-/// A table of constants in both precisions (the `f32` one rounded at compile time), read at a
-/// run-time index without a per-call `f64` → `f32` conversion (a library call on the
-/// Cortex-M4F); the same values as `T::from_f64` of the `f64` one, bit for bit.
-struct Both([f64; 5], [f32; 5]);
-
-impl Both {
-    const fn of(v: [f64; 5]) -> Self {
-        Self(
-            v,
-            [
-                v[0] as f32,
-                v[1] as f32,
-                v[2] as f32,
-                v[3] as f32,
-                v[4] as f32,
-            ],
-        )
-    }
-
-    #[inline(always)]
-    fn at<T: Real>(&self, k: usize) -> T {
-        if T::MANTISSA_DIGITS > 24 {
-            T::from_f64(self.0.get(k).copied().unwrap_or(0.0))
-        } else {
-            T::from_f32(self.1.get(k).copied().unwrap_or(0.0))
-        }
-    }
+/// A table over the fitted shapes rounded to `f32` at compile time: with its `f64` original,
+/// read through [`Real::of_precision`] ([`at`]), an `f32` look-up at a run-time index needs no
+/// per-call `f64` → `f32` conversion (a library call on the Cortex-M4F) and reads the same
+/// values as `T::from_f64`, bit for bit.
+const fn single(v: [f64; 5]) -> [[f32; 5]; 1] {
+    [[
+        v[0] as f32,
+        v[1] as f32,
+        v[2] as f32,
+        v[3] as f32,
+        v[4] as f32,
+    ]]
 }
 
-const SIGMA_BOTH: Both = Both::of(SIGMA);
-const GAMMA_BOTH: Both = Both::of(GAMMA);
+/// Entry `k` of a table over the fitted shapes in the working precision (`single`: its
+/// [`single`] copy).
+#[inline(always)]
+fn at<T: Real>(single: &[[f32; 5]; 1], double: &[f64; 5], k: usize) -> T {
+    let [v] = T::of_precision(single, core::array::from_ref(double));
+    T::from_base(v.get(k).copied().unwrap_or(<T::Base as Real>::ZERO))
+}
+
+const SIGMA_F32: [[f32; 5]; 1] = single(SIGMA);
+const GAMMA_F32: [[f32; 5]; 1] = single(GAMMA);
 
 /// `blend`'s (σ, γ) for a/b: piecewise linear in ln(a/b) between the fitted shapes, the end
 /// values outside [0.2, 5] (built once per contact, f64): `Blend::shape`.
@@ -62,18 +55,19 @@ pub(super) fn blend_at<T: Real>(a_over_b: T) -> (T, T) {
 }
 
 /// ln of the fitted shapes of `blend` and `table` (a/b = 0.2, 0.5, 1, 2, 5).
-const LN_FITTED: Both = Both::of([
+const LN_FITTED: [f64; 5] = [
     -1.609_437_912_434_100_3,
     -core::f64::consts::LN_2,
     0.0,
     core::f64::consts::LN_2,
     1.609_437_912_434_100_3,
-]);
+];
+const LN_FITTED_F32: [[f32; 5]; 1] = single(LN_FITTED);
 
 /// Where x = ln(a/b) falls among the fitted shapes: the interval i (0 … 3) and the fraction
 /// u ∈ [0, 1] (the end shapes outside), in the working precision.
 pub(crate) fn between<T: Real>(x: T) -> (usize, T) {
-    let node = |k: usize| LN_FITTED.at::<T>(k);
+    let node = |k: usize| at::<T>(&LN_FITTED_F32, &LN_FITTED, k);
     let x = x.max(node(0)).min(node(4));
     let mut i = 0;
     while i < 3 && x > node(i + 1) {
@@ -90,6 +84,8 @@ pub(crate) fn between<T: Real>(x: T) -> (usize, T) {
 /// [`blend_at`] at x = ln(a/b) in the working precision.
 pub(super) fn blend_at_ln<T: Real>(x: T) -> (T, T) {
     let (i, u) = between(x);
-    let lerp = |v: &Both| v.at::<T>(i) + u * (v.at::<T>(i + 1) - v.at::<T>(i));
-    (lerp(&SIGMA_BOTH), lerp(&GAMMA_BOTH))
+    let lerp = |s: &[[f32; 5]; 1], d: &[f64; 5]| {
+        at::<T>(s, d, i) + u * (at::<T>(s, d, i + 1) - at::<T>(s, d, i))
+    };
+    (lerp(&SIGMA_F32, &SIGMA), lerp(&GAMMA_F32, &GAMMA))
 }

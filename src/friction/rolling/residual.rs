@@ -137,8 +137,15 @@ impl<T: Real, const N: usize, const C: usize> Curve<T, N, C> {
             )
         } else {
             let (x0, dx) = self.grid();
-            let tails = (|| Self::tail_below(x0), || Self::tail_above(x0, dx));
-            Self::locate(x0, T::ONE / dx, lnm, m, inv_m, tails.0, tails.1)
+            Self::locate(
+                x0,
+                T::ONE / dx,
+                lnm,
+                m,
+                inv_m,
+                || Self::tail_below(x0),
+                || Self::tail_above(x0, dx),
+            )
         }
     }
 
@@ -329,17 +336,17 @@ impl<T: Real> Tables<T> {
     }
 
     #[inline(always)]
-    fn build(x: T, lazy: bool) -> Self {
+    fn build(x: T, once: bool) -> Self {
         let (i, u) = super::fitted::between(x);
         let (lo, hi) = (&DATA[i.min(3)], &DATA[i.min(3) + 1]);
-        let p = |k: usize| Curve::between(&lo.plane[k], &hi.plane[k], u, lazy);
+        let p = |k: usize| Curve::between(&lo.plane[k], &hi.plane[k], u, once);
         let plane: [Curve<T, FINE, 2>; 6] = [p(0), p(1), p(2), p(3), p(4), p(5)];
-        let r = |k: usize| Curve::between(&lo.ring[k], &hi.ring[k], u, lazy);
+        let r = |k: usize| Curve::between(&lo.ring[k], &hi.ring[k], u, once);
         let ring: [Curve<T, FINE, 3>; 3] = [r(0), r(1), r(2)];
         Self {
-            xi: Curve::between(&lo.xi, &hi.xi, u, lazy),
-            eta: Curve::between(&lo.eta, &hi.eta, u, lazy),
-            xieta: Curve::between(&lo.xieta, &hi.xieta, u, lazy),
+            xi: Curve::between(&lo.xi, &hi.xi, u, once),
+            eta: Curve::between(&lo.eta, &hi.eta, u, once),
+            xieta: Curve::between(&lo.xieta, &hi.xieta, u, once),
             plane_shared: [
                 plane[0].same_grid(&plane[1]),
                 plane[1].same_grid(&plane[2]),
