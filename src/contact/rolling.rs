@@ -83,10 +83,10 @@
 //!
 //! Cortex-M4F, `f32`, `table`, 64 creep states (`bench-results/qemu.csv`, stage `rolling`):
 //! fixed contact, V along an axis **1,061** instructions (`RollingContact::wrench` alone: 919);
-//! V skewed 2,235 (the creep shape per call from [`ShapePath`]: Kalker's coefficients, and
+//! V skewed 2,233 (the creep shape per call from [`ShapePath`]: Kalker's coefficients, and
 //! `table`'s curves built per call with no grid stored, each look-up computing the one it
 //! reads; 5,025 while every curve's grid and tails were built per call: 24 `exp`); varying
-//! contact 2,610 (5,301). Host (x86-64, criterion, per call, before the curves read their
+//! contact 2,608 (5,301). Host (x86-64, criterion, per call, before the curves read their
 //! nodes from flash and before the per-call curves): 377 ns, 1.26 µs, 1.55 µs
 //! (`RollingContact` 338 ns in the same run). Per contact: two [`RollingShape`]s (520 bytes
 //! each in `f32`) and a [`ShapePath`] (fixed), a [`ShapePath`] (varying).

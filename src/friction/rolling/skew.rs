@@ -91,7 +91,7 @@ const KINKS: [f64; 5] = [
 /// (and one for the shape's √(a/b)); `table`'s curves are built with no grid
 /// ([`super::table::Tables::at_ln_once`]: the look-ups compute the grids they read, at most
 /// four per call, with an `exp` only in a tail). M4F f32 (`bench-results/qemu.csv`): the
-/// per-step wrench with a skewed V 2,235 instructions against 1,061 along an axis. Per contact
+/// per-step wrench with a skewed V 2,233 instructions against 1,061 along an axis. Per contact
 /// 33 × 5 numbers.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ShapePath<T> {
