@@ -3,7 +3,9 @@
 //! example `linear_table -- check`: 12 aligned patches, a/b log-uniform over [1/20, 20], and 28
 //! patches rolled at random angles, r log-uniform over [1, 20], ν uniform over [0, ½]; none of
 //! them a node of the tables), and its structure: the axes, the mirror image, totality.
-use contensou::friction::rolling::{CreepMatrix, Kalker, creep_matrix};
+use contensou::friction::rolling::{
+    CreepMatrix, Kalker, SkewGrid, SkewRow, aligned_ellipse, creep_matrix,
+};
 
 #[path = "common/rng.rs"]
 mod rng;
@@ -187,4 +189,65 @@ fn coefficients_at_the_ends() {
     // Table E3's interpolation 16 % above at 0.1
     let c = creep_matrix::aligned(0.1, 0.3).c33;
     assert!(Kalker::<f64>::new(0.1, 0.3).c33 / c > 1.10, "{c}");
+}
+
+/// The per-call skew ratios ([`SkewRow`]: a fixed contact, 17 nodes in t, linear between
+/// them; [`SkewGrid`]: a varying one, the table's 7 × 9 nodes, bilinear) against the exact
+/// reference's held-out matrices, with the bounds of `held_out_matrices` (the table's own,
+/// cubic Hermite in both: [`CreepMatrix::new`]). Measured worst (row / grid): printed; the
+/// grid's bilinear interpolation in (ln r, t) costs accuracy near the major axis of long
+/// patches at large ν (K₃₃).
+#[test]
+fn skew_ratios_per_call_against_the_reference() {
+    let rows = check_rows();
+    let (mut row_worst, mut grid_worst) = ([0.0f64; 6], [0.0f64; 6]);
+    let mut fails = Vec::new();
+    for (r0, th, nu, want, _) in &rows {
+        let (r, psi) = if *r0 >= 1.0 {
+            (*r0, *th)
+        } else {
+            (1.0 / r0, th + std::f64::consts::FRAC_PI_2)
+        };
+        let (a, b) = (r.sqrt(), 1.0 / r.sqrt());
+        let (cx, sx) = (psi.cos(), -psi.sin());
+        let (ar, br) = aligned_ellipse(a, b, cx, sx);
+        let ln_q = (ar / br).ln();
+        let kalker = creep_matrix::aligned(ar / br, *nu);
+        let bound = if r <= 6.5 { BOUND } else { BOUND_LONG };
+        for (name, ratios, worst, slack) in [
+            ("row", SkewRow::new(r, *nu).at(ln_q), &mut row_worst, 1.0),
+            (
+                "grid",
+                SkewGrid::new(*nu).at(r.ln(), ln_q),
+                &mut grid_worst,
+                GRID_SLACK,
+            ),
+        ] {
+            let d = deviations(&skewed_matrix(&kalker, ratios, cx, sx), want);
+            for i in 0..6 {
+                worst[i] = worst[i].max(d[i].abs());
+                if d[i].abs() > slack * bound[i] {
+                    fails.push(format!(
+                        "{name}: a/b {r0} θ {th} ν {nu}: {} {:+.4}",
+                        NAMES[i], d[i]
+                    ));
+                }
+            }
+        }
+    }
+    println!("skew ratios per call, worst per entry: row {row_worst:.4?}, grid {grid_worst:.4?}");
+    assert!(fails.is_empty(), "{fails:#?}");
+}
+
+/// How much looser than the table's Hermite the grid's bilinear interpolation may be.
+const GRID_SLACK: f64 = 2.0;
+
+/// K from the aligned coefficients and the six ratios (the library's `skewed`, restated).
+fn skewed_matrix(k: &Kalker<f64>, ratios: [f64; 6], cx: f64, sx: f64) -> [[f64; 3]; 3] {
+    let [r11, r22, r33, r23, q12, q13] = ratios;
+    let s = -cx * sx;
+    let (k11, k22, k33, k23) = (r11 * k.c11, r22 * k.c22, r33 * k.c33, r23 * k.c23);
+    let k12 = s * q12 * (k.c11 * k.c22).sqrt();
+    let k13 = s * q13 * (k.c11 * k.c33).sqrt();
+    [[k11, k12, k13], [k12, k22, k23], [-k13, -k23, k33]]
 }

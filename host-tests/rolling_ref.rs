@@ -281,9 +281,13 @@ fn table_against_the_exact_reference_fit_and_held_out() {
             println!("table {name:>10} {k:>13}: |dF| {f:.4} fN, |dMz| {m:.4} fNc");
         }
     }
-    // on its nodes the table is the reference (the residuals held in f32)
+    // on its nodes the table is the reference up to where the exact coefficients put them: the
+    // reference's curves were laid out with Table E3's (on the grid and on the direction nodes,
+    // to 1e-5 with those), the law reads them with the exact theory's, which moves the
+    // combined curves' points off their direction (u, v) and the ½-direction curves off φ's
+    // magnitude grid by ≤ 0.1 of an interval: measured 0.0017 fN / 0.0021 fNc (u = 3½)
     assert!(
-        fit["all"].0 <= 1e-5 && fit["all"].1 <= 1e-5,
+        fit["all"].0 <= 2.5e-3 && fit["all"].1 <= 2.5e-3,
         "{:?}",
         fit["all"]
     );
@@ -332,10 +336,10 @@ fn full_slip_family_is_the_full_slip_law() {
 
 #[test]
 fn linear_family_is_kalker() {
-    // force coefficients: Table E3 (the reference's own check is ≤ 2 %); C₃₃ is quoted from
-    // this family (4 digits), so M_z from φ must agree to that rounding
+    // the laws' coefficients are the exact theory's (creep_matrix::aligned, from the
+    // reference's linear tables), so every channel agrees with this family to their grid error
     let rows = reference();
-    let mut worst_f: f64 = 0.0;
+    let (mut worst_f, mut worst_m): (f64, f64) = (0.0, 0.0);
     for r in rows.iter().filter(|r| r.family == "linear") {
         let g = eval::<Linear>(r);
         for q in 0..3 {
@@ -351,14 +355,8 @@ fn linear_family_is_kalker() {
                     r.phi_c,
                     100.0 * rel
                 );
-                let spin_moment = q == 2 && r.phi_c != 0.0;
-                if spin_moment {
-                    assert!(
-                        rel.abs() < 2e-4,
-                        "C33 at a/b {} nu {}: {rel:e}",
-                        r.a_over_b,
-                        r.nu
-                    );
+                if q == 2 && r.phi_c != 0.0 {
+                    worst_m = worst_m.max(rel.abs());
                 } else {
                     worst_f = worst_f.max(rel.abs());
                 }
@@ -366,9 +364,15 @@ fn linear_family_is_kalker() {
         }
     }
     println!(
-        "linear family: worst relative error of Kalker's table vs the reference {worst_f:.3e}"
+        "linear family: worst relative error of the exact coefficients vs the reference: \
+         forces {worst_f:.3e}, spin moment {worst_m:.3e}"
     );
-    assert!(worst_f <= 0.03, "{worst_f}");
+    // the laws' coefficients are the exact reference's linear tables (creep_matrix::aligned,
+    // grid-extrapolated), this family the start of its creep curves (one grid): measured
+    // 1.4e-3 on the forces, 1.3e-2 on C₃₃ (a/b = 5, ν = ½; C₃₃ is a small difference there and
+    // the reference's own estimate for it beyond a/b ≈ 2.5 is ≈ 1 %, creep_matrix's docs)
+    assert!(worst_f <= 3e-3, "{worst_f}");
+    assert!(worst_m <= 0.02, "{worst_m}");
 }
 
 /// CONTACT's published cases as solved by the reference (`contact_example`: examples/fastsim.inp,
@@ -385,12 +389,13 @@ fn laws_on_contacts_published_cases() {
         "CONTACT cases: table {:.3} fN {:.3} fNc; blend {:.3} fN {:.3} fNc; fastsim {:.3} fN {:.3} fNc",
         t.0, t.1, b.0, b.1, f.0, f.1
     );
-    // measured: table 0.108 / 0.133 (ν = 0.28, own load ratios; 0.186 / 0.178 before the
-    // direction curves): better than blend on both
-    assert!(t.0 <= 0.115 && t.1 <= 0.14, "{t:?}");
+    // measured: table 0.107 / 0.054 (ν = 0.28, own load ratios; 0.108 / 0.133 with Table E3's
+    // coefficients, 0.186 / 0.178 before the direction curves): better than blend on both
+    assert!(t.0 <= 0.115 && t.1 <= 0.06, "{t:?}");
     assert!(t.0 < b.0 && t.1 < b.1, "{t:?} {b:?}");
-    // measured: blend 0.170 / 0.211, fastsim (32 × 32) 0.090 / 0.071
-    assert!(b.0 <= 0.18 && b.1 <= 0.22, "{b:?}");
+    // measured: blend 0.169 / 0.244 (0.170 / 0.211 before the spin entered its translational
+    // saturation), fastsim (32 × 32) 0.090 / 0.070
+    assert!(b.0 <= 0.18 && b.1 <= 0.25, "{b:?}");
     assert!(f.0 <= 0.1 && f.1 <= 0.08, "{f:?}");
     // the fastsim.inp example: FASTSIM's M_z (the issue's anchor: elliptic bound −6 % on a fine
     // grid); here −7.2 %, F_y −3.8 %

@@ -10,8 +10,8 @@ use contensou::dynamic::{
     DynContact, Form, Law, RollingSpec, RollingStep, RollingSteps, Spec, Step,
 };
 use contensou::friction::rolling::{
-    Blend, Elasticity, Fastsim, FastsimGrid, Kalker, Patch, RollingContact, RollingLaw,
-    RollingSlip, RollingVelocity, ShapePath, Table,
+    Blend, Elasticity, Fastsim, FastsimGrid, Patch, RollingContact, RollingLaw, RollingSlip,
+    RollingVelocity, ShapePath, Table, creep_matrix,
 };
 use contensou::friction::{Best, Friction, Slip};
 use contensou::geometry::Curvatures;
@@ -642,13 +642,16 @@ fn f32_agrees_with_f64() {
     assert!(worst < 2e-4, "{worst:e}");
 }
 
-/// A skewed rolling direction: the creep shape from the contact's `ShapePath` (working
-/// precision, per call) against the aligned ellipse's shape built in `f64` per call
-/// (`wrench_aligned`), over creep states from 1e-6 of V to full slip: within 2e-3 fN / fNc
-/// (measured 9.2e-4 at P/Q = 0.0025, 2.0e-5 at P/Q = 0.25; f32 alike); and the varying
-/// contact's path (a/b ∈ [0.01, 100]): Kalker's coefficients within 4e-3 relative of
-/// `Kalker::new` (measured 3.7e-3 near a/b = 1.1, where Table E3's rows are densest in
-/// ln(a/b); 5.8e-4 outside [0.1, 10]).
+/// A skewed rolling direction: the creep shape from the contact's `ShapePath` and `SkewRow`
+/// (working precision, per call; the skew ratios linear in t between 17 nodes) against the
+/// shape built in `f64` per call from the creep matrix (`wrench_aligned`: the skew table's
+/// cubic Hermite), over creep states from 1e-6 of V to full slip: within 6e-3 fN / fNc
+/// (measured 2.1e-3 fN / 5.1e-3 fNc at P/Q = 0.025, 4.4e-4 / 3.6e-4 at P/Q = 0.25; f32 alike;
+/// within 0.04 at P/Q = 0.0025, 0.024 / 0.031 measured, see below:
+/// the two interpolations of the skew table, whose own error against the exact theory is up
+/// to 4.7 % on K₃₃, `host-tests/rolling_linear.rs`); and the varying contact's path
+/// (a/b ∈ [0.01, 100]): the exact coefficients within 4e-3 relative of
+/// `creep_matrix::aligned` (printed).
 #[test]
 fn shape_path_against_the_f64_shape() {
     fn worst<T: Real, L: RollingLaw>(p: f64, q: f64, seed: u64) -> (f64, f64) {
@@ -684,17 +687,21 @@ fn shape_path_against_the_f64_shape() {
             "P/Q = {}: table {t:?}, blend {b:?}, table f32 {t32:?}",
             p / q
         );
+        // the long patch (P/Q = 0.0025, a/b ≈ 40): near its major axis the skew table's ρ₃₃
+        // rises from 1 to 32 within its first t-interval (r = 20), resolved by neither
+        // interpolation: up to 0.031 fNc apart there
+        let tol = if p / q < 0.01 { 0.04 } else { 6e-3 };
         assert!(
-            t.0 < 1e-3 && t.1 < 1e-3 && b.0 < 1e-3 && b.1 < 1e-3,
+            t.0 < tol && t.1 < tol && b.0 < tol && b.1 < tol,
             "{t:?} {b:?}"
         );
-        assert!(t32.0 < 2e-3 && t32.1 < 2e-3, "{t32:?}");
+        assert!(t32.0 < tol && t32.1 < tol, "{t32:?}");
     }
     let path = ShapePath::new(-100f64.ln(), 100f64.ln(), NU);
     let (mut inner, mut outer) = (0.0f64, 0.0f64);
     for i in 0..=2000 {
         let r = (-99f64.ln() + 2.0 * 99f64.ln() * i as f64 / 2000.0).exp();
-        let (k, want) = (*path.shape(r).kalker(), Kalker::new(r, NU));
+        let (k, want) = (*path.shape(r).kalker(), creep_matrix::aligned(r, NU));
         for (g, w) in [
             (k.c11, want.c11),
             (k.c22, want.c22),
@@ -710,5 +717,7 @@ fn shape_path_against_the_f64_shape() {
         }
     }
     eprintln!("ShapePath Kalker coefficients: a/b in [0.1, 10] {inner:e}, beyond {outer:e}");
-    assert!(inner < 4e-3 && outer < 1e-3, "{inner:e} {outer:e}");
+    // measured 3.1e-3 inside, 4.4e-3 beyond (33 nodes over ln 10⁴, Hermite of the exact
+    // table's own Hermite)
+    assert!(inner < 4e-3 && outer < 5e-3, "{inner:e} {outer:e}");
 }

@@ -162,7 +162,10 @@ def node_rows(use_knee):
                 out[key][round(g)] = (r, bw)
     for r, bw in on_curves(blended["plane"]):
         g = fine(position(r), True)
-        assert abs(g - round(g)) < 1e-6, (r, g)
+        # on φ's grid: exactly with Table E3's coefficients (how the curves were laid out),
+        # within 0.1 of an interval with the exact ones the laws now read (the ratio C₂₂/C₂₃
+        # moved); the node takes the point's residual
+        assert abs(g - round(g)) < 0.1, (r, g)
         out.setdefault((r[1], curve_name(r)), {})[round(g)] = (r, bw)
     return out
 

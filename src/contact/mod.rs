@@ -41,7 +41,7 @@
 //! ```
 
 pub mod rolling;
-pub use rolling::{FixedShapes, Rolling, RollingBase};
+pub use rolling::{FixedShapes, Rolling, RollingBase, VaryingShapes};
 
 use crate::friction::law::{PerCall, PerContact};
 use crate::friction::{Best, Constants, Explicit, Friction, FrictionLaw, Slip, Tangential};

@@ -100,8 +100,8 @@ use core::marker::PhantomData;
 
 use super::{Contact, VaryingContact, Wrench};
 use crate::friction::rolling::{
-    Creep, Elasticity, Input, RollingLaw, RollingShape, RollingSlip, RollingVelocity, ShapePath,
-    aligned_ellipse,
+    Creep, CreepMatrix, Elasticity, Input, RollingLaw, RollingShape, RollingSlip, RollingVelocity,
+    ShapePath, SkewGrid, SkewRow, aligned_ellipse, skew_linear::skewed,
 };
 use crate::friction::{Best, Constants, Explicit, FrictionLaw, Slip, SlipState};
 use crate::geometry::Curvatures;
@@ -119,11 +119,20 @@ pub trait RollingBase<T: Real> {
 }
 
 /// A fixed contact's creep shapes: rolling along x (a/b) and along y (b/a), and the path
-/// between them for a skewed rolling velocity.
+/// between them for a skewed rolling velocity with the patch's skew ratios ([`SkewRow`]).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct FixedShapes<T> {
     pub(crate) axes: [RollingShape<T>; 2],
     pub(crate) path: ShapePath<T>,
+    pub(crate) skew: SkewRow<T>,
+}
+
+/// A varying contact's creep shapes: the path over every aligned ratio and the skew ratios of
+/// every patch ratio ([`SkewGrid`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct VaryingShapes<T> {
+    pub(crate) path: ShapePath<T>,
+    pub(crate) skew: SkewGrid<T>,
 }
 
 impl<T: Real, N, D> RollingBase<T> for Contact<T, N, D, Best> {
@@ -140,22 +149,28 @@ impl<T: Real, N, D> RollingBase<T> for Contact<T, N, D, Best> {
         } else {
             RollingShape::new(T::ONE / r, elasticity.nu())
         };
+        // the library frame: x the major axis (a ≥ b)
+        let major = if r >= T::ONE { r } else { T::ONE / r };
         FixedShapes {
             axes: [along_x, along_y],
             path: ShapePath::new(-r.ln(), r.ln(), elasticity.nu()),
+            skew: SkewRow::new(major, elasticity.nu()),
         }
     }
 }
 
 impl<T: Real, D> RollingBase<T> for VaryingContact<T, D, Best> {
-    type Cache = ShapePath<T>;
-    /// The path over every aligned ratio ([`ShapePath`]).
+    type Cache = VaryingShapes<T>;
+    /// The path over every aligned ratio ([`ShapePath`]) and the skew ratios ([`SkewGrid`]).
     fn cache(&self, elasticity: &Elasticity<T>) -> Self::Cache {
-        ShapePath::new(
-            T::from_f64(-libm::log(100.0)),
-            T::from_f64(libm::log(100.0)),
-            elasticity.nu(),
-        )
+        VaryingShapes {
+            path: ShapePath::new(
+                T::from_f64(-libm::log(100.0)),
+                T::from_f64(libm::log(100.0)),
+                elasticity.nu(),
+            ),
+            skew: SkewGrid::new(elasticity.nu()),
+        }
     }
 }
 
@@ -243,10 +258,20 @@ pub(crate) fn direction<T: Real>(v: RollingVelocity<T>) -> (T, T, T) {
 pub(crate) enum Shapes<'a, T> {
     /// Cached and exact (rolling along an axis, or a circle).
     One(&'a RollingShape<T>),
-    /// The aligned ellipse's shape from the contact's path ([`ShapePath::shape`]), per call.
-    Path(&'a ShapePath<T>),
+    /// The aligned ellipse's shape from the contact's path ([`ShapePath::shape`]) turned into
+    /// the patch's by its skew ratios ([`crate::friction::rolling::skew_linear`]), per call.
+    Path(&'a ShapePath<T>, Skew<'a, T>),
     /// The aligned ellipse's own shape, built per call in `f64` ([`RollingShape::new`]).
     Build,
+}
+
+/// A contact's skew ratios: one patch ratio (fixed) or all (varying).
+#[derive(Clone, Copy)]
+pub(crate) enum Skew<'a, T> {
+    /// A fixed contact's ([`SkewRow`]).
+    Row(&'a SkewRow<T>),
+    /// A varying contact's ([`SkewGrid`]).
+    Grid(&'a SkewGrid<T>),
 }
 
 /// What one step needs besides the creep shape: the patch, f, E*-free parts.
@@ -283,7 +308,14 @@ impl<T: Real, N: NormalLaw<T>, D: Damping<T>, L: RollingLaw> Rolling<T, Contact<
     /// builds it in `f64` instead).
     #[inline]
     pub fn wrench(&self, h: T, hdot: T, slip: Slip<T>, v: RollingVelocity<T>) -> Wrench<T, ()> {
-        self.fixed(h, hdot, slip, v, Shapes::Path(&self.cache.path))
+        let cache = &self.cache;
+        self.fixed(
+            h,
+            hdot,
+            slip,
+            v,
+            Shapes::Path(&cache.path, Skew::Row(&cache.skew)),
+        )
     }
 
     /// [`Rolling::wrench`] with the aligned ellipse's creep shape built per call in `f64`
@@ -350,7 +382,7 @@ impl<T: Real, D: Damping<T>, L: RollingLaw> Rolling<T, VaryingContact<T, D, Best
         let step = Step::of(patch, friction.coefficient());
         let full_slip = |st: &SlipState<T>| Best::traction(&constants, st).0;
         let frame = direction(v);
-        let shapes = Shapes::Path(&self.cache);
+        let shapes = Shapes::Path(&self.cache.path, Skew::Grid(&self.cache.skew));
         tangential::<T, L>(&step, shapes, self.elasticity, frame, slip, full_slip)
     }
 }
@@ -427,13 +459,31 @@ pub(crate) fn tangential<T: Real, L: RollingLaw>(
     };
     let cr = match shapes {
         Shapes::One(shape) => L::creep(&input(shape)),
-        Shapes::Path(path) => {
+        Shapes::Path(path, skew) => {
             let (ar, br) = aligned_ellipse(a, b, cx, sx);
-            L::creep(&input(&path.shape(ar / br)))
+            let ln_q = (ar / br).ln();
+            let aligned = path.shape_at_ln(ln_q);
+            let ratios = match skew {
+                Skew::Row(row) => row.at(ln_q),
+                Skew::Grid(grid) => grid.at((a / b).ln(), ln_q),
+            };
+            let (kalker, coupling) = skewed(&aligned.kalker, ratios, cx, sx);
+            L::creep(&input(&RollingShape {
+                kalker,
+                coupling,
+                ..aligned
+            }))
         }
         Shapes::Build => {
             let (ar, br) = aligned_ellipse(a, b, cx, sx);
-            L::creep(&input(&RollingShape::new(ar / br, elasticity.nu())))
+            let nu = elasticity.nu();
+            let k = CreepMatrix::new(a, b, cx, sx, nu).k;
+            let [[c11, k12, k13], [_, c22, c23], [_, _, c33]] = k;
+            L::creep(&input(&RollingShape {
+                kalker: crate::friction::rolling::Kalker { c11, c22, c23, c33 },
+                coupling: (k12, k13),
+                ..RollingShape::new(ar / br, nu)
+            }))
         }
     };
     let (fx, fy) = (cr.fx * step.fn_, cr.fy * step.fn_);

@@ -9,7 +9,7 @@ use super::contact::{Inputs, pack};
 use super::lift::{LinearDamping, LinearNormal};
 use super::{At, D5, Dual, Jacobian, Linearize, State};
 use crate::Real;
-use crate::contact::rolling::{Shapes, Step, direction, tangential};
+use crate::contact::rolling::{Shapes, Skew, Step, direction, tangential};
 use crate::contact::{Contact, Rolling, VaryingContact};
 use crate::friction::rolling::RollingLaw;
 use crate::friction::{Best, Constants, FrictionLaw as _, SlipState};
@@ -42,6 +42,7 @@ where
         let [along_x, along_y] = &self.cache.axes;
         let one;
         let path;
+        let skew;
         let shapes = if sx == T::ZERO || along_x.rho == T::ONE {
             one = along_x.map(lift);
             Shapes::One(&one)
@@ -50,7 +51,8 @@ where
             Shapes::One(&one)
         } else {
             path = self.cache.path.map(lift);
-            Shapes::Path(&path)
+            skew = self.cache.skew.map(lift);
+            Shapes::Path(&path, Skew::Row(&skew))
         };
         let c = &self.contact;
         let q = Inputs::of(s);
@@ -110,11 +112,12 @@ where
         let full_slip = |st: &SlipState<D5<T>>| Best::traction(&constants, st).0;
         let (cx, sx, speed) = direction(s.rolling);
         let frame = (lift(cx), lift(sx), lift(speed));
-        let path = rolling.cache.map(lift);
+        let path = rolling.cache.path.map(lift);
+        let skew = rolling.cache.skew.map(lift);
         let elasticity = rolling.elasticity.map(lift);
         let w = tangential::<D5<T>, L>(
             &step,
-            Shapes::Path(&path),
+            Shapes::Path(&path, Skew::Grid(&skew)),
             elasticity,
             frame,
             q.slip,

@@ -73,6 +73,9 @@ impl Blend {
     pub const ORDER: u32 = 3;
     /// (α_ξ, α_η): the saturation scales of the longitudinal and lateral linear forces (fN).
     pub const ALPHA: (f64, f64) = (5.382, 2.233);
+    /// α_φ: the saturation scale of the spin in the translational saturation t (fN; chosen
+    /// on the whole-domain training rows, `tools/fit_rolling_table.py`'s docstring).
+    pub const ALPHA_SPIN: f64 = 1.0;
     /// g: the weight of the translational forces in the spin force's decay variable s.
     pub const G: f64 = 0.3931;
     /// σ at a/b = 0.2, 0.5, 1, 2, 5: the spin force's decay scale.
@@ -114,7 +117,9 @@ pub(crate) fn creep<T: Real>(i: &Input<'_, T>) -> Creep<T> {
     let qy = i.kappa * k.c22 * i.vy;
     let qp = i.kappa * k.c23 * i.w;
     let (ux, uy) = (qx * T::from_f64(1.0 / ax), qy * T::from_f64(1.0 / ay));
-    let tv = (ux * ux + uy * uy).sqrt(); // t·v
+    // the spin slips the patch too: it saturates the translational forces (q_φ/α_φ in t)
+    let up = qp * T::from_f64(1.0 / Blend::ALPHA_SPIN);
+    let tv = (ux * ux + uy * uy + up * up).sqrt(); // t·v
     // spin force weight A_s = 1/√(1 + s⁴) = v²/√(v⁴ + (sv)⁴)
     let third = T::from_f64(1.0 / 3.0);
     let (px, py, pp) = (qx * third, qy * third, qp * third);
@@ -154,11 +159,36 @@ pub(crate) fn creep<T: Real>(i: &Input<'_, T>) -> Creep<T> {
     } else {
         (T::ZERO, T::ONE) // t ≥ 1 or V = 0
     };
+    // a skewed patch's couplings (K₁₂, K₁₃), linear theory faded by 1/(1 + ρ²),
+    // ρ = |W_lin|/|W_fs|: (1/v)·v²f²/(v²f² + |n|²) with n = v·W_lin (no division by v)
+    let (k12, k13) = i.contact.coupling;
+    let (cx, cy, cm) = if k12 != T::ZERO || k13 != T::ZERO {
+        let (ex, ey, em) = (
+            i.kappa * (k12 * i.vy + k13 * i.w),
+            i.kappa * k12 * i.vx,
+            i.kappa * k13 * i.vx,
+        );
+        let (nx, ny, nm) = (
+            qx + ex,
+            qy + qp + ey,
+            i.kappa * k.c33 * i.w - i.kappa * k.c23 * i.vy - em,
+        );
+        let vf2 = v2 * (fs.fx * fs.fx + fs.fy * fs.fy + fs.mz * fs.mz);
+        let den = vf2 + (nx * nx + ny * ny + nm * nm);
+        let fade_over_v = if den > T::ZERO {
+            v * (fs.fx * fs.fx + fs.fy * fs.fy + fs.mz * fs.mz) / den
+        } else {
+            T::ZERO
+        };
+        (-fade_over_v * ex, -fade_over_v * ey, fade_over_v * em)
+    } else {
+        (T::ZERO, T::ZERO, T::ZERO)
+    };
     let w = Creep {
-        fx: -a_over_v * qx + b * fs.fx,
-        fy: -a_over_v * qy - a_s_over_v * qp + b * fs.fy,
+        fx: -a_over_v * qx + b * fs.fx + cx,
+        fy: -a_over_v * qy - a_s_over_v * qp + b * fs.fy + cy,
         // κC₂₃v_y first: (a/v)·κ alone may overflow for tiny v (then ∞·0 at v_y = 0)
-        mz: sm * fs.mz + a_over_v * (i.kappa * k.c23 * i.vy),
+        mz: sm * fs.mz + a_over_v * (i.kappa * k.c23 * i.vy) + cm,
     };
     bounded(super::contact::passive(w, i.vx, i.vy, i.w))
 }

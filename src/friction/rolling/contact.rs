@@ -110,6 +110,9 @@ pub struct RollingShape<T> {
     pub(crate) blend: (T, T),
     /// The default law's residual tables for this shape (`table::Tables`).
     pub(crate) table: super::residual::Tables<T>,
+    /// The couplings (K₁₂, K₁₃) of a patch rolled at an angle to its axes (zero along an axis;
+    /// [`super::skew_linear`]): (F_x, F_y, M_z/c)/(Gc²) gains −(K₁₂η + K₁₃cφ, K₁₂ξ, −K₁₃ξ).
+    pub(crate) coupling: (T, T),
 }
 
 impl<T: Copy> RollingShape<T> {
@@ -120,6 +123,7 @@ impl<T: Copy> RollingShape<T> {
             kalker: self.kalker.map(f),
             blend: (f(self.blend.0), f(self.blend.1)),
             table: self.table.map(f),
+            coupling: (f(self.coupling.0), f(self.coupling.1)),
         }
     }
 }
@@ -137,15 +141,22 @@ impl<T: Real> RollingShape<T> {
         };
         Self {
             rho: r.sqrt(),
-            kalker: Kalker::new(r, nu),
+            kalker: super::creep_matrix::aligned(r, nu),
             blend: super::fitted::blend_at(r),
             table: super::residual::Tables::new(r),
+            coupling: (T::ZERO, T::ZERO),
         }
     }
 
-    /// Kalker's coefficients of this shape.
+    /// Kalker's coefficients of this shape (the exact theory's, [`super::creep_matrix::aligned`];
+    /// for a skewed patch the diagonal of its creep matrix).
     pub fn kalker(&self) -> &Kalker<T> {
         &self.kalker
+    }
+
+    /// The couplings (K₁₂, K₁₃) of a patch rolled at an angle to its axes (zero along an axis).
+    pub fn coupling(&self) -> (T, T) {
+        self.coupling
     }
 }
 
@@ -311,10 +322,11 @@ impl Linear {
     pub(crate) fn numerators<T: Real>(i: &Input<'_, T>) -> Creep<T> {
         let k = &i.contact.kalker;
         let q = i.kappa;
+        let (k12, k13) = i.contact.coupling;
         Creep {
-            fx: -q * k.c11 * i.vx,
-            fy: -q * (k.c22 * i.vy + k.c23 * i.w),
-            mz: q * (k.c23 * i.vy - k.c33 * i.w),
+            fx: -q * (k.c11 * i.vx + k12 * i.vy + k13 * i.w),
+            fy: -q * (k.c22 * i.vy + k.c23 * i.w + k12 * i.vx),
+            mz: q * (k.c23 * i.vy - k.c33 * i.w + k13 * i.vx),
         }
     }
 }

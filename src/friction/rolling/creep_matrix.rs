@@ -154,6 +154,40 @@ pub fn aligned<T: Real>(a_over_b: T, nu: T) -> Kalker<T> {
     }
 }
 
+/// Nodes of the skewed table in x = ln r ((i/6)·ln 20, i < 7) and in t (j/8, j < 9).
+pub(crate) const SKEW_NODES: (usize, usize) = (7, 9);
+
+/// The skewed table's six ratios (ρ₁₁, ρ₂₂, ρ₃₃, ρ₂₃, κ₁₂, κ₁₃) at node (i, j), quadratic in
+/// ν ∈ [0, ½] (see the [module docs](self)); zero outside the table.
+pub(crate) fn skew_node_f64(i: usize, j: usize, nu: f64) -> [f64; 6] {
+    let nu = super::within(nu, 0.0, 0.5);
+    [0, 1, 2, 3, 4, 5].map(|e| {
+        let col = |col: usize| {
+            SKEWED
+                .get(i)
+                .and_then(|s| s.get(j))
+                .and_then(|s| s.get(e))
+                .and_then(|s| s.get(col))
+                .copied()
+                .unwrap_or(0.0)
+        };
+        quad_nu([col(0), col(1), col(2)], nu)
+    })
+}
+
+/// The six ratios at x = ln r ∈ [0, ln 20], t ∈ [0, 1] (clamped): cubic Hermite in t, then in
+/// x, of [`skew_node_f64`] (what [`CreepMatrix::new`] multiplies the aligned coefficients by).
+pub(crate) fn skew_ratios_f64(x: f64, t: f64, nu: f64) -> [f64; 6] {
+    let (nx, nt) = SKEW_NODES;
+    [0, 1, 2, 3, 4, 5].map(|e| {
+        let at_x = |i: usize| {
+            let node = |j: usize| skew_node_f64(i, j, nu).get(e).copied().unwrap_or(0.0);
+            hermite(nt, node, 0.0, 1.0 / 8.0, t)
+        };
+        hermite(nx, at_x, 0.0, LN20 / 6.0, x)
+    })
+}
+
 /// Kalker's linear creep matrix of a patch rolled at any angle to its axes (see the
 /// [module docs](self)): (F_x, F_y, M_z/c)/(Gc²) = −K·(ξ, η, cφ) in the rolling frame.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -186,23 +220,7 @@ impl<T: Real> CreepMatrix<T> {
         } else {
             0.0
         };
-        let (nx, nt) = (SKEWED.len(), SKEWED.first().map_or(0, |s| s.len()));
-        let entry = |e: usize| {
-            let at_x = |i: usize| {
-                let node = |j: usize, col: usize| {
-                    SKEWED
-                        .get(i)
-                        .and_then(|s| s.get(j))
-                        .and_then(|s| s.get(e))
-                        .and_then(|s| s.get(col))
-                        .copied()
-                        .unwrap_or(0.0)
-                };
-                let col = |col: usize| hermite(nt, |j| node(j, col), 0.0, 1.0 / 8.0, t);
-                quad_nu([col(0), col(1), col(2)], nu)
-            };
-            hermite(nx, at_x, 0.0, LN20 / 6.0, x)
-        };
+        let [r11, r22, r33, r23, q12, q13] = skew_ratios_f64(x, t, nu);
         // the mirror image (the major axis at −α from the rolling direction, in (90°, 180°))
         // sinθ cosθ ≥ 0 of the reduced angle θ ∈ [0°, 90°] (θ = −α, or 180° + α mirrored)
         let sc = if n2 > 0.0 {
@@ -211,12 +229,12 @@ impl<T: Real> CreepMatrix<T> {
             0.0
         };
         let sign = if cx * sx > 0.0 { -sc } else { sc };
-        let k11 = entry(0) * c11;
-        let k22 = entry(1) * c22;
-        let k33 = entry(2) * c33;
-        let k23 = entry(3) * c23;
-        let k12 = sign * entry(4) * libm::sqrt(c11 * c22);
-        let k13 = sign * entry(5) * libm::sqrt(c11 * c33);
+        let k11 = r11 * c11;
+        let k22 = r22 * c22;
+        let k33 = r33 * c33;
+        let k23 = r23 * c23;
+        let k12 = sign * q12 * libm::sqrt(c11 * c22);
+        let k13 = sign * q13 * libm::sqrt(c11 * c33);
         let f = T::from_f64;
         Self {
             k: [

@@ -49,16 +49,9 @@ pub fn aligned_ellipse<T: Real>(a_major: T, b_minor: T, cx: T, sx: T) -> (T, T) 
 /// Nodes of [`ShapePath`]'s Kalker table.
 const PATH_NODES: usize = 33;
 
-/// Where Kalker's coefficients have a kink in x = ln(a/b): 0 (the two sides of Table E3),
-/// ±ln 5 (the end rows of C₃₃'s exact values), ±ln 10 (Table E3's g = 0.1 meets the
-/// asymptotes).
-const KINKS: [f64; 5] = [
-    -core::f64::consts::LN_10,
-    -1.609_437_912_434_100_3,
-    0.0,
-    1.609_437_912_434_100_3,
-    core::f64::consts::LN_10,
-];
+/// Where the exact coefficients ([`super::creep_matrix::aligned`]) have a kink in
+/// x = ln(a/b): ±ln 20, the ends of the exact table (Kalker's asymptotic growth beyond).
+const KINKS: [f64; 2] = [-2.995_732_273_553_991, 2.995_732_273_553_991];
 
 /// The creep shape ([`RollingShape`]) of any aligned ratio a/b in a range [e^{lo}, e^{hi}], per
 /// call in the working precision, for a contact whose aligned ratio changes every call (a
@@ -174,13 +167,13 @@ impl<T: Real> ShapePath<T> {
         // ln C: Kalker's coefficients are near power laws of a/b (C₁₁, C₂₂ ∝ a/b, C₂₃ ∝
         // (a/b)^{3/2} for long patches), nearly linear in ln(a/b) in the logarithm
         let kalker = xs.map(|x| {
-            let k = Kalker::new(T::from_f64(libm::exp(x)), nu);
-            let ln = |c: T| T::from_f64(libm::log(c.to_f64()));
+            let [c11, c22, c23, c33] = super::creep_matrix::aligned_f64(libm::exp(x), nu.to_f64());
+            let ln = |c: f64| T::from_f64(libm::log(c));
             Kalker {
-                c11: ln(k.c11),
-                c22: ln(k.c22),
-                c23: ln(k.c23),
-                c33: ln(k.c33),
+                c11: ln(c11),
+                c22: ln(c22),
+                c23: ln(c23),
+                c33: ln(c33),
             }
         });
         Self {
@@ -192,14 +185,21 @@ impl<T: Real> ShapePath<T> {
 
     /// The creep shape for the aligned ratio a/b (see the type docs). Total.
     pub fn shape(&self, a_over_b: T) -> RollingShape<T> {
+        let x = if a_over_b > T::ZERO {
+            a_over_b.ln()
+        } else {
+            T::from_f64(f64::NEG_INFINITY)
+        };
+        self.shape_at_ln(x)
+    }
+
+    /// [`ShapePath::shape`] for x = ln(a/b) (clamped to the path's range; NaN: its low end).
+    /// Total.
+    pub fn shape_at_ln(&self, x: T) -> RollingShape<T> {
         let last = PATH_NODES - 1;
         let node = |j: usize| self.x.get(j).copied().unwrap_or(T::ZERO);
         let (lo, hi) = (node(0), node(last));
-        let x = if a_over_b > T::ZERO {
-            a_over_b.ln().max(lo).min(hi)
-        } else {
-            lo
-        };
+        let x = if x >= lo { x.min(hi) } else { lo };
         // bisection: node(i) ≤ x ≤ node(i + 1), 6 steps (2⁶ > 32 intervals)
         let (mut i, mut j) = (0usize, last);
         for _ in 0..6 {
@@ -258,6 +258,7 @@ impl<T: Real> ShapePath<T> {
             kalker,
             blend: super::fitted::blend_at_ln(x),
             table: super::residual::Tables::at_ln_once(x),
+            coupling: (T::ZERO, T::ZERO),
         }
     }
 }
