@@ -462,17 +462,15 @@ pub(crate) fn tangential<T: Real, L: RollingLaw>(
         Shapes::Path(path, skew) => {
             let (ar, br) = aligned_ellipse(a, b, cx, sx);
             let ln_q = (ar / br).ln();
-            let aligned = path.shape_at_ln(ln_q);
+            // the aligned ellipse's shape, its coefficients turned into the patch's in place
+            // (a new RollingShape would copy its tables)
+            let mut shape = path.shape_at_ln(ln_q);
             let ratios = match skew {
                 Skew::Row(row) => row.at(ln_q),
                 Skew::Grid(grid) => grid.at((a / b).ln(), ln_q),
             };
-            let (kalker, coupling) = skewed(&aligned.kalker, ratios, cx, sx);
-            L::creep(&input(&RollingShape {
-                kalker,
-                coupling,
-                ..aligned
-            }))
+            (shape.kalker, shape.coupling) = skewed(&shape.kalker, ratios, cx, sx);
+            L::creep(&input(&shape))
         }
         Shapes::Build => {
             let (ar, br) = aligned_ellipse(a, b, cx, sx);

@@ -164,14 +164,14 @@ impl<T: Real> SkewGrid<T> {
 /// j ≤ n − 2, f ∈ [0, 1].
 #[inline(always)]
 fn cell<T: Real>(u: T, n: usize) -> (usize, T) {
-    let last = (n - 1) as f64;
+    let last = T::from_usize(n - 1);
     let s = if u > T::ZERO {
-        (u * T::from_f64(last)).min(T::from_f64(last))
+        (u * last).min(last)
     } else {
         T::ZERO
     };
-    let j = (s.to_f64() as usize).min(n - 2);
-    (j, s - T::from_f64(j as f64))
+    let j = s.trunc_usize().min(n - 2);
+    (j, s - T::from_usize(j))
 }
 
 #[inline(always)]
