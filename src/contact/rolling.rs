@@ -20,8 +20,10 @@
 //! `L` evaluates Kalker's creepages on the **aligned ellipse**
 //! ([`crate::friction::rolling::aligned_ellipse`]): semi-axis a_r = ab/√(b²c_θ² + a²s_θ²)
 //! along V (the patch's extent in that direction), b_r = ab/a_r across (same area, same
-//! c = √(ab)), with the creep shape of a_r/b_r (Kalker's coefficients, `blend`'s constants,
-//! `table`'s residuals: [`RollingShape`]). The **full-slip part** the law saturates to is the
+//! c = √(ab)), with the creep shape of a_r/b_r (`blend`'s constants, `table`'s residuals:
+//! [`RollingShape`]) and the **patch's own linear theory**: the aligned ellipse's exact
+//! coefficients turned into the skewed patch's creep matrix, its diagonal and the couplings
+//! K₁₂, K₁₃ ([`crate::friction::rolling::skew_linear`]). The **full-slip part** the law saturates to is the
 //! contact's own `best` (δ = 0) on the **real** patch, in the direction of the slip, turned into
 //! the rolling frame. The law's (F_x, F_y) are turned back: F = (c_θF_xr − s_θF_yr,
 //! s_θF_xr + c_θF_yr); T_z = M_z.
@@ -36,16 +38,21 @@
 //!   (`RollingContact` on the patch: within 8.7e-16 fN along +x, 1.5e-7 along the other
 //!   directions, `host-tests/rolling_wrench.rs`).
 //! - **V skewed** (and every step of a varying contact): the creep shape of a_r/b_r per call
-//!   from the contact's [`ShapePath`] (within 9.2e-4 fN / fNc of the `f64` build,
-//!   [`Rolling::wrench_aligned`]). The aligned ellipse itself is the approximation (Kalker's
-//!   theory and the laws' data are for rolling along an axis): exact along both axes,
-//!   continuous in θ (3.7e-8 fN across the axes). Measured against the exact theory on the
-//!   skewed patch (`tools/data/rolling_ref_heldout.csv`, `python3 tools/rolling_heldout.py`,
+//!   from the contact's [`ShapePath`] and its skew ratios ([`crate::friction::rolling::SkewRow`]
+//!   of a fixed contact, [`crate::friction::rolling::SkewGrid`] of a varying one): the linear
+//!   limit is the patch's creep matrix (the exact reference's table, within its error:
+//!   K₃₃ 4.7 %, K₁₃ 4.3 %, the rest ≤ 2 %; the grid's bilinear K₃₃ 6.9 %); within 6e-3 fN / fNc
+//!   of the `f64` build ([`Rolling::wrench_aligned`], the table's cubic Hermite) at P/Q ≥ 0.025,
+//!   0.031 at P/Q = 0.0025 (near the major axis of a patch 40 times longer than wide, where the
+//!   skew table is not resolved). The rest of the aligned ellipse is the approximation (the
+//!   laws' nonlinear data are for rolling along an axis): exact along both axes, continuous in
+//!   θ. Measured against the exact theory on the skewed patch
+//!   (`tools/data/rolling_ref_heldout.csv`, `python3 tools/rolling_heldout.py`,
 //!   `bench-results/rolling-heldout.md`): with `table`, 330 random skewed states, worst
-//!   0.194 fN / 0.196 fNc for patches with b/a ≥ 0.2 and 0.433 / 0.952 for b/a < 0.2 (FASTSIM
-//!   32 × 32 through the same rule: 0.242 / 0.235 and 0.340 / 1.233) — the rule, not the law,
-//!   dominates there: the exact skewed patch couples ξ into F_y and M_z. The full slip stays
-//!   exact (the real patch's).
+//!   0.107 fN / 0.097 fNc for patches with b/a ≥ 0.2 and 0.147 / 0.334 for b/a < 0.2 (0.194 /
+//!   0.196 and 0.433 / 0.952 with the aligned-ellipse rule's diagonal alone; FASTSIM 32 × 32
+//!   with the same coefficients: 0.243 / 0.162 and 0.281 / 1.002). The full slip stays exact
+//!   (the real patch's).
 //! - **V = 0** (and creepage → ∞): the full slip of `best` on the real patch, in every
 //!   direction (`table`, `blend`: within 6.4e-16 fN of [`Contact::wrench`] with δ = 0; FASTSIM:
 //!   its grid's full slip on the patch, 4.8e-2 fN on 16 × 16 at a/b ≈ 4.3).
@@ -82,14 +89,16 @@
 //! # Cost
 //!
 //! Cortex-M4F, `f32`, `table`, 64 creep states (`bench-results/qemu.csv`, stage `rolling`):
-//! fixed contact, V along an axis **1,061** instructions (`RollingContact::wrench` alone: 919);
-//! V skewed 2,233 (the creep shape per call from [`ShapePath`]: Kalker's coefficients, and
-//! `table`'s curves built per call with no grid stored, each look-up computing the one it
-//! reads; 5,025 while every curve's grid and tails were built per call: 24 `exp`); varying
-//! contact 2,608 (5,301). Host (x86-64, criterion, per call, before the curves read their
+//! fixed contact, V along an axis **1,098** instructions (`RollingContact::wrench` alone: 951);
+//! V skewed 2,282 (the creep shape per call from [`ShapePath`] and the skew ratios: the
+//! coefficients, and `table`'s curves built per call with no grid stored, each look-up
+//! computing the one it reads; 2,233 with the aligned ellipse's diagonal alone, 5,025 while
+//! every curve's grid and tails were built per call: 24 `exp`); varying contact 2,766 (2,608
+//! without the skew ratios: they need one more `ln`; 5,301). Host (x86-64, criterion, per call, before the curves read their
 //! nodes from flash and before the per-call curves): 377 ns, 1.26 µs, 1.55 µs
-//! (`RollingContact` 338 ns in the same run). Per contact: two [`RollingShape`]s (520 bytes
-//! each in `f32`) and a [`ShapePath`] (fixed), a [`ShapePath`] (varying).
+//! (`RollingContact` 338 ns in the same run). Per contact: two [`RollingShape`]s (528 bytes
+//! each in `f32`), a [`ShapePath`] and a `SkewRow` (102 numbers) (fixed), a [`ShapePath`] and
+//! a `SkewGrid` (378 numbers) (varying).
 //!
 //! # References
 //!

@@ -8,28 +8,39 @@
 //! W_fs = (F_x, F_y, M_z/c)_fs/(fN), the full-slip Contensou–Erismann traction in the
 //! direction of (ξ, η, cφ) (`best`, [`super::FullSlip`]):
 //!
-//! - translation: t = √((q_x/α_ξ)² + (q_y/α_η)²), A = (1 − t)ⁿ, B = 1 − A(1 + nt) for t < 1
-//!   (A = 0, B = 1 beyond): for pure creepage the Vermeulen–Johnson-type saturation reaching
-//!   full slip at a finite creepage, as the exact theory does;
+//! - translation: t = √((q_x/α_ξ)² + (q_y/α_η)² + (q_φ/α_φ)²), A = (1 − t)ⁿ, B = 1 − A(1 + nt)
+//!   for t < 1 (A = 0, B = 1 beyond): for pure creepage the Vermeulen–Johnson-type saturation
+//!   reaching full slip at a finite creepage, as the exact theory does; the spin slips the
+//!   patch too (without q_φ in t a large spin left F_x at the unsaturated linear ξ-force, 0.3
+//!   fN off the exact theory at ρ = 10–70);
 //! - spin force: weight A_s = 1/√(1 + s⁴), s² = σ²[(q_φ/3)² + g((q_x/3)² + (q_y/3)²)]:
 //!   linear up to s ≈ 1, then the 1/creepage tail of the exact theory;
 //! - spin moment: M_z = S(d/m)·M_fs, S(x) = (4x + x²)/(2 + x)² (slope 1 at 0, → 1 like 1/x²),
 //!   m = |M_fs|, d = |κC₃₃cφ| + γ|q_φ|(1 − A_s) (the saturated spin force's share γ turns into
 //!   moment: the long patches' moment rises as their spin force saturates);
 //!
-//! W = (−A·q_x + B·F_x,fs, −A·q_y − A_s·q_φ + B·F_y,fs, S·M_fs + A·κC₂₃η),
+//! W = (−A·q_x + B·F_x,fs, −A·q_y − A_s·q_φ + B·F_y,fs, S·M_fs + A·κC₂₃η) + D·W_c,
+//!
+//! W_c = −κ(K₁₂η + K₁₃cφ, K₁₂ξ, −K₁₃ξ) the couplings of a patch rolled at an angle to its
+//! axes (zero along an axis; [`super::skew_linear`], whose diagonal is then the shape's
+//! coefficients), faded by D = 1/(1 + ρ²), ρ = |W_lin|/|W_fs| (the full linear wrench against
+//! the full slip's),
 //!
 //! then a positive power P = W·(ξ, η, cφ) (possible because η → M_z and φ → F_y carry
 //! different weights) removed along (ξ, η, cφ), and |F| ≤ fN by scaling W.
-//! n = 3, α = (5.382, 2.233), g = 0.3931 ([`Blend::ORDER`], [`Blend::ALPHA`], [`Blend::G`]);
+//! n = 3, α = (5.382, 2.233), g = 0.3931 ([`Blend::ORDER`], [`Blend::ALPHA`], [`Blend::G`]),
+//! α_φ = 1 ([`Blend::ALPHA_SPIN`]; chosen among 0.3–5 on the whole-domain training rows
+//! `tools/data/rolling_ref_train.csv`, `…_more.csv` by the worst error of `table`,
+//! `tools/rolling_alpha_spin.py`);
 //! σ, γ per shape at a/b ∈ {0.2, 0.5, 1, 2, 5} ([`Blend::SIGMA`], [`Blend::GAMMA`]),
 //! piecewise linear in ln(a/b) between them, the end values outside. All fitted to the exact
 //! reference (`tools/data/rolling_ref.csv`, ν = 0.25) by `python3 tools/fit_rolling_blend.py`
-//! (coordinate descent on the 8-norm of |ΔF|/3 % and |ΔM_z|/5 % over every row).
+//! (coordinate descent on the 8-norm of |ΔF|/3 % and |ΔM_z|/5 % over every row; before α_φ
+//! entered t, which leaves these curves' worst unchanged).
 //!
-//! - t → 0: W = W_lin + O(t): Kalker's linear theory, its coefficients exactly.
-//! - V → 0: t, s, d/m → ∞: W = W_fs exactly (`best`'s error only). At a large finite creepage
-//!   W − W_fs = O(1/creepage), like the exact theory's elastic correction.
+//! - t → 0: W = W_lin + O(t): the linear theory, its coefficients (and couplings) exactly.
+//! - V → 0: t, s, d/m, ρ → ∞: W = W_fs exactly (`best`'s error only). At a large finite
+//!   creepage W − W_fs = O(1/creepage), like the exact theory's elastic correction.
 //! - Passive (the projection), |F| ≤ fN (the scaling), continuous (every piece is).
 //!
 //! **Accuracy against the exact reference: 0.101 fN on F and 0.162 fNc on M_z at worst**
@@ -55,7 +66,8 @@
 //! relative at 1e-6 of saturation); full slip: `best`'s error (2.9e-5 fN, 2.0e-6 fNc
 //! measured); against the exact reference: [`Blend::REF_ERROR`] and the user guide's rolling
 //! chapter (docs/guide/src/rolling.md). Cost (M4F, f32, stage `rolling` of the firmware rig, 64 creep-curve states):
-//! 414 instructions per dimensional call on average (327 … 455; f64: 18,459), of which
+//! 443 instructions per dimensional call on average (f64: 18,609; 428 before α_φ and the
+//! couplings), of which
 //! `best`'s full-slip call ≈ 110; `RollingContact::new` once per contact (f64 table
 //! interpolation, `best`'s per-contact tables). Flash of a probe with the contact built and one
 //! call: 33.9 KB (f32).
@@ -74,7 +86,8 @@ impl Blend {
     /// (α_ξ, α_η): the saturation scales of the longitudinal and lateral linear forces (fN).
     pub const ALPHA: (f64, f64) = (5.382, 2.233);
     /// α_φ: the saturation scale of the spin in the translational saturation t (fN; chosen
-    /// on the whole-domain training rows, `tools/fit_rolling_table.py`'s docstring).
+    /// by `tools/rolling_alpha_spin.py` on the whole-domain training rows, the smallest worst
+    /// error of `table` among 0.3–5: `bench-results/rolling-alpha-spin.md`).
     pub const ALPHA_SPIN: f64 = 1.0;
     /// g: the weight of the translational forces in the spin force's decay variable s.
     pub const G: f64 = 0.3931;

@@ -68,7 +68,9 @@
 //! # Cost
 //!
 //! Per contact, in `f64`: [`aligned`] 12 Hermite segments, 12 `exp`; [`CreepMatrix::new`] that
-//! plus 6 × 7 × 3 Hermite segments, one `ln`, two `sqrt`. Not for the hot path.
+//! plus 6 × 7 × 3 Hermite segments, one `ln`, two `sqrt`. Not for the hot path: the per-step
+//! wrench reads the same table through [`super::skew_linear`] (linear, per contact collapsed
+//! in ν).
 
 use super::Kalker;
 use super::creep_matrix_data::{ALIGNED, SKEWED};
@@ -143,7 +145,8 @@ pub(crate) fn aligned_f64(a_over_b: f64, nu: f64) -> [f64; 4] {
 
 /// Kalker's coefficients of a patch rolling along an axis (a/b with a along the rolling
 /// direction), from the exact theory over a/b ∈ [1/20, 20] (see the [module docs](self)).
-/// Computed in `f64`. Not [`Kalker::new`] (Table E3, which the laws `blend` and `table` keep).
+/// Computed in `f64`. The rolling laws' coefficients ([`super::RollingShape::new`],
+/// [`super::ShapePath`]); not [`Kalker::new`] (Table E3's interpolation).
 pub fn aligned<T: Real>(a_over_b: T, nu: T) -> Kalker<T> {
     let [c11, c22, c23, c33] = aligned_f64(a_over_b.to_f64(), nu.to_f64());
     Kalker {

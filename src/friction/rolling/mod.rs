@@ -19,7 +19,8 @@
 //!   relative to body A at the patch centre, ω their relative spin about z.
 //! - **Outputs**: F_x, F_y (N) and M_z (N·m, about the patch centre) on body B from body A
 //!   ([`Wrench`]; dimensionless [`Creep`]: F/(fN), M_z/(fNc)). Linear theory:
-//!   F_x = −Gc²C₁₁ξ, F_y = −Gc²C₂₂η − Gc³C₂₃φ, M_z = Gc³C₂₃η − Gc⁴C₃₃φ ([`Kalker`]).
+//!   F_x = −Gc²C₁₁ξ, F_y = −Gc²C₂₂η − Gc³C₂₃φ, M_z = Gc³C₂₃η − Gc⁴C₃₃φ ([`Kalker`]; the laws
+//!   use the exact theory's coefficients, [`creep_matrix::aligned`], not Table E3).
 //! - **Library frame** (the full-slip laws, [`crate::friction`]): x along the MAJOR axis. For
 //!   a ≥ b it is the rolling frame; for a < b it is turned by 90° (x' = y, y' = −x), which
 //!   [`RollingContact::full_slip`] does.
@@ -31,7 +32,10 @@
 //!   [`aligned_ellipse`]. Exact along either axis and continuous in between. The per-step
 //!   wrench [`crate::contact::Rolling`] does this from a rolling velocity in the contact frame
 //!   ([`RollingVelocity`]) and takes the full slip from the real patch (exact in every
-//!   direction); the creep shape of a skewed direction per call by [`ShapePath`].
+//!   direction); the creep shape of a skewed direction per call by [`ShapePath`], its
+//!   coefficients turned into the real patch's creep matrix ([`CreepMatrix`]: diagonal and
+//!   couplings) by [`skew_linear`], so that the linear limit is the patch's own in every
+//!   direction.
 //! - **Elasticity**: [`Elasticity`]: quasi-identical bodies (G, ν), or Kalker's combination
 //!   of dissimilar bodies with the normal–tangential coupling neglected.
 //!
@@ -40,12 +44,15 @@
 //! - [`Table`] (default): [`Blend`] plus per-shape tables of its residual against the exact
 //!   reference over the normalised creepage and the direction of the creepages (12 creep curves
 //!   per shape, η and φ of both signs, the knee of the spin force refined), the limits kept:
-//!   exact at both limits, passive, fixed cost (919 M4F f32 instructions); on held-out points
-//!   of the creep curves 0.026 fN / 0.012 fNc from the exact theory at worst (`blend` 0.495 /
-//!   0.489 on the same points), 0.061 / 0.057 at random directions.
+//!   exact at both limits, passive, fixed cost (951 M4F f32 instructions); on held-out points
+//!   of the creep curves 0.026 fN / 0.012 fNc from the exact theory at worst (`blend` 0.49 /
+//!   0.49 on the same points), 0.067 / 0.057 at random directions; over the whole domain
+//!   (patch shapes a/b 0.05–20, any skew and ν: `bench-results/rolling-heldout.md`) 0.158 /
+//!   0.405 (the aim is 0.03 / 0.05; the worst are patches 10–20 times longer than wide along
+//!   the rolling direction).
 //! - [`Blend`]: Kalker's linear theory and the exact full slip joined channel by
 //!   channel with saturation shapes fitted to the exact reference; exact at both limits by
-//!   construction, passive, fixed cost (414 M4F f32 instructions); 0.10 fN / 0.16 fNc from the
+//!   construction, passive, fixed cost (443 M4F f32 instructions); 0.10 fN / 0.16 fNc from the
 //!   exact theory at worst on the points it was fitted to, 0.165 / 0.169 between them
 //!   (spin-dominated states).
 //! - [`Fastsim`] ([`FastsimGrid`]): Kalker's FASTSIM with the elliptic traction bound on a fixed

@@ -60,11 +60,12 @@ const KINKS: [f64; 2] = [-2.995_732_273_553_991, 2.995_732_273_553_991];
 ///
 /// # Formula
 ///
-/// - Kalker's coefficients: ln C of [`Kalker::new`] at 33 nodes in x = ln(a/b) ∈ [lo, hi]
-///   (built once, `f64`): the ends and the kinks of the coefficients inside (x = 0, ±ln 5,
-///   ±ln 10) are nodes, uniform between them; per call cubic Hermite in x with
-///   finite-difference slopes, one-sided at the ends and the kinks, then `exp`. Exact at the
-///   nodes (the ends: the two axes of a fixed contact), continuous.
+/// - The coefficients: ln C of the exact theory's ([`super::creep_matrix::aligned`]) at 33
+///   nodes in x = ln(a/b) ∈ [lo, hi] (built once, `f64`): the ends and the kinks inside
+///   (±ln 20, the ends of the exact table) are nodes, uniform between them; per call cubic
+///   Hermite in x with finite-difference slopes, one-sided at the ends and the kinks, then
+///   `exp`. Exact at the nodes (the ends: the two axes of a fixed contact), continuous. (A
+///   skewed patch's own matrix: [`super::skew_linear`], applied by the per-step wrench.)
 /// - `blend`'s (σ, γ): linear in x between the fitted shapes, as [`super::Blend::shape`].
 /// - `table`'s residual tables: [`super::table::Tables::at_ln`] (linear in x between the
 ///   fitted shapes, as [`super::table::Tables::new`]).
@@ -72,11 +73,11 @@ const KINKS: [f64; 2] = [-2.995_732_273_553_991, 2.995_732_273_553_991];
 /// # Domain and error
 ///
 /// lo < hi in [ln 0.01, ln 100] (clamped; a/b outside the range is clamped to it).
-/// Measured (`host-tests/rolling_wrench.rs`): over [0.01, 100] Kalker's coefficients within
-/// 3.7e-3 relative of [`Kalker::new`] (near a/b = 1.1, where Table E3's rows are densest in
-/// ln(a/b); 5.8e-4 outside [0.1, 10]); a fixed contact's skewed rolling wrench within 9.2e-4
-/// fN / fNc of the `f64` build ([`RollingShape::new`]) at P/Q = 0.0025 (2.0e-5 at
-/// P/Q = 0.25), `f32` alike.
+/// Measured (`host-tests/rolling_wrench.rs`): over [0.01, 100] the coefficients within
+/// 3.1e-3 relative of [`super::creep_matrix::aligned`] inside [0.1, 10], 4.4e-3 beyond; a fixed
+/// contact's skewed rolling wrench: `host-tests/rolling_wrench.rs` and
+/// [`crate::contact::Rolling`]'s docs (the skew ratios dominate the difference to the `f64`
+/// build).
 ///
 /// # Cost
 ///
