@@ -85,8 +85,8 @@ const KINKS: [f64; 2] = [-2.995_732_273_553_991, 2.995_732_273_553_991];
 /// (and one for the shape's √(a/b)); `table`'s curves are built with no grid
 /// ([`super::table::Tables::at_ln_once`]: the look-ups compute the grids they read, at most
 /// four per call, with an `exp` only in a tail). M4F f32 (`bench-results/qemu.csv`): the
-/// per-step wrench with a skewed V 2,233 instructions against 1,061 along an axis. Per contact
-/// 33 × 5 numbers.
+/// per-step wrench with a skewed V 2,282 instructions against 1,098 along an axis (the skew
+/// ratios included). Per contact 33 × 5 numbers.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ShapePath<T> {
     /// the nodes x = ln(a/b), increasing
