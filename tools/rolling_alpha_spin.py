@@ -28,17 +28,7 @@ CONST = re.compile(r"pub const ALPHA_SPIN: f64 = [0-9.eE+-]+;")
 
 
 def training_rows():
-    rows = []
-    for name in TRAIN:
-        for line in (root / "tools/data" / name).read_text().splitlines():
-            if not line or line[0] == "#" or line.startswith("family"):
-                continue
-            v = [float(x) for x in line.split(",")[1:]]
-            if len(v) < 13 or v[12] != 1.0:
-                continue
-            rows.append(dict(aob=v[0], theta=math.radians(v[1]), nu=v[2], nl=v[3], xi=v[4], eta=v[5],
-                             phic=v[6], ref=(v[7], v[8], v[9]), err=(v[10], v[11]), converged=True))
-    return rows
+    return [r for name in TRAIN for r in H.read(root / "tools/data" / name) if r["converged"]]
 
 
 def quantile(v, p):

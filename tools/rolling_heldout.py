@@ -71,9 +71,10 @@ def draws():
     return out
 
 
-def read():
+def read(path=ref_csv):
+    """The rows of a reference file in the held-out set's format (default: the held-out set)."""
     rows = []
-    for line in ref_csv.read_text().splitlines():
+    for line in path.read_text().splitlines():
         if not line or line[0] == "#" or line.startswith("family"):
             continue
         f = line.split(",")

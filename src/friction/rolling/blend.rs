@@ -186,13 +186,9 @@ pub(crate) fn creep<T: Real>(i: &Input<'_, T>) -> Creep<T> {
             qy + qp + ey,
             i.kappa * k.c33 * i.w - i.kappa * k.c23 * i.vy - em,
         );
-        let vf2 = v2 * (fs.fx * fs.fx + fs.fy * fs.fy + fs.mz * fs.mz);
-        let den = vf2 + (nx * nx + ny * ny + nm * nm);
-        let fade_over_v = if den > T::ZERO {
-            v * (fs.fx * fs.fx + fs.fy * fs.fy + fs.mz * fs.mz) / den
-        } else {
-            T::ZERO
-        };
+        let f2 = fs.fx * fs.fx + fs.fy * fs.fy + fs.mz * fs.mz;
+        let den = v2 * f2 + (nx * nx + ny * ny + nm * nm);
+        let fade_over_v = if den > T::ZERO { v * f2 / den } else { T::ZERO };
         (-fade_over_v * ex, -fade_over_v * ey, fade_over_v * em)
     } else {
         (T::ZERO, T::ZERO, T::ZERO)

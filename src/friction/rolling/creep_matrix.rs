@@ -160,22 +160,24 @@ pub fn aligned<T: Real>(a_over_b: T, nu: T) -> Kalker<T> {
 /// Nodes of the skewed table in x = ln r ((i/6)·ln 20, i < 7) and in t (j/8, j < 9).
 pub(crate) const SKEW_NODES: (usize, usize) = (7, 9);
 
-/// The skewed table's six ratios (ρ₁₁, ρ₂₂, ρ₃₃, ρ₂₃, κ₁₂, κ₁₃) at node (i, j), quadratic in
-/// ν ∈ [0, ½] (see the [module docs](self)); zero outside the table.
+/// Entry `e` of the skewed table's six ratios (ρ₁₁, ρ₂₂, ρ₃₃, ρ₂₃, κ₁₂, κ₁₃) at node (i, j),
+/// quadratic in ν ∈ [0, ½] (see the [module docs](self)); zero outside the table.
+fn skew_entry_f64(i: usize, j: usize, e: usize, nu: f64) -> f64 {
+    let col = |col: usize| {
+        SKEWED
+            .get(i)
+            .and_then(|s| s.get(j))
+            .and_then(|s| s.get(e))
+            .and_then(|s| s.get(col))
+            .copied()
+            .unwrap_or(0.0)
+    };
+    quad_nu([col(0), col(1), col(2)], super::within(nu, 0.0, 0.5))
+}
+
+/// The skewed table's six ratios at node (i, j) ([`skew_entry_f64`] of each entry).
 pub(crate) fn skew_node_f64(i: usize, j: usize, nu: f64) -> [f64; 6] {
-    let nu = super::within(nu, 0.0, 0.5);
-    [0, 1, 2, 3, 4, 5].map(|e| {
-        let col = |col: usize| {
-            SKEWED
-                .get(i)
-                .and_then(|s| s.get(j))
-                .and_then(|s| s.get(e))
-                .and_then(|s| s.get(col))
-                .copied()
-                .unwrap_or(0.0)
-        };
-        quad_nu([col(0), col(1), col(2)], nu)
-    })
+    [0, 1, 2, 3, 4, 5].map(|e| skew_entry_f64(i, j, e, nu))
 }
 
 /// The six ratios at x = ln r ∈ [0, ln 20], t ∈ [0, 1] (clamped): cubic Hermite in t, then in
@@ -184,7 +186,7 @@ pub(crate) fn skew_ratios_f64(x: f64, t: f64, nu: f64) -> [f64; 6] {
     let (nx, nt) = SKEW_NODES;
     [0, 1, 2, 3, 4, 5].map(|e| {
         let at_x = |i: usize| {
-            let node = |j: usize| skew_node_f64(i, j, nu).get(e).copied().unwrap_or(0.0);
+            let node = |j: usize| skew_entry_f64(i, j, e, nu);
             hermite(nt, node, 0.0, 1.0 / 8.0, t)
         };
         hermite(nx, at_x, 0.0, LN20 / 6.0, x)
