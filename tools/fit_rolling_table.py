@@ -180,13 +180,43 @@ def coarse_position(i, windowed):
 
 
 def build(use_knee=True):
-    """{(shape, curve): (x0, dx, [[value per node] per channel])}."""
+    """{(shape, curve): (x0, dx, [[value per node] per channel])}: the values as the library
+    holds them (quantised, `quantise`)."""
     nodes = node_rows(use_knee)
     tables = {}
     for aob in SH:
         for name in ["xi"] + [n for n in PLANE if n not in HALF] + RING + HALF:
             tables[(aob, name)] = curve_table(tables, aob, name, nodes.get((aob, name), {}))
-    return tables
+    return quantise(tables)
+
+
+def node_scales(tables):
+    """Per node index (COARSE curves, FINE curves): the power of two s_k with
+    max |value at node k| ≤ 32767 s_k over every shape, curve and channel."""
+    scales = {}
+    for n in (COARSE, FINE):
+        top = [0.0] * n
+        for (aob, name), (x0, dx, vals) in tables.items():
+            if len(vals[0]) == n:
+                for ch in vals:
+                    top = [max(t, abs(v)) for t, v in zip(top, ch)]
+        scales[n] = [2.0 ** math.ceil(math.log2(t / 32767)) if t > 0 else 1.0 for t in top]
+    return scales
+
+
+def quantise(tables):
+    """Every value v at node k as round(v/s_k)·s_k (the i16 q = round(v/s_k) the library holds
+    times the power of two s_k: exact in f32 and f64). Sets SCALES."""
+    global SCALES
+    SCALES = node_scales(tables)
+    global QUANT_ERR
+    out = {}
+    QUANT_ERR = 0.0
+    for key, (x0, dx, vals) in tables.items():
+        s = SCALES[len(vals[0])]
+        out[key] = (x0, dx, [[round(v / k) * k for v, k in zip(ch, s)] for ch in vals])
+        QUANT_ERR = max([QUANT_ERR] + [abs(q - v) for cq, cv in zip(out[key][2], vals) for q, v in zip(cq, cv)])
+    return out
 
 
 def curve_table(tables, aob, name, pts):
@@ -221,8 +251,6 @@ def curve_table(tables, aob, name, pts):
             t = (i - lo) / (hi - lo)
             for c in range(3):
                 vals[c][i] = vals[c][lo] + t * (vals[c][hi] - vals[c][lo])
-    # the values as the library holds them (f32)
-    vals = [[f32(v) for v in ch] for ch in vals]
     return (*grids[(aob, name)], vals)
 
 
@@ -353,7 +381,8 @@ def report(use_knee):
             e[0], e[1] = max(e[0], ef), max(e[1], em)
             e[2], e[3] = max(e[2], eb[0]), max(e[3], eb[1])
             e[4] += 1
-    print(f"== nodes: 29 per curve{', knee window cut in four at a/b = 2, 5' if use_knee else ''}")
+    print(f"== nodes: 29 per curve{', knee window cut in four at a/b = 2, 5' if use_knee else ''}; "
+          f"i16 node values within {QUANT_ERR:.1e} of the residuals")
     for (part, key), (f, m, bf, bm, n) in sorted(err.items()):
         if "a/b" in key and "-v" not in sys.argv:
             continue
@@ -371,7 +400,8 @@ def rust(tables):
         pad = " " * indent
         lines = [f"{pad}({x0!r}, {dx!r}, ["]
         for c in CHANNELS[name[1]]:
-            lines.append(f"{pad}    [" + ", ".join(f32_literal(v) for v in vals[c]) + "],")
+            q = [round(v / k) for v, k in zip(vals[c], SCALES[len(vals[c])])]
+            lines.append(f"{pad}    [" + ", ".join(str(v) for v in q) + "],")
         lines.append(f"{pad}], {f32_literal(f32(x0))}, {f32_literal(f32(dx))}),")
         return lines
 
@@ -390,9 +420,18 @@ def rust(tables):
              "pub(crate) const FINE: usize = COARSE + 3 * KNEE_WIDTH;",
              "",
              "/// One curve: ln m of the first node, the coarse node spacing in ln m, the residual at",
-             "/// the nodes per channel, and the first two rounded to `f32` (for an `f32` look-up",
+             "/// the nodes per channel (node k: the `i16` times [`SCALE_COARSE`]`[k]` or",
+             "/// [`SCALE_FINE`]`[k]`), and the first two rounded to `f32` (for an `f32` look-up",
              "/// without a run-time conversion; the same values as `x as f32`).",
-             "pub(crate) type Data<const N: usize, const C: usize> = (f64, f64, [[f32; N]; C], f32, f32);",
+             "pub(crate) type Data<const N: usize, const C: usize> = (f64, f64, [[i16; N]; C], f32, f32);",
+             "",
+             "/// The node scales of the curves of `COARSE` nodes: node k's residual is its `i16` times",
+             "/// `SCALE_COARSE[k]`, a power of two (exact in `f32` and `f64`) with the largest |residual|",
+             "/// at node k over every shape, curve and channel ≤ 32,767 · scale (so each value is within",
+             "/// half a scale of the reference's residual).",
+             "pub(crate) static SCALE_COARSE: [f32; COARSE] = [" + ", ".join(f32_literal(v) for v in SCALES[COARSE]) + "];",
+             "/// The same for the curves of `FINE` nodes.",
+             "pub(crate) static SCALE_FINE: [f32; FINE] = [" + ", ".join(f32_literal(v) for v in SCALES[FINE]) + "];",
              "",
              "/// One shape's curves (directions of the linear forces (ξ, η, φ) as named;",
              "/// u = 2 − 2d_η/(|d_η| + d_φ)).",

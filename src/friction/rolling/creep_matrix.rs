@@ -18,7 +18,8 @@
 //!   [`Kalker::new`]) and C₃₃ itself quadratic in ν (at a/b = 20 it falls from 0.79 to 0.16
 //!   over ν ∈ [0, ½] nearly linearly; 1/C₃₃ is far from quadratic there). Outside
 //!   [1/20, 20]: the end value times [`Kalker::new`]'s ratio between a/b and the end
-//!   (continuous; Kalker's asymptotes carry the growth).
+//!   (continuous; Kalker's asymptotes carry the growth; the ratio is computed from its
+//!   asymptotic forms and first row directly, so the table's interpolation is not linked).
 //! - **At an angle** ([`CreepMatrix::new`]): the patch a ≥ b (library frame, x the major axis)
 //!   rolled along (cos α, sin α). With r = a/b and the aligned ellipse's ratio
 //!   q = a_r/b_r = 1/(cos²α/r + r sin²α) ([`super::aligned_ellipse`]), t = ½(1 − ln q/ln r) ∈ [0, 1]
@@ -129,18 +130,10 @@ pub(crate) fn aligned_f64(a_over_b: f64, nu: f64) -> [f64; 4] {
         return inside;
     }
     // beyond the table: Kalker's asymptotic growth from the end value
-    let (here, there) = (
-        Kalker::<f64>::new(a_over_b, nu),
-        Kalker::<f64>::new(end, nu),
-    );
+    let [g11, g22, g23, g33] = super::kalker::growth(a_over_b, end, nu);
     // destructured, not indexed: no bounds check survives at opt-level "z" (tools/no-panic.sh)
     let [c11, c22, c23, c33] = inside;
-    [
-        c11 * here.c11 / there.c11,
-        c22 * here.c22 / there.c22,
-        c23 * here.c23 / there.c23,
-        c33 * here.c33 / there.c33,
-    ]
+    [c11 * g11, c22 * g22, c23 * g23, c33 * g33]
 }
 
 /// Kalker's coefficients of a patch rolling along an axis (a/b with a along the rolling

@@ -241,6 +241,39 @@ pub(crate) fn coefficients_f64(a_over_b: f64, nu: f64) -> [f64; 3] {
     out
 }
 
+/// Table E3's growth from a/b = `end` to a/b = `r` beyond its rows (g = min(r, 1/r) < 0.1 at
+/// both, on the same side): [`Kalker::new`]`(r)` over [`Kalker::new`]`(end)` per coefficient
+/// (the same formulas: the asymptotic forms corrected towards the table's first row, C₃₃ the
+/// simplified theory's, whose ratio to the exact one is the same at both), without the table's
+/// interpolation (the row g = 0.1 is a node), so that the rolling laws' coefficients
+/// ([`super::creep_matrix::aligned`]) do not link it.
+pub(crate) fn growth(r: f64, end: f64, nu: f64) -> [f64; 4] {
+    let c = |r: f64| {
+        let narrow = r <= 1.0;
+        let g = if narrow { r } else { 1.0 / r };
+        let row = if narrow { &NARROW[0] } else { &LONG[0] };
+        let (here, at) = (asymptote(narrow, g, nu), asymptote(narrow, 0.1, nu));
+        let mut out = [0.0; 3];
+        for (k, o) in out.iter_mut().enumerate() {
+            let col = |j: usize| row.get(3 * k + j).copied().unwrap_or(1.0);
+            let t = in_nu([col(0), col(1), col(2)], nu);
+            let (h, a) = (
+                here.get(k).copied().unwrap_or(1.0),
+                at.get(k).copied().unwrap_or(1.0),
+            );
+            *o = h * (1.0 + (t / a - 1.0) * g / 0.1);
+        }
+        out
+    };
+    let ([h11, h22, h23], [t11, t22, t23]) = (c(r), c(end));
+    [
+        h11 / t11,
+        h22 / t22,
+        h23 / t23,
+        c33_simplified(r, h23) / c33_simplified(end, t23),
+    ]
+}
+
 impl<T: Copy> Kalker<T> {
     /// Every coefficient through `f` (the dual form of the Jacobian).
     pub(crate) fn map<U>(&self, f: impl Fn(T) -> U) -> Kalker<U> {
@@ -265,6 +298,36 @@ impl<T: Real> Kalker<T> {
             c22: T::from_f64(c22),
             c23: T::from_f64(c23),
             c33: T::from_f64(c33),
+        }
+    }
+}
+
+#[cfg(test)]
+mod growth_tests {
+    use super::{Kalker, growth};
+
+    /// `growth` is `Kalker::new`'s ratio between a/b and the end row beyond Table E3 (the
+    /// same formulas restated without the table's interpolation).
+    #[test]
+    fn growth_is_the_ratio_of_kalker_new() {
+        for &(r, end) in &[
+            (0.01, 0.05),
+            (0.02, 0.05),
+            (0.049, 0.05),
+            (20.5, 20.0),
+            (50.0, 20.0),
+            (100.0, 20.0),
+        ] {
+            for &nu in &[0.0, 0.25, 0.3, 0.5] {
+                let (h, t) = (Kalker::<f64>::new(r, nu), Kalker::<f64>::new(end, nu));
+                let want = [h.c11 / t.c11, h.c22 / t.c22, h.c23 / t.c23, h.c33 / t.c33];
+                for (g, w) in growth(r, end, nu).iter().zip(want) {
+                    assert!(
+                        (g / w - 1.0).abs() < 1e-13,
+                        "a/b {r} nu {nu}: {g} against {w}"
+                    );
+                }
+            }
         }
     }
 }

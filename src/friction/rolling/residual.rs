@@ -3,7 +3,9 @@
 //! on each look-up. Data for `RollingShape`, read by the law; see the law's module
 //! docs for the formula, the error and the cost.
 
-use super::table_data::{COARSE, Data, FINE, KNEE_START, KNEE_WIDTH, SHAPES as DATA};
+use super::table_data::{
+    COARSE, Data, FINE, KNEE_START, KNEE_WIDTH, SCALE_COARSE, SCALE_FINE, SHAPES as DATA,
+};
 use crate::Real;
 
 /// One residual curve of one contact: ln m of the first node, 1/Δ(ln m) (coarse spacing),
@@ -188,16 +190,23 @@ impl<T: Real, const N: usize, const C: usize> Curve<T, N, C> {
     }
 
     /// [`Self::eval`] at a place found by [`Self::at`] (on this curve or one on the same grid).
+    /// Node k of a shape is its `i16` times the power of two `scale[k]` (exact in `T`); the two
+    /// shapes' integers are mixed first, then scaled once.
     #[inline(always)]
     fn value(&self, at: At<T>) -> [T; 3] {
         let mut out = [T::ZERO; 3];
         let first = if C == 2 { 1 } else { 0 };
+        let scale: &[f32] = if N == FINE {
+            &SCALE_FINE
+        } else {
+            &SCALE_COARSE
+        };
         let rows = self.lo.2.iter().zip(self.hi.2.iter());
         for (o, (a, b)) in out.iter_mut().skip(first).zip(rows) {
             let node = |k: usize| {
-                let p = T::from_f32(a.get(k).copied().unwrap_or(0.0));
-                let q = T::from_f32(b.get(k).copied().unwrap_or(0.0));
-                p + self.u * (q - p)
+                let int = |row: &[i16; N]| T::from_f32(f32::from(row.get(k).copied().unwrap_or(0)));
+                let (p, q) = (int(a), int(b));
+                (p + self.u * (q - p)) * T::from_f32(scale.get(k).copied().unwrap_or(0.0))
             };
             *o = match at {
                 At::Below(f) => node(0) * f,

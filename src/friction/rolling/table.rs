@@ -33,9 +33,13 @@
 //! curves at u = 1½, 2½, 3½ exist at a/b = 2 and 5 (`rolling_ref_plane.csv`, m ≥ 0.12); below
 //! that and at the other shapes they hold their neighbours' mean (the law without them). Per
 //! shape a/b ∈ {0.2, 0.5, 1, 2, 5} (ν = 0.25), node by node linear in ln(a/b) between them
-//! (built once per contact, [`Tables::new`]), the end shapes outside. Data: `table_data.rs` (f32),
+//! (built once per contact, [`Tables::new`]), the end shapes outside. Data: `table_data.rs`,
 //! written by `python3 tools/fit_rolling_table.py --write` (nothing fitted: the node values are
-//! the reference's residuals; `--check` in CI).
+//! the reference's residuals; `--check` in CI): each node value an `i16` times a power of two
+//! per node index (the smallest with every shape's, curve's and channel's |residual| at that
+//! node ≤ 32,767 of it: exact in `f32` and `f64`, within 7.6e-6 fN / fNc of the residual at
+//! every node, and relatively as fine near the linear limit as at the knee, where the
+//! residuals are 1e4 times larger); the two shapes' integers are mixed, then scaled.
 //!
 //! - m → 0: the correction is O(m²) (the residual of `blend` is O(m²) too): the linear
 //!   theory, its coefficients and couplings exactly (as `blend`).
@@ -120,21 +124,22 @@
 //!
 //! `blend`'s call plus a square root, two divisions, one `ln` and 1 to 4 curve look-ups (1 to 3
 //! channels each). M4F, f32, the dimensional call (firmware stage `rolling`, 64 creep states on
-//! a spiral of directions): 951 instructions on average (`blend` 443; f64: 39,243; 919
-//! before the spin entered `blend`'s translational saturation and the couplings, 895 before a
-//! curve could be built per call without its grid;
-//! before the direction curves 759; 787 while each contact held its own mixed copy of the
-//! nodes); two neighbouring curves on the same magnitudes share one node search. Per contact
-//! 12 curves of a few numbers each and references to the two fitted shapes' nodes in flash,
-//! mixed at the shape weight on each look-up (a [`super::RollingShape`] is 520 bytes in f32;
-//! a mixed copy was 5.3 KB, and the per-call shape of a skewed rolling velocity built it each
-//! call); the generated data: 5 shapes × 1,287 `f32` + 60 pairs
-//! of `f64` (26.7 KB of flash when a/b is known only at run time; before 17.8 KB of `f64`); the
-//! size probe (a/b fixed at build time, `tools/flash-bench.sh --stage rolling`) measures
-//! `table` 70.3 KB, 4.1 KB over `blend` (f32; before 55.8 KB, 2.0 KB over `blend`): every
-//! rolling law's probe grew by ≈ 12 KB (`blend` 53.8 → 66.3 KB), since
-//! [`super::RollingContact::new`] builds these tables whatever the law and the two shapes' data
-//! are no longer folded at build time.
+//! a spiral of directions): 1,020 instructions on average (`blend` 443; f64: 41,145; 951 with
+//! the nodes in `f32` — the `i16` nodes cost two conversions and a scaling per node read and
+//! save 13 KB of flash; 919 before the spin entered `blend`'s translational saturation and the
+//! couplings, 895 before a curve could be built per call without its grid; before the
+//! direction curves 759; 787 while each contact held its own mixed copy of the nodes); two
+//! neighbouring curves on the same magnitudes share one node search. Per contact 12 curves of
+//! a few numbers each and references to the two fitted shapes' nodes in flash, mixed at the
+//! shape weight on each look-up (a [`super::RollingShape`] is 520 bytes in f32; a mixed copy
+//! was 5.3 KB, and the per-call shape of a skewed rolling velocity built it each call). Flash:
+//! the generated data, 5 shapes × 1,287 `i16` + 82 `f32` scales + 60 curve grids (14.5 KB;
+//! 27.3 KB with `f32` nodes); the size probe (`tools/flash-bench.sh --stage rolling`: a
+//! contact built and called) measures `table` 59.7 KB in f32, 9.9 KB over `blend` (49.8 KB;
+//! every rolling law's probe holds the tables, since [`super::RollingContact::new`] builds
+//! them whatever the law). Before: 77.6 KB (the `f32` nodes, and Table E3's interpolation
+//! linked for the coefficients' growth beyond a/b ∈ [1/20, 20], 8 KB, now restated without
+//! it: [`super::creep_matrix::aligned`]).
 
 use super::blend::{bounded, creep as blend_creep};
 use super::contact::{Creep, Input, RollingLaw, passive};
