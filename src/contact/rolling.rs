@@ -470,10 +470,11 @@ pub(crate) fn tangential<T: Real, L: RollingLaw>(
         Shapes::One(shape) => L::creep(&input(shape)),
         Shapes::Path(path, skew) => {
             let (ar, br) = aligned_ellipse(a, b, cx, sx);
-            let ln_q = (ar / br).ln();
+            let q = ar / br;
+            let ln_q = q.ln();
             // the aligned ellipse's shape, its coefficients turned into the patch's in place
             // (a new RollingShape would copy its tables)
-            let mut shape = path.shape_at_ln(ln_q);
+            let mut shape = path.shape_at(q, ln_q);
             let ratios = match skew {
                 Skew::Row(row) => row.at(ln_q),
                 Skew::Grid(grid) => grid.at((a / b).ln(), ln_q),

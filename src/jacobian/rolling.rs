@@ -2,7 +2,7 @@
 //! [`VaryingContact`] at a step's curvatures): the same code as their `wrench` on dual
 //! numbers. The rolling velocity V is held fixed (no derivative with respect to it); the creep
 //! shape depends on V's direction and on a/b only, so it is built in `T` as the plain call
-//! builds it and lifted (per call: 130 values for the shape cached along an axis, 165 for the
+//! builds it and lifted (per call: 130 values for the shape cached along an axis, 292 for the
 //! path of a skewed V — the cost of this form, see the [module docs](super)).
 
 use super::contact::{Inputs, pack};
