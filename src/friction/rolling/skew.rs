@@ -46,9 +46,9 @@ pub fn aligned_ellipse<T: Real>(a_major: T, b_minor: T, cx: T, sx: T) -> (T, T) 
     (ar, ab / ar)
 }
 
-/// Nodes of [`ShapePath`]'s Kalker table.
+/// Nodes of a [`Nodes`] path.
 const PATH_NODES: usize = 33;
-/// Segments of [`ShapePath`]'s nodes: the range cut at the kinks inside it (at most two).
+/// Segments of a [`Nodes`] path: the range cut at the kinks inside it (at most two).
 const SEGMENTS: usize = 3;
 /// Stored nodes: a node where two segments meet is stored once per segment (its one-sided
 /// tangents differ).
@@ -58,53 +58,19 @@ const SLOTS: usize = PATH_NODES + SEGMENTS - 1;
 /// x = ln(a/b): ±ln 20, the ends of the exact table (Kalker's asymptotic growth beyond).
 const KINKS: [f64; 2] = [-2.995_732_273_553_991, 2.995_732_273_553_991];
 
-/// The creep shape ([`RollingShape`]) of any aligned ratio a/b in a range [e^{lo}, e^{hi}], per
-/// call in the working precision, for a contact whose aligned ratio changes every call (a
-/// skewed rolling velocity: the range between the two axes' ratios; a varying contact: the
-/// laws' domain).
-///
-/// # Formula
-///
-/// - The coefficients: C of the exact theory ([`super::creep_matrix::aligned`]) and its slope
-///   dC/dx at 33 nodes in x = ln(a/b) ∈ [lo, hi] (built once, `f64`; the slope by a central
-///   difference of step 10⁻³ of the node spacing, one-sided of second order at the ends and
-///   the kinks): the ends and the kinks inside (±ln 20, the ends of the exact table) are
-///   nodes, uniform between them (a segment); per call the segment by two comparisons, the
-///   interval by its uniform spacing, cubic Hermite in x of C itself (no `exp`). Exact at the
-///   nodes (the ends: the two axes of a fixed contact), continuous (C¹ inside a segment). (A
-///   skewed patch's own matrix: [`super::skew_linear`], applied by the per-step wrench.)
-/// - √(a/b) (FASTSIM's): from a/b itself where the caller has it, else e^{x/2}.
-/// - `blend`'s (σ, γ): linear in x between the fitted shapes, as [`super::Blend::shape`].
-/// - `table`'s residual tables: [`super::table::Tables::at_ln`] (linear in x between the
-///   fitted shapes, as [`super::table::Tables::new`]).
-///
-/// # Domain and error
-///
-/// lo < hi in [ln 0.01, ln 100] (clamped; a/b outside the range is clamped to it).
-/// Measured (`host-tests/rolling_wrench.rs`): over [0.01, 100] the coefficients within
-/// 7.7e-4 relative of [`super::creep_matrix::aligned`] inside [0.1, 10], 8.8e-4 beyond (3.1e-3
-/// and 4.4e-3 with ln C interpolated on finite-difference slopes, then `exp`); a fixed
-/// contact's skewed rolling wrench: `host-tests/rolling_wrench.rs` and
-/// [`crate::contact::Rolling`]'s docs (the skew ratios dominate the difference to the `f64`
-/// build).
-///
-/// # Cost
-///
-/// Per call two comparisons and one truncation for the interval, one Hermite segment per
-/// coefficient (no `exp`, no division: ≈ 100 M4F instructions), `blend`'s constants, and
-/// `table`'s curves built with no grid ([`super::table::Tables::at_ln_once`], ≈ 330: the
-/// look-ups compute the grids they read, at most four per call, with an `exp` only in a
-/// tail). M4F f32 (firmware stage `rolling`): the per-step wrench with a skewed V 1,899
-/// instructions against 1,098 along an axis, the skew ratios included (2,282 with a 6-step
-/// bisection and an `exp` per coefficient and for √(a/b)). Per contact 35 × 8 numbers and 12
-/// (a node where two segments meet is stored twice).
+/// `N` smooth functions of x = ln(a/b) over a range [lo, hi], per call by cubic Hermite on
+/// their values and slopes at 33 nodes (built once, `f64`): the ends and the kinks inside
+/// (±ln 20, the ends of the exact table) are nodes, uniform between them (a segment). The
+/// slopes by a central difference of step 10⁻³ of the node spacing, one-sided of second order
+/// at a segment's ends. Per call the segment by two comparisons, the interval by its uniform
+/// spacing, then one Hermite segment per function: no `exp`, no division. Exact at the nodes,
+/// continuous, C¹ inside a segment. The path of [`ShapePath`] (Kalker's coefficients) and of a
+/// fixed contact's skewed creep matrix ([`super::skew_linear::SkewPath`]).
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct ShapePath<T> {
+pub(crate) struct Nodes<T, const N: usize> {
     /// the range [lo, hi] in x
     lo: T,
     hi: T,
-    /// √(a/b) at the ends: e^{lo/2}, e^{hi/2}
-    rho: (T, T),
     /// where the segments after the first start (hi for a segment not used)
     cut: [T; SEGMENTS - 1],
     /// per segment: its first node in x, 1/(node spacing)
@@ -113,56 +79,50 @@ pub struct ShapePath<T> {
     /// per segment: its first slot, its number of intervals (≥ 1; 1 for a segment not used)
     first: [u8; SEGMENTS],
     intervals: [u8; SEGMENTS],
-    /// Kalker's coefficients at the nodes, by slot
-    c: [Kalker<T>; SLOTS],
-    /// their Hermite tangents at the nodes, by slot: dC/dx times the segment's node spacing
-    m: [Kalker<T>; SLOTS],
+    /// the functions at the nodes, by slot
+    y: [[T; N]; SLOTS],
+    /// their Hermite tangents at the nodes, by slot: dy/dx times the segment's node spacing
+    m: [[T; N]; SLOTS],
 }
 
-impl<T: Copy> ShapePath<T> {
+impl<T: Copy, const N: usize> Nodes<T, N> {
     /// Every `T` field through `f` (the dual form of the Jacobian).
-    pub(crate) fn map<U>(&self, f: impl Fn(T) -> U + Copy) -> ShapePath<U> {
-        ShapePath {
+    pub(crate) fn map<U>(&self, f: impl Fn(T) -> U + Copy) -> Nodes<U, N> {
+        Nodes {
             lo: f(self.lo),
             hi: f(self.hi),
-            rho: (f(self.rho.0), f(self.rho.1)),
             cut: self.cut.map(f),
             start: self.start.map(f),
             inv_h: self.inv_h.map(f),
             first: self.first,
             intervals: self.intervals,
-            c: self.c.map(|k| k.map(f)),
-            m: self.m.map(|k| k.map(f)),
+            y: self.y.map(|v| v.map(f)),
+            m: self.m.map(|v| v.map(f)),
         }
     }
 }
 
-/// Kalker's coefficients as an array (C₁₁, C₂₂, C₂₃, C₃₃).
-fn kalker_of<T>([c11, c22, c23, c33]: [T; 4]) -> Kalker<T> {
-    Kalker { c11, c22, c23, c33 }
+/// The range [lo, hi] of a path: within [ln 0.01, ln 100], hi > lo.
+fn range(lo: f64, hi: f64) -> (f64, f64) {
+    let ln100 = libm::log(100.0);
+    let lo = super::within(lo, -ln100, ln100);
+    (lo, super::within(hi, -ln100, ln100).max(lo + 1e-9))
 }
 
 /// w₀a + w₁b + w₂c, entry by entry.
-fn combine(w: [f64; 3], a: [f64; 4], b: [f64; 4], c: [f64; 4]) -> [f64; 4] {
+fn combine<const N: usize>(w: [f64; 3], a: [f64; N], b: [f64; N], c: [f64; N]) -> [f64; N] {
     let [w0, w1, w2] = w;
-    let [a0, a1, a2, a3] = a;
-    let [b0, b1, b2, b3] = b;
-    let [c0, c1, c2, c3] = c;
-    [
-        w0 * a0 + w1 * b0 + w2 * c0,
-        w0 * a1 + w1 * b1 + w2 * c1,
-        w0 * a2 + w1 * b2 + w2 * c2,
-        w0 * a3 + w1 * b3 + w2 * c3,
-    ]
+    let mut out = a;
+    for (o, (b, c)) in out.iter_mut().zip(b.iter().zip(c.iter())) {
+        *o = w0 * *o + w1 * b + w2 * c;
+    }
+    out
 }
 
-impl<T: Real> ShapePath<T> {
-    /// For aligned ratios in [e^{lo}, e^{hi}] and ν ∈ [0, 0.5] (an [`super::Elasticity`]'s).
-    pub fn new(lo: T, hi: T, nu: T) -> Self {
-        let ln100 = libm::log(100.0);
-        let lo = super::within(lo.to_f64(), -ln100, ln100);
-        let hi = super::within(hi.to_f64(), -ln100, ln100).max(lo + 1e-9);
-        let nu = nu.to_f64();
+impl<T: Real, const N: usize> Nodes<T, N> {
+    /// The functions `f` over [lo, hi] (clamped to [ln 0.01, ln 100]; hi > lo).
+    pub(crate) fn new(lo: f64, hi: f64, f: impl Fn(f64) -> [f64; N]) -> Self {
+        let (lo, hi) = range(lo, hi);
         // breakpoints: the ends and the kinks strictly inside
         let mut br = [hi; SEGMENTS + 1];
         let mut n = 0;
@@ -187,19 +147,14 @@ impl<T: Real> ShapePath<T> {
         let mut path = Self {
             lo: T::from_f64(lo),
             hi: T::from_f64(hi),
-            rho: (
-                T::from_f64(libm::exp(0.5 * lo)),
-                T::from_f64(libm::exp(0.5 * hi)),
-            ),
             cut: [T::from_f64(hi); SEGMENTS - 1],
             start: [T::from_f64(hi); SEGMENTS],
             inv_h: [T::ONE; SEGMENTS],
             first: [0; SEGMENTS],
             intervals: [1; SEGMENTS],
-            c: [kalker_of([T::ONE; 4]); SLOTS],
-            m: [kalker_of([T::ZERO; 4]); SLOTS],
+            y: [[T::ZERO; N]; SLOTS],
+            m: [[T::ZERO; N]; SLOTS],
         };
-        let coefficients = |x: f64| super::creep_matrix::aligned_f64(libm::exp(x), nu);
         let mut slot = 0usize;
         for s in 0..segments.min(SEGMENTS) {
             let (a, b) = (
@@ -226,7 +181,7 @@ impl<T: Real> ShapePath<T> {
             ) {
                 (*x0, *ih, *f, *n) = (T::from_f64(a), T::from_f64(1.0 / h), slot as u8, k as u8);
             }
-            // the nodes a + jh, j = 0 … k: C and h·dC/dx (one-sided at the segment's ends)
+            // the nodes a + jh, j = 0 … k: y and h·dy/dx (one-sided at the segment's ends)
             let e = 1e-3 * h;
             for j in 0..=k {
                 let x = if j == k {
@@ -234,26 +189,18 @@ impl<T: Real> ShapePath<T> {
                 } else {
                     a + (b - a) * j as f64 / k as f64
                 };
-                let y = coefficients(x);
+                let y = f(x);
                 let (w, p, q) = if j == 0 {
-                    (
-                        [-3.0, 4.0, -1.0],
-                        coefficients(x + e),
-                        coefficients(x + 2.0 * e),
-                    )
+                    ([-3.0, 4.0, -1.0], f(x + e), f(x + 2.0 * e))
                 } else if j == k {
-                    (
-                        [3.0, -4.0, 1.0],
-                        coefficients(x - e),
-                        coefficients(x - 2.0 * e),
-                    )
+                    ([3.0, -4.0, 1.0], f(x - e), f(x - 2.0 * e))
                 } else {
-                    ([0.0, 1.0, -1.0], coefficients(x + e), coefficients(x - e))
+                    ([0.0, 1.0, -1.0], f(x + e), f(x - e))
                 };
-                let d = combine(w.map(|w| w / (2.0 * e)), y, p, q);
-                if let (Some(c), Some(m)) = (path.c.get_mut(slot), path.m.get_mut(slot)) {
-                    *c = kalker_of(y.map(T::from_f64));
-                    *m = kalker_of(d.map(|d| T::from_f64(d * h)));
+                let d = combine(w.map(|w| w * h / (2.0 * e)), y, p, q);
+                if let (Some(yy), Some(m)) = (path.y.get_mut(slot), path.m.get_mut(slot)) {
+                    *yy = y.map(T::from_f64);
+                    *m = d.map(T::from_f64);
                 }
                 slot += 1;
             }
@@ -261,9 +208,9 @@ impl<T: Real> ShapePath<T> {
         path
     }
 
-    /// x clamped to the path's range (NaN: its low end).
+    /// x clamped to the range (NaN: its low end).
     #[inline(always)]
-    fn clamp(&self, x: T) -> T {
+    pub(crate) fn clamp(&self, x: T) -> T {
         if x >= self.lo {
             x.min(self.hi)
         } else {
@@ -271,11 +218,9 @@ impl<T: Real> ShapePath<T> {
         }
     }
 
-    /// Kalker's coefficients at x = ln(a/b) (clamped to the path's range; NaN: its low end).
-    /// Total.
-    #[inline]
-    pub fn kalker_at_ln(&self, x: T) -> Kalker<T> {
-        let x = self.clamp(x);
+    /// The functions at x, already clamped ([`Self::clamp`]). Total.
+    #[inline(always)]
+    pub(crate) fn at(&self, x: T) -> [T; N] {
         // the segment: past the cuts (a cut not used is hi, never passed)
         let s = usize::from(x > self.cut[0]) + usize::from(x > self.cut[1]);
         let (x0, inv_h, first, n) = (
@@ -285,33 +230,139 @@ impl<T: Real> ShapePath<T> {
             self.intervals.get(s).copied().unwrap_or(1),
         );
         let u = ((x - x0) * inv_h).max(T::ZERO);
-        let j = u.trunc_usize().min(usize::from(n) - 1);
+        let j = u.trunc_usize().min(usize::from(n).max(1) - 1);
         let f = (u - T::from_usize(j)).min(T::ONE);
         let i = usize::from(first) + j;
-        let one = kalker_of([T::ONE; 4]);
-        let zero = kalker_of([T::ZERO; 4]);
-        let (y0, y1) = (
-            self.c.get(i).copied().unwrap_or(one),
-            self.c.get(i + 1).copied().unwrap_or(one),
+        let zero = [T::ZERO; N];
+        let (y0, y1, m0, m1) = (
+            self.y.get(i).unwrap_or(&zero),
+            self.y.get(i + 1).unwrap_or(&zero),
+            self.m.get(i).unwrap_or(&zero),
+            self.m.get(i + 1).unwrap_or(&zero),
         );
-        let (m0, m1) = (
-            self.m.get(i).copied().unwrap_or(zero),
-            self.m.get(i + 1).copied().unwrap_or(zero),
-        );
-        // cubic Hermite: y0 + f·(m0 + f·(…)) in the Hermite basis
+        // cubic Hermite in f ∈ [0, 1]
         let f2 = f * f;
         let f3 = f2 * f;
         let h01 = T::from_f64(3.0) * f2 - T::TWO * f3;
         let h00 = T::ONE - h01;
         let h10 = f3 - T::TWO * f2 + f;
         let h11 = f3 - f2;
-        let at = |y0: T, y1: T, m0: T, m1: T| h00 * y0 + h10 * m0 + h01 * y1 + h11 * m1;
-        Kalker {
-            c11: at(y0.c11, y1.c11, m0.c11, m1.c11),
-            c22: at(y0.c22, y1.c22, m0.c22, m1.c22),
-            c23: at(y0.c23, y1.c23, m0.c23, m1.c23),
-            c33: at(y0.c33, y1.c33, m0.c33, m1.c33),
+        let mut out = zero;
+        for (o, (((y0, y1), m0), m1)) in out
+            .iter_mut()
+            .zip(y0.iter().zip(y1.iter()).zip(m0.iter()).zip(m1.iter()))
+        {
+            *o = h00 * *y0 + h10 * *m0 + h01 * *y1 + h11 * *m1;
         }
+        out
+    }
+}
+
+/// The creep shape ([`RollingShape`]) of any aligned ratio a/b in a range [e^{lo}, e^{hi}], per
+/// call in the working precision, for a contact whose aligned ratio changes every call (a
+/// varying contact: the laws' domain; a fixed contact's skewed rolling velocity uses
+/// [`super::skew_linear`]'s path of the patch's own creep matrix instead).
+///
+/// # Formula
+///
+/// - The coefficients: C of the exact theory ([`super::creep_matrix::aligned`]) and its slope
+///   dC/dx at 33 nodes in x = ln(a/b) ∈ [lo, hi] (built once, `f64`; the slope by a central
+///   difference of step 10⁻³ of the node spacing, one-sided of second order at the ends and
+///   the kinks): the ends and the kinks inside (±ln 20, the ends of the exact table) are
+///   nodes, uniform between them (a segment); per call the segment by two comparisons, the
+///   interval by its uniform spacing, cubic Hermite in x of C itself (no `exp`). Exact at the
+///   nodes, continuous (C¹ inside a segment). (A skewed patch's own matrix:
+///   [`super::skew_linear`], applied by the per-step wrench.)
+/// - √(a/b) (FASTSIM's): from a/b itself where the caller has it, else e^{x/2}.
+/// - `blend`'s (σ, γ): linear in x between the fitted shapes, as [`super::Blend::shape`].
+/// - `table`'s residual tables: [`super::table::Tables::at_ln`] (linear in x between the
+///   fitted shapes, as [`super::table::Tables::new`]).
+///
+/// # Domain and error
+///
+/// lo < hi in [ln 0.01, ln 100] (clamped; a/b outside the range is clamped to it).
+/// Measured (`host-tests/rolling_wrench.rs`): over [0.01, 100] the coefficients within
+/// 7.7e-4 relative of [`super::creep_matrix::aligned`] inside [0.1, 10], 8.8e-4 beyond (3.1e-3
+/// and 4.4e-3 with ln C interpolated on finite-difference slopes, then `exp`); a varying
+/// contact's rolling wrench: [`crate::contact::Rolling`]'s docs.
+///
+/// # Cost
+///
+/// Per call two comparisons and one truncation for the interval, one Hermite segment per
+/// coefficient (no `exp`, no division: ≈ 100 M4F instructions), `blend`'s constants, and
+/// `table`'s curves built with no grid ([`super::table::Tables::at_ln_once`], ≈ 330: the
+/// look-ups compute the grids they read, at most four per call, with an `exp` only in a
+/// tail); [`ShapePath::shape_at_ln`] alone 963 → 590 M4F f32 instructions against the path
+/// of ln C (6-step bisection, an `exp` per coefficient and for √(a/b)). Per contact 35 × 8
+/// numbers and 12 (a node where two segments meet is stored twice).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ShapePath<T> {
+    /// (C₁₁, C₂₂, C₂₃, C₃₃) along x
+    nodes: Nodes<T, 4>,
+    /// √(a/b) at the ends: e^{lo/2}, e^{hi/2}
+    rho: (T, T),
+}
+
+impl<T: Copy> ShapePath<T> {
+    /// Every `T` field through `f` (the dual form of the Jacobian).
+    pub(crate) fn map<U>(&self, f: impl Fn(T) -> U + Copy) -> ShapePath<U> {
+        ShapePath {
+            nodes: self.nodes.map(f),
+            rho: (f(self.rho.0), f(self.rho.1)),
+        }
+    }
+}
+
+/// Kalker's coefficients from (C₁₁, C₂₂, C₂₃, C₃₃).
+#[inline(always)]
+pub(crate) fn kalker_of<T>([c11, c22, c23, c33]: [T; 4]) -> Kalker<T> {
+    Kalker { c11, c22, c23, c33 }
+}
+
+/// √q for the aligned ratio q, within [√(e^{lo}), √(e^{hi})] (`rho`; NaN: the low end).
+#[inline(always)]
+pub(crate) fn rho_within<T: Real>(q: T, rho: (T, T)) -> T {
+    if q >= T::ZERO {
+        q.sqrt().max(rho.0).min(rho.1)
+    } else {
+        rho.0
+    }
+}
+
+/// The aligned ellipse's ratio q = a_r/b_r = a_M b_m/(b_m² cos²θ + a_M² sin²θ) for a rolling
+/// direction (cx, sx) of unit length ([`aligned_ellipse`] without its normalisation and square
+/// root). Total for positive semi-axes (1 otherwise).
+#[inline(always)]
+pub(crate) fn aligned_ratio<T: Real>(a_major: T, b_minor: T, cx: T, sx: T) -> T {
+    let d = b_minor * b_minor * cx * cx + a_major * a_major * sx * sx;
+    if d > T::ZERO {
+        a_major * b_minor / d
+    } else {
+        T::ONE
+    }
+}
+
+impl<T: Real> ShapePath<T> {
+    /// For aligned ratios in [e^{lo}, e^{hi}] and ν ∈ [0, 0.5] (an [`super::Elasticity`]'s).
+    pub fn new(lo: T, hi: T, nu: T) -> Self {
+        let nu = nu.to_f64();
+        let (lo, hi) = range(lo.to_f64(), hi.to_f64());
+        Self {
+            nodes: Nodes::new(lo, hi, |x| {
+                super::creep_matrix::aligned_f64(libm::exp(x), nu)
+            }),
+            rho: (
+                T::from_f64(libm::exp(0.5 * lo)),
+                T::from_f64(libm::exp(0.5 * hi)),
+            ),
+        }
+    }
+
+    /// Kalker's coefficients at x = ln(a/b) (clamped to the path's range; NaN: its low end).
+    /// Total.
+    #[inline]
+    pub fn kalker_at_ln(&self, x: T) -> Kalker<T> {
+        kalker_of(self.nodes.at(self.nodes.clamp(x)))
     }
 
     /// The creep shape for the aligned ratio a/b (see the type docs). Total.
@@ -327,30 +378,27 @@ impl<T: Real> ShapePath<T> {
     /// [`ShapePath::shape`] for x = ln(a/b) (clamped to the path's range; NaN: its low end).
     /// Total.
     pub fn shape_at_ln(&self, x: T) -> RollingShape<T> {
-        let x = self.clamp(x);
-        self.build(x, (T::HALF * x).exp())
+        let x = self.nodes.clamp(x);
+        shape_of(x, (T::HALF * x).exp(), kalker_of(self.nodes.at(x)))
     }
 
     /// [`ShapePath::shape`] for the aligned ratio q = a/b and x = ln q (the caller's: no `exp`
     /// for √q).
     #[inline]
     pub(crate) fn shape_at(&self, q: T, x: T) -> RollingShape<T> {
-        let rho = if q >= T::ZERO {
-            q.sqrt().max(self.rho.0).min(self.rho.1)
-        } else {
-            self.rho.0
-        };
-        self.build(self.clamp(x), rho)
+        let x = self.nodes.clamp(x);
+        shape_of(x, rho_within(q, self.rho), kalker_of(self.nodes.at(x)))
     }
+}
 
-    #[inline(always)]
-    fn build(&self, x: T, rho: T) -> RollingShape<T> {
-        RollingShape {
-            rho,
-            kalker: self.kalker_at_ln(x),
-            blend: super::fitted::blend_at_ln(x),
-            table: super::residual::Tables::at_ln_once(x),
-            coupling: (T::ZERO, T::ZERO),
-        }
+/// The creep shape at x = ln(a/b) (clamped) with √(a/b) and the coefficients given.
+#[inline(always)]
+pub(crate) fn shape_of<T: Real>(x: T, rho: T, kalker: Kalker<T>) -> RollingShape<T> {
+    RollingShape {
+        rho,
+        kalker,
+        blend: super::fitted::blend_at_ln(x),
+        table: super::residual::Tables::at_ln_once(x),
+        coupling: (T::ZERO, T::ZERO),
     }
 }
