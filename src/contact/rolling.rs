@@ -42,8 +42,8 @@
 //!   of the matrix's entries ([`crate::friction::rolling::skew_linear`]), a varying one's from
 //!   its [`ShapePath`] and skew ratios ([`crate::friction::rolling::SkewGrid`]). The linear
 //!   limit is the exact reference's table, within its error (K₃₃ 4.7 %, K₁₃ 4.3 %, the rest
-//!   ≤ 2 %; the grid's bilinear K₃₃ 6.9 %); a fixed contact within 2.7e-5 fN / fNc of the `f64`
-//!   build ([`Rolling::wrench_aligned`], the table's cubic Hermite) at P/Q ≥ 0.025, 6.1e-4 at
+//!   ≤ 2 %; the grid's bilinear K₃₃ 6.9 %); a fixed contact within 3.1e-4 fN / fNc of the `f64`
+//!   build ([`Rolling::wrench_aligned`], the table's cubic Hermite) at P/Q ≥ 0.025, 7.4e-3 at
 //!   P/Q = 0.0025 (a patch 40 times longer than wide; 6e-3 and 0.031 while the skew ratios were
 //!   linear in t between 17 nodes). The rest of the aligned ellipse is the approximation (the
 //!   laws' nonlinear data are for rolling along an axis): exact along both axes, continuous in
@@ -100,7 +100,7 @@
 //! Host (x86-64, criterion, per call, before the curves read their nodes from flash and
 //! before the per-call curves): 377 ns, 1.26 µs, 1.55 µs (`RollingContact` 338 ns in the same
 //! run). Per contact: two [`RollingShape`]s (528 bytes each in `f32`) and the path of the
-//! skewed creep matrix (432 numbers) (fixed), a [`ShapePath`] (292 numbers) and a `SkewGrid`
+//! skewed creep matrix (216 numbers) (fixed), a [`ShapePath`] (292 numbers) and a `SkewGrid`
 //! (378 numbers) (varying).
 //!
 //! # References

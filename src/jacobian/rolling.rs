@@ -2,7 +2,7 @@
 //! [`VaryingContact`] at a step's curvatures): the same code as their `wrench` on dual
 //! numbers. The rolling velocity V is held fixed (no derivative with respect to it); the creep
 //! shape depends on V's direction and on a/b only, so it is built in `T` as the plain call
-//! builds it and lifted (per call: 130 values for the shape cached along an axis, 432 for the
+//! builds it and lifted (per call: 130 values for the shape cached along an axis, 216 for the
 //! path of a fixed contact's skewed V, 292 and 378 for a varying contact's path and skew grid
 //! — the cost of this form, see the [module docs](super)).
 

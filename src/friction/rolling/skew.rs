@@ -46,28 +46,32 @@ pub fn aligned_ellipse<T: Real>(a_major: T, b_minor: T, cx: T, sx: T) -> (T, T) 
     (ar, ab / ar)
 }
 
-/// Nodes of a [`Nodes`] path.
-const PATH_NODES: usize = 33;
 /// Segments of a [`Nodes`] path: the range cut at the kinks inside it (at most two).
 const SEGMENTS: usize = 3;
-/// Stored nodes: a node where two segments meet is stored once per segment (its one-sided
-/// tangents differ).
-const SLOTS: usize = PATH_NODES + SEGMENTS - 1;
+/// Stored nodes of a path of `n` nodes: a node where two segments meet is stored once per
+/// segment (its one-sided tangents differ).
+pub(crate) const fn slots(n: usize) -> usize {
+    n + SEGMENTS - 1
+}
+/// [`ShapePath`]'s stored nodes (33 nodes).
+const SHAPE_SLOTS: usize = slots(33);
 
 /// Where the exact coefficients ([`super::creep_matrix::aligned`]) have a kink in
 /// x = ln(a/b): ±ln 20, the ends of the exact table (Kalker's asymptotic growth beyond).
 const KINKS: [f64; 2] = [-2.995_732_273_553_991, 2.995_732_273_553_991];
 
 /// `N` smooth functions of x = ln(a/b) over a range [lo, hi], per call by cubic Hermite on
-/// their values and slopes at 33 nodes (built once, `f64`): the ends and the kinks inside
-/// (±ln 20, the ends of the exact table) are nodes, uniform between them (a segment). The
+/// their values and slopes at the nodes, `S` stored (one per node, a node where two segments
+/// meet twice: [`slots`]; built once, `f64`): the ends and the kinks given inside the range
+/// ([`ShapePath`]: ±ln 20, the ends of the exact table) are nodes, uniform between them (a
+/// segment). The
 /// slopes by a central difference of step 10⁻³ of the node spacing, one-sided of second order
 /// at a segment's ends. Per call the segment by two comparisons, the interval by its uniform
 /// spacing, then one Hermite segment per function: no `exp`, no division. Exact at the nodes,
 /// continuous, C¹ inside a segment. The path of [`ShapePath`] (Kalker's coefficients) and of a
 /// fixed contact's skewed creep matrix ([`super::skew_linear::SkewPath`]).
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub(crate) struct Nodes<T, const N: usize> {
+pub(crate) struct Nodes<T, const N: usize, const S: usize> {
     /// the range [lo, hi] in x
     lo: T,
     hi: T,
@@ -80,14 +84,14 @@ pub(crate) struct Nodes<T, const N: usize> {
     first: [u8; SEGMENTS],
     intervals: [u8; SEGMENTS],
     /// the functions at the nodes, by slot
-    y: [[T; N]; SLOTS],
+    y: [[T; N]; S],
     /// their Hermite tangents at the nodes, by slot: dy/dx times the segment's node spacing
-    m: [[T; N]; SLOTS],
+    m: [[T; N]; S],
 }
 
-impl<T: Copy, const N: usize> Nodes<T, N> {
+impl<T: Copy, const N: usize, const S: usize> Nodes<T, N, S> {
     /// Every `T` field through `f` (the dual form of the Jacobian).
-    pub(crate) fn map<U>(&self, f: impl Fn(T) -> U + Copy) -> Nodes<U, N> {
+    pub(crate) fn map<U>(&self, f: impl Fn(T) -> U + Copy) -> Nodes<U, N, S> {
         Nodes {
             lo: f(self.lo),
             hi: f(self.hi),
@@ -119,16 +123,16 @@ fn combine<const N: usize>(w: [f64; 3], a: [f64; N], b: [f64; N], c: [f64; N]) -
     out
 }
 
-impl<T: Real, const N: usize> Nodes<T, N> {
+impl<T: Real, const N: usize, const S: usize> Nodes<T, N, S> {
     /// The functions `f` over [lo, hi] (clamped to [ln 0.01, ln 100]; hi > lo).
-    pub(crate) fn new(lo: f64, hi: f64, f: impl Fn(f64) -> [f64; N]) -> Self {
+    pub(crate) fn new(lo: f64, hi: f64, kinks: &[f64], f: impl Fn(f64) -> [f64; N]) -> Self {
         let (lo, hi) = range(lo, hi);
         // breakpoints: the ends and the kinks strictly inside
         let mut br = [hi; SEGMENTS + 1];
         let mut n = 0;
         for b in core::iter::once(lo)
             .chain(
-                KINKS
+                kinks
                     .iter()
                     .copied()
                     .filter(|k| *k > lo + 1e-9 && *k < hi - 1e-9),
@@ -141,9 +145,11 @@ impl<T: Real, const N: usize> Nodes<T, N> {
             }
         }
         let segments = n.saturating_sub(1);
-        // PATH_NODES − 1 intervals shared among the segments by length, ≥ 1 each
+        // the nodes' intervals (one slot per node, a node where two segments meet twice)
+        // shared among the segments by length, ≥ 1 each
         let total = hi - lo;
-        let mut left = PATH_NODES - 1;
+        let intervals = S.saturating_sub(segments).max(segments);
+        let mut left = intervals;
         let mut path = Self {
             lo: T::from_f64(lo),
             hi: T::from_f64(hi),
@@ -152,8 +158,8 @@ impl<T: Real, const N: usize> Nodes<T, N> {
             inv_h: [T::ONE; SEGMENTS],
             first: [0; SEGMENTS],
             intervals: [1; SEGMENTS],
-            y: [[T::ZERO; N]; SLOTS],
-            m: [[T::ZERO; N]; SLOTS],
+            y: [[T::ZERO; N]; S],
+            m: [[T::ZERO; N]; S],
         };
         let mut slot = 0usize;
         for s in 0..segments.min(SEGMENTS) {
@@ -165,7 +171,7 @@ impl<T: Real, const N: usize> Nodes<T, N> {
             let k = if rest == 0 {
                 left
             } else {
-                let share = ((b - a) / total * (PATH_NODES - 1) as f64) as usize;
+                let share = ((b - a) / total * intervals as f64) as usize;
                 share.max(1).min(left.saturating_sub(rest).max(1))
             };
             left -= k;
@@ -298,7 +304,7 @@ impl<T: Real, const N: usize> Nodes<T, N> {
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ShapePath<T> {
     /// (C₁₁, C₂₂, C₂₃, C₃₃) along x
-    nodes: Nodes<T, 4>,
+    nodes: Nodes<T, 4, SHAPE_SLOTS>,
     /// √(a/b) at the ends: e^{lo/2}, e^{hi/2}
     rho: (T, T),
 }
@@ -348,7 +354,7 @@ impl<T: Real> ShapePath<T> {
         let nu = nu.to_f64();
         let (lo, hi) = range(lo.to_f64(), hi.to_f64());
         Self {
-            nodes: Nodes::new(lo, hi, |x| {
+            nodes: Nodes::new(lo, hi, &KINKS, |x| {
                 super::creep_matrix::aligned_f64(libm::exp(x), nu)
             }),
             rho: (
@@ -356,13 +362,6 @@ impl<T: Real> ShapePath<T> {
                 T::from_f64(libm::exp(0.5 * hi)),
             ),
         }
-    }
-
-    /// Kalker's coefficients at x = ln(a/b) (clamped to the path's range; NaN: its low end).
-    /// Total.
-    #[inline]
-    pub fn kalker_at_ln(&self, x: T) -> Kalker<T> {
-        kalker_of(self.nodes.at(self.nodes.clamp(x)))
     }
 
     /// The creep shape for the aligned ratio a/b (see the type docs). Total.

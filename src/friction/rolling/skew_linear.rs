@@ -19,8 +19,9 @@
 //!
 //! - a fixed contact (r fixed, so t and every entry are functions of ln q alone): the six
 //!   entries (K₁₁, K₂₂, K₂₃, K₃₃, κ₁₂√(C₁₁C₂₂), κ₁₃√(C₁₁C₃₃)) of [`super::CreepMatrix::new`]
-//!   (the aligned coefficients times the table's cubic Hermite in t and ln r) on 33 nodes in
-//!   ln q, values and slopes, cubic Hermite per call (`SkewPath`: the per-step wrench's); or
+//!   (the aligned coefficients times the table's cubic Hermite in t and ln r) on 17 nodes in
+//!   ln q (t = j/16), values and slopes, cubic Hermite per call (`SkewPath`: the per-step
+//!   wrench's); or
 //!   one row of the ratios alone, 17 t-nodes (t = j/16) at its r, linear in t per call,
 //!   [`SkewRow`];
 //! - a varying contact: the 7 × 9 nodes, [`SkewGrid`], linear in t and in ln r per call
@@ -36,8 +37,8 @@
 //! [`super::CreepMatrix::new`] (K₁₁ 0.53 %, K₂₂ 0.67 %, K₂₃ 2.0 %, K₃₃ 4.7 %, K₁₂ 0.31 %, K₁₃
 //! 4.3 %); the grid K₁₁ 0.82 %, K₂₂ 0.88 %, K₂₃ 2.5 % (1.8 % at r = 3), K₃₃ 6.9 % (bilinear near the major axis
 //! of long patches at ν ≈ ½), K₁₂ 0.46 %, K₁₃ 4.3 %. `SkewPath` is [`super::CreepMatrix::new`]
-//! to its Hermite in ln q: a fixed contact's skewed wrench within 2.7e-5 fN / fNc of the one
-//! built on [`super::CreepMatrix::new`] per call at a/b ≈ 4, 6.1e-4 at a/b ≈ 40
+//! to its Hermite in ln q: a fixed contact's skewed wrench within 3.1e-4 fN / fNc of the one
+//! built on [`super::CreepMatrix::new`] per call at a/b ≈ 4, 7.4e-3 at a/b ≈ 40
 //! (`host-tests/rolling_wrench.rs`).
 //!
 //! # Cost
@@ -45,7 +46,7 @@
 //! Per call: one division, one linear (row) or bilinear (grid) interpolation of six numbers,
 //! two square roots; `SkewPath`: one Hermite segment of six numbers (with the coefficients:
 //! no [`super::ShapePath`] look-up, no division, no square root). Per contact: 103 numbers
-//! (row), 378 (grid), 35 × 12 and 12 (`SkewPath`).
+//! (row), 378 (grid), 17 × 12 and 12 (`SkewPath`).
 
 use super::creep_matrix::{
     SKEW_NODES, aligned_f64, skew_column_f64, skew_in_t, skew_node_f64, skew_ratios_f64,
@@ -214,19 +215,26 @@ pub(crate) fn skewed<T: Real>(k: &Kalker<T>, ratios: [T; 6], cx: T, sx: T) -> (K
     )
 }
 
+/// [`SkewPath`]'s nodes: 17, uniform in ln q over [−ln r, ln r] (no segments), so at
+/// t = j/16: the skew table's t-nodes (j/8, where its cubic pieces meet) are nodes.
+const SKEW_NODES_T: usize = 17;
+
 /// A fixed contact's creep matrix over its skewed rolling directions, as functions of the
 /// aligned ratio alone: the patch ratio r is fixed, so t = ½(1 − ln q/ln r) is a function of
 /// x = ln q, and so is every entry (see the [module docs](self)). The six functions
 /// (K₁₁, K₂₂, K₂₃, K₃₃, κ₁₂√(C₁₁C₂₂), κ₁₃√(C₁₁C₃₃)) of x ∈ [−ln r, ln r], each the product of
 /// the exact coefficients ([`super::creep_matrix::aligned`]) and the skew table's ratios (cubic
 /// Hermite in t and ln r, as [`super::CreepMatrix::new`]), on the nodes of a
-/// [`super::skew::Nodes`] path (33 nodes, values and slopes, built once in `f64`); per call one
+/// [`super::skew::Nodes`] path (17 nodes uniform in x, one segment: t = j/16, so the skew
+/// table's t-nodes j/8, where its cubic pieces meet, are nodes — 33 nodes cut at ±ln 20 as
+/// [`super::ShapePath`]'s were 12 times closer to [`super::CreepMatrix::new`] at a/b ≈ 4 but
+/// made a fixed contact 0.7 KB larger; values and slopes, built once in `f64`); per call one
 /// Hermite segment each, the couplings times ∓|sinθ cosθ|. One look-up for the coefficients
 /// and the skew ratios, no square root. Exact at the nodes (the ends: the two axes, ρ = 1,
 /// κ·sinθcosθ = 0).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) struct SkewPath<T> {
-    nodes: Nodes<T, 6>,
+    nodes: Nodes<T, 6, SKEW_NODES_T>,
     /// √q at the ends: 1/√r, √r
     rho: (T, T),
 }
@@ -271,7 +279,7 @@ impl<T: Real> SkewPath<T> {
         };
         let rho = libm::exp(0.5 * x_r);
         Self {
-            nodes: Nodes::new(-x_r, x_r, entries),
+            nodes: Nodes::new(-x_r, x_r, &[], entries),
             rho: (T::from_f64(1.0 / rho), T::from_f64(rho)),
         }
     }
