@@ -37,19 +37,20 @@
 //!   shapes of both axes cached at construction: the rolling law's error only
 //!   (`RollingContact` on the patch: within 8.7e-16 fN along +x, 1.5e-7 along the other
 //!   directions, `host-tests/rolling_wrench.rs`).
-//! - **V skewed** (and every step of a varying contact): the creep shape of a_r/b_r per call
-//!   from the contact's [`ShapePath`] and its skew ratios ([`crate::friction::rolling::SkewRow`]
-//!   of a fixed contact, [`crate::friction::rolling::SkewGrid`] of a varying one): the linear
-//!   limit is the patch's creep matrix (the exact reference's table, within its error:
-//!   K₃₃ 4.7 %, K₁₃ 4.3 %, the rest ≤ 2 %; the grid's bilinear K₃₃ 6.9 %); within 6e-3 fN / fNc
-//!   of the `f64` build ([`Rolling::wrench_aligned`], the table's cubic Hermite) at P/Q ≥ 0.025,
-//!   0.031 at P/Q = 0.0025 (near the major axis of a patch 40 times longer than wide, where the
-//!   skew table is not resolved). The rest of the aligned ellipse is the approximation (the
+//! - **V skewed** (and every step of a varying contact): the creep shape of a_r/b_r per call,
+//!   its linear part the patch's own creep matrix: a fixed contact's from one path in ln(a_r/b_r)
+//!   of the matrix's entries ([`crate::friction::rolling::skew_linear`]), a varying one's from
+//!   its [`ShapePath`] and skew ratios ([`crate::friction::rolling::SkewGrid`]). The linear
+//!   limit is the exact reference's table, within its error (K₃₃ 4.7 %, K₁₃ 4.3 %, the rest
+//!   ≤ 2 %; the grid's bilinear K₃₃ 6.9 %); a fixed contact within 3.1e-4 fN / fNc of the `f64`
+//!   build ([`Rolling::wrench_aligned`], the table's cubic Hermite) at P/Q ≥ 0.025, 7.4e-3 at
+//!   P/Q = 0.0025 (a patch 40 times longer than wide; 6e-3 and 0.031 while the skew ratios were
+//!   linear in t between 17 nodes). The rest of the aligned ellipse is the approximation (the
 //!   laws' nonlinear data are for rolling along an axis): exact along both axes, continuous in
 //!   θ. Measured against the exact theory on the skewed patch
 //!   (`tools/data/rolling_ref_heldout.csv`, `python3 tools/rolling_heldout.py`,
 //!   `bench-results/rolling-heldout.md`): with `table`, 330 random skewed states, worst
-//!   0.107 fN / 0.097 fNc for patches with b/a ≥ 0.2 and 0.147 / 0.334 for b/a < 0.2 (0.194 /
+//!   0.106 fN / 0.098 fNc for patches with b/a ≥ 0.2 and 0.147 / 0.334 for b/a < 0.2 (0.194 /
 //!   0.196 and 0.433 / 0.952 with the aligned-ellipse rule's diagonal alone; FASTSIM 32 × 32
 //!   with the same coefficients: 0.243 / 0.162 and 0.281 / 1.002). The full slip stays exact
 //!   (the real patch's).
@@ -90,15 +91,17 @@
 //!
 //! Cortex-M4F, `f32`, `table`, 64 creep states (`bench-results/qemu.csv`, stage `rolling`):
 //! fixed contact, V along an axis **1,098** instructions (`RollingContact::wrench` alone: 951);
-//! V skewed 2,282 (the creep shape per call from [`ShapePath`] and the skew ratios: the
-//! coefficients, and `table`'s curves built per call with no grid stored, each look-up
-//! computing the one it reads; 2,233 with the aligned ellipse's diagonal alone, 5,025 while
-//! every curve's grid and tails were built per call: 24 `exp`); varying contact 2,766 (2,608
-//! without the skew ratios: they need one more `ln`; 5,301). Host (x86-64, criterion, per call, before the curves read their
-//! nodes from flash and before the per-call curves): 377 ns, 1.26 µs, 1.55 µs
-//! (`RollingContact` 338 ns in the same run). Per contact: two [`RollingShape`]s (528 bytes
-//! each in `f32`), a [`ShapePath`] and a `SkewRow` (102 numbers) (fixed), a [`ShapePath`] and
-//! a `SkewGrid` (378 numbers) (varying).
+//! V skewed 1,809 (the creep shape per call: one `ln`, the creep matrix from one Hermite
+//! segment of its path, `blend`'s constants, and `table`'s curves built per call with no grid
+//! stored, each look-up computing the one it reads — ≈ 330 to build them and ≈ 135 more in the
+//! law than on a cached shape; 2,282 with the ln-coefficients' path, a bisection and five
+//! `exp`, and the skew ratios apart; 5,025 while every curve's grid and tails were built per
+//! call: 24 `exp`); varying contact 2,292 (2,766 with the ln-coefficients' path; 5,301).
+//! Host (x86-64, criterion, per call, before the curves read their nodes from flash and
+//! before the per-call curves): 377 ns, 1.26 µs, 1.55 µs (`RollingContact` 338 ns in the same
+//! run). Per contact: two [`RollingShape`]s (528 bytes each in `f32`) and the path of the
+//! skewed creep matrix (216 numbers) (fixed), a [`ShapePath`] (292 numbers) and a `SkewGrid`
+//! (378 numbers) (varying).
 //!
 //! # References
 //!
@@ -110,7 +113,9 @@ use core::marker::PhantomData;
 use super::{Contact, VaryingContact, Wrench};
 use crate::friction::rolling::{
     Creep, CreepMatrix, Elasticity, Input, RollingLaw, RollingShape, RollingSlip, RollingVelocity,
-    ShapePath, SkewGrid, SkewRow, aligned_ellipse, skew_linear::skewed,
+    ShapePath, SkewGrid, aligned_ellipse,
+    skew::aligned_ratio,
+    skew_linear::{SkewPath, skewed},
 };
 use crate::friction::{Best, Constants, Explicit, FrictionLaw, Slip, SlipState};
 use crate::geometry::Curvatures;
@@ -128,12 +133,12 @@ pub trait RollingBase<T: Real> {
 }
 
 /// A fixed contact's creep shapes: rolling along x (a/b) and along y (b/a), and the path
-/// between them for a skewed rolling velocity with the patch's skew ratios ([`SkewRow`]).
+/// of the patch's creep matrix between them for a skewed rolling velocity
+/// ([`crate::friction::rolling::skew_linear`]).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct FixedShapes<T> {
     pub(crate) axes: [RollingShape<T>; 2],
-    pub(crate) path: ShapePath<T>,
-    pub(crate) skew: SkewRow<T>,
+    pub(crate) skew: SkewPath<T>,
 }
 
 /// A varying contact's creep shapes: the path over every aligned ratio and the skew ratios of
@@ -147,7 +152,7 @@ pub struct VaryingShapes<T> {
 impl<T: Real, N, D> RollingBase<T> for Contact<T, N, D, Best> {
     type Cache = FixedShapes<T>;
     /// The creep shapes for rolling along x (a/b) and along y (b/a) (one for a circle), and
-    /// the path between them ([`ShapePath`]).
+    /// the path of the patch's creep matrix between them.
     fn cache(&self, elasticity: &Elasticity<T>) -> Self::Cache {
         let m1 = self.constants.m1();
         // a/b = 1/√m₁
@@ -162,8 +167,7 @@ impl<T: Real, N, D> RollingBase<T> for Contact<T, N, D, Best> {
         let major = if r >= T::ONE { r } else { T::ONE / r };
         FixedShapes {
             axes: [along_x, along_y],
-            path: ShapePath::new(-r.ln(), r.ln(), elasticity.nu()),
-            skew: SkewRow::new(major, elasticity.nu()),
+            skew: SkewPath::new(major, elasticity.nu()),
         }
     }
 }
@@ -267,20 +271,15 @@ pub(crate) fn direction<T: Real>(v: RollingVelocity<T>) -> (T, T, T) {
 pub(crate) enum Shapes<'a, T> {
     /// Cached and exact (rolling along an axis, or a circle).
     One(&'a RollingShape<T>),
-    /// The aligned ellipse's shape from the contact's path ([`ShapePath::shape`]) turned into
-    /// the patch's by its skew ratios ([`crate::friction::rolling::skew_linear`]), per call.
-    Path(&'a ShapePath<T>, Skew<'a, T>),
+    /// A fixed contact's skewed V: the patch's creep matrix from its path ([`SkewPath`]) and
+    /// the aligned ellipse's per-shape data, per call.
+    Skewed(&'a SkewPath<T>),
+    /// A varying contact: the aligned ellipse's shape from the contact's path
+    /// ([`ShapePath::shape`]) turned into the patch's by its skew ratios ([`SkewGrid`],
+    /// [`crate::friction::rolling::skew_linear`]), per call.
+    Path(&'a ShapePath<T>, &'a SkewGrid<T>),
     /// The aligned ellipse's own shape, built per call in `f64` ([`RollingShape::new`]).
     Build,
-}
-
-/// A contact's skew ratios: one patch ratio (fixed) or all (varying).
-#[derive(Clone, Copy)]
-pub(crate) enum Skew<'a, T> {
-    /// A fixed contact's ([`SkewRow`]).
-    Row(&'a SkewRow<T>),
-    /// A varying contact's ([`SkewGrid`]).
-    Grid(&'a SkewGrid<T>),
 }
 
 /// What one step needs besides the creep shape: the patch, f, E*-free parts.
@@ -317,14 +316,7 @@ impl<T: Real, N: NormalLaw<T>, D: Damping<T>, L: RollingLaw> Rolling<T, Contact<
     /// builds it in `f64` instead).
     #[inline]
     pub fn wrench(&self, h: T, hdot: T, slip: Slip<T>, v: RollingVelocity<T>) -> Wrench<T, ()> {
-        let cache = &self.cache;
-        self.fixed(
-            h,
-            hdot,
-            slip,
-            v,
-            Shapes::Path(&cache.path, Skew::Row(&cache.skew)),
-        )
+        self.fixed(h, hdot, slip, v, Shapes::Skewed(&self.cache.skew))
     }
 
     /// [`Rolling::wrench`] with the aligned ellipse's creep shape built per call in `f64`
@@ -391,7 +383,7 @@ impl<T: Real, D: Damping<T>, L: RollingLaw> Rolling<T, VaryingContact<T, D, Best
         let step = Step::of(patch, friction.coefficient());
         let full_slip = |st: &SlipState<T>| Best::traction(&constants, st).0;
         let frame = direction(v);
-        let shapes = Shapes::Path(&self.cache.path, Skew::Grid(&self.cache.skew));
+        let shapes = Shapes::Path(&self.cache.path, &self.cache.skew);
         tangential::<T, L>(&step, shapes, self.elasticity, frame, slip, full_slip)
     }
 }
@@ -468,16 +460,17 @@ pub(crate) fn tangential<T: Real, L: RollingLaw>(
     };
     let cr = match shapes {
         Shapes::One(shape) => L::creep(&input(shape)),
-        Shapes::Path(path, skew) => {
-            let (ar, br) = aligned_ellipse(a, b, cx, sx);
-            let ln_q = (ar / br).ln();
+        Shapes::Skewed(path) => {
+            let q = aligned_ratio(a, b, cx, sx);
+            L::creep(&input(&path.shape_at(q, q.ln(), cx, sx)))
+        }
+        Shapes::Path(path, grid) => {
+            let q = aligned_ratio(a, b, cx, sx);
+            let ln_q = q.ln();
             // the aligned ellipse's shape, its coefficients turned into the patch's in place
             // (a new RollingShape would copy its tables)
-            let mut shape = path.shape_at_ln(ln_q);
-            let ratios = match skew {
-                Skew::Row(row) => row.at(ln_q),
-                Skew::Grid(grid) => grid.at((a / b).ln(), ln_q),
-            };
+            let mut shape = path.shape_at(q, ln_q);
+            let ratios = grid.at((a / b).ln(), ln_q);
             (shape.kalker, shape.coupling) = skewed(&shape.kalker, ratios, cx, sx);
             L::creep(&input(&shape))
         }

@@ -54,7 +54,7 @@
 //! (derivative zero) at the call, nothing is stored: [`LinearNormal`], [`LinearDamping`] and
 //! [`LinearLaw`] say how for each law (`best` lifts only the table piece it reads, not its
 //! 1,404 bytes of per-contact tables; a rolling contact lifts its creep shape, 130 values, or
-//! the skewed path, 165). No allocation, no iteration, `no_std`; the cost is fixed (see
+//! the skewed path, 216). No allocation, no iteration, `no_std`; the cost is fixed (see
 //! below). Tables are read in the base precision ([`Real::of_precision`],
 //! [`Real::from_base`]).
 //!

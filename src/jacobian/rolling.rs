@@ -2,14 +2,15 @@
 //! [`VaryingContact`] at a step's curvatures): the same code as their `wrench` on dual
 //! numbers. The rolling velocity V is held fixed (no derivative with respect to it); the creep
 //! shape depends on V's direction and on a/b only, so it is built in `T` as the plain call
-//! builds it and lifted (per call: 130 values for the shape cached along an axis, 165 for the
-//! path of a skewed V — the cost of this form, see the [module docs](super)).
+//! builds it and lifted (per call: 130 values for the shape cached along an axis, 216 for the
+//! path of a fixed contact's skewed V, 292 and 378 for a varying contact's path and skew grid
+//! — the cost of this form, see the [module docs](super)).
 
 use super::contact::{Inputs, pack};
 use super::lift::{LinearDamping, LinearNormal};
 use super::{At, D5, Dual, Jacobian, Linearize, State};
 use crate::Real;
-use crate::contact::rolling::{Shapes, Skew, Step, direction, tangential};
+use crate::contact::rolling::{Shapes, Step, direction, tangential};
 use crate::contact::{Contact, Rolling, VaryingContact};
 use crate::friction::rolling::RollingLaw;
 use crate::friction::{Best, Constants, FrictionLaw as _, SlipState};
@@ -41,7 +42,6 @@ where
         let (cx, sx, speed) = direction(s.rolling);
         let [along_x, along_y] = &self.cache.axes;
         let one;
-        let path;
         let skew;
         let shapes = if sx == T::ZERO || along_x.rho == T::ONE {
             one = along_x.map(lift);
@@ -50,9 +50,8 @@ where
             one = along_y.map(lift);
             Shapes::One(&one)
         } else {
-            path = self.cache.path.map(lift);
             skew = self.cache.skew.map(lift);
-            Shapes::Path(&path, Skew::Row(&skew))
+            Shapes::Skewed(&skew)
         };
         let c = &self.contact;
         let q = Inputs::of(s);
@@ -117,7 +116,7 @@ where
         let elasticity = rolling.elasticity.map(lift);
         let w = tangential::<D5<T>, L>(
             &step,
-            Shapes::Path(&path, Skew::Grid(&skew)),
+            Shapes::Path(&path, &skew),
             elasticity,
             frame,
             q.slip,

@@ -186,6 +186,27 @@ pub(crate) fn skew_ratios_f64(x: f64, t: f64, nu: f64) -> [f64; 6] {
     })
 }
 
+/// The skewed table's six ratios at its t-nodes (t = j/8) for x = ln r ∈ [0, ln 20] (clamped):
+/// each node's cubic Hermite in x. [`skew_in_t`] of it equals [`skew_ratios_f64`] (the two
+/// Hermites are linear in the nodes: their order does not matter) at one Hermite in t per
+/// call (a fixed contact's r).
+pub(crate) fn skew_column_f64(x: f64, nu: f64) -> [[f64; 6]; SKEW_NODES.1] {
+    let (nx, _) = SKEW_NODES;
+    core::array::from_fn(|j| {
+        [0, 1, 2, 3, 4, 5].map(|e| hermite(nx, |i| skew_entry_f64(i, j, e, nu), 0.0, LN20 / 6.0, x))
+    })
+}
+
+/// The six ratios at t ∈ [0, 1] (clamped) from a column of [`skew_column_f64`]: cubic Hermite
+/// in t.
+pub(crate) fn skew_in_t(column: &[[f64; 6]; SKEW_NODES.1], t: f64) -> [f64; 6] {
+    let (_, nt) = SKEW_NODES;
+    [0, 1, 2, 3, 4, 5].map(|e| {
+        let node = |j: usize| column.get(j).and_then(|c| c.get(e)).copied().unwrap_or(0.0);
+        hermite(nt, node, 0.0, 1.0 / 8.0, t)
+    })
+}
+
 /// Kalker's linear creep matrix of a patch rolled at any angle to its axes (see the
 /// [module docs](self)): (F_x, F_y, M_z/c)/(Gc²) = −K·(ξ, η, cφ) in the rolling frame.
 #[derive(Clone, Copy, Debug, PartialEq)]

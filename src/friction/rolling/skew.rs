@@ -46,82 +46,93 @@ pub fn aligned_ellipse<T: Real>(a_major: T, b_minor: T, cx: T, sx: T) -> (T, T) 
     (ar, ab / ar)
 }
 
-/// Nodes of [`ShapePath`]'s Kalker table.
-const PATH_NODES: usize = 33;
+/// Segments of a [`Nodes`] path: the range cut at the kinks inside it (at most two).
+const SEGMENTS: usize = 3;
+/// Stored nodes of a path of `n` nodes: a node where two segments meet is stored once per
+/// segment (its one-sided tangents differ).
+pub(crate) const fn slots(n: usize) -> usize {
+    n + SEGMENTS - 1
+}
+/// [`ShapePath`]'s stored nodes (33 nodes).
+const SHAPE_SLOTS: usize = slots(33);
 
 /// Where the exact coefficients ([`super::creep_matrix::aligned`]) have a kink in
 /// x = ln(a/b): ±ln 20, the ends of the exact table (Kalker's asymptotic growth beyond).
 const KINKS: [f64; 2] = [-2.995_732_273_553_991, 2.995_732_273_553_991];
 
-/// The creep shape ([`RollingShape`]) of any aligned ratio a/b in a range [e^{lo}, e^{hi}], per
-/// call in the working precision, for a contact whose aligned ratio changes every call (a
-/// skewed rolling velocity: the range between the two axes' ratios; a varying contact: the
-/// laws' domain).
-///
-/// # Formula
-///
-/// - The coefficients: ln C of the exact theory's ([`super::creep_matrix::aligned`]) at 33
-///   nodes in x = ln(a/b) ∈ [lo, hi] (built once, `f64`): the ends and the kinks inside
-///   (±ln 20, the ends of the exact table) are nodes, uniform between them; per call cubic
-///   Hermite in x with finite-difference slopes, one-sided at the ends and the kinks, then
-///   `exp`. Exact at the nodes (the ends: the two axes of a fixed contact), continuous. (A
-///   skewed patch's own matrix: [`super::skew_linear`], applied by the per-step wrench.)
-/// - `blend`'s (σ, γ): linear in x between the fitted shapes, as [`super::Blend::shape`].
-/// - `table`'s residual tables: [`super::table::Tables::at_ln`] (linear in x between the
-///   fitted shapes, as [`super::table::Tables::new`]).
-///
-/// # Domain and error
-///
-/// lo < hi in [ln 0.01, ln 100] (clamped; a/b outside the range is clamped to it).
-/// Measured (`host-tests/rolling_wrench.rs`): over [0.01, 100] the coefficients within
-/// 3.1e-3 relative of [`super::creep_matrix::aligned`] inside [0.1, 10], 4.4e-3 beyond; a fixed
-/// contact's skewed rolling wrench: `host-tests/rolling_wrench.rs` and
-/// [`crate::contact::Rolling`]'s docs (the skew ratios dominate the difference to the `f64`
-/// build).
-///
-/// # Cost
-///
-/// Per call one `ln`, a 6-step bisection, one Hermite segment and one `exp` per coefficient
-/// (and one for the shape's √(a/b)); `table`'s curves are built with no grid
-/// ([`super::table::Tables::at_ln_once`]: the look-ups compute the grids they read, at most
-/// four per call, with an `exp` only in a tail). M4F f32 (`bench-results/qemu.csv`): the
-/// per-step wrench with a skewed V 2,282 instructions against 1,098 along an axis (the skew
-/// ratios included). Per contact 33 × 5 numbers.
+/// `N` smooth functions of x = ln(a/b) over a range [lo, hi], per call by cubic Hermite on
+/// their values and slopes at the nodes, `S` stored (one per node, a node where two segments
+/// meet twice: [`slots`]; built once, `f64`): the ends and the kinks given inside the range
+/// ([`ShapePath`]: ±ln 20, the ends of the exact table) are nodes, uniform between them (a
+/// segment). The
+/// slopes by a central difference of step 10⁻³ of the node spacing, one-sided of second order
+/// at a segment's ends. Per call the segment by two comparisons, the interval by its uniform
+/// spacing, then one Hermite segment per function: no `exp`, no division. Exact at the nodes,
+/// continuous, C¹ inside a segment. The path of [`ShapePath`] (Kalker's coefficients) and of a
+/// fixed contact's skewed creep matrix ([`super::skew_linear::SkewPath`]).
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct ShapePath<T> {
-    /// the nodes x = ln(a/b), increasing
-    x: [T; PATH_NODES],
-    /// ln of Kalker's coefficients at the nodes
-    kalker: [Kalker<T>; PATH_NODES],
-    /// bit j: node j is a kink (slopes one-sided); kinks are interior nodes (j ≤ 31). A `u32`,
-    /// not a `u64`: an 8-byte-aligned `DynContact<f32>` made the firmware's `dyn-fixed-best`
-    /// stage fault under QEMU (not root-caused; see the branch's report).
-    kinks: u32,
+pub(crate) struct Nodes<T, const N: usize, const S: usize> {
+    /// the range [lo, hi] in x
+    lo: T,
+    hi: T,
+    /// where the segments after the first start (hi for a segment not used)
+    cut: [T; SEGMENTS - 1],
+    /// per segment: its first node in x, 1/(node spacing)
+    start: [T; SEGMENTS],
+    inv_h: [T; SEGMENTS],
+    /// per segment: its first slot, its number of intervals (≥ 1; 1 for a segment not used)
+    first: [u8; SEGMENTS],
+    intervals: [u8; SEGMENTS],
+    /// the functions at the nodes, by slot
+    y: [[T; N]; S],
+    /// their Hermite tangents at the nodes, by slot: dy/dx times the segment's node spacing
+    m: [[T; N]; S],
 }
 
-impl<T: Copy> ShapePath<T> {
+impl<T: Copy, const N: usize, const S: usize> Nodes<T, N, S> {
     /// Every `T` field through `f` (the dual form of the Jacobian).
-    pub(crate) fn map<U>(&self, f: impl Fn(T) -> U + Copy) -> ShapePath<U> {
-        ShapePath {
-            x: self.x.map(f),
-            kalker: self.kalker.map(|k| k.map(f)),
-            kinks: self.kinks,
+    pub(crate) fn map<U>(&self, f: impl Fn(T) -> U + Copy) -> Nodes<U, N, S> {
+        Nodes {
+            lo: f(self.lo),
+            hi: f(self.hi),
+            cut: self.cut.map(f),
+            start: self.start.map(f),
+            inv_h: self.inv_h.map(f),
+            first: self.first,
+            intervals: self.intervals,
+            y: self.y.map(|v| v.map(f)),
+            m: self.m.map(|v| v.map(f)),
         }
     }
 }
 
-impl<T: Real> ShapePath<T> {
-    /// For aligned ratios in [e^{lo}, e^{hi}] and ν ∈ [0, 0.5] (an [`super::Elasticity`]'s).
-    pub fn new(lo: T, hi: T, nu: T) -> Self {
-        let ln100 = libm::log(100.0);
-        let lo = super::within(lo.to_f64(), -ln100, ln100);
-        let hi = super::within(hi.to_f64(), -ln100, ln100).max(lo + 1e-9);
+/// The range [lo, hi] of a path: within [ln 0.01, ln 100], hi > lo.
+fn range(lo: f64, hi: f64) -> (f64, f64) {
+    let ln100 = libm::log(100.0);
+    let lo = super::within(lo, -ln100, ln100);
+    (lo, super::within(hi, -ln100, ln100).max(lo + 1e-9))
+}
+
+/// w₀a + w₁b + w₂c, entry by entry.
+fn combine<const N: usize>(w: [f64; 3], a: [f64; N], b: [f64; N], c: [f64; N]) -> [f64; N] {
+    let [w0, w1, w2] = w;
+    let mut out = a;
+    for (o, (b, c)) in out.iter_mut().zip(b.iter().zip(c.iter())) {
+        *o = w0 * *o + w1 * b + w2 * c;
+    }
+    out
+}
+
+impl<T: Real, const N: usize, const S: usize> Nodes<T, N, S> {
+    /// The functions `f` over [lo, hi] (clamped to [ln 0.01, ln 100]; hi > lo).
+    pub(crate) fn new(lo: f64, hi: f64, kinks: &[f64], f: impl Fn(f64) -> [f64; N]) -> Self {
+        let (lo, hi) = range(lo, hi);
         // breakpoints: the ends and the kinks strictly inside
-        let mut br = [0.0f64; 7];
+        let mut br = [hi; SEGMENTS + 1];
         let mut n = 0;
         for b in core::iter::once(lo)
             .chain(
-                KINKS
+                kinks
                     .iter()
                     .copied()
                     .filter(|k| *k > lo + 1e-9 && *k < hi - 1e-9),
@@ -133,54 +144,223 @@ impl<T: Real> ShapePath<T> {
                 n += 1;
             }
         }
-        // PATH_NODES − 1 intervals shared among the n − 1 segments by length, ≥ 1 each
+        let segments = n.saturating_sub(1);
+        // the nodes' intervals (one slot per node, a node where two segments meet twice)
+        // shared among the segments by length, ≥ 1 each
         let total = hi - lo;
-        let mut xs = [0.0f64; PATH_NODES];
-        let mut at = 0usize;
-        let mut left = PATH_NODES - 1;
-        let mut kinks = 0u32;
-        for s in 0..n.saturating_sub(1) {
+        let intervals = S.saturating_sub(segments).max(segments);
+        let mut left = intervals;
+        let mut path = Self {
+            lo: T::from_f64(lo),
+            hi: T::from_f64(hi),
+            cut: [T::from_f64(hi); SEGMENTS - 1],
+            start: [T::from_f64(hi); SEGMENTS],
+            inv_h: [T::ONE; SEGMENTS],
+            first: [0; SEGMENTS],
+            intervals: [1; SEGMENTS],
+            y: [[T::ZERO; N]; S],
+            m: [[T::ZERO; N]; S],
+        };
+        let mut slot = 0usize;
+        for s in 0..segments.min(SEGMENTS) {
             let (a, b) = (
                 br.get(s).copied().unwrap_or(lo),
                 br.get(s + 1).copied().unwrap_or(hi),
             );
-            let rest = n - 2 - s; // segments after this one
+            let rest = segments - 1 - s; // segments after this one
             let k = if rest == 0 {
                 left
             } else {
-                let share = ((b - a) / total * (PATH_NODES - 1) as f64) as usize;
+                let share = ((b - a) / total * intervals as f64) as usize;
                 share.max(1).min(left.saturating_sub(rest).max(1))
             };
-            for j in 0..k {
-                if let Some(x) = xs.get_mut(at + j) {
-                    *x = a + (b - a) * j as f64 / k as f64;
-                }
-            }
-            at += k;
             left -= k;
-            if rest > 0 {
-                kinks |= 1u32.checked_shl(at as u32).unwrap_or(0); // the next segment starts at a kink
+            let h = (b - a) / k as f64;
+            if let Some(c) = s.checked_sub(1).and_then(|i| path.cut.get_mut(i)) {
+                *c = T::from_f64(a);
+            }
+            if let (Some(x0), Some(ih), Some(f), Some(n)) = (
+                path.start.get_mut(s),
+                path.inv_h.get_mut(s),
+                path.first.get_mut(s),
+                path.intervals.get_mut(s),
+            ) {
+                (*x0, *ih, *f, *n) = (T::from_f64(a), T::from_f64(1.0 / h), slot as u8, k as u8);
+            }
+            // the nodes a + jh, j = 0 … k: y and h·dy/dx (one-sided at the segment's ends)
+            let e = 1e-3 * h;
+            for j in 0..=k {
+                let x = if j == k {
+                    b
+                } else {
+                    a + (b - a) * j as f64 / k as f64
+                };
+                let y = f(x);
+                let (w, p, q) = if j == 0 {
+                    ([-3.0, 4.0, -1.0], f(x + e), f(x + 2.0 * e))
+                } else if j == k {
+                    ([3.0, -4.0, 1.0], f(x - e), f(x - 2.0 * e))
+                } else {
+                    ([0.0, 1.0, -1.0], f(x + e), f(x - e))
+                };
+                let d = combine(w.map(|w| w * h / (2.0 * e)), y, p, q);
+                if let (Some(yy), Some(m)) = (path.y.get_mut(slot), path.m.get_mut(slot)) {
+                    *yy = y.map(T::from_f64);
+                    *m = d.map(T::from_f64);
+                }
+                slot += 1;
             }
         }
-        if let Some(x) = xs.get_mut(PATH_NODES - 1) {
-            *x = hi;
+        path
+    }
+
+    /// x clamped to the range (NaN: its low end).
+    #[inline(always)]
+    pub(crate) fn clamp(&self, x: T) -> T {
+        if x >= self.lo {
+            x.min(self.hi)
+        } else {
+            self.lo
         }
-        // ln C: Kalker's coefficients are near power laws of a/b (C₁₁, C₂₂ ∝ a/b, C₂₃ ∝
-        // (a/b)^{3/2} for long patches), nearly linear in ln(a/b) in the logarithm
-        let kalker = xs.map(|x| {
-            let [c11, c22, c23, c33] = super::creep_matrix::aligned_f64(libm::exp(x), nu.to_f64());
-            let ln = |c: f64| T::from_f64(libm::log(c));
-            Kalker {
-                c11: ln(c11),
-                c22: ln(c22),
-                c23: ln(c23),
-                c33: ln(c33),
-            }
-        });
+    }
+
+    /// The functions at x, already clamped ([`Self::clamp`]). Total.
+    #[inline(always)]
+    pub(crate) fn at(&self, x: T) -> [T; N] {
+        // the segment: past the cuts (a cut not used is hi, never passed)
+        let s = usize::from(x > self.cut[0]) + usize::from(x > self.cut[1]);
+        let (x0, inv_h, first, n) = (
+            self.start.get(s).copied().unwrap_or(self.lo),
+            self.inv_h.get(s).copied().unwrap_or(T::ONE),
+            self.first.get(s).copied().unwrap_or(0),
+            self.intervals.get(s).copied().unwrap_or(1),
+        );
+        let u = ((x - x0) * inv_h).max(T::ZERO);
+        let j = u.trunc_usize().min(usize::from(n).max(1) - 1);
+        let f = (u - T::from_usize(j)).min(T::ONE);
+        let i = usize::from(first) + j;
+        let zero = [T::ZERO; N];
+        let (y0, y1, m0, m1) = (
+            self.y.get(i).unwrap_or(&zero),
+            self.y.get(i + 1).unwrap_or(&zero),
+            self.m.get(i).unwrap_or(&zero),
+            self.m.get(i + 1).unwrap_or(&zero),
+        );
+        // cubic Hermite in f ∈ [0, 1]
+        let f2 = f * f;
+        let f3 = f2 * f;
+        let h01 = T::from_f64(3.0) * f2 - T::TWO * f3;
+        let h00 = T::ONE - h01;
+        let h10 = f3 - T::TWO * f2 + f;
+        let h11 = f3 - f2;
+        let mut out = zero;
+        for (o, (((y0, y1), m0), m1)) in out
+            .iter_mut()
+            .zip(y0.iter().zip(y1.iter()).zip(m0.iter()).zip(m1.iter()))
+        {
+            *o = h00 * *y0 + h10 * *m0 + h01 * *y1 + h11 * *m1;
+        }
+        out
+    }
+}
+
+/// The creep shape ([`RollingShape`]) of any aligned ratio a/b in a range [e^{lo}, e^{hi}], per
+/// call in the working precision, for a contact whose aligned ratio changes every call (a
+/// varying contact: the laws' domain; a fixed contact's skewed rolling velocity uses
+/// [`super::skew_linear`]'s path of the patch's own creep matrix instead).
+///
+/// # Formula
+///
+/// - The coefficients: C of the exact theory ([`super::creep_matrix::aligned`]) and its slope
+///   dC/dx at 33 nodes in x = ln(a/b) ∈ [lo, hi] (built once, `f64`; the slope by a central
+///   difference of step 10⁻³ of the node spacing, one-sided of second order at the ends and
+///   the kinks): the ends and the kinks inside (±ln 20, the ends of the exact table) are
+///   nodes, uniform between them (a segment); per call the segment by two comparisons, the
+///   interval by its uniform spacing, cubic Hermite in x of C itself (no `exp`). Exact at the
+///   nodes, continuous (C¹ inside a segment). (A skewed patch's own matrix:
+///   [`super::skew_linear`], applied by the per-step wrench.)
+/// - √(a/b) (FASTSIM's): from a/b itself where the caller has it, else e^{x/2}.
+/// - `blend`'s (σ, γ): linear in x between the fitted shapes, as [`super::Blend::shape`].
+/// - `table`'s residual tables: [`super::table::Tables::at_ln`] (linear in x between the
+///   fitted shapes, as [`super::table::Tables::new`]).
+///
+/// # Domain and error
+///
+/// lo < hi in [ln 0.01, ln 100] (clamped; a/b outside the range is clamped to it).
+/// Measured (`host-tests/rolling_wrench.rs`): over [0.01, 100] the coefficients within
+/// 7.7e-4 relative of [`super::creep_matrix::aligned`] inside [0.1, 10], 8.8e-4 beyond (3.1e-3
+/// and 4.4e-3 with ln C interpolated on finite-difference slopes, then `exp`); a varying
+/// contact's rolling wrench: [`crate::contact::Rolling`]'s docs.
+///
+/// # Cost
+///
+/// Per call two comparisons and one truncation for the interval, one Hermite segment per
+/// coefficient (no `exp`, no division: ≈ 100 M4F instructions), `blend`'s constants, and
+/// `table`'s curves built with no grid ([`super::table::Tables::at_ln_once`], ≈ 330: the
+/// look-ups compute the grids they read, at most four per call, with an `exp` only in a
+/// tail); [`ShapePath::shape_at_ln`] alone 963 → 590 M4F f32 instructions against the path
+/// of ln C (6-step bisection, an `exp` per coefficient and for √(a/b)). Per contact 35 × 8
+/// numbers and 12 (a node where two segments meet is stored twice).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ShapePath<T> {
+    /// (C₁₁, C₂₂, C₂₃, C₃₃) along x
+    nodes: Nodes<T, 4, SHAPE_SLOTS>,
+    /// √(a/b) at the ends: e^{lo/2}, e^{hi/2}
+    rho: (T, T),
+}
+
+impl<T: Copy> ShapePath<T> {
+    /// Every `T` field through `f` (the dual form of the Jacobian).
+    pub(crate) fn map<U>(&self, f: impl Fn(T) -> U + Copy) -> ShapePath<U> {
+        ShapePath {
+            nodes: self.nodes.map(f),
+            rho: (f(self.rho.0), f(self.rho.1)),
+        }
+    }
+}
+
+/// Kalker's coefficients from (C₁₁, C₂₂, C₂₃, C₃₃).
+#[inline(always)]
+pub(crate) fn kalker_of<T>([c11, c22, c23, c33]: [T; 4]) -> Kalker<T> {
+    Kalker { c11, c22, c23, c33 }
+}
+
+/// √q for the aligned ratio q, within [√(e^{lo}), √(e^{hi})] (`rho`; NaN: the low end).
+#[inline(always)]
+pub(crate) fn rho_within<T: Real>(q: T, rho: (T, T)) -> T {
+    if q >= T::ZERO {
+        q.sqrt().max(rho.0).min(rho.1)
+    } else {
+        rho.0
+    }
+}
+
+/// The aligned ellipse's ratio q = a_r/b_r = a_M b_m/(b_m² cos²θ + a_M² sin²θ) for a rolling
+/// direction (cx, sx) of unit length ([`aligned_ellipse`] without its normalisation and square
+/// root). Total for positive semi-axes (1 otherwise).
+#[inline(always)]
+pub(crate) fn aligned_ratio<T: Real>(a_major: T, b_minor: T, cx: T, sx: T) -> T {
+    let d = b_minor * b_minor * cx * cx + a_major * a_major * sx * sx;
+    if d > T::ZERO {
+        a_major * b_minor / d
+    } else {
+        T::ONE
+    }
+}
+
+impl<T: Real> ShapePath<T> {
+    /// For aligned ratios in [e^{lo}, e^{hi}] and ν ∈ [0, 0.5] (an [`super::Elasticity`]'s).
+    pub fn new(lo: T, hi: T, nu: T) -> Self {
+        let nu = nu.to_f64();
+        let (lo, hi) = range(lo.to_f64(), hi.to_f64());
         Self {
-            x: xs.map(T::from_f64),
-            kalker,
-            kinks,
+            nodes: Nodes::new(lo, hi, &KINKS, |x| {
+                super::creep_matrix::aligned_f64(libm::exp(x), nu)
+            }),
+            rho: (
+                T::from_f64(libm::exp(0.5 * lo)),
+                T::from_f64(libm::exp(0.5 * hi)),
+            ),
         }
     }
 
@@ -191,75 +371,33 @@ impl<T: Real> ShapePath<T> {
         } else {
             T::from_f64(f64::NEG_INFINITY)
         };
-        self.shape_at_ln(x)
+        self.shape_at(a_over_b, x)
     }
 
     /// [`ShapePath::shape`] for x = ln(a/b) (clamped to the path's range; NaN: its low end).
     /// Total.
     pub fn shape_at_ln(&self, x: T) -> RollingShape<T> {
-        let last = PATH_NODES - 1;
-        let node = |j: usize| self.x.get(j).copied().unwrap_or(T::ZERO);
-        let (lo, hi) = (node(0), node(last));
-        let x = if x >= lo { x.min(hi) } else { lo };
-        // bisection: node(i) ≤ x ≤ node(i + 1), 6 steps (2⁶ > 32 intervals)
-        let (mut i, mut j) = (0usize, last);
-        for _ in 0..6 {
-            let m = (i + j) / 2;
-            if j - i > 1 {
-                if x < node(m) {
-                    j = m;
-                } else {
-                    i = m;
-                }
-            }
-        }
-        let i = i.min(last - 1);
-        let d = node(i + 1) - node(i);
-        let f = if d > T::ZERO {
-            ((x - node(i)) / d).max(T::ZERO).min(T::ONE)
-        } else {
-            T::ZERO
-        };
-        let k = |j: usize| self.kalker.get(j).copied().unwrap_or(self.kalker[0]);
-        let kink = |j: usize| self.kinks.checked_shr(j as u32).unwrap_or(0) & 1 == 1;
-        // slopes dy/dx at the interval's ends, one-sided at the ends and the kinks
-        let slope = |j: usize, from_right: bool, c: fn(&Kalker<T>) -> T| {
-            let y = |n: usize| c(&k(n));
-            let dx = |a: usize, b: usize| {
-                let d = node(b) - node(a);
-                if d > T::ZERO { d } else { T::ONE }
-            };
-            if j == 0 || (kink(j) && from_right) {
-                (y(j + 1) - y(j)) / dx(j, j + 1)
-            } else if j == last || kink(j) {
-                (y(j) - y(j - 1)) / dx(j - 1, j)
-            } else {
-                (y(j + 1) - y(j - 1)) / dx(j - 1, j + 1)
-            }
-        };
-        let hermite = |c: fn(&Kalker<T>) -> T| {
-            let (y0, y1) = (c(&k(i)), c(&k(i + 1)));
-            let (m0, m1) = (slope(i, true, c) * d, slope(i + 1, false, c) * d);
-            let f2 = f * f;
-            let f3 = f2 * f;
-            let h00 = T::TWO * f3 - T::from_f64(3.0) * f2 + T::ONE;
-            let h10 = f3 - T::TWO * f2 + f;
-            let h01 = T::from_f64(3.0) * f2 - T::TWO * f3;
-            let h11 = f3 - f2;
-            h00 * y0 + h10 * m0 + h01 * y1 + h11 * m1
-        };
-        let kalker = Kalker {
-            c11: hermite(|k| k.c11).exp(),
-            c22: hermite(|k| k.c22).exp(),
-            c23: hermite(|k| k.c23).exp(),
-            c33: hermite(|k| k.c33).exp(),
-        };
-        RollingShape {
-            rho: (T::HALF * x).exp(),
-            kalker,
-            blend: super::fitted::blend_at_ln(x),
-            table: super::residual::Tables::at_ln_once(x),
-            coupling: (T::ZERO, T::ZERO),
-        }
+        let x = self.nodes.clamp(x);
+        shape_of(x, (T::HALF * x).exp(), kalker_of(self.nodes.at(x)))
+    }
+
+    /// [`ShapePath::shape`] for the aligned ratio q = a/b and x = ln q (the caller's: no `exp`
+    /// for √q).
+    #[inline]
+    pub(crate) fn shape_at(&self, q: T, x: T) -> RollingShape<T> {
+        let x = self.nodes.clamp(x);
+        shape_of(x, rho_within(q, self.rho), kalker_of(self.nodes.at(x)))
+    }
+}
+
+/// The creep shape at x = ln(a/b) (clamped) with √(a/b) and the coefficients given.
+#[inline(always)]
+pub(crate) fn shape_of<T: Real>(x: T, rho: T, kalker: Kalker<T>) -> RollingShape<T> {
+    RollingShape {
+        rho,
+        kalker,
+        blend: super::fitted::blend_at_ln(x),
+        table: super::residual::Tables::at_ln_once(x),
+        coupling: (T::ZERO, T::ZERO),
     }
 }

@@ -17,11 +17,16 @@
 //! and ν: the exact reference's table of [`super::CreepMatrix`] (ln r = (i/6)·ln 20, i < 7;
 //! t = j/8, j < 9; quadratic in ν). Per contact ν is fixed and the table collapsed to it:
 //!
-//! - a fixed contact (r fixed): one row, 17 t-nodes (t = j/16) at its r (cubic Hermite in t
-//!   and ln r of the table, as [`super::CreepMatrix::new`]), [`SkewRow`];
-//! - a varying contact: the 7 × 9 nodes, [`SkewGrid`].
+//! - a fixed contact (r fixed, so t and every entry are functions of ln q alone): the six
+//!   entries (K₁₁, K₂₂, K₂₃, K₃₃, κ₁₂√(C₁₁C₂₂), κ₁₃√(C₁₁C₃₃)) of [`super::CreepMatrix::new`]
+//!   (the aligned coefficients times the table's cubic Hermite in t and ln r) on 17 nodes in
+//!   ln q (t = j/16), values and slopes, cubic Hermite per call (`SkewPath`: the per-step
+//!   wrench's); or
+//!   one row of the ratios alone, 17 t-nodes (t = j/16) at its r, linear in t per call,
+//!   [`SkewRow`];
+//! - a varying contact: the 7 × 9 nodes, [`SkewGrid`], linear in t and in ln r per call
+//!   (clamped to r ≤ 20: the table's end).
 //!
-//! Per call linear in t (and in ln r for the grid, clamped to r ≤ 20: the table's end).
 //! Exact on the axes (ρ = 1, κ·sinθcosθ = 0) and for a circle.
 //!
 //! # Domain and error
@@ -31,15 +36,23 @@
 //! [`super::creep_matrix`]; `host-tests/rolling_linear.rs`): the row as
 //! [`super::CreepMatrix::new`] (K₁₁ 0.53 %, K₂₂ 0.67 %, K₂₃ 2.0 %, K₃₃ 4.7 %, K₁₂ 0.31 %, K₁₃
 //! 4.3 %); the grid K₁₁ 0.82 %, K₂₂ 0.88 %, K₂₃ 2.5 % (1.8 % at r = 3), K₃₃ 6.9 % (bilinear near the major axis
-//! of long patches at ν ≈ ½), K₁₂ 0.46 %, K₁₃ 4.3 %.
+//! of long patches at ν ≈ ½), K₁₂ 0.46 %, K₁₃ 4.3 %. `SkewPath` is [`super::CreepMatrix::new`]
+//! to its Hermite in ln q: a fixed contact's skewed wrench within 3.1e-4 fN / fNc of the one
+//! built on [`super::CreepMatrix::new`] per call at a/b ≈ 4, 7.4e-3 at a/b ≈ 40
+//! (`host-tests/rolling_wrench.rs`).
 //!
 //! # Cost
 //!
 //! Per call: one division, one linear (row) or bilinear (grid) interpolation of six numbers,
-//! two square roots. Per contact: 103 numbers (row) or 378 (grid).
+//! two square roots; `SkewPath`: one Hermite segment of six numbers (with the coefficients:
+//! no [`super::ShapePath`] look-up, no division, no square root). Per contact: 103 numbers
+//! (row), 378 (grid), 17 × 12 and 12 (`SkewPath`).
 
-use super::Kalker;
-use super::creep_matrix::{SKEW_NODES, skew_node_f64, skew_ratios_f64};
+use super::creep_matrix::{
+    SKEW_NODES, aligned_f64, skew_column_f64, skew_in_t, skew_node_f64, skew_ratios_f64,
+};
+use super::skew::{Nodes, kalker_of, rho_within, shape_of};
+use super::{Kalker, RollingShape};
 use crate::Real;
 
 /// Nodes in t of the grid (the table's).
@@ -52,8 +65,9 @@ const NR: usize = SKEW_NODES.0;
 /// ln 20.
 const LN20: f64 = 2.995_732_273_553_991;
 
-/// The six ratios at the t-nodes for one patch ratio r: a fixed contact (see the
-/// [module docs](self)).
+/// The six ratios at the t-nodes for one patch ratio r, linear in t per call (see the
+/// [module docs](self); the per-step wrench of a fixed contact reads its creep matrix from
+/// one path in ln q instead, cubic Hermite of the same table).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct SkewRow<T> {
     /// (ρ₁₁, ρ₂₂, ρ₃₃, ρ₂₃, κ₁₂, κ₁₃) at t = j/16
@@ -72,16 +86,6 @@ pub struct SkewGrid<T> {
 
 /// No skew: ρ = 1, κ = 0.
 const ONE: [f64; 6] = [1.0, 1.0, 1.0, 1.0, 0.0, 0.0];
-
-impl<T: Copy> SkewRow<T> {
-    /// Every `T` field through `f` (the dual form of the Jacobian).
-    pub(crate) fn map<U>(&self, f: impl Fn(T) -> U + Copy) -> SkewRow<U> {
-        SkewRow {
-            node: self.node.map(|n| n.map(f)),
-            inv_ln_r: f(self.inv_ln_r),
-        }
-    }
-}
 
 impl<T: Copy> SkewGrid<T> {
     /// Every `T` field through `f` (the dual form of the Jacobian).
@@ -209,4 +213,89 @@ pub(crate) fn skewed<T: Real>(k: &Kalker<T>, ratios: [T; 6], cx: T, sx: T) -> (K
             s * q13 * (k.c11 * k.c33).sqrt(),
         ),
     )
+}
+
+/// [`SkewPath`]'s nodes: 17, uniform in ln q over [−ln r, ln r] (no segments), so at
+/// t = j/16: the skew table's t-nodes (j/8, where its cubic pieces meet) are nodes.
+const SKEW_NODES_T: usize = 17;
+
+/// A fixed contact's creep matrix over its skewed rolling directions, as functions of the
+/// aligned ratio alone: the patch ratio r is fixed, so t = ½(1 − ln q/ln r) is a function of
+/// x = ln q, and so is every entry (see the [module docs](self)). The six functions
+/// (K₁₁, K₂₂, K₂₃, K₃₃, κ₁₂√(C₁₁C₂₂), κ₁₃√(C₁₁C₃₃)) of x ∈ [−ln r, ln r], each the product of
+/// the exact coefficients ([`super::creep_matrix::aligned`]) and the skew table's ratios (cubic
+/// Hermite in t and ln r, as [`super::CreepMatrix::new`]), on the nodes of a
+/// [`super::skew::Nodes`] path (17 nodes uniform in x, one segment: t = j/16, so the skew
+/// table's t-nodes j/8, where its cubic pieces meet, are nodes — 33 nodes cut at ±ln 20 as
+/// [`super::ShapePath`]'s were 12 times closer to [`super::CreepMatrix::new`] at a/b ≈ 4 but
+/// made a fixed contact 0.7 KB larger; values and slopes, built once in `f64`); per call one
+/// Hermite segment each, the couplings times ∓|sinθ cosθ|. One look-up for the coefficients
+/// and the skew ratios, no square root. Exact at the nodes (the ends: the two axes, ρ = 1,
+/// κ·sinθcosθ = 0).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct SkewPath<T> {
+    nodes: Nodes<T, 6, SKEW_NODES_T>,
+    /// √q at the ends: 1/√r, √r
+    rho: (T, T),
+}
+
+impl<T: Copy> SkewPath<T> {
+    /// Every `T` field through `f` (the dual form of the Jacobian).
+    pub(crate) fn map<U>(&self, f: impl Fn(T) -> U + Copy) -> SkewPath<U> {
+        SkewPath {
+            nodes: self.nodes.map(f),
+            rho: (f(self.rho.0), f(self.rho.1)),
+        }
+    }
+}
+
+impl<T: Real> SkewPath<T> {
+    /// For a patch ratio r = a/b ≥ 1 (clamped to [1, 100]; < 1 or NaN: the circle's, a path
+    /// never read) and ν ∈ [0, 0.5] (clamped). Built in `f64`.
+    pub(crate) fn new(r: T, nu: T) -> Self {
+        let r = r.to_f64();
+        let x_r = if r > 1.0 {
+            libm::log(r.min(100.0))
+        } else {
+            0.0
+        };
+        let nu = super::within(nu.to_f64(), 0.0, 0.5);
+        let column = skew_column_f64(x_r, nu);
+        let entries = |x: f64| {
+            let [c11, c22, c23, c33] = aligned_f64(libm::exp(x), nu);
+            let [r11, r22, r33, r23, q12, q13] = if x_r > 0.0 {
+                skew_in_t(&column, super::within(0.5 * (1.0 - x / x_r), 0.0, 1.0))
+            } else {
+                ONE
+            };
+            [
+                r11 * c11,
+                r22 * c22,
+                r23 * c23,
+                r33 * c33,
+                q12 * libm::sqrt(c11 * c22),
+                q13 * libm::sqrt(c11 * c33),
+            ]
+        };
+        let rho = libm::exp(0.5 * x_r);
+        Self {
+            nodes: Nodes::new(-x_r, x_r, &[], entries),
+            rho: (T::from_f64(1.0 / rho), T::from_f64(rho)),
+        }
+    }
+
+    /// The patch's creep shape rolled along (cx, sx) (unit, contact frame), for the aligned
+    /// ellipse's ratio q and x = ln q: its creep matrix (diagonal and couplings) from the path,
+    /// `blend`'s and `table`'s per-shape data of q (as [`super::ShapePath`]). Total.
+    #[inline]
+    pub(crate) fn shape_at(&self, q: T, x: T, cx: T, sx: T) -> RollingShape<T> {
+        let x = self.nodes.clamp(x);
+        let [k11, k22, k23, k33, p12, p13] = self.nodes.at(x);
+        // ∓|sinθ cosθ|: −cs when cs > 0 (the table's sign convention, as `skewed`)
+        let s = -(cx * sx);
+        RollingShape {
+            coupling: (s * p12, s * p13),
+            ..shape_of(x, rho_within(q, self.rho), kalker_of([k11, k22, k23, k33]))
+        }
+    }
 }
