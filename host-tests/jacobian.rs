@@ -98,17 +98,24 @@ fn check(
     ];
     let mut worst: f64 = 0.0;
     for j in 0..5 {
+        // the central difference, and the forward less the backward one (e·f'' where smooth)
         let fd = |e: f64| {
             let (mut qp, mut qm) = (q, q);
             qp[j] += e * sigma[j];
             qm[j] -= e * sigma[j];
             let (wp, wm) = (wrench(qp), wrench(qm));
-            [0, 1, 2, 3].map(|i| (wp[i] - wm[i]) / (2.0 * e * big[i]))
+            (
+                [0, 1, 2, 3].map(|i| (wp[i] - wm[i]) / (2.0 * e * big[i])),
+                [0, 1, 2, 3].map(|i| (wp[i] - 2.0 * w[i] + wm[i]) / (e * big[i])),
+            )
         };
-        let (d1, d2) = (fd(1e-5), fd(5e-6));
+        let ((d1, k1), (d2, k2)) = (fd(1e-5), fd(5e-6));
         for i in 0..4 {
             let scale = d2[i].abs().max(1.0);
-            if (d1[i] - d2[i]).abs() > 1e-6 * scale {
+            // a kink within the steps: the central differences disagree, or (a kink at the
+            // point itself, where both are the mean of the one-sided slopes) the one-sided
+            // slopes' gap does not halve with the step
+            if (d1[i] - d2[i]).abs() > 1e-6 * scale || (k1[i] - 2.0 * k2[i]).abs() > 1e-6 * scale {
                 return None;
             }
             let richardson = d2[i] + (d2[i] - d1[i]) / 3.0;

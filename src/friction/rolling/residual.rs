@@ -113,18 +113,6 @@ impl<T: Real, const N: usize, const C: usize> Curve<T, N, C> {
         self.inv_dx != T::ZERO
     }
 
-    /// The same nodes in ln m (so one [`Self::at`] serves both). Curves built per call: the
-    /// same data (then the same grid; grids that only round to the same values are looked up
-    /// one by one, with the same result).
-    fn same_grid(&self, other: &Self) -> bool {
-        if self.stored() && other.stored() {
-            self.x0 == other.x0 && self.inv_dx == other.inv_dx
-        } else {
-            let bits = |d: &'static Data<N, C>| (d.0.to_bits(), d.1.to_bits());
-            bits(self.lo) == bits(other.lo) && bits(self.hi) == bits(other.hi)
-        }
-    }
-
     #[inline(always)]
     fn at(&self, lnm: T, m: T, inv_m: T) -> At<T> {
         if self.stored() {
@@ -356,19 +344,66 @@ impl<T: Real> Tables<T> {
             xi: Curve::between(&lo.xi, &hi.xi, u, once),
             eta: Curve::between(&lo.eta, &hi.eta, u, once),
             xieta: Curve::between(&lo.xieta, &hi.xieta, u, once),
-            plane_shared: [
-                plane[0].same_grid(&plane[1]),
-                plane[1].same_grid(&plane[2]),
-                plane[2].same_grid(&plane[3]),
-                plane[3].same_grid(&plane[4]),
-                plane[4].same_grid(&plane[5]),
-            ],
-            ring_shared: [ring[0].same_grid(&ring[1]), ring[1].same_grid(&ring[2])],
+            plane_shared: SHARED_PLANE[i.min(3)],
+            ring_shared: SHARED_RING[i.min(3)],
             plane,
             ring,
         }
     }
 }
+
+/// The same grid in ln m (x₀ and Δ bit for bit) at both fitted shapes of a pair.
+const fn same_grid<const N: usize, const C: usize>(
+    a: [&Data<N, C>; 2],
+    b: [&Data<N, C>; 2],
+) -> bool {
+    same_data_grid(a[0], b[0]) && same_data_grid(a[1], b[1])
+}
+
+/// x₀ and Δ bit for bit.
+const fn same_data_grid<const N: usize, const C: usize>(p: &Data<N, C>, q: &Data<N, C>) -> bool {
+    p.0.to_bits() == q.0.to_bits() && p.1.to_bits() == q.1.to_bits()
+}
+
+/// Per pair of fitted shapes (i, i + 1): whether plane[k] and plane[k + 1] share their grid
+/// (then curves between the pair's shapes do at every weight: one node search for both).
+/// From the data at compile time, not per call.
+const SHARED_PLANE: [[bool; 5]; 4] = {
+    let mut out = [[false; 5]; 4];
+    let mut i = 0;
+    while i < 4 {
+        let (lo, hi) = (&DATA[i], &DATA[i + 1]);
+        let mut k = 0;
+        while k < 5 {
+            out[i][k] = same_grid(
+                [&lo.plane[k], &hi.plane[k]],
+                [&lo.plane[k + 1], &hi.plane[k + 1]],
+            );
+            k += 1;
+        }
+        i += 1;
+    }
+    out
+};
+
+/// The same for ring[k] and ring[k + 1].
+const SHARED_RING: [[bool; 2]; 4] = {
+    let mut out = [[false; 2]; 4];
+    let mut i = 0;
+    while i < 4 {
+        let (lo, hi) = (&DATA[i], &DATA[i + 1]);
+        let mut k = 0;
+        while k < 2 {
+            out[i][k] = same_grid(
+                [&lo.ring[k], &hi.ring[k]],
+                [&lo.ring[k + 1], &hi.ring[k + 1]],
+            );
+            k += 1;
+        }
+        i += 1;
+    }
+    out
+};
 
 #[cfg(test)]
 mod tests {
