@@ -177,9 +177,9 @@ def test_rattleback_stalls_as_the_rust_scene():
 
 # The Rust scene with the rolling law `table` (README, the rattleback rolling; RK4 0.1 ms, events
 # located between the steps): ω₀ = −2 rad/s reverses at 2.0432 s, ω₀ = +2 rad/s stalls at
-# 1.5127 s (`cargo run --release --features scenes --example rattleback`,
+# 1.5128 s (`cargo run --release --features scenes --example rattleback`,
 # RATTLEBACK_LAWS=table → rattleback_summary.csv; committed: docs/rattleback_summary.csv).
-RUST_RATTLEBACK_TABLE = {"launch": ("reversal", 2.0432), "steady": ("stall", 1.5127)}
+RUST_RATTLEBACK_TABLE = {"launch": ("reversal", 2.0432), "steady": ("stall", 1.5128)}
 
 
 @pytest.mark.parametrize("key", ["launch", "steady"])
