@@ -14,10 +14,10 @@
 #include <stdint.h>
 
 // Bytes of [`contensou_contact_f32`].
-#define CONTENSOU_CONTACT_F32_SIZE 3488
+#define CONTENSOU_CONTACT_F32_SIZE 2960
 
 // Bytes of [`contensou_contact_f64`].
-#define CONTENSOU_CONTACT_F64_SIZE 6336
+#define CONTENSOU_CONTACT_F64_SIZE 5824
 
 // Alignment (bytes) of both contact storage types.
 #define CONTENSOU_CONTACT_ALIGN 8
@@ -167,7 +167,7 @@ typedef uint32_t contensou_race;
 // `contensou_contact_wrench_f32` only reads the contact, so threads may share one.
 typedef struct {
   // Opaque.
-  uint64_t opaque[436];
+  uint64_t opaque[370];
 } contensou_contact_f32;
 
 // The contact columns `P,Q,estar,cd,f,delta` of the contract ([`contensou::dynamic::Spec`]).
@@ -190,7 +190,7 @@ typedef struct {
 // bytes, 8-byte aligned. As [`contensou_contact_f32`].
 typedef struct {
   // Opaque.
-  uint64_t opaque[792];
+  uint64_t opaque[728];
 } contensou_contact_f64;
 
 // The contact columns `P,Q,estar,cd,f,delta` of the contract ([`contensou::dynamic::Spec`]).

@@ -82,9 +82,9 @@ pub struct contensou_curvatures<T> {
 }
 
 /// Bytes of [`contensou_contact_f32`].
-pub const CONTENSOU_CONTACT_F32_SIZE: usize = 3488;
+pub const CONTENSOU_CONTACT_F32_SIZE: usize = 2960;
 /// Bytes of [`contensou_contact_f64`].
-pub const CONTENSOU_CONTACT_F64_SIZE: usize = 6336;
+pub const CONTENSOU_CONTACT_F64_SIZE: usize = 5824;
 /// Alignment (bytes) of both contact storage types.
 pub const CONTENSOU_CONTACT_ALIGN: usize = 8;
 
@@ -117,10 +117,10 @@ storage! {
     /// not initialise (zeroed, as static memory is) return `CONTENSOU_STATUS_NOT_INITIALIZED`.
     /// Plain data (may be copied with `memcpy` or assignment); no destructor. No global state:
     /// `contensou_contact_wrench_f32` only reads the contact, so threads may share one.
-    contensou_contact_f32: 436;
+    contensou_contact_f32: 370;
     /// Caller-owned storage of one `double` contact: opaque, [`CONTENSOU_CONTACT_F64_SIZE`]
     /// bytes, 8-byte aligned. As [`contensou_contact_f32`].
-    contensou_contact_f64: 792;
+    contensou_contact_f64: 728;
 }
 
 /// What a storage holds: a tag that only its constructor writes, then the contact.

@@ -99,7 +99,7 @@
 //! call: 24 `exp`); varying contact 2,192 (2,292 with per-call shared-grid checks and `f32` nodes; 2,766 with the ln-coefficients' path; 5,301).
 //! Host (x86-64, criterion, per call, before the curves read their nodes from flash and
 //! before the per-call curves): 377 ns, 1.26 µs, 1.55 µs (`RollingContact` 338 ns in the same
-//! run). Per contact: two [`RollingShape`]s (528 bytes each in `f32`) and the path of the
+//! run). Per contact: two [`RollingShape`]s (264 bytes each in `f32` on x86-64; 528 while the tables held a view per curve) and the path of the
 //! skewed creep matrix (216 numbers) (fixed), a [`ShapePath`] (292 numbers) and a `SkewGrid`
 //! (378 numbers) (varying).
 //!

@@ -81,9 +81,9 @@ pub(crate) fn between<T: Real>(x: T) -> (usize, T) {
     )
 }
 
-/// [`blend_at`] at x = ln(a/b) in the working precision.
-pub(super) fn blend_at_ln<T: Real>(x: T) -> (T, T) {
-    let (i, u) = between(x);
+/// [`blend_at`] between the fitted shapes `i`, `i + 1` at the weight `u` ([`between`]).
+#[inline(always)]
+pub(super) fn blend_between<T: Real>((i, u): (usize, T)) -> (T, T) {
     let lerp = |s: &[[f32; 5]; 1], d: &[f64; 5]| {
         at::<T>(s, d, i) + u * (at::<T>(s, d, i + 1) - at::<T>(s, d, i))
     };

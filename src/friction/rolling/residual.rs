@@ -4,7 +4,7 @@
 //! docs for the formula, the error and the cost.
 
 use super::table_data::{
-    COARSE, Data, FINE, KNEE_START, KNEE_WIDTH, SCALE_COARSE, SCALE_FINE, SHAPES as DATA,
+    COARSE, Data, FINE, KNEE_START, KNEE_WIDTH, SCALE_COARSE, SCALE_FINE, SHAPES as DATA, Shape,
 };
 use crate::Real;
 
@@ -15,9 +15,11 @@ use crate::Real;
 /// With `N` = 29 + 3 · 8 (the curves with φ) the 8 coarse intervals of the knee window hold
 /// three more nodes each.
 ///
-/// A curve built per call ([`Tables::at_ln_once`]) stores no grid (`inv_dx` = 0, never the
-/// value of a stored grid): each look-up computes the grid it reads with the same expressions,
-/// so the same values bit for bit, and the curves the law does not read cost nothing.
+/// A view made by [`Tables`] on each look-up (nothing stored per curve but its grid, and that
+/// only per contact). Tables built per call ([`Tables::at_ln_once`]) store no grid (`inv_dx` =
+/// 0 in the view, never the value of a stored grid): each look-up computes the grid it reads
+/// with the same expressions, so the same values bit for bit, and the curves the law does not
+/// read cost nothing.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Curve<T, const N: usize, const C: usize> {
     x0: T,
@@ -37,44 +39,17 @@ enum At<T> {
     Above(T),
 }
 
-impl<T: Copy, const N: usize, const C: usize> Curve<T, N, C> {
-    /// Every `T` field through `f` (the dual form of the Jacobian).
-    pub(crate) fn map<U>(&self, f: impl Fn(T) -> U) -> Curve<U, N, C> {
-        Curve {
-            x0: f(self.x0),
-            inv_dx: f(self.inv_dx),
-            inv_m0: f(self.inv_m0),
-            m_last: f(self.m_last),
-            lo: self.lo,
-            hi: self.hi,
-            u: f(self.u),
-        }
-    }
-}
-
 impl<T: Real, const N: usize, const C: usize> Curve<T, N, C> {
-    /// The curve for a/b between the shapes `lo` and `hi` at the weight `u` ∈ [0, 1]: ln m₀ and
-    /// Δ(ln m) linear in `u` (rounded to `T`), two `exp`; `once`: no grid stored (see the type
-    /// docs).
+    /// The stored grid of this curve: x₀, 1/Δ, m₀⁻¹, m_N (two `exp`).
     #[inline(always)]
-    fn between(lo: &'static Data<N, C>, hi: &'static Data<N, C>, u: T, once: bool) -> Self {
-        let mut c = Self {
-            x0: T::ZERO,
-            inv_dx: T::ZERO,
-            inv_m0: T::ZERO,
-            m_last: T::ZERO,
-            lo,
-            hi,
-            u,
-        };
-        if !once {
-            let (x0, dx) = c.grid();
-            c.x0 = x0;
-            c.inv_dx = T::ONE / dx;
-            c.inv_m0 = Self::tail_below(x0);
-            c.m_last = Self::tail_above(x0, dx);
-        }
-        c
+    fn stored_grid(&self) -> [T; 4] {
+        let (x0, dx) = self.grid();
+        [
+            x0,
+            T::ONE / dx,
+            Self::tail_below(x0),
+            Self::tail_above(x0, dx),
+        ]
     }
 
     /// ln m₀ and Δ(ln m), linear in `u` between the two shapes' (rounded to `T`: in `f32`
@@ -209,35 +184,53 @@ impl<T: Real, const N: usize, const C: usize> Curve<T, N, C> {
 /// The residual curves of one contact shape: ξ; the η–φ plane at u = 0 (η), 1 (η with φ, same
 /// sign), 1½, 2 (φ), 2½, 3 (η with φ, opposite signs), 3½; the ring (ξ at 45° to the plane) at
 /// u = 0 (ξ with η), 1, 2, 3.
-#[derive(Clone, Copy, Debug, PartialEq)]
+///
+/// Held: the pair of fitted shapes (`DATA[pair]`, `DATA[pair + 1]`), the weight between them
+/// and, per contact, each curve's grid (x₀, 1/Δ, m₀⁻¹, m_N; curves in the order ξ, η, ξ with η,
+/// the plane's six, the ring's three); the curves are views made on each look-up. Tables built
+/// per call hold no grids (three words written, not twelve curves).
+#[derive(Clone, Copy)]
 pub struct Tables<T> {
-    pub(super) xi: Curve<T, COARSE, 1>,
-    eta: Curve<T, COARSE, 2>,
-    xieta: Curve<T, COARSE, 3>,
-    plane: [Curve<T, FINE, 2>; 6],
-    ring: [Curve<T, FINE, 3>; 3],
-    /// plane[k] and plane[k + 1] (ring[k], ring[k + 1]) share their grid: one look-up for both.
-    plane_shared: [bool; 5],
-    ring_shared: [bool; 2],
+    pair: usize,
+    lo: &'static Shape,
+    hi: &'static Shape,
+    u: T,
+    grids: Option<[[T; 4]; 12]>,
+}
+
+// By hand: `lo` and `hi` are `DATA[pair]` and `DATA[pair + 1]` (the data type has no `Debug`,
+// `PartialEq`).
+impl<T: PartialEq> PartialEq for Tables<T> {
+    fn eq(&self, other: &Self) -> bool {
+        self.pair == other.pair && self.u == other.u && self.grids == other.grids
+    }
+}
+
+impl<T: core::fmt::Debug> core::fmt::Debug for Tables<T> {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.debug_struct("Tables")
+            .field("pair", &self.pair)
+            .field("u", &self.u)
+            .field("grids", &self.grids)
+            .finish()
+    }
 }
 
 impl<T: Copy> Tables<T> {
     /// Every `T` field through `f` (the dual form of the Jacobian).
     pub(crate) fn map<U>(&self, f: impl Fn(T) -> U + Copy) -> Tables<U> {
         Tables {
-            xi: self.xi.map(f),
-            eta: self.eta.map(f),
-            xieta: self.xieta.map(f),
-            plane: self.plane.map(|c| c.map(f)),
-            ring: self.ring.map(|c| c.map(f)),
-            plane_shared: self.plane_shared,
-            ring_shared: self.ring_shared,
+            pair: self.pair,
+            lo: self.lo,
+            hi: self.hi,
+            u: f(self.u),
+            grids: self.grids.map(|g| g.map(|c| c.map(f))),
         }
     }
 }
 
 /// Per family of curves (the plane, the ring): `$curves(j, …)`, node `j` (0: the end curve
-/// `$end`, `$last`: it mirrored, between: `$curves[j − 1]`, at most index `$top`), and
+/// `$end`, `$last`: it mirrored, between: the family's curve `$get(j − 1)`), and
 /// `$name(j, t, …)`, the nodes `j` and `j + 1` mixed at `t` ∈ [0, 1) with one look-up for
 /// both where they share their grid (`$shared`). Written once, expanded per family: one
 /// generic function over both measured 863 against 787 M4F instructions per call, with the
@@ -245,16 +238,16 @@ impl<T: Copy> Tables<T> {
 macro_rules! mix {
     ($(
         $(#[$mix_doc:meta])* $name:ident: $shared:ident;
-        $(#[$node_doc:meta])* $curves:ident: $end:ident, $last:literal, $top:literal;
+        $(#[$node_doc:meta])* $curves:ident: $end:ident, $get:ident, $last:literal;
     )*) => {$(
         $(#[$mix_doc])*
         #[inline(always)]
         pub(super) fn $name(&self, j: usize, t: T, lnm: T, m: T, inv_m: T) -> [T; 3] {
             if t > T::ZERO
                 && j >= 1
-                && self.$shared.get(j - 1) == Some(&true)
-                && let (Some(a), Some(b)) = (self.$curves.get(j - 1), self.$curves.get(j))
+                && $shared.get(self.pair).and_then(|s| s.get(j - 1)) == Some(&true)
             {
+                let (a, b) = (self.$get(j - 1), self.$get(j));
                 let at = a.at(lnm, m, inv_m);
                 return lerp(a.value(at), b.value(at), t);
             }
@@ -270,9 +263,9 @@ macro_rules! mix {
         #[inline(always)]
         fn $curves(&self, j: usize, lnm: T, m: T, inv_m: T) -> [T; 3] {
             match j {
-                0 => self.$end.eval(lnm, m, inv_m),
-                $last => mirror(self.$end.eval(lnm, m, inv_m)),
-                _ => self.$curves[(j - 1).min($top)].eval(lnm, m, inv_m),
+                0 => self.$end().eval(lnm, m, inv_m),
+                $last => mirror(self.$end().eval(lnm, m, inv_m)),
+                _ => self.$get(j - 1).eval(lnm, m, inv_m),
             }
         }
     )*};
@@ -291,13 +284,13 @@ impl<T: Real> Tables<T> {
 
     mix! {
         /// The plane's nodes `j` and `j + 1` mixed at `t` ∈ [0, 1).
-        plane_mix: plane_shared;
+        plane_mix: SHARED_PLANE;
         /// The η–φ plane at node `j` ∈ 0..=7 (u = 0, 1, 1½, … 3½, 4; 7: η mirrored).
-        plane: eta, 7, 5;
+        plane: eta, plane_curve, 7;
         /// The ring's nodes `j` and `j + 1` mixed at `t` ∈ [0, 1).
-        ring_mix: ring_shared;
+        ring_mix: SHARED_RING;
         /// The ring at node `j` ∈ 0..=4 of u (4: ξ with η mirrored).
-        ring: xieta, 4, 2;
+        ring: xieta, ring_curve, 4;
     }
 }
 
@@ -320,35 +313,110 @@ pub(super) fn lerp<T: Real>(a: [T; 3], b: [T; 3], t: T) -> [T; 3] {
 impl<T: Real> Tables<T> {
     /// The tables for a/b = e^x (a contact's, or a per-call shape's: `crate::contact::Rolling`
     /// with a skewed rolling velocity or a varying contact): the fitted shapes around x and
-    /// the weight between them (linear in ln(a/b), the end shapes outside [0.2, 5]); per curve
-    /// two `exp` (24 in all), no node copied.
+    /// the weight between them (linear in ln(a/b), the end shapes outside [0.2, 5]) and each
+    /// curve's grid (two `exp` per curve, 24 in all), no node copied.
     pub fn at_ln(x: T) -> Self {
         Self::build(x, false)
     }
 
-    /// [`Self::at_ln`] for tables used by one look-up (a per-call shape): no `exp` here; a
-    /// look-up in a tail computes its curve's one factor (the same values bit for bit).
+    /// [`Self::at_ln`] for tables used by one look-up (a per-call shape): the pair and the
+    /// weight only (no grid, no `exp` here); a look-up computes the grid it reads, in a tail
+    /// its curve's one factor (the same values bit for bit).
     pub fn at_ln_once(x: T) -> Self {
         Self::build(x, true)
     }
 
+    /// [`Self::at_ln_once`] from the fitted shapes `i`, `i + 1` and the weight `u`
+    /// ([`super::fitted::between`], shared with `blend`'s constants of the same shape).
+    #[inline(always)]
+    pub(super) fn between_once(at: (usize, T)) -> Self {
+        Self::from_pair(at, true)
+    }
+
     #[inline(always)]
     fn build(x: T, once: bool) -> Self {
-        let (i, u) = super::fitted::between(x);
-        let (lo, hi) = (&DATA[i.min(3)], &DATA[i.min(3) + 1]);
-        let p = |k: usize| Curve::between(&lo.plane[k], &hi.plane[k], u, once);
-        let plane: [Curve<T, FINE, 2>; 6] = [p(0), p(1), p(2), p(3), p(4), p(5)];
-        let r = |k: usize| Curve::between(&lo.ring[k], &hi.ring[k], u, once);
-        let ring: [Curve<T, FINE, 3>; 3] = [r(0), r(1), r(2)];
-        Self {
-            xi: Curve::between(&lo.xi, &hi.xi, u, once),
-            eta: Curve::between(&lo.eta, &hi.eta, u, once),
-            xieta: Curve::between(&lo.xieta, &hi.xieta, u, once),
-            plane_shared: SHARED_PLANE[i.min(3)],
-            ring_shared: SHARED_RING[i.min(3)],
-            plane,
-            ring,
+        Self::from_pair(super::fitted::between(x), once)
+    }
+
+    #[inline(always)]
+    fn from_pair((i, u): (usize, T), once: bool) -> Self {
+        let pair = i.min(3);
+        let mut tables = Self {
+            pair,
+            lo: &DATA[pair],
+            hi: &DATA[pair + 1],
+            u,
+            grids: None,
+        };
+        if !once {
+            let mut grids = [[T::ZERO; 4]; 12];
+            let [xi, eta, xieta, plane @ .., r0, r1, r2] = &mut grids;
+            *xi = tables.xi().stored_grid();
+            *eta = tables.eta().stored_grid();
+            *xieta = tables.xieta().stored_grid();
+            for (k, g) in plane.iter_mut().enumerate() {
+                *g = tables.plane_curve(k).stored_grid();
+            }
+            for (k, g) in [r0, r1, r2].into_iter().enumerate() {
+                *g = tables.ring_curve(k).stored_grid();
+            }
+            tables.grids = Some(grids);
         }
+        tables
+    }
+
+    /// The view of curve `k` (the order of `grids`) of the data `pick` selects.
+    #[inline(always)]
+    fn curve<const N: usize, const C: usize>(
+        &self,
+        k: usize,
+        pick: impl Fn(&'static Shape) -> &'static Data<N, C>,
+    ) -> Curve<T, N, C> {
+        let [x0, inv_dx, inv_m0, m_last] = match &self.grids {
+            Some(g) => g.get(k).copied().unwrap_or([T::ZERO; 4]),
+            None => [T::ZERO; 4],
+        };
+        Curve {
+            x0,
+            inv_dx,
+            inv_m0,
+            m_last,
+            lo: pick(self.lo),
+            hi: pick(self.hi),
+            u: self.u,
+        }
+    }
+
+    /// ξ (F_x).
+    #[inline(always)]
+    pub(super) fn xi(&self) -> Curve<T, COARSE, 1> {
+        self.curve(0, |s| &s.xi)
+    }
+
+    /// η (F_y, M_z).
+    #[inline(always)]
+    fn eta(&self) -> Curve<T, COARSE, 2> {
+        self.curve(1, |s| &s.eta)
+    }
+
+    /// ξ with η.
+    #[inline(always)]
+    fn xieta(&self) -> Curve<T, COARSE, 3> {
+        self.curve(2, |s| &s.xieta)
+    }
+
+    /// The plane's curve `k` ∈ 0..6 (u = 1, 1½, 2, 2½, 3, 3½; the last beyond).
+    #[inline(always)]
+    fn plane_curve(&self, k: usize) -> Curve<T, FINE, 2> {
+        let k = k.min(5);
+        self.curve(3 + k, move |s| &s.plane[k])
+    }
+
+    /// The ring's curve `k` ∈ 0..3 (u = 1, 2, 3; the last beyond).
+    #[inline(always)]
+    fn ring_curve(&self, k: usize) -> Curve<T, FINE, 3> {
+        let k = k.min(2);
+        self.curve(9 + k, move |s| &s.ring[k])
     }
 }
 

@@ -296,10 +296,12 @@ impl<T: Real, const N: usize, const S: usize> Nodes<T, N, S> {
 ///
 /// Per call two comparisons and one truncation for the interval, one Hermite segment per
 /// coefficient (no `exp`, no division: ≈ 100 M4F instructions), `blend`'s constants, and
-/// `table`'s curves built with no grid ([`super::table::Tables::at_ln_once`], ≈ 330: the
-/// look-ups compute the grids they read, at most four per call, with an `exp` only in a
-/// tail); [`ShapePath::shape_at_ln`] alone 963 → 590 M4F f32 instructions against the path
-/// of ln C (6-step bisection, an `exp` per coefficient and for √(a/b)). Per contact 35 × 8
+/// `table`'s tables with no grid ([`super::table::Tables::at_ln_once`]: the pair of fitted
+/// shapes and the weight, found once for both; the look-ups compute the grids they read, at
+/// most four per call, with an `exp` only in a tail; ≈ 330 while the tables were twelve
+/// curve views built per call); [`ShapePath::shape_at_ln`] alone 963 → 590 M4F f32
+/// instructions against the path of ln C (6-step bisection, an `exp` per coefficient and for
+/// √(a/b)), before the tables held only the pair. Per contact 35 × 8
 /// numbers and 12 (a node where two segments meet is stored twice).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ShapePath<T> {
@@ -393,11 +395,13 @@ impl<T: Real> ShapePath<T> {
 /// The creep shape at x = ln(a/b) (clamped) with √(a/b) and the coefficients given.
 #[inline(always)]
 pub(crate) fn shape_of<T: Real>(x: T, rho: T, kalker: Kalker<T>) -> RollingShape<T> {
+    // the fitted shapes around x and the weight, once for `blend`'s constants and the tables
+    let at = super::fitted::between(x);
     RollingShape {
         rho,
         kalker,
-        blend: super::fitted::blend_at_ln(x),
-        table: super::residual::Tables::at_ln_once(x),
+        blend: super::fitted::blend_between(at),
+        table: super::residual::Tables::between_once(at),
         coupling: (T::ZERO, T::ZERO),
     }
 }

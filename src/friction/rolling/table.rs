@@ -131,7 +131,7 @@
 //! direction curves 759; 787 while each contact held its own mixed copy of the nodes); two
 //! neighbouring curves on the same magnitudes share one node search. Per contact 12 curves of
 //! a few numbers each and references to the two fitted shapes' nodes in flash, mixed at the
-//! shape weight on each look-up (a [`super::RollingShape`] is 520 bytes in f32; a mixed copy
+//! shape weight on each look-up (a [`super::RollingShape`] is 264 bytes in f32 on x86-64, 528 while the tables held a view per curve; a mixed copy
 //! was 5.3 KB, and the per-call shape of a skewed rolling velocity built it each call). Flash:
 //! the generated data, 5 shapes × 1,287 `i16` + 82 `f32` scales + 60 curve grids (14.5 KB;
 //! 27.3 KB with `f32` nodes); the size probe (`tools/flash-bench.sh --stage rolling`: a
@@ -220,7 +220,7 @@ impl RollingLaw for Table {
                 p
             }
         } else {
-            lerp(around(true), tb.xi.eval(lnm, m, inv_m), v - T::ONE)
+            lerp(around(true), tb.xi().eval(lnm, m, inv_m), v - T::ONE)
         };
         let out = Creep {
             fx: w.fx + T::ONE.copysign(dx) * c[0],
