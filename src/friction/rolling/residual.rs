@@ -343,8 +343,9 @@ impl<T: Real> Tables<T> {
         let pair = i.min(3);
         let mut tables = Self {
             pair,
-            lo: &DATA[pair],
-            hi: &DATA[pair + 1],
+            // `get`: no bounds-check panic path at any opt-level (pair ≤ 3)
+            lo: DATA.get(pair).unwrap_or(&DATA[0]),
+            hi: DATA.get(pair + 1).unwrap_or(&DATA[1]),
             u,
             grids: None,
         };
@@ -409,14 +410,14 @@ impl<T: Real> Tables<T> {
     #[inline(always)]
     fn plane_curve(&self, k: usize) -> Curve<T, FINE, 2> {
         let k = k.min(5);
-        self.curve(3 + k, move |s| &s.plane[k])
+        self.curve(3 + k, move |s| s.plane.get(k).unwrap_or(&s.plane[0]))
     }
 
     /// The ring's curve `k` ∈ 0..3 (u = 1, 2, 3; the last beyond).
     #[inline(always)]
     fn ring_curve(&self, k: usize) -> Curve<T, FINE, 3> {
         let k = k.min(2);
-        self.curve(9 + k, move |s| &s.ring[k])
+        self.curve(9 + k, move |s| s.ring.get(k).unwrap_or(&s.ring[0]))
     }
 }
 
