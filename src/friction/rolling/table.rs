@@ -124,7 +124,7 @@
 //!
 //! `blend`'s call plus a square root, two divisions, one `ln` and 1 to 4 curve look-ups (1 to 3
 //! channels each). M4F, f32, the dimensional call (firmware stage `rolling`, 64 creep states on
-//! a spiral of directions): 1,020 instructions on average (`blend` 443; f64: 41,145; 951 with
+//! a spiral of directions): 1,030 instructions on average (`blend` 442; f64: 41,220; 1,020 while the tables held twelve curve views, 951 with
 //! the nodes in `f32` — the `i16` nodes cost two conversions and a scaling per node read and
 //! save 13 KB of flash; 919 before the spin entered `blend`'s translational saturation and the
 //! couplings, 895 before a curve could be built per call without its grid; before the
@@ -135,7 +135,7 @@
 //! was 5.3 KB, and the per-call shape of a skewed rolling velocity built it each call). Flash:
 //! the generated data, 5 shapes × 1,287 `i16` + 82 `f32` scales + 60 curve grids (14.5 KB;
 //! 27.3 KB with `f32` nodes); the size probe (`tools/flash-bench.sh --stage rolling`: a
-//! contact built and called) measures `table` 59.7 KB in f32, 9.9 KB over `blend` (49.8 KB;
+//! contact built and called) measures `table` 57.5 KB in f32, 8.9 KB over `blend` (48.6 KB;
 //! every rolling law's probe holds the tables, since [`super::RollingContact::new`] builds
 //! them whatever the law). Before: 77.6 KB (the `f32` nodes, and Table E3's interpolation
 //! linked for the coefficients' growth beyond a/b ∈ [1/20, 20], 8 KB, now restated without
