@@ -129,10 +129,12 @@
 //! save 13 KB of flash; 919 before the spin entered `blend`'s translational saturation and the
 //! couplings, 895 before a curve could be built per call without its grid; before the
 //! direction curves 759; 787 while each contact held its own mixed copy of the nodes); two
-//! neighbouring curves on the same magnitudes share one node search. Per contact 12 curves of
-//! a few numbers each and references to the two fitted shapes' nodes in flash, mixed at the
-//! shape weight on each look-up (a [`super::RollingShape`] is 264 bytes in f32 on x86-64, 528 while the tables held a view per curve; a mixed copy
-//! was 5.3 KB, and the per-call shape of a skewed rolling velocity built it each call). Flash:
+//! neighbouring curves on the same magnitudes share one node search. Per contact the pair of
+//! fitted shapes (references to their nodes in flash), the weight between them and each of
+//! the 12 curves' grid (4 numbers), mixed at the weight on each look-up (a
+//! [`super::RollingShape`] is 264 bytes in f32 on x86-64, 528 while the tables held a view per
+//! curve; a mixed copy was 5.3 KB, and the per-call shape of a skewed rolling velocity built
+//! it each call; a per-call shape holds no grids). Flash:
 //! the generated data, 5 shapes × 1,287 `i16` + 82 `f32` scales + 60 curve grids (14.5 KB;
 //! 27.3 KB with `f32` nodes); the size probe (`tools/flash-bench.sh --stage rolling`: a
 //! contact built and called) measures `table` 57.5 KB in f32, 8.9 KB over `blend` (48.6 KB;
