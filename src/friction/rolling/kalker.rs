@@ -232,8 +232,13 @@ pub(crate) fn coefficients_f64(a_over_b: f64, nu: f64) -> [f64; 3] {
     if g >= 0.1 {
         return tabulated(narrow, g, nu);
     }
-    let (at, tab) = (asymptote(narrow, 0.1, nu), tabulated(narrow, 0.1, nu));
-    let here = asymptote(narrow, g, nu);
+    below_table(narrow, g, nu, tabulated(narrow, 0.1, nu))
+}
+
+/// Below the table's first row (g < 0.1): the asymptotic forms corrected towards the table's
+/// values `tab` at g = 0.1, the correction fading linearly in g.
+fn below_table(narrow: bool, g: f64, nu: f64, tab: [f64; 3]) -> [f64; 3] {
+    let (at, here) = (asymptote(narrow, 0.1, nu), asymptote(narrow, g, nu));
     let mut out = [0.0; 3];
     for (o, ((h, t), a)) in out.iter_mut().zip(here.iter().zip(tab).zip(at)) {
         *o = h * (1.0 + (t / a - 1.0) * g / 0.1);
@@ -248,22 +253,14 @@ pub(crate) fn coefficients_f64(a_over_b: f64, nu: f64) -> [f64; 3] {
 /// interpolation (the row g = 0.1 is a node), so that the rolling laws' coefficients
 /// ([`super::creep_matrix::aligned`]) do not link it.
 pub(crate) fn growth(r: f64, end: f64, nu: f64) -> [f64; 4] {
+    // [`coefficients_f64`] below the table, its row g = 0.1 read as a node
     let c = |r: f64| {
         let narrow = r <= 1.0;
         let g = if narrow { r } else { 1.0 / r };
         let row = if narrow { &NARROW[0] } else { &LONG[0] };
-        let (here, at) = (asymptote(narrow, g, nu), asymptote(narrow, 0.1, nu));
-        let mut out = [0.0; 3];
-        for (k, o) in out.iter_mut().enumerate() {
-            let col = |j: usize| row.get(3 * k + j).copied().unwrap_or(1.0);
-            let t = in_nu([col(0), col(1), col(2)], nu);
-            let (h, a) = (
-                here.get(k).copied().unwrap_or(1.0),
-                at.get(k).copied().unwrap_or(1.0),
-            );
-            *o = h * (1.0 + (t / a - 1.0) * g / 0.1);
-        }
-        out
+        let col = |k: usize, j: usize| row.get(3 * k + j).copied().unwrap_or(1.0);
+        let tab = [0, 1, 2].map(|k| in_nu([col(k, 0), col(k, 1), col(k, 2)], nu));
+        below_table(narrow, g, nu, tab)
     };
     let ([h11, h22, h23], [t11, t22, t23]) = (c(r), c(end));
     [
