@@ -21,6 +21,8 @@ l = κ(C11 ξ, C22 η, C23 cφ) (Kalker's linear forces, fN), m = |l|, d = l/m:
   and ∝ (m_N/m)² above the last (so the linear limit and full slip stay blend's, i.e. exact);
   then a positive power removed and |F| ≤ fN, as blend does.
 
+Shapes: a/b = 0.2, 0.5, 1, 2, 5 (blend's fitted shapes) and the ends of the domain, 1/20 and 20
+(rolling_ref_ends.csv: all nine curves there, laid out with the exact linear coefficients).
 Nodes: the 29 magnitudes per curve uniform in ln m (rolling_ref.csv's 15 and the 14 geometric
 midpoints of rolling_ref_mid.csv; rolling_ref_dir.csv for the four new curves); on the curves
 with φ at a/b = 2 and 5 (the sharp knee of the spin force) the intervals KNEE (q ≈ 0.08–1.6)
@@ -47,7 +49,7 @@ from rolling_ref import creep_coefficients, evaluate, law_inputs, normalised, re
 
 out_rs = root / "src/friction/rolling/table_data.rs"
 data = root / "tools/data"
-SH = [0.2, 0.5, 1.0, 2.0, 5.0]
+SH = [0.05, 0.2, 0.5, 1.0, 2.0, 5.0, 20.0]
 COARSE = 29
 KNEE = (12, 8)  # first interval and number of intervals cut in four (spin curves)
 FINE = COARSE + 3 * KNEE[1]
@@ -74,9 +76,10 @@ sets = {
     "half_held": read(data / "rolling_ref_half_held.csv"),
     "random": read(data / "rolling_ref_dir_random.csv"),
     "plane": read(data / "rolling_ref_plane.csv"),
+    "ends": read(data / "rolling_ref_ends.csv"),
 }
 
-shapes = sorted({(r[1], r[2]) for r in ref})
+shapes = sorted({(r[1], r[2]) for r in ref + sets["ends"]})
 coef = {key: c[:3] for key, c in creep_coefficients(shapes).items()}  # C11, C22, C23
 
 
@@ -112,7 +115,7 @@ def residual(r, bw):
 # the coarse grid of each (shape, curve): the 29 magnitudes of rolling_ref.csv + midpoints, or
 # of rolling_ref_dir.csv
 coarse = {}
-for r, bw in on_curves(blended["ref"] + blended["mid"] + blended["dir"]):
+for r, bw in on_curves(blended["ref"] + blended["mid"] + blended["dir"] + blended["ends"]):
     coarse.setdefault((r[1], curve_name(r)), []).append((direction(r)[0], r, bw))
 grids = {}
 for key, v in coarse.items():
@@ -146,7 +149,7 @@ def fine(pos, windowed):
 def node_rows(use_knee):
     """{(shape, curve): {fine index: (row, blend)}} — the tables' nodes."""
     out = {}
-    for r, bw in on_curves(blended["ref"] + blended["mid"] + blended["dir"]):
+    for r, bw in on_curves(blended["ref"] + blended["mid"] + blended["dir"] + blended["ends"]):
         key = (r[1], curve_name(r))
         out.setdefault(key, {})[round(fine(position(r), key[1] in SPIN))] = (r, bw)
     if use_knee:
@@ -284,9 +287,9 @@ def lookup(tab, name, m):
 
 def shape_tables(tables, aob):
     """The tables for a/b: linear in ln(a/b) between the fitted shapes (values and grids)."""
-    x = math.log(min(max(aob, 0.2), 5.0))
+    x = math.log(min(max(aob, SH[0]), SH[-1]))
     i = 0
-    while i < 3 and x > math.log(SH[i + 1]):
+    while i < len(SH) - 2 and x > math.log(SH[i + 1]):
         i += 1
     x0, x1 = math.log(SH[i]), math.log(SH[i + 1])
     u = min(max((x - x0) / (x1 - x0), 0.0), 1.0)
@@ -357,7 +360,7 @@ def parts(use_knee):
     is_node = {id(r) for pts in nodes.values() for r, _ in pts.values()}
     out = []
     for name in ("ref", "mid", "quarter", "dir", "dir_quarter", "dir_quarter_knee", "knee", "knee_held",
-                 "half_held", "plane"):
+                 "half_held", "plane", "ends"):
         for r, bw in blended[name]:
             if r[2] == 0.25 and r[0] in CURVE_FAMS:
                 out.append(("fit" if id(r) in is_node else "held-out", r, bw))
@@ -451,9 +454,9 @@ def rust(tables):
              "    pub(crate) ring: [Data<FINE, 3>; 3],",
              "}",
              "",
-             "/// Per shape a/b = 0.2, 0.5, 1, 2, 5 (ν = 0.25).",
+             "/// Per shape a/b = 1/20, 0.2, 0.5, 1, 2, 5, 20 (ν = 0.25).",
              "#[rustfmt::skip]",
-             "pub(crate) static SHAPES: [Shape; 5] = ["]
+             f"pub(crate) static SHAPES: [Shape; {len(SH)}] = ["]
     for aob in SH:
         lines.append("    Shape {")
         for field, names in (("xi", ["xi"]), ("eta", ["eta"]), ("xieta", ["xieta"])):

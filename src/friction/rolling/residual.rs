@@ -1,5 +1,5 @@
 //! The residual tables of the default rolling law (`Table`) for one contact shape:
-//! the curves of the generated data (`table_data`) of the two fitted shapes around a/b, mixed
+//! the curves of the generated data (`table_data`) of the two tabulated shapes around a/b, mixed
 //! on each look-up. Data for `RollingShape`, read by the law; see the law's module
 //! docs for the formula, the error and the cost.
 
@@ -10,7 +10,7 @@ use crate::Real;
 
 /// One residual curve of one contact: ln m of the first node, 1/Δ(ln m) (coarse spacing),
 /// m₀⁻¹, m_N, and the residual at the nodes, `C` channels (F_x; F_y, M_z; or all three), read
-/// from the generated data of the two fitted shapes around a/b and mixed at the weight `u` on
+/// from the generated data of the two tabulated shapes around a/b and mixed at the weight `u` on
 /// each look-up (nothing copied: a curve is a few numbers and two references into flash).
 /// With `N` = 29 + 3 · 8 (the curves with φ) the 8 coarse intervals of the knee window hold
 /// three more nodes each.
@@ -185,7 +185,7 @@ impl<T: Real, const N: usize, const C: usize> Curve<T, N, C> {
 /// sign), 1½, 2 (φ), 2½, 3 (η with φ, opposite signs), 3½; the ring (ξ at 45° to the plane) at
 /// u = 0 (ξ with η), 1, 2, 3.
 ///
-/// Held: the pair of fitted shapes (`DATA[pair]`, `DATA[pair + 1]`), the weight between them
+/// Held: the pair of tabulated shapes (`DATA[pair]`, `DATA[pair + 1]`), the weight between them
 /// and, per contact, each curve's grid (x₀, 1/Δ, m₀⁻¹, m_N; curves in the order ξ, η, ξ with η,
 /// the plane's six, the ring's three); the curves are views made on each look-up. Tables built
 /// per call hold no grids (three words written, not twelve curves).
@@ -272,13 +272,13 @@ macro_rules! mix {
 }
 
 impl<T: Real> Tables<T> {
-    /// For a/b: the generated tables linear in ln(a/b) between the fitted shapes, the end
-    /// shapes outside [0.2, 5] ([`Self::at_ln`] at x = ln(a/b)).
+    /// For a/b: the generated tables linear in ln(a/b) between the tabulated shapes, the end
+    /// shapes outside [1/20, 20] ([`Self::at_ln`] at x = ln(a/b)).
     pub fn new(a_over_b: T) -> Self {
         Self::at_ln(T::from_f64(libm::log(super::within(
             a_over_b.to_f64(),
-            0.2,
-            5.0,
+            0.05,
+            20.0,
         ))))
     }
 
@@ -312,8 +312,8 @@ pub(super) fn lerp<T: Real>(a: [T; 3], b: [T; 3], t: T) -> [T; 3] {
 
 impl<T: Real> Tables<T> {
     /// The tables for a/b = e^x (a contact's, or a per-call shape's: `crate::contact::Rolling`
-    /// with a skewed rolling velocity or a varying contact): the fitted shapes around x and
-    /// the weight between them (linear in ln(a/b), the end shapes outside [0.2, 5]) and each
+    /// with a skewed rolling velocity or a varying contact): the tabulated shapes around x and
+    /// the weight between them (linear in ln(a/b), the end shapes outside [1/20, 20]) and each
     /// curve's grid (two `exp` per curve, 24 in all), no node copied.
     pub fn at_ln(x: T) -> Self {
         Self::build(x, false)
@@ -326,7 +326,7 @@ impl<T: Real> Tables<T> {
         Self::build(x, true)
     }
 
-    /// [`Self::at_ln_once`] from the fitted shapes `i`, `i + 1` and the weight `u`
+    /// [`Self::at_ln_once`] from the tabulated shapes `i`, `i + 1` and the weight `u`
     /// ([`super::fitted::between`], shared with `blend`'s constants of the same shape).
     #[inline(always)]
     pub(super) fn between_once(at: (usize, T)) -> Self {
@@ -340,10 +340,10 @@ impl<T: Real> Tables<T> {
 
     #[inline(always)]
     fn from_pair((i, u): (usize, T), once: bool) -> Self {
-        let pair = i.min(3);
+        let pair = i.min(DATA.len() - 2);
         let mut tables = Self {
             pair,
-            // `get`: no bounds-check panic path at any opt-level (pair ≤ 3)
+            // `get`: no bounds-check panic path at any opt-level (pair ≤ len − 2)
             lo: DATA.get(pair).unwrap_or(&DATA[0]),
             hi: DATA.get(pair + 1).unwrap_or(&DATA[1]),
             u,
@@ -421,7 +421,7 @@ impl<T: Real> Tables<T> {
     }
 }
 
-/// The same grid in ln m (x₀ and Δ bit for bit) at both fitted shapes of a pair.
+/// The same grid in ln m (x₀ and Δ bit for bit) at both tabulated shapes of a pair.
 const fn same_grid<const N: usize, const C: usize>(
     a: [&Data<N, C>; 2],
     b: [&Data<N, C>; 2],
@@ -434,13 +434,16 @@ const fn same_data_grid<const N: usize, const C: usize>(p: &Data<N, C>, q: &Data
     p.0.to_bits() == q.0.to_bits() && p.1.to_bits() == q.1.to_bits()
 }
 
-/// Per pair of fitted shapes (i, i + 1): whether plane[k] and plane[k + 1] share their grid
+/// The pairs of neighbouring tabulated shapes.
+const PAIRS: usize = DATA.len() - 1;
+
+/// Per pair of tabulated shapes (i, i + 1): whether plane[k] and plane[k + 1] share their grid
 /// (then curves between the pair's shapes do at every weight: one node search for both).
 /// From the data at compile time, not per call.
-const SHARED_PLANE: [[bool; 5]; 4] = {
-    let mut out = [[false; 5]; 4];
+const SHARED_PLANE: [[bool; 5]; PAIRS] = {
+    let mut out = [[false; 5]; PAIRS];
     let mut i = 0;
-    while i < 4 {
+    while i < PAIRS {
         let (lo, hi) = (&DATA[i], &DATA[i + 1]);
         let mut k = 0;
         while k < 5 {
@@ -456,10 +459,10 @@ const SHARED_PLANE: [[bool; 5]; 4] = {
 };
 
 /// The same for ring[k] and ring[k + 1].
-const SHARED_RING: [[bool; 2]; 4] = {
-    let mut out = [[false; 2]; 4];
+const SHARED_RING: [[bool; 2]; PAIRS] = {
+    let mut out = [[false; 2]; PAIRS];
     let mut i = 0;
-    while i < 4 {
+    while i < PAIRS {
         let (lo, hi) = (&DATA[i], &DATA[i + 1]);
         let mut k = 0;
         while k < 2 {
@@ -499,6 +502,6 @@ mod tests {
                 check(c.0, c.1, c.3, c.4);
             }
         }
-        assert_eq!(n, 5 * 12);
+        assert_eq!(n, DATA.len() * 12);
     }
 }

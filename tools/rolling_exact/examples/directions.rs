@@ -28,11 +28,19 @@
 //!   `../data/rolling_ref_half_held.csv` (48 cases; held out);
 //! - `plane`: the η–φ directions halfway between the plane's curves (u = 1½, 2½, 3½) at
 //!   a/b = 2 and 5, on the node magnitudes from the 11th (q ≥ 0.04) on,
-//!   `../data/rolling_ref_plane.csv` (114 cases).
+//!   `../data/rolling_ref_plane.csv` (114 cases);
+//! - `ends`: the shapes at the ends of the domain, a/b = 1/20 and 20 by default (beyond Table
+//!   E3: laid out with the exact reference's own linear coefficients at ν = 0.25,
+//!   `../data/rolling_linear_aligned.csv`), all nine curves of the tables on their 29 node
+//!   magnitudes: ξ, η, φ, η with φ and ξ with η as in rolling_ref.csv (families `xi`, `eta`,
+//!   `phi`, `combined`) and the four curves above, on the grids of the held-out set (elements
+//!   elongated along the long axis, `reference::elements_ratio`),
+//!   `../data/rolling_ref_ends.csv` (522 cases).
 //!
 //! With a/b arguments only those shapes are computed (to split the work; concatenate the rows).
 use rolling_exact::cases::{NL, SHAPES, magnitudes, uniform};
 use rolling_exact::kalker;
+use rolling_exact::reference::elements_ratio;
 use rolling_exact::reference::{CSV_COLUMNS, Patch, finest_k};
 use std::time::Instant;
 
@@ -72,6 +80,24 @@ fn nodes(spin: bool) -> Vec<f64> {
     v
 }
 
+/// (C₁₁, C₂₂, C₂₃) of the aligned patch a/b at ν = 0.25 from the exact reference's linear table
+/// (`../data/rolling_linear_aligned.csv`, tools/rolling_exact's `linear_table` example).
+fn exact_coefficients(aob: f64) -> (f64, f64, f64) {
+    let text = std::fs::read_to_string("../data/rolling_linear_aligned.csv")
+        .expect("../data/rolling_linear_aligned.csv (run from tools/rolling_exact)");
+    for line in text.lines().filter(|l| !l.starts_with('#') && !l.starts_with('a')) {
+        let f: Vec<f64> = line
+            .split(',')
+            .take(12)
+            .map(|x| x.parse().expect("number"))
+            .collect();
+        if (f[0] - aob).abs() < 1e-9 * aob && f[1] == 0.0 && f[2] == 0.25 {
+            return (f[3], f[7], f[8]);
+        }
+    }
+    panic!("a/b = {aob} at ν = 0.25 is not in rolling_linear_aligned.csv")
+}
+
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
     let mode = args.first().map(String::as_str).unwrap_or("nodes");
@@ -84,7 +110,8 @@ fn main() {
         "knee-held" => "../data/rolling_ref_knee_held.csv",
         "half-held" => "../data/rolling_ref_half_held.csv",
         "plane" => "../data/rolling_ref_plane.csv",
-        _ => panic!("mode: nodes, quarter, random, knee, knee-held or plane"),
+        "ends" => "../data/rolling_ref_ends.csv",
+        _ => panic!("mode: nodes, quarter, random, knee, knee-held, plane or ends"),
     };
     let out = args.get(1).map(String::as_str).unwrap_or(default_out);
     let shapes: Vec<f64> = if args.len() > 2 {
@@ -93,6 +120,8 @@ fn main() {
         vec![2.0, 5.0]
     } else if mode == "half-held" {
         vec![1.0]
+    } else if mode == "ends" {
+        vec![0.05, 20.0]
     } else {
         SHAPES.to_vec()
     };
@@ -106,13 +135,22 @@ fn main() {
         "# Exact steady-rolling reference, mode `{mode}` of tools/rolling_exact/examples/directions.rs"
     ));
     line(&format!(
-        "# (cargo run --release --example directions -- {mode}; see there for the cases); same method, grids,"
+        "# (cargo run --release --example directions -- {mode}; see there for the cases); same method,{}",
+        if mode == "ends" { "" } else { " grids," }
     ));
-    line("# extrapolation and format as rolling_ref.csv (see its header).");
+    line(if mode == "ends" {
+        "# extrapolation and format as rolling_ref.csv (see its header); the grids of the held-out set (below)."
+    } else {
+        "# extrapolation and format as rolling_ref.csv (see its header)."
+    });
     line(CSV_COLUMNS);
     let mut seed = 20u64;
     for aob in shapes {
-        let (c11, c22, c23) = kalker::coefficients(aob).expect("shape in Table E3");
+        let (c11, c22, c23) = if mode == "ends" {
+            exact_coefficients(aob)
+        } else {
+            kalker::coefficients(aob).expect("shape in Table E3")
+        };
         let place =
             |d: [f64; 3], q: f64| (s * q * d[0] / c11, s * q * d[1] / c22, s * q * d[2] / c23);
         let mut cases: Vec<(&str, (f64, f64, f64))> = Vec::new();
@@ -125,6 +163,20 @@ fn main() {
                 };
                 for (name, d) in curves() {
                     cases.extend(q.iter().map(|&q| (name, place(d, q))));
+                }
+            }
+            "ends" => {
+                let (plain, spin) = (nodes(false), nodes(true));
+                let r = std::f64::consts::FRAC_1_SQRT_2;
+                cases.extend(plain.iter().map(|&q| ("xi", place([1.0, 0.0, 0.0], q))));
+                cases.extend(plain.iter().map(|&q| ("eta", place([0.0, 1.0, 0.0], q))));
+                cases.extend(spin.iter().map(|&q| ("phi", place([0.0, 0.0, 1.0], q))));
+                // as rolling_ref.csv: η with φ at equal shares of 3q (|l| = 3q/√2), ξ with η at
+                // |l| = 3q
+                cases.extend(spin.iter().map(|&q| ("combined", place([0.0, 0.5, 0.5], q))));
+                cases.extend(plain.iter().map(|&q| ("combined", place([r, r, 0.0], q))));
+                for (name, d) in curves() {
+                    cases.extend(spin.iter().map(|&q| (name, place(d, q))));
                 }
             }
             "random" => {
@@ -186,7 +238,12 @@ fn main() {
                 }
             }
         }
-        let patch = Patch::new(aob, nu, NL, finest_k(aob, 1024));
+        let patch = if mode == "ends" {
+            let nm = elements_ratio(aob);
+            Patch::skewed_on(aob, 0.0, nu, NL, finest_k(nm, 1024), nm)
+        } else {
+            Patch::new(aob, nu, NL, finest_k(aob, 1024))
+        };
         for (family, (xi, eta, phi_c)) in cases {
             let sol = patch.solve(xi, eta, phi_c, true);
             assert!(
