@@ -103,7 +103,10 @@ pub(super) fn blend_between<T: Real>((i, u): (usize, T)) -> (T, T) {
     let lerp = |s: &[[f32; NODES]; 1], d: &[f64; NODES]| {
         at::<T>(s, d, i) + u * (at::<T>(s, d, i + 1) - at::<T>(s, d, i))
     };
-    (lerp(&SIGMA_F32, &SIGMA_NODES), lerp(&GAMMA_F32, &GAMMA_NODES))
+    (
+        lerp(&SIGMA_F32, &SIGMA_NODES),
+        lerp(&GAMMA_F32, &GAMMA_NODES),
+    )
 }
 
 #[cfg(test)]
@@ -120,10 +123,15 @@ mod tests {
 
     #[test]
     fn blend_between_is_blend_at_on_both_sides_of_the_fitted_range() {
-        for aob in [0.03, 0.05, 0.07, 0.12, 0.2, 0.3, 1.0, 3.0, 5.0, 8.0, 15.0, 20.0, 40.0] {
+        for aob in [
+            0.03, 0.05, 0.07, 0.12, 0.2, 0.3, 1.0, 3.0, 5.0, 8.0, 15.0, 20.0, 40.0,
+        ] {
             let (s, g) = blend_at::<f64>(aob);
             let (sb, gb) = blend_between(between(libm::log(aob)));
-            assert!((s - sb).abs() <= 1e-12 * s && (g - gb).abs() <= 1e-12 * g, "{aob}");
+            assert!(
+                (s - sb).abs() <= 1e-12 * s && (g - gb).abs() <= 1e-12 * g,
+                "{aob}"
+            );
         }
     }
 }

@@ -85,7 +85,10 @@ fn nodes(spin: bool) -> Vec<f64> {
 fn exact_coefficients(aob: f64) -> (f64, f64, f64) {
     let text = std::fs::read_to_string("../data/rolling_linear_aligned.csv")
         .expect("../data/rolling_linear_aligned.csv (run from tools/rolling_exact)");
-    for line in text.lines().filter(|l| !l.starts_with('#') && !l.starts_with('a')) {
+    for line in text
+        .lines()
+        .filter(|l| !l.starts_with('#') && !l.starts_with('a'))
+    {
         let f: Vec<f64> = line
             .split(',')
             .take(12)
@@ -173,7 +176,10 @@ fn main() {
                 cases.extend(spin.iter().map(|&q| ("phi", place([0.0, 0.0, 1.0], q))));
                 // as rolling_ref.csv: η with φ at equal shares of 3q (|l| = 3q/√2), ξ with η at
                 // |l| = 3q
-                cases.extend(spin.iter().map(|&q| ("combined", place([0.0, 0.5, 0.5], q))));
+                cases.extend(
+                    spin.iter()
+                        .map(|&q| ("combined", place([0.0, 0.5, 0.5], q))),
+                );
                 cases.extend(plain.iter().map(|&q| ("combined", place([r, r, 0.0], q))));
                 for (name, d) in curves() {
                     cases.extend(spin.iter().map(|&q| (name, place(d, q))));
