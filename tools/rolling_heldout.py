@@ -255,7 +255,7 @@ def main():
     p("<!-- ANCHOR_END: whole -->\n")
     p("## Subsets\n")
     subsets = [
-        ("aligned, a/b in [0.2, 5] (the fitted range of `blend`, `table`)",
+        ("aligned, a/b in [0.2, 5] (`blend`'s fitted range; `table`'s knee and ½-direction nodes)",
          lambda f, r: f["skew to the nearest axis"] == "aligned" and 0.2 <= r["aob"] <= 5.0),
         ("aligned, any a/b", lambda f, r: f["skew to the nearest axis"] == "aligned"),
         ("skewed, patch b/a ≥ 0.2", lambda f, r: f["skew to the nearest axis"] != "aligned" and 0.2 <= r["aob"] <= 5.0),

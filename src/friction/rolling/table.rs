@@ -32,13 +32,16 @@
 //! then a positive power removed along (ξ, η, cφ) and |F| ≤ fN by scaling, as in `blend`. The
 //! curves at u = 1½, 2½, 3½ exist at a/b = 2 and 5 (`rolling_ref_plane.csv`, m ≥ 0.12); below
 //! that and at the other shapes they hold their neighbours' mean (the law without them). Per
-//! shape a/b ∈ {0.2, 0.5, 1, 2, 5} (ν = 0.25), node by node linear in ln(a/b) between them
-//! (built once per contact, [`Tables::new`]), the end shapes outside. Data: `table_data.rs`,
+//! shape a/b ∈ {1/20, 0.2, 0.5, 1, 2, 5, 20} (ν = 0.25; the two ends of the domain from
+//! `rolling_ref_ends.csv`: the nine curves laid out with the exact linear coefficients, on the
+//! held-out set's grids, no knee or ½-direction nodes), node by node linear in ln(a/b) between
+//! them (built once per contact, [`Tables::new`]), the end shapes outside; `blend`'s constants
+//! are its end values beyond [0.2, 5] (its own rule). Data: `table_data.rs`,
 //! written by `python3 tools/fit_rolling_table.py --write` (nothing fitted: the node values are
 //! the reference's residuals; `--check` in CI): each node value an `i16` times a power of two
 //! per node index (the smallest with every shape's, curve's and channel's |residual| at that
-//! node ≤ 32,767 of it: exact in `f32` and `f64`, within 7.6e-6 fN / fNc of the residual at
-//! every node, and relatively as fine near the linear limit as at the knee, where the
+//! node ≤ 32,767 of it: exact in `f32` and `f64`, within 3.0e-5 fN / fNc of the residual at
+//! every node (7.6e-6 before the shapes 1/20 and 20, whose residuals are larger), and relatively as fine near the linear limit as at the knee, where the
 //! residuals are 1e4 times larger); the two shapes' integers are mixed, then scaled.
 //!
 //! - m → 0: the correction is O(m²) (the residual of `blend` is O(m²) too): the linear
@@ -53,7 +56,7 @@
 //!
 //! Every input, as `blend`: rest → 0; N ≤ 0 or f = 0 → 0; V = 0 → full slip (the correction is
 //! skipped: its limit there is 0); V < 0 by the mirror ([`super::RollingSlip`]). a/b outside
-//! [0.2, 5]: the end shape's tables (measured by the whole-domain held-out set, below); ν ≠ 0.25:
+//! [1/20, 20]: the end shape's tables (unmeasured there: the held-out set spans 1/20 to 20); ν ≠ 0.25:
 //! the same residuals with ν's own coefficients.
 //!
 //! # Example
@@ -102,12 +105,19 @@
 //!
 //! **Over the whole domain** (the held-out set `tools/data/rolling_ref_heldout.csv`: 500 points
 //! at random patch shapes a/b 0.05–20, skews, ν, directions and magnitudes; through the
-//! per-step wrench, `tools/rolling_heldout.py`, `bench-results/rolling-heldout.md`): **0.158 fN
-//! / 0.405 fNc at worst**, median 0.013 / 0.008, 95 % 0.083 / 0.087 (0.433 / 0.952 before the
+//! per-step wrench, `tools/rolling_heldout.py`, `bench-results/rolling-heldout.md`): **0.159 fN
+//! / 0.334 fNc at worst**, median 0.012 / 0.006, 95 % 0.072 / 0.067, worse than FASTSIM
+//! 32 × 32 on 165 of the 500 points (0.158 / 0.405, 0.013 / 0.007, 0.081 / 0.087 and 201 with
+//! the tables at a/b 0.2 … 5 only, their end shapes kept beyond; 0.433 / 0.952 before the
 //! exact linear theory for any rolling direction and the spin in `blend`'s translational
-//! saturation; FASTSIM 32 × 32 0.281 / 1.002). The worst points are patches 10–20 times longer
-//! than wide along the rolling direction (outside the five fitted shapes, whose end values the
-//! law keeps) with combined creepage: the exact M_z overshoots the full slip's there.
+//! saturation; FASTSIM 32 × 32 0.281 / 1.002). The shapes 1/20 and 20 cut the errors of the
+//! wide and long patches along the rolling direction: a/b 0.05–0.1 median 0.031 / 0.024 →
+//! 0.011 / 0.004, worst 0.147 / 0.115 → 0.112 / 0.066; 10–20 median M_z 0.070 → 0.014 (F
+//! 0.032 → 0.040), worst M_z 0.405 → 0.256. The worst points
+//! left are long patches (a/b 10–17) with creepage mostly ξ and some φ: the exact M_z there
+//! (≈ 0.4–0.5 fNc) is not linear in v between the ring (v = 1) and the ξ curve (v = 2, whose
+//! M_z residual is 0 by symmetry), and the law's is; a skewed long patch (a/b 14.9 at 165°)
+//! with η and φ, 0.334 fNc.
 //!
 //! Precision: f32 within 3.5e-7 fN / 4.8e-7 fNc of f64 (asserted 4e-6). Linear limit:
 //! 1.8e-5 relative at 1e-6 of saturation; full slip: `best`'s 2.9e-5 fN, 2.0e-6 fNc
@@ -124,7 +134,7 @@
 //!
 //! `blend`'s call plus a square root, two divisions, one `ln` and 1 to 4 curve look-ups (1 to 3
 //! channels each). M4F, f32, the dimensional call (firmware stage `rolling`, 64 creep states on
-//! a spiral of directions): 1,030 instructions on average (`blend` 442; f64: 41,220; 1,020 while the tables held twelve curve views, 951 with
+//! a spiral of directions): 1,030 instructions on average (`blend` 442; f64: 41,178, 41,220 with five shapes; 1,020 while the tables held twelve curve views, 951 with
 //! the nodes in `f32` — the `i16` nodes cost two conversions and a scaling per node read and
 //! save 13 KB of flash; 919 before the spin entered `blend`'s translational saturation and the
 //! couplings, 895 before a curve could be built per call without its grid; before the
@@ -135,11 +145,12 @@
 //! [`super::RollingShape`] is 264 bytes in f32 on x86-64, 528 while the tables held a view per
 //! curve; a mixed copy was 5.3 KB, and the per-call shape of a skewed rolling velocity built
 //! it each call; a per-call shape holds no grids). Flash:
-//! the generated data, 5 shapes × 1,287 `i16` + 82 `f32` scales + 60 curve grids (14.5 KB;
-//! 27.3 KB with `f32` nodes); the size probe (`tools/flash-bench.sh --stage rolling`: a
-//! contact built and called) measures `table` 57.5 KB in f32, 8.9 KB over `blend` (48.6 KB;
-//! every rolling law's probe holds the tables, since [`super::RollingContact::new`] builds
-//! them whatever the law). Before: 77.6 KB (the `f32` nodes, and Table E3's interpolation
+//! the generated data, 7 shapes × 1,287 `i16` + 82 `f32` scales + 84 curve grids (20.4 KB;
+//! 14.5 KB with five shapes, 27.3 KB with five and `f32` nodes); the size probe
+//! (`tools/flash-bench.sh --stage rolling`: a contact built and called) measures `table`
+//! 63.4 KB in f32 (57.5 KB with five shapes), 9.0 KB over `blend` (54.4 KB; every rolling
+//! law's probe holds the tables, since [`super::RollingContact::new`] builds them whatever the
+//! law). Before: 77.6 KB (the `f32` nodes, and Table E3's interpolation
 //! linked for the coefficients' growth beyond a/b ∈ [1/20, 20], 8 KB, now restated without
 //! it: [`super::creep_matrix::aligned`]).
 
