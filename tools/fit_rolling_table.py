@@ -326,13 +326,20 @@ def correction(tb, m, d):
         b = around(names, j + 1)
         return [p + t * (q - p) for p, q in zip(a, b)]
 
+    # each channel leaves a family at the order its symmetry gives (table.rs): off the plane
+    # F_x as d_x (weight √2·d_x), F_y, M_z as d_x² (v); towards ξ F_x as |d_⊥|² (v − 1),
+    # F_y, M_z as |d_⊥| (the ring's weight √(2 − v))
     if v <= 1:
         w = [(1 - v) * x for x in mix(PLANE)]
         if v > 0:
-            w = [x + v * y for x, y in zip(w, mix(RING))]
+            q = mix(RING)
+            w = [x + v * y for x, y in zip(w, q)]
+            w[0] = math.sqrt(2) * abs(d[0]) * q[0]
     else:
-        w = [(2 - v) * x for x in mix(RING)]
-        w = [x + (v - 1) * y for x, y in zip(w, lookup(tb["xi"], "xi", m))]
+        q = mix(RING)
+        x = lookup(tb["xi"], "xi", m)
+        r = math.sqrt(max(2 - v, 0.0))
+        w = [q[0] + (v - 1) * (x[0] - q[0]), r * q[1], r * q[2]]
     return [sx * w[0], sy * w[1], sy * w[2]]
 
 

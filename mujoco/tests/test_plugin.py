@@ -176,11 +176,11 @@ def test_rattleback_stalls_as_the_rust_scene():
 
 
 # The Rust scene with the rolling law `table` (README, the rattleback rolling; RK4 0.1 ms, events
-# located between the steps): ω₀ = −2 rad/s is braked to the stall at 1.1249 s (it then turns,
+# located between the steps): ω₀ = −2 rad/s is braked to the stall at 1.1248 s (it then turns,
 # by less than the event's threshold), ω₀ = +2 rad/s stalls at 1.3317 s (`cargo run --release
 # --features scenes --example rattleback`, RATTLEBACK_LAWS=table → rattleback_summary.csv;
 # committed: docs/rattleback_summary.csv).
-RUST_RATTLEBACK_TABLE = {"launch": ("stall", 1.1249), "steady": ("stall", 1.3317)}
+RUST_RATTLEBACK_TABLE = {"launch": ("stall", 1.1248), "steady": ("stall", 1.3317)}
 
 
 @pytest.mark.parametrize("key", ["launch", "steady"])

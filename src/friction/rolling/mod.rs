@@ -44,12 +44,12 @@
 //! - [`Table`] (default): [`Blend`] plus per-shape tables of its residual against the exact
 //!   reference over the normalised creepage and the direction of the creepages (12 creep curves
 //!   per shape, η and φ of both signs, the knee of the spin force refined), the limits kept:
-//!   exact at both limits, passive, fixed cost (1,030 M4F f32 instructions); on held-out points
+//!   exact at both limits, passive, fixed cost (1,035 M4F f32 instructions); on held-out points
 //!   of the creep curves 0.026 fN / 0.012 fNc from the exact theory at worst (`blend` 0.49 /
-//!   0.49 on the same points), 0.067 / 0.057 at random directions; over the whole domain
-//!   (patch shapes a/b 0.05–20, any skew and ν: `bench-results/rolling-heldout.md`) 0.159 /
-//!   0.334 (the aim is 0.03 / 0.05; the worst are patches 10–20 times longer than wide along
-//!   the rolling direction, with combined creepage).
+//!   0.49 on the same points), 0.064 / 0.055 at random directions; over the whole domain
+//!   (patch shapes a/b 0.05–20, any skew and ν: `bench-results/rolling-heldout.md`) 0.148 /
+//!   0.334 (the aim is 0.03 / 0.05; the worst are patches 10–20 times longer than wide,
+//!   skewed to the rolling direction, with combined creepage).
 //! - [`Blend`]: Kalker's linear theory and the exact full slip joined channel by
 //!   channel with saturation shapes fitted to the exact reference; exact at both limits by
 //!   construction, passive, fixed cost (443 M4F f32 instructions); 0.10 fN / 0.16 fNc from the
