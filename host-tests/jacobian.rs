@@ -128,6 +128,12 @@ fn check(
 
 /// One law and form of the contract over `n` random states: (max scaled error, skipped).
 fn contract_law(law: Law, form: Form, n: usize, seed: u64) -> (f64, usize) {
+    contract_law_on(law, form, n, seed, false)
+}
+
+/// [`contract_law`]; with `across`, every state rolls along the contact's x with no slip
+/// along it (v_x = 0: the creepage has no ξ, d_x = 0 exactly).
+fn contract_law_on(law: Law, form: Form, n: usize, seed: u64, across: bool) -> (f64, usize) {
     let mut rng = Rng(seed);
     let (mut worst, mut skipped): (f64, usize) = (0.0, 0);
     let rolling = Law::ROLLING.contains(&law);
@@ -135,8 +141,8 @@ fn contract_law(law: Law, form: Form, n: usize, seed: u64) -> (f64, usize) {
         let sp = spec(&mut rng);
         let dc = DynContact::new_rolling(&sp, &RollingSpec::default(), law, form).unwrap();
         let a_guess = (1e-6 / sp.p).sqrt();
-        let st = step(&mut rng, a_guess);
-        let rs = if rolling {
+        let mut st = step(&mut rng, a_guess);
+        let mut rs = if rolling {
             let v = rng.log(0.1, 10.0);
             let th = if rng.next() < 0.5 {
                 0.0
@@ -150,6 +156,13 @@ fn contract_law(law: Law, form: Form, n: usize, seed: u64) -> (f64, usize) {
         } else {
             RollingStep::default()
         };
+        if across {
+            st.vx = 0.0;
+            rs = RollingStep {
+                vrx: rs.vrx.hypot(rs.vry),
+                vry: 0.0,
+            };
+        }
         let out = dc.wrench_rolling(&st, &rs).unwrap();
         let jac = dc.jacobian_rolling(&st, &rs).unwrap();
         // the value part is the wrench, bit for bit
@@ -211,6 +224,27 @@ fn sliding_laws_match_central_differences() {
 #[test]
 fn rolling_laws_match_central_differences() {
     contract_laws(&[Law::Table, Law::Blend], 20);
+}
+
+/// Creepage with no ξ (slip across the rolling direction, d_x = 0 exactly): `table`'s F_x
+/// residual leaves the η–φ plane linearly in d_x (√2·d_x·Q_x), so ∂F_x/∂v_x there holds
+/// that term, which the law's shortcut on the plane (v = 0: the ring not looked up) dropped
+/// from the dual numbers (this test failed: scaled error 0.29; with every channel weighted by
+/// v, F_x ∝ d_x|d_x| had a zero slope there and 6 of 20 states were skipped as kinks).
+#[test]
+fn rolling_laws_match_central_differences_with_no_longitudinal_creepage() {
+    for law in [Law::Table, Law::Blend] {
+        for form in Form::ALL {
+            let (worst, skipped) = contract_law_on(law, form, 20, 29 + law as u64, true);
+            println!(
+                "{:>10} {:>7}: max scaled error {worst:.2e}, {skipped} of 20 at a kink (ξ = 0)",
+                law.name(),
+                form.name()
+            );
+            assert!(worst <= 1e-6, "{law:?} {form:?}: {worst:.2e}");
+            assert!(skipped <= 1, "{law:?} {form:?}: {skipped} kinks of 20");
+        }
+    }
 }
 
 /// Every law and form on 2,000 states each (release: `--include-ignored`).

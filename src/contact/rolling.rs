@@ -90,8 +90,8 @@
 //! # Cost
 //!
 //! Cortex-M4F, `f32`, `table`, 64 creep states (`bench-results/qemu.csv`, stage `rolling`):
-//! fixed contact, V along an axis **1,185** instructions (1,181 before each residual channel's own order between the direction families, 1,179 with five table shapes) (`RollingContact::wrench` alone: 1,035);
-//! V skewed 1,591 (1,587 before the channel orders, 1,585 with five table shapes, 1,708 with twelve curve views built per call, 1,809 with per-call shared-grid checks and `f32` nodes; the creep shape per call: one `ln`, the creep matrix from one Hermite
+//! fixed contact, V along an axis **1,186** instructions (1,181 before each residual channel's own order between the direction families, 1,179 with five table shapes) (`RollingContact::wrench` alone: 1,035);
+//! V skewed 1,592 (1,587 before the channel orders, 1,585 with five table shapes, 1,708 with twelve curve views built per call, 1,809 with per-call shared-grid checks and `f32` nodes; the creep shape per call: one `ln`, the creep matrix from one Hermite
 //! segment of its path, `blend`'s constants, and `table`'s curves built per call with no grid
 //! stored, each look-up computing the one it reads — ≈ 330 to build them and ≈ 135 more in the
 //! law than on a cached shape; 2,282 with the ln-coefficients' path, a bisection and five
