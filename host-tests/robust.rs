@@ -327,6 +327,22 @@ mod jacobian_step_findings {
         checks::jacobian::<f64>(&mut i);
     }
 
+    /// `table` with a slip across the rolling direction but for v_x ≈ 1e-35 (f32): 2d_x²
+    /// underflowed to 0 while d_x did not, and the dual pass (which looks the ring up at d_x = 0
+    /// for ∂F_x/∂ξ) added √2·|d_x|·Q_x where the plain wrench skipped it: value −5.57e-36 vs
+    /// −5.52e-36. Both now branch on d_x, not v.
+    #[test]
+    fn table_value_where_v_underflows() {
+        let data = [
+            0x15, 0x5b, 0x05, 0x05, 0x05, 0x67, 0x05, 0x27, 0x05, 0x15, 0xf5, 0xfa, 0x05, 0x05,
+            0x15, 0x27, 0x05, 0xf7, 0x1e, 0x05, 0x5b, 0x05, 0x69, 0x5b, 0x05, 0x7a, 0x05, 0x69,
+            0x0a, 0x05, 0xae, 0x40, 0x25,
+        ];
+        let mut i = Input::new(&data);
+        checks::jacobian::<f32>(&mut i);
+        checks::jacobian::<f64>(&mut i);
+    }
+
     /// W = L·Lᵀ whose diagonal underflowed: refused as not positive semidefinite (was: not
     /// symmetric).
     #[test]

@@ -90,13 +90,13 @@
 //! # Cost
 //!
 //! Cortex-M4F, `f32`, `table`, 64 creep states (`bench-results/qemu.csv`, stage `rolling`):
-//! fixed contact, V along an axis **1,186** instructions (1,181 before each residual channel's own order between the direction families, 1,179 with five table shapes) (`RollingContact::wrench` alone: 1,035);
-//! V skewed 1,592 (1,587 before the channel orders, 1,585 with five table shapes, 1,708 with twelve curve views built per call, 1,809 with per-call shared-grid checks and `f32` nodes; the creep shape per call: one `ln`, the creep matrix from one Hermite
+//! fixed contact, V along an axis **1,187** instructions (1,181 before each residual channel's own order between the direction families, 1,179 with five table shapes) (`RollingContact::wrench` alone: 1,037);
+//! V skewed 1,593 (1,587 before the channel orders, 1,585 with five table shapes, 1,708 with twelve curve views built per call, 1,809 with per-call shared-grid checks and `f32` nodes; the creep shape per call: one `ln`, the creep matrix from one Hermite
 //! segment of its path, `blend`'s constants, and `table`'s curves built per call with no grid
 //! stored, each look-up computing the one it reads — ≈ 330 to build them and ≈ 135 more in the
 //! law than on a cached shape; 2,282 with the ln-coefficients' path, a bisection and five
 //! `exp`, and the skew ratios apart; 5,025 while every curve's grid and tails were built per
-//! call: 24 `exp`); varying contact 2,093 (2,088 before the channel orders, 2,080 with five table shapes, 2,192 with twelve curve views built per call, 2,292 with per-call shared-grid checks and `f32` nodes; 2,766 with the ln-coefficients' path; 5,301).
+//! call: 24 `exp`); varying contact 2,094 (2,088 before the channel orders, 2,080 with five table shapes, 2,192 with twelve curve views built per call, 2,292 with per-call shared-grid checks and `f32` nodes; 2,766 with the ln-coefficients' path; 5,301).
 //! Host (x86-64, criterion, per call, before the curves read their nodes from flash and
 //! before the per-call curves): 377 ns, 1.26 µs, 1.55 µs (`RollingContact` 338 ns in the same
 //! run). Per contact: two [`RollingShape`]s (264 bytes each in `f32` on x86-64; 528 while the tables held a view per curve) and the path of the

@@ -142,7 +142,7 @@
 //!
 //! `blend`'s call plus a square root, two divisions, one `ln` and 1 to 4 curve look-ups (1 to 3
 //! channels each). M4F, f32, the dimensional call (firmware stage `rolling`, 64 creep states on
-//! a spiral of directions): 1,035 instructions on average (`blend` 442; f64: 41,197, 41,220 with five shapes; 1,030 before each channel's own order between the direction families; 1,020 while the tables held twelve curve views, 951 with
+//! a spiral of directions): 1,037 instructions on average (`blend` 442; f64: 41,220 (also with five shapes); 1,030 before each channel's own order between the direction families; 1,020 while the tables held twelve curve views, 951 with
 //! the nodes in `f32` — the `i16` nodes cost two conversions and a scaling per node read and
 //! save 13 KB of flash; 919 before the spin entered `blend`'s translational saturation and the
 //! couplings, 895 before a curve could be built per call without its grid; before the
@@ -240,12 +240,13 @@ impl RollingLaw for Table {
         // √2·|d_⊥| = √(2 − v).
         let c = if v <= T::ONE {
             let p = around(false);
-            // on the plane itself (v = 0) the ring weighs nothing, but its F_x sets ∂F_x/∂ξ
-            // there (√2·|d_x|·Q_x with the sign put back: slope √2·Q_x): looked up at v = 0
-            // only for a Jacobian's dual numbers (+ p's F_x, +0: the value's zero as without)
-            if v > T::ZERO || T::DERIVATIVES {
+            // on the plane itself (d_x = 0) the ring weighs nothing, but its F_x sets ∂F_x/∂ξ
+            // there (√2·|d_x|·Q_x with the sign put back: slope √2·Q_x): looked up at d_x = 0
+            // only for a Jacobian's dual numbers, with the same value as without (+ p's F_x,
+            // +0; F_y, M_z p's while v = 0, also where 2d_x² underflows)
+            if dx != T::ZERO || T::DERIVATIVES {
                 let q = around(true);
-                let w = lerp(p, q, v);
+                let w = if v > T::ZERO { lerp(p, q, v) } else { p };
                 [
                     T::from_f64(core::f64::consts::SQRT_2) * dx.abs() * q[0] + p[0],
                     w[1],
