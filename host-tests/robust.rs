@@ -313,6 +313,14 @@ mod jacobian_step_findings {
         checks::step::<f64>(&mut i);
     }
 
+    /// One `jacobian` finding: its bytes through the shared check, f32 then f64 on the same
+    /// bytes, as the fuzz target runs them.
+    fn replay_jacobian(data: &[u8]) {
+        let mut i = Input::new(data);
+        checks::jacobian::<f32>(&mut i);
+        checks::jacobian::<f64>(&mut i);
+    }
+
     /// `blend` at v_x = v_y = f32::MAX (out of the box, barely in contact: N ≈ 1e-24 N): the
     /// Jacobian's value was 0, the wrench's F −8.7e-25 — the dual pass read the slip through
     /// `Slip::or_rest`, which gives rest where finite components overflow their sum.
@@ -322,9 +330,7 @@ mod jacobian_step_findings {
             0x21, 0x21, 0x01, 0x2f, 0x21, 0x21, 0x41, 0xbd, 0xf1, 0xbd, 0xb5, 0x3d, 0xb1, 0x72,
             0x18, 0xe5, 0x0a, 0x1d, 0x38, 0xb1, 0xec, 0x2d, 0xec, 0xec, 0xec, 0xf1,
         ];
-        let mut i = Input::new(&data);
-        checks::jacobian::<f32>(&mut i);
-        checks::jacobian::<f64>(&mut i);
+        replay_jacobian(&data);
     }
 
     /// `table` with a slip across the rolling direction but for v_x ≈ 1e-35 (f32): 2d_x²
@@ -338,9 +344,7 @@ mod jacobian_step_findings {
             0x15, 0x27, 0x05, 0xf7, 0x1e, 0x05, 0x5b, 0x05, 0x69, 0x5b, 0x05, 0x7a, 0x05, 0x69,
             0x0a, 0x05, 0xae, 0x40, 0x25,
         ];
-        let mut i = Input::new(&data);
-        checks::jacobian::<f32>(&mut i);
-        checks::jacobian::<f64>(&mut i);
+        replay_jacobian(&data);
     }
 
     /// W = L·Lᵀ whose diagonal underflowed: refused as not positive semidefinite (was: not

@@ -40,7 +40,6 @@
 //! With a/b arguments only those shapes are computed (to split the work; concatenate the rows).
 use rolling_exact::cases::{NL, SHAPES, magnitudes, uniform};
 use rolling_exact::kalker;
-use rolling_exact::reference::elements_ratio;
 use rolling_exact::reference::{CSV_COLUMNS, Patch, finest_k};
 use std::time::Instant;
 
@@ -245,8 +244,7 @@ fn main() {
             }
         }
         let patch = if mode == "ends" {
-            let nm = elements_ratio(aob);
-            Patch::skewed_on(aob, 0.0, nu, NL, finest_k(nm, 1024), nm)
+            Patch::heldout_grids(aob, 0.0, nu, NL, 1024)
         } else {
             Patch::new(aob, nu, NL, finest_k(aob, 1024))
         };

@@ -120,6 +120,15 @@ impl Patch {
         }
     }
 
+    /// [`Patch::skewed_on`] on the held-out set's grids: `elements` on the finest, n/m from
+    /// [`elements_ratio`] of the aligned ellipse's a/b (elements elongated along the long axis
+    /// beyond [1/5, 5]).
+    pub fn heldout_grids(aob: f64, theta: f64, nu: f64, nl: f64, elements: usize) -> Self {
+        let (a, b, _) = skew(aob, theta);
+        let nm = elements_ratio(a / b);
+        Self::skewed_on(aob, theta, nu, nl, finest_k(nm, elements), nm)
+    }
+
     /// The three grids, coarse to fine, as `NxM` (elements along x by along y).
     pub fn grid_dims(&self) -> Vec<String> {
         self.levels
@@ -200,9 +209,7 @@ pub fn skewed_row(
 ) -> String {
     let [xi, eta, phi_c] = creepage;
     let t = Instant::now();
-    let (a, b, _) = skew(aob, theta);
-    let nm = elements_ratio(a / b);
-    let patch = Patch::skewed_on(aob, theta, nu, nl, finest_k(nm, elements), nm);
+    let patch = Patch::heldout_grids(aob, theta, nu, nl, elements);
     let sol = patch.solve(xi, eta, phi_c, true);
     format!(
         "{family},{aob:.6},{:.4},{nu:.4},{nl},{xi:e},{eta:e},{phi_c:e},{:.10e},{:.10e},{:.10e},{:.3e},{:.3e},{},{:.2}",
