@@ -1,0 +1,160 @@
+#!/usr/bin/env python3
+"""Where `table` errs between its direction curves: sweeps of the creepage direction through the
+held-out points where it errs most, against the exact theory (a diagnosis; nothing is fitted on it).
+
+Points: every ALIGNED point of the held-out set (tools/data/rolling_ref_heldout.csv, θ = 0) where
+`table` errs by more than 0.07 fN or 0.10 fNc (tools/data/rolling_heldout_laws.csv). For each, with
+its ν and its linear-force magnitude m = |l| (l = κ(C₁₁ξ, C₂₂η, C₂₃cφ), the law's own exact
+coefficients), the direction d = l/m is turned towards ξ at a fixed split of (d_η, d_φ) — the
+elevation d_x from 0 (the η–φ plane, `table`'s plane curves) through 1/√2 (its ring) to 1 (its ξ
+curve), the sign of the point's own d_x — on the point's own a/b and ν (`own`), on the nearest
+tabulated shape of `table` (1/20, 0.2, 0.5, 1, 2, 5, 20) at the point's ν (`node`), and on that
+shape at the tables' own ν = 0.25 (`node25`: there the tables hold the reference's residuals
+exactly on their curves, so an error is the interpolation between direction curves alone, not
+between shapes or values of ν).
+
+    python3 tools/rolling_direction_sweep.py --cases > cases.txt      # the cases (a/b θ ν ξ η φc tag)
+    (cd tools/rolling_exact && nice cargo run --release --example cases -- 1024 < cases.txt) \\
+        > tools/data/rolling_diag_direction.csv                           # the exact theory (≈ 5 min)
+    cargo build --release --bin contact_eval && python3 tools/rolling_direction_sweep.py [--check]
+
+Writes bench-results/rolling-direction-sweep.md (--check: fail if it differs from what the laws
+give now).
+"""
+import math, pathlib, sys
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
+import rolling_heldout as H  # noqa: E402
+from rolling_ref import creep_coefficients  # noqa: E402
+
+root = H.root
+data = root / "tools/data/rolling_diag_direction.csv"
+out_md = root / "bench-results/rolling-direction-sweep.md"
+SHAPES = [0.05, 0.2, 0.5, 1.0, 2.0, 5.0, 20.0]  # table's tabulated a/b (fit_rolling_table.py's SH)
+ELEVATIONS = [0.0, 0.1, 0.2, 0.3, 0.383, 0.5, 0.6, 0.707, 0.8, 0.9, 0.95, 0.98, 1.0]
+THRESHOLD = (0.07, 0.10)
+LAWS = ["table", "blend", "fastsim"]
+NU = 0.25  # the ν of the tables' reference curves
+
+
+def VARIANTS(r):
+    """(name, a/b, ν) of the three sweeps through a held-out row."""
+    return (("own", r["aob"], r["nu"]), ("node", nearest(r["aob"]), r["nu"]), ("node25", nearest(r["aob"]), NU))
+
+
+def selected(indices=None):
+    """(index, row, table's error) of the held-out points the sweeps go through: those over the
+    threshold now, or (`indices`, the committed sweeps' points) those the data file holds."""
+    rows = H.read()
+    lines = [l for l in (root / "tools/data/rolling_heldout_laws.csv").read_text().splitlines() if l[0] != "#"]
+    head = lines[0].split(",")
+    laws = [dict(zip(head, map(float, l.split(",")))) for l in lines[1:]]
+    out = []
+    for i, (r, g) in enumerate(zip(rows, laws)):
+        ref = r["ref"]
+        e = (math.hypot(g["table_fx"] - ref[0], g["table_fy"] - ref[1]), abs(g["table_mz"] - ref[2]))
+        over = r["theta"] == 0.0 and (e[0] > THRESHOLD[0] or e[1] > THRESHOLD[1])
+        if (i in indices) if indices is not None else over:
+            out.append((i, r, e))
+    return out
+
+
+def nearest(aob):
+    return min(SHAPES, key=lambda s: abs(math.log(s / aob)))
+
+
+def cases():
+    """The sweep cases: (tag, a/b, ν, ξ, η, φc)."""
+    pts = selected()
+    shapes = sorted({(s, nu) for _, r, _ in pts
+                     for s, nu in ((r["aob"], r["nu"]), (nearest(r["aob"]), r["nu"]), (nearest(r["aob"]), NU))})
+    coef = creep_coefficients(shapes)
+    out = []
+    for i, r, _ in pts:
+        c11, c22, c23, _ = coef[(r["aob"], r["nu"])]
+        l = (c11 * r["xi"], c22 * r["eta"], c23 * r["phic"])
+        m = math.sqrt(sum(x * x for x in l))
+        sx = 1.0 if l[0] >= 0 else -1.0
+        perp = math.hypot(l[1], l[2])
+        for which, s, nu in VARIANTS(r):
+            k11, k22, k23, _ = coef[(s, nu)]
+            for dx in ELEVATIONS:
+                dp = math.sqrt(max(0.0, 1.0 - dx * dx))
+                d = (sx * dx, dp * l[1] / perp, dp * l[2] / perp)
+                out.append((f"p{i}_{which}_{dx:g}", s, nu, m * d[0] / k11, m * d[1] / k22, m * d[2] / k23))
+    return out
+
+
+def main():
+    if "--cases" in sys.argv:
+        for tag, s, nu, xi, eta, phic in cases():
+            print(f"{s!r} 0 {nu!r} {xi!r} {eta!r} {phic!r} {tag}")
+        return
+    tags, rows = [], []
+    for line in data.read_text().splitlines():
+        if line and line[0] != "#" and not line.startswith("family"):
+            tags.append(line.split(",")[0])
+    rows = H.read(data)
+    got, _ = H.evaluate(rows)
+    err = {l: [(math.hypot(g[0] - r["ref"][0], g[1] - r["ref"][1]), abs(g[2] - r["ref"][2]))
+               for g, r in zip(got[l], rows)] for l in LAWS}
+    # the points of the committed sweeps (after a change of the law, `--cases` selects anew)
+    pts = selected({int(t.split("_")[0][1:]) for t in tags})
+    out = []
+    p = out.append
+    p("# `table` between its direction curves: sweeps through its worst aligned held-out points\n")
+    p(f"`python3 tools/rolling_direction_sweep.py` (reference: tools/data/rolling_diag_direction.csv, "
+      f"{len(rows)} cases, the exact theory on the held-out set's grids, worst own error estimate "
+      f"{max(r['err'][0] for r in rows):.0e} fN / {max(r['err'][1] for r in rows):.0e} fNc). Through each "
+      f"aligned held-out point where `table` errs by more than {THRESHOLD[0]} fN or {THRESHOLD[1]} fNc "
+      "(its ν and linear-force magnitude m; the split of (d_η, d_φ) kept) the direction is turned from the "
+      "η–φ plane (|d_x| = 0, `table`'s plane curves) through its ring (|d_x| = 0.707) to ξ (|d_x| = 1), on "
+      "the point's own a/b and on the nearest tabulated shape (where `table` holds the exact residuals on "
+      "its curves), at the point's ν and at the tables' ν = 0.25. ΔF (fN) / ΔM (fNc) per law.\n")
+    p("## Summary: worst error by elevation band\n")
+    p("<!-- ANCHOR: summary -->")
+    bands = [("plane (\\|d_x\\| = 0)", lambda x: x == 0.0),
+             ("plane → ring (0 < \\|d_x\\| < 0.707)", lambda x: 0 < x < 0.707),
+             ("ring (0.707)", lambda x: x == 0.707),
+             ("ring → ξ (0.707 < \\|d_x\\| < 1)", lambda x: 0.707 < x < 1.0),
+             ("ξ (1)", lambda x: x == 1.0)]
+    p("| law, shape | " + " | ".join(b for b, _ in bands) + " |")
+    p("|---|" + "---|" * len(bands))
+    for l in LAWS:
+        for which in ("own", "node", "node25"):
+            cells = []
+            for _, sel in bands:
+                e = [x for x, t in zip(err[l], tags) if t.split("_")[1] == which and sel(float(t.split("_")[2]))]
+                cells.append(f"{max(a for a, _ in e):.3f} / {max(b for _, b in e):.3f}")
+            label = {"own": "own a/b, ν", "node": "nearest tabulated a/b, own ν",
+                     "node25": "nearest tabulated a/b, ν = 0.25"}[which]
+            p(f"| {l}, {label} | " + " | ".join(cells) + " |")
+    p("<!-- ANCHOR_END: summary -->\n")
+    p("## Per point\n")
+    for i, r, e in pts:
+        p(f"### Held-out point {i}: a/b {r['aob']:.3f} (nearest tabulated {nearest(r['aob']):g}), ν {r['nu']:.3f}; "
+          f"`table` there {e[0]:.3f} / {e[1]:.3f}\n")
+        p("| \\|d_x\\| | a/b, ν | exact F_x, F_y, M_z | table | table ΔF / ΔM | blend ΔF / ΔM | fastsim ΔF / ΔM |")
+        p("|---|---|---|---|---|---|---|")
+        for which in ("own", "node", "node25"):
+            for k, t in enumerate(tags):
+                ti, tw, tx = t.split("_")
+                if ti != f"p{i}" or tw != which:
+                    continue
+                ref, g = rows[k]["ref"], got["table"][k]
+                p(f"| {float(tx):g} | {rows[k]['aob']:.3f}, {rows[k]['nu']:.3f} | {ref[0]:+.3f}, {ref[1]:+.3f}, {ref[2]:+.3f} | "
+                  f"{g[0]:+.3f}, {g[1]:+.3f}, {g[2]:+.3f} | " +
+                  " | ".join(f"{err[l][k][0]:.3f} / {err[l][k][1]:.3f}" for l in LAWS) + " |")
+        p("")
+    text = "\n".join(out) + "\n"
+    if "--check" in sys.argv:
+        if not out_md.exists() or out_md.read_text() != text:
+            sys.exit(f"not what the laws give now: {out_md} — python3 {sys.argv[0]}")
+        print("rolling-direction-sweep: up to date")
+        return
+    out_md.write_text(text)
+    print(text)
+
+
+if __name__ == "__main__":
+    main()
