@@ -715,9 +715,10 @@ def test_step_aware_rattleback_stalls_as_the_rust_scene(dt):
 @pytest.mark.parametrize("dt", [5e-4, 1e-3, 2e-3])
 @pytest.mark.parametrize("key", ["launch", "steady"])
 def test_step_aware_rolling_rattleback_keeps_the_rust_scenes_outcome(dt, key):
-    """step_point 0.55, the friction passive at MuJoCo's end velocity: measured reversal −0.2 %
-    (0.5 ms), −0.5 % (1 ms); steady stall −6.3 %, −9.2 %; at 2 ms the same outcomes (1.848 s,
-    1.610 s)."""
+    """step_point 0.55, the friction passive at MuJoCo's end velocity: measured (2026-12-04)
+    launch stall +2.5 % (0.5 ms), +2.4 % (1 ms), steady stall +0.5 %, −0.7 %; at 2 ms (stability
+    only) the launch's turn after its stall passes the event's threshold, which the fine step's
+    just misses (reversal 1.844 s), and the steady stall is −5.2 % (1.262 s)."""
     event, t_rust = RUST_RATTLEBACK_TABLE[key]
     m = mujoco.MjModel.from_xml_path(str(run_models.MODELS / "rattleback_rolling.xml"))
     run = aware_run("rattleback_rolling", dt, m.key(key).id)
