@@ -85,6 +85,45 @@ def cases():
     return out
 
 
+def projected(tags, rows, got):
+    """The bands' worst (ΔF, ΔM) of `table` on the `node25` sweeps (tabulated shapes, ν = 0.25)
+    as it is, and as a law with two more rings of exact residuals against `blend` would give
+    them at best: at |d_x| = 0.383 (sin 22.5°) and 0.9 (the sweeps' point nearest sin 67.5°)
+    with the sweep's own (η, φ) split and magnitude (so no interpolation in u or m), the
+    residual piecewise linear between them as today's weights make it between the families
+    (F_x in d_x off the plane, in v = 2d_x² towards ξ; F_y, M_z in v off the plane, in |d_⊥|
+    towards ξ). Returns {band: (today, projected)}."""
+    sweeps = {}
+    for t, r, g, b in zip(tags, rows, got["table"], got["blend"]):
+        i, which, x = t.split("_")
+        if which == "node25":
+            sweeps.setdefault(i, {})[float(x)] = (r["ref"], g, b)
+    lin = lambda x, x0, x1, y0, y1: y0 + (y1 - y0) * (x - x0) / (x1 - x0)
+    out = {}
+    for band, xs, mid in (("plane → ring", [0.1, 0.2, 0.3, 0.5, 0.6], 0.383),
+                          ("ring → ξ", [0.8, 0.95, 0.98], 0.9)):
+        today, proj = [0.0, 0.0], [0.0, 0.0]
+        for d in sweeps.values():
+            res = lambda x, c: d[x][0][c] - d[x][2][c]
+            for x in xs:
+                ref, g, b = d[x]
+                new = []
+                for c in range(3):
+                    if mid < 0.5:  # plane (0) → mid → ring (0.707)
+                        f = (lambda z: z) if c == 0 else (lambda z: 2 * z * z)
+                        ends = [(0.0, 0.0 if c == 0 else res(0.0, c)), (mid, res(mid, c)), (0.707, res(0.707, c))]
+                    else:  # ring → mid → ξ (1)
+                        f = (lambda z: 2 * z * z) if c == 0 else (lambda z: -math.sqrt(max(0.0, 1 - z * z)))
+                        ends = [(0.707, res(0.707, c)), (mid, res(mid, c)), (1.0, res(1.0, c) if c == 0 else 0.0)]
+                    (x0, y0), (x1, y1) = (ends[0], ends[1]) if f(x) <= f(mid) else (ends[1], ends[2])
+                    new.append(b[c] + lin(f(x), f(x0), f(x1), y0, y1))
+                for acc, w in ((today, g), (proj, new)):
+                    acc[0] = max(acc[0], math.hypot(w[0] - ref[0], w[1] - ref[1]))
+                    acc[1] = max(acc[1], abs(w[2] - ref[2]))
+        out[band] = (today, proj)
+    return out
+
+
 def main():
     if "--cases" in sys.argv:
         for tag, s, nu, xi, eta, phic in cases():
@@ -130,6 +169,16 @@ def main():
                      "node25": "nearest tabulated a/b, ν = 0.25"}[which]
             p(f"| {l}, {label} | " + " | ".join(cells) + " |")
     p("<!-- ANCHOR_END: summary -->\n")
+    p("## What two more rings would give, at best\n")
+    p("<!-- ANCHOR: projected -->")
+    p("| band (tabulated shapes, ν = 0.25) | `table` today | two more exact rings (bound) |")
+    p("|---|---|---|")
+    for band, (today, proj) in projected(tags, rows, got).items():
+        p(f"| {band} | {today[0]:.3f} / {today[1]:.3f} | {proj[0]:.3f} / {proj[1]:.3f} |")
+    p("<!-- ANCHOR_END: projected -->\n")
+    p("(`projected`: the exact residual at \\|d_x\\| = 0.383 and 0.9 on each sweep's own (η, φ) split and "
+      "magnitude, piecewise linear between them as today's weights are between the families — an optimistic "
+      "bound for rings on the tables' u and m nodes.)\n")
     p("## Per point\n")
     for i, r, e in pts:
         p(f"### Held-out point {i}: a/b {r['aob']:.3f} (nearest tabulated {nearest(r['aob']):g}), ν {r['nu']:.3f}; "
