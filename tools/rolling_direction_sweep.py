@@ -11,11 +11,13 @@ curve), the sign of the point's own d_x — on the point's own a/b and ν (`own`
 tabulated shape of `table` (1/20, 0.2, 0.5, 1, 2, 5, 20) at the point's ν (`node`), and on that
 shape at the tables' own ν = 0.25 (`node25`: there the tables hold the reference's residuals
 exactly on their curves, so an error is the interpolation between direction curves alone, not
-between shapes or values of ν).
+between shapes or values of ν). On that last shape also three cases next to the ξ curve
+(|d_⊥| = 0.02, 0.05, 0.1: `tan`, for its tangents). Then two bounds on what more data between
+the families could give: two more rings of exact residuals, and the ξ curve's tangents.
 
     python3 tools/rolling_direction_sweep.py --cases > cases.txt      # the cases (a/b θ ν ξ η φc tag)
     (cd tools/rolling_exact && nice cargo run --release --example cases -- 1024 < cases.txt) \\
-        > tools/data/rolling_diag_direction.csv                           # the exact theory (≈ 5 min)
+        > tools/data/rolling_diag_direction.csv                           # the exact theory (≈ 6 min)
     cargo build --release --bin contact_eval && python3 tools/rolling_direction_sweep.py [--check]
 
 Writes bench-results/rolling-direction-sweep.md (--check: fail if it differs from what the laws
@@ -35,6 +37,7 @@ ELEVATIONS = [0.0, 0.1, 0.2, 0.3, 0.383, 0.5, 0.6, 0.707, 0.8, 0.9, 0.95, 0.98, 
 THRESHOLD = (0.07, 0.10)
 LAWS = ["table", "blend", "fastsim"]
 NU = 0.25  # the ν of the tables' reference curves
+TANGENT = [0.02, 0.05, 0.1]  # |d_⊥| next to the ξ curve (the `tan` cases: tangents there)
 
 
 def VARIANTS(r):
@@ -82,6 +85,13 @@ def cases():
                 dp = math.sqrt(max(0.0, 1.0 - dx * dx))
                 d = (sx * dx, dp * l[1] / perp, dp * l[2] / perp)
                 out.append((f"p{i}_{which}_{dx:g}", s, nu, m * d[0] / k11, m * d[1] / k22, m * d[2] / k23))
+        # next to the ξ curve on the node25 shape: |d_⊥| (not |d_x|) in the tag
+        s, nu = nearest(r["aob"]), NU
+        k11, k22, k23, _ = coef[(s, nu)]
+        for dp in TANGENT:
+            dx = math.sqrt(1.0 - dp * dp)
+            d = (sx * dx, dp * l[1] / perp, dp * l[2] / perp)
+            out.append((f"p{i}_tan_{dp:g}", s, nu, m * d[0] / k11, m * d[1] / k22, m * d[2] / k23))
     return out
 
 
@@ -121,6 +131,49 @@ def projected(tags, rows, got):
                     acc[0] = max(acc[0], math.hypot(w[0] - ref[0], w[1] - ref[1]))
                     acc[1] = max(acc[1], abs(w[2] - ref[2]))
         out[band] = (today, proj)
+    return out
+
+
+def tangents(tags, rows, got):
+    """Per point (index → (today, with tangents)): `table`'s worst (ΔF, ΔM) from |d_⊥| = 0.1 to
+    the ring on the node25 sweep, as it is and with F_y, M_z's residual against `blend` quadratic
+    in |d_⊥| through 0 with the exact slope next to the ξ curve (the `tan` case at |d_⊥| = 0.02)
+    and through the ring's exact value (F_x as today). The spin pole's elliptic radius in the
+    patch at |d_⊥| = 0.1 and 0.2 (R < 1: inside) tells the regime."""
+    by = {}
+    for t, r, g, b in zip(tags, rows, got["table"], got["blend"]):
+        i, which, x = t.split("_")
+        if which == "node25":
+            p = round(math.sqrt(max(0.0, 1.0 - float(x) ** 2)), 4)
+        elif which == "tan":
+            p = float(x)
+        else:
+            continue
+        by.setdefault(int(i[1:]), {})[p] = (r, g, b)
+    ring = round(math.sqrt(1.0 - 0.707 ** 2), 4)
+    out = {}
+    for i, d in sorted(by.items()):
+        res = lambda p, c: d[p][0]["ref"][c] - d[p][2][c]
+        today, new_w = [0.0, 0.0], [0.0, 0.0]
+        for p in sorted(d):
+            if not 0.09 < p < ring:
+                continue
+            r, g, b = d[p]
+            ref = r["ref"]
+            new = list(g)
+            for c in (1, 2):
+                slope, q = res(0.02, c) / 0.02, res(ring, c)
+                new[c] = b[c] + slope * p + (q - slope * ring) * (p / ring) ** 2
+            for acc, w in ((today, g), (new_w, new)):
+                acc[0] = max(acc[0], math.hypot(w[0] - ref[0], w[1] - ref[1]))
+                acc[1] = max(acc[1], abs(w[2] - ref[2]))
+        poles = []
+        for p in (0.1, min(d, key=lambda z: abs(z - 0.2))):
+            r = d[p][0]
+            a = math.sqrt(r["aob"])
+            x, y = -r["eta"] / r["phic"], r["xi"] / r["phic"]  # c = 1: a·b = 1
+            poles.append(math.hypot(x / a, y * a))
+        out[i] = (today, new_w, poles)
     return out
 
 
@@ -179,6 +232,16 @@ def main():
     p("(`projected`: the exact residual at \\|d_x\\| = 0.383 and 0.9 on each sweep's own (η, φ) split and "
       "magnitude, piecewise linear between them as today's weights are between the families — an optimistic "
       "bound for rings on the tables' u and m nodes.)\n")
+    p("## Tangents along the ξ curve instead: a regime switch breaks them\n")
+    p("<!-- ANCHOR: tangents -->")
+    p("| held-out point | ring → ξ today (\\|d_⊥\\| 0.1 … 0.6) | with the ξ curve's tangents (bound) | spin pole's radius at \\|d_⊥\\| = 0.1 / 0.2 |")
+    p("|---|---|---|---|")
+    for i, (today, new, poles) in tangents(tags, rows, got).items():
+        p(f"| {i} | {today[0]:.3f} / {today[1]:.3f} | {new[0]:.3f} / {new[1]:.3f} | {poles[0]:.2f} / {poles[1]:.2f} |")
+    p("<!-- ANCHOR_END: tangents -->\n")
+    p("(F_y, M_z's residual quadratic in \\|d_⊥\\| through 0 with the exact slope at \\|d_⊥\\| = 0.02 and "
+      "through the ring's exact value; F_x as today. The pole's radius is where the rigid slip vanishes, "
+      "in units of the patch's elliptic radius: < 1 inside the patch.)\n")
     p("## Per point\n")
     for i, r, e in pts:
         p(f"### Held-out point {i}: a/b {r['aob']:.3f} (nearest tabulated {nearest(r['aob']):g}), ν {r['nu']:.3f}; "
