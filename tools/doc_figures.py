@@ -8,7 +8,8 @@
   instructions, the cycle model's mid (lo–hi), µs at 168 MHz and flash bytes.
 
 Recorded: bench-results/qemu.csv, cycles.csv (the cycle model's mid estimate, `tools/qemu-bench.sh`
-rewrites both) and flash.csv (`tools/flash-bench.sh`). The docs' figures are hand-written; this
+rewrites both), flash.csv (`tools/flash-bench.sh`) and, for the README's host ns column,
+host-ns.csv (`tools/host-ns.sh`; CI checks the committed one: host times are not re-measured there). The docs' figures are hand-written; this
 keeps them from going stale when the rigs are re-run.
 
     python3 tools/doc_figures.py          # print each figure: docs, recorded, ok
@@ -66,7 +67,11 @@ def recorded():
     for row in csv.DictReader((root / "bench-results/flash.csv").open()):
         if row["precision"] == "f32":
             flash[(row["stage"], row["method"])] = int(row["bytes"])
-    return insns, cycles, flash
+    host = {}
+    for row in csv.DictReader((root / "bench-results/host-ns.csv").open()):
+        if row["precision"] == "f32":
+            host[(row["stage"], row["method"])] = float(row["ns"])
+    return insns, cycles, flash, host
 
 
 def rows(text):
@@ -90,9 +95,10 @@ def find(table, label, where):
     return table[hits[0]]
 
 
-def labelled(where, mapping, insns, cycles):
+def labelled(where, mapping, insns, cycles, host=None):
     """Checks of a table whose rows are found by label: its `instructions` column (one count per
-    key, "a / b") and its `µs at 168 MHz` column (unless —)."""
+    key, "a / b"), its `µs at 168 MHz` column and, given `host`, its `host ns` column (f32, the
+    fastest criterion sample of bench-results/host-ns.csv) (each unless —)."""
     table, heads = rows((root / where).read_text())
     head = next(h for h in heads if any("instructions" in c for c in h))
     ci = next(i for i, c in enumerate(head) if "instructions" in c)
@@ -108,6 +114,10 @@ def labelled(where, mapping, insns, cycles):
         if cells[cu] != "—":
             for text, key in zip(shown(cells[cu]), keys):
                 out.append((f"{where} {label} — µs at 168 MHz", text, cycles[key][0] / MHZ))
+        ch = next((i for i, c in enumerate(head) if c == "host ns"), None)
+        if host is not None and ch is not None and cells[ch] != "—":
+            for text, key in zip(shown(cells[ch]), keys):
+                out.append((f"{where} {label} — host ns", text, host[key]))
     return out
 
 
@@ -147,8 +157,8 @@ def mcu_table(insns, cycles, flash):
 
 
 def main():
-    insns, cycles, flash = recorded()
-    checks = labelled("README.md", HEADLINE, insns, cycles) + labelled("docs/guide/src/model.md", MODEL, insns, cycles)
+    insns, cycles, flash, host = recorded()
+    checks = labelled("README.md", HEADLINE, insns, cycles, host) + labelled("docs/guide/src/model.md", MODEL, insns, cycles)
     table, _ = rows((root / "README.md").read_text())
     for label, (key, seconds) in SCENES.items():
         cells = find(table, label, "README.md")

@@ -52,6 +52,10 @@ for p in ("f32", "f64"):
     # benches/rolling.rs: RollingContact::wrench over the 64 states of the QEMU stage `rolling`
     for m in ("table", "blend", "fastsim", "fastsim-16", "full-slip"):
         rows.append(("rolling", m, p, fastest(f"rolling_{m}-{p}", 64)))
+    # the per-step wrench (contact::Rolling, `table`) over the same 64 states: V along the major
+    # axis, at 30° from it, and a varying contact (the QEMU stage's wrench-* rows)
+    for m in ("wrench-axis", "wrench-skewed", "wrench-varying"):
+        rows.append(("rolling", m, p, fastest(f"rolling_{m}-{p}", 64)))
 # the micromath twins (f32 only; present when the benches ran with --features micromath)
 rows.append(("elliptic", "theta-micromath", "f32", fastest("kebd_theta_micromath_f32", 64)))
 for m in ("per_step", "shape_hamrock-dowson"):

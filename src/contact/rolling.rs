@@ -97,9 +97,9 @@
 //! law than on a cached shape; 2,282 with the ln-coefficients' path, a bisection and five
 //! `exp`, and the skew ratios apart; 5,025 while every curve's grid and tails were built per
 //! call: 24 `exp`); varying contact 2,094 (2,088 before the channel orders, 2,080 with five table shapes, 2,192 with twelve curve views built per call, 2,292 with per-call shared-grid checks and `f32` nodes; 2,766 with the ln-coefficients' path; 5,301).
-//! Host (x86-64, criterion, per call, before the curves read their nodes from flash and
-//! before the per-call curves): 377 ns, 1.26 µs, 1.55 µs (`RollingContact` 338 ns in the same
-//! run). Per contact: two [`RollingShape`]s (264 bytes each in `f32` on x86-64; 528 while the tables held a view per curve) and the path of the
+//! Host (x86-64, criterion's fastest sample, per call, `bench-results/host-ns.csv`): 220 ns,
+//! 299 ns, 428 ns (`RollingContact` 164 ns in the same run; 377 ns, 1.26 µs, 1.55 µs and 338 ns
+//! by the mean before the curves read their nodes from flash and before the per-call curves). Per contact: two [`RollingShape`]s (264 bytes each in `f32` on x86-64; 528 while the tables held a view per curve) and the path of the
 //! skewed creep matrix (216 numbers) (fixed), a [`ShapePath`] (292 numbers) and a `SkewGrid`
 //! (378 numbers) (varying).
 //!
