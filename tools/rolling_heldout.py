@@ -167,6 +167,14 @@ def families(r, d, q):
     ar = 1.0 / math.sqrt(big_a)
     aligned = ar * ar  # a_r/b_r with a_r·b_r = 1
     dom = max(range(3), key=lambda i: abs(d[i]))
+    # the spin pole (where the rigid slip (ξ − φy, η + φx) vanishes, c = 1) in the patch's axes,
+    # as a multiple of its elliptic radius: < 1 inside the patch (spin-dominated), > 1 outside
+    if r["phic"] == 0.0:
+        pole = math.inf
+    else:
+        px, py = -r["eta"] / r["phic"], r["xi"] / r["phic"]
+        cs, sn = math.cos(r["theta"]), math.sin(r["theta"])
+        pole = math.hypot((cs * px + sn * py) / a0, (-sn * px + cs * py) / b0)
     bins = lambda x, edges, names: next(nm for e, nm in zip(edges, names) if x < e)
     return {
         "direction (largest linear share)": ["ξ", "η", "φ"][dom],
@@ -178,6 +186,8 @@ def families(r, d, q):
         "patch b/a (own)": bins(k, [0.1, 0.2, 0.5, 1.0001], ["0.05–0.1", "0.1–0.2", "0.2–0.5", "0.5–1"]),
         "ν": bins(r["nu"], [0.1, 0.2, 0.3, 0.4, 0.51], ["0–0.1", "0.1–0.2", "0.2–0.3", "0.3–0.4", "0.4–0.5"]),
         "magnitude q": bins(q, [0.1, 1.0, 11.0], ["0.01–0.1", "0.1–1", "1–10"]),
+        "spin pole's radius in the patch (< 1: inside)": bins(
+            min(pole, 1e300), [0.5, 0.8, 1.25, 2.0, 1e301], ["< 0.5", "0.5–0.8", "0.8–1.25", "1.25–2", "> 2"]),
     }
 
 
@@ -315,6 +325,10 @@ def main():
 def _sort_key(k):
     if k == "aligned":
         return -1.0
+    if k.startswith("< "):
+        return float(k[2:]) - 1e-9  # before the bin that starts there
+    if k.startswith("> "):
+        return float(k[2:]) + 1e9
     head = k.split("–")[0].rstrip("°")
     try:
         return float(head)
