@@ -79,19 +79,19 @@ def cases():
         m = math.sqrt(sum(x * x for x in l))
         sx = 1.0 if l[0] >= 0 else -1.0
         perp = math.hypot(l[1], l[2])
-        for which, s, nu in VARIANTS(r):
+
+        def case(tag, s, nu, dx, dp):
+            """The row's magnitude and (η, φ) split at elevation (d_x, |d_⊥|) on shape s, ν."""
             k11, k22, k23, _ = coef[(s, nu)]
-            for dx in ELEVATIONS:
-                dp = math.sqrt(max(0.0, 1.0 - dx * dx))
-                d = (sx * dx, dp * l[1] / perp, dp * l[2] / perp)
-                out.append((f"p{i}_{which}_{dx:g}", s, nu, m * d[0] / k11, m * d[1] / k22, m * d[2] / k23))
-        # next to the ξ curve on the node25 shape: |d_⊥| (not |d_x|) in the tag
-        s, nu = nearest(r["aob"]), NU
-        k11, k22, k23, _ = coef[(s, nu)]
-        for dp in TANGENT:
-            dx = math.sqrt(1.0 - dp * dp)
             d = (sx * dx, dp * l[1] / perp, dp * l[2] / perp)
-            out.append((f"p{i}_tan_{dp:g}", s, nu, m * d[0] / k11, m * d[1] / k22, m * d[2] / k23))
+            return (tag, s, nu, m * d[0] / k11, m * d[1] / k22, m * d[2] / k23)
+
+        for which, s, nu in VARIANTS(r):
+            out += [case(f"p{i}_{which}_{dx:g}", s, nu, dx, math.sqrt(max(0.0, 1.0 - dx * dx)))
+                    for dx in ELEVATIONS]
+        # next to the ξ curve on the node25 shape: |d_⊥| (not |d_x|) in the tag
+        out += [case(f"p{i}_tan_{dp:g}", nearest(r["aob"]), NU, math.sqrt(1.0 - dp * dp), dp)
+                for dp in TANGENT]
     return out
 
 
@@ -167,12 +167,7 @@ def tangents(tags, rows, got):
             for acc, w in ((today, g), (new_w, new)):
                 acc[0] = max(acc[0], math.hypot(w[0] - ref[0], w[1] - ref[1]))
                 acc[1] = max(acc[1], abs(w[2] - ref[2]))
-        poles = []
-        for p in (0.1, min(d, key=lambda z: abs(z - 0.2))):
-            r = d[p][0]
-            a = math.sqrt(r["aob"])
-            x, y = -r["eta"] / r["phic"], r["xi"] / r["phic"]  # c = 1: a·b = 1
-            poles.append(math.hypot(x / a, y * a))
+        poles = [H.pole_radius(d[p][0]) for p in (0.1, min(d, key=lambda z: abs(z - 0.2)))]
         out[i] = (today, new_w, poles)
     return out
 
@@ -182,7 +177,7 @@ def main():
         for tag, s, nu, xi, eta, phic in cases():
             print(f"{s!r} 0 {nu!r} {xi!r} {eta!r} {phic!r} {tag}")
         return
-    tags, rows = [], []
+    tags = []
     for line in data.read_text().splitlines():
         if line and line[0] != "#" and not line.startswith("family"):
             tags.append(line.split(",")[0])

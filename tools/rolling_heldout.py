@@ -156,6 +156,18 @@ def evaluate(rows):
     return got, norms
 
 
+def pole_radius(r):
+    """The spin pole of a reference row (where the rigid slip (ξ − φy, η + φx) vanishes, c = 1)
+    in the patch's axes (a₀ at θ from the rolling direction), as a multiple of the patch's
+    elliptic radius: < 1 inside the patch (spin-dominated), > 1 outside; ∞ without spin."""
+    if r["phic"] == 0.0:
+        return math.inf
+    a0, b0 = math.sqrt(r["aob"]), 1.0 / math.sqrt(r["aob"])
+    px, py = -r["eta"] / r["phic"], r["xi"] / r["phic"]
+    cs, sn = math.cos(r["theta"]), math.sin(r["theta"])
+    return math.hypot((cs * px + sn * py) / a0, (-sn * px + cs * py) / b0)
+
+
 def families(r, d, q):
     """The point's family in each table."""
     k, psi = frame(r)
@@ -167,14 +179,7 @@ def families(r, d, q):
     ar = 1.0 / math.sqrt(big_a)
     aligned = ar * ar  # a_r/b_r with a_r·b_r = 1
     dom = max(range(3), key=lambda i: abs(d[i]))
-    # the spin pole (where the rigid slip (ξ − φy, η + φx) vanishes, c = 1) in the patch's axes,
-    # as a multiple of its elliptic radius: < 1 inside the patch (spin-dominated), > 1 outside
-    if r["phic"] == 0.0:
-        pole = math.inf
-    else:
-        px, py = -r["eta"] / r["phic"], r["xi"] / r["phic"]
-        cs, sn = math.cos(r["theta"]), math.sin(r["theta"])
-        pole = math.hypot((cs * px + sn * py) / a0, (-sn * px + cs * py) / b0)
+    pole = pole_radius(r)
     bins = lambda x, edges, names: next(nm for e, nm in zip(edges, names) if x < e)
     return {
         "direction (largest linear share)": ["ξ", "η", "φ"][dom],
