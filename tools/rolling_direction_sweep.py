@@ -134,6 +134,62 @@ def projected(tags, rows, got):
     return out
 
 
+# Ring sets for `rings`: |d_x| of the rings (0.707: today's), each with its own held-out elevations.
+RING_SETS = [[0.707], [0.383, 0.707, 0.9], [0.2, 0.5, 0.707, 0.8, 0.95],
+             [0.2, 0.383, 0.6, 0.707, 0.8, 0.9, 0.95], [0.1, 0.3, 0.5, 0.707, 0.8, 0.9, 0.98],
+             [0.1, 0.2, 0.383, 0.5, 0.707, 0.8, 0.9, 0.98]]
+# Flash of one more ring: four curves (u = 0 … 3) × three channels × 53 magnitudes × seven
+# shapes in i16, as today's ring and its ξ–η curve (src/friction/rolling/table_data.rs).
+RING_BYTES = 4 * 3 * 53 * 7 * 2
+
+
+def rings(tags, rows, got):
+    """How many rings of exact residuals the aim needs on the node25 sweeps (tabulated shapes,
+    ν = 0.25): for each ring set of RING_SETS, `table`'s worst (ΔF, ΔM) at the sweeps' other
+    elevations strictly between the plane and ξ, with the residual against `blend` exact on
+    the plane (F_x: 0), on every ring and on the ξ curve (F_y, M_z: 0), piecewise linear between
+    them in each channel's variable (F_x: d_x up to 0.707, then 2d_x²; F_y, M_z: 2d_x², then
+    −|d_⊥|) — no interpolation in u, m, shape or ν: an estimate of what rings alone leave.
+    Also F_x as the ring's exact F_x/d_x times d_x (no new data: F_x linear in d_x at a fixed
+    magnitude and split, as at point 20), between the plane and the ring. Returns
+    ([(ring set, tested elevations, (ΔF, ΔM))], worst F_x error of the slope rule, per point)."""
+    sweeps = {}
+    for t, r, g, b in zip(tags, rows, got["table"], got["blend"]):
+        i, which, x = t.split("_")
+        if which == "node25":
+            sweeps.setdefault(int(i[1:]), {})[float(x)] = (r["ref"], g, b)
+
+    def var(c, z):  # monotone in d_x, 1 at the ring for every channel
+        if z <= 0.707:
+            return z / 0.707 if c == 0 else 2 * z * z / (2 * 0.707 ** 2)
+        return 2 * z * z / (2 * 0.707 ** 2) if c == 0 else 2 - math.sqrt(max(0.0, 1 - z * z)) / math.sqrt(1 - 0.707 ** 2)
+
+    out = []
+    for rs in RING_SETS:
+        knots = sorted({0.0, 1.0, *rs})
+        tested = [x for x in ELEVATIONS if x not in knots]
+        worst, today = [0.0, 0.0], [0.0, 0.0]
+        for d in sweeps.values():
+            def end(x, c):  # the exact residual at a knot (0 where the channel vanishes)
+                if (x == 0.0 and c == 0) or (x == 1.0 and c > 0):
+                    return 0.0
+                return d[x][0][c] - d[x][2][c]
+            for x in tested:
+                ref, g, b = d[x]
+                today = [max(today[0], math.hypot(g[0] - ref[0], g[1] - ref[1])), max(today[1], abs(g[2] - ref[2]))]
+                k = max(j for j in range(len(knots) - 1) if knots[j] <= x)
+                x0, x1 = knots[k], knots[k + 1]
+                w = [b[c] + end(x0, c) + (end(x1, c) - end(x0, c)) * (var(c, x) - var(c, x0)) / (var(c, x1) - var(c, x0))
+                     for c in range(3)]
+                worst = [max(worst[0], math.hypot(w[0] - ref[0], w[1] - ref[1])), max(worst[1], abs(w[2] - ref[2]))]
+        out.append((rs, tested, today, worst))
+    slope = {}
+    for i, d in sorted(sweeps.items()):
+        s_ring = d[0.707][0][0] / 0.707
+        slope[i] = max(abs(x * s_ring - d[x][0][0]) for x in ELEVATIONS if 0 < x < 0.707)
+    return out, slope
+
+
 def tangents(tags, rows, got):
     """Per point (index → (today, with tangents)): `table`'s worst (ΔF, ΔM) from |d_⊥| = 0.1 to
     the ring on the node25 sweep, as it is and with F_y, M_z's residual against `blend` quadratic
@@ -170,6 +226,15 @@ def tangents(tags, rows, got):
         poles = [H.pole_radius(d[p][0]) for p in (0.1, min(d, key=lambda z: abs(z - 0.2)))]
         out[i] = (today, new_w, poles)
     return out
+
+
+def flash_table():
+    """Today's flash probe of `table` (f32, bytes): bench-results/flash.csv."""
+    for line in (root / "bench-results/flash.csv").read_text().splitlines():
+        f = line.split(",")
+        if f[:3] == ["rolling", "table", "f32"]:
+            return int(f[3])
+    sys.exit("bench-results/flash.csv: no rolling,table,f32 row")
 
 
 def main():
@@ -227,6 +292,25 @@ def main():
     p("(`projected`: the exact residual at \\|d_x\\| = 0.383 and 0.9 on each sweep's own (η, φ) split and "
       "magnitude, piecewise linear between them as today's weights are between the families — an optimistic "
       "bound for rings on the tables' u and m nodes.)\n")
+    p("## How many rings the aim would need\n")
+    ring_rows, slope = rings(tags, rows, got)
+    p("<!-- ANCHOR: rings -->")
+    p("| rings at \\|d_x\\| | more rings than today | tested at \\|d_x\\| | `table` today there | worst ΔF / ΔM (estimate) | flash of the data (f32 probe, bytes) |")
+    p("|---|---|---|---|---|---|")
+    for rs, tested, today, w in ring_rows:
+        extra = len(rs) - 1
+        p(f"| {', '.join(f'{x:g}' for x in rs)} | {extra} | {', '.join(f'{x:g}' for x in tested)} | "
+          f"{today[0]:.3f} / {today[1]:.3f} | {w[0]:.3f} / {w[1]:.3f} | {flash_table() + extra * RING_BYTES:,} |")
+    p("<!-- ANCHOR_END: rings -->\n")
+    p(f"(Residuals exact on the plane, every ring and the ξ curve, piecewise linear between them in each channel's "
+      f"variable; no interpolation in u, m, shape or ν, whose own errors come on top (0.06 / 0.13 on the plane "
+      f"itself, table above). Not a strict bound: the first row, today's ring so interpolated, errs a little more "
+      f"than `table` itself on its M_z, as the table's interpolation in u and m happens to help there. One ring ≈ {RING_BYTES:,} bytes: four "
+      "curves × three channels × 53 magnitudes × seven shapes in i16. The flash column adds that to today's "
+      "`rolling,table,f32` probe, bench-results/flash.csv; the aim is ≤ 65,536.)\n")
+    p("F_x as the ring's exact F_x/d_x times d_x between the plane and the ring (no new data; exact where F_x is "
+      "linear in d_x at a fixed magnitude and split, as at point 20): worst F_x error per point "
+      + ", ".join(f"{i} {e:.3f}" for i, e in slope.items()) + ".\n")
     p("## Tangents along the ξ curve instead: a regime switch breaks them\n")
     p("<!-- ANCHOR: tangents -->")
     p("| held-out point | ring → ξ today (\\|d_⊥\\| 0.1 … 0.6) | with the ξ curve's tangents (bound) | spin pole's radius at \\|d_⊥\\| = 0.1 / 0.2 |")
