@@ -18,7 +18,8 @@ and every executed block's successor is consistent with the disassembly.
 
 Output, one line per BENCH row, in the firmware's order:
     stage,method,precision,insns,cycles_lo,cycles_mid,cycles_hi       (--csv, appended rows)
-and the per-row executed mix (--mix).
+and the per-row executed mix (--mix); with --profile, one row's executed instructions per call by
+address (a diagnosis: tools/profile_row.py maps them to source lines).
 
 Executed instructions without plugins. QEMU 7.2's `-d exec,nochain` logs every translation block
 (TB) it starts; `-singlestep` makes every TB one instruction (the brief's method: 7x more log
@@ -207,7 +208,7 @@ def disassemble(elf, objdump):
 class Block:
     """One executed TB expanded to instructions, with its static cost."""
     __slots__ = ("n", "base", "refills_static", "divs", "first_ls", "first_regs", "first_cls",
-                 "last", "fall", "mix_n", "mix_c", "ok", "bkpt")
+                 "last", "fall", "mix_n", "mix_c", "ok", "bkpt", "addrs")
 
 
 def build_block(insns, start, count, end_at):
@@ -228,6 +229,7 @@ def build_block(insns, start, count, end_at):
                              and insns[a].size == 4 and a + 4 > page_end):
             break
     blk = Block()
+    blk.addrs = [ins.addr for ins in seq]
     blk.ok = bool(seq) or end_at == start
     blk.n = len(seq)
     blk.mix_n = [0] * len(CLASSES)
@@ -436,6 +438,9 @@ def main():
     ap.add_argument("--stdout", help="write the firmware's output here")
     ap.add_argument("--check", help="validation: write EXPECT cases (cycles minus the stage's "
                     "`empty` row vs the stated values) as CSV here; fail on any difference")
+    ap.add_argument("--profile", metavar="STAGE,METHOD,PRECISION=FILE", action="append", default=[],
+                    help="diagnosis: write that row's executed instructions per call by address "
+                         "(lines addr,count) to FILE (tools/profile_row.py reads them)")
     ap.add_argument("--singlestep", action="store_true", help="one instruction per TB (slow)")
     ap.add_argument("runner", nargs=argparse.REMAINDER, help="-- qemu-system-arm ... (no -kernel)")
     args = ap.parse_args()
@@ -526,6 +531,24 @@ def main():
         out_mix.append("%s,%s,%s" % (",".join(r["key"]), "%.1f" % (taken / n),
                                      ",".join("%.1f,%.1f" % (mix_n[j] / n, mix_c[j] / n)
                                               for j in range(len(CLASSES)))))
+    for spec in args.profile:
+        row, path = spec.split("=", 1)
+        key = tuple(row.split(","))
+        per = collections.Counter()
+        found = False
+        for r, ws in zip(rows, assigned):
+            if r["key"] != key:
+                continue
+            found = True
+            n = max(r["inputs"], 1)
+            for w in ws:
+                for bkey, k in w[4].items():
+                    for a in cache[bkey].addrs:
+                        per[a] += k / n
+        if not found:
+            fail.append("--profile %s: no such row" % row)
+        with open(path, "w") as f:
+            f.write("".join("0x%x,%.4f\n" % (a, c) for a, c in sorted(per.items())))
     check = []
     for key, want in expect.items():
         floor = (key[0], "empty", key[2])
