@@ -462,15 +462,15 @@ pub(crate) fn tangential<T: Real, L: RollingLaw>(
         Shapes::One(shape) => L::creep(&input(shape)),
         Shapes::Skewed(path) => {
             let q = aligned_ratio(a, b, cx, sx);
-            L::creep(&input(&path.shape_at(q, q.ln(), cx, sx)))
+            L::creep(&input(&path.shape_at(q, q.ln_hot(), cx, sx)))
         }
         Shapes::Path(path, grid) => {
             let q = aligned_ratio(a, b, cx, sx);
-            let ln_q = q.ln();
+            let ln_q = q.ln_hot();
             // the aligned ellipse's shape, its coefficients turned into the patch's in place
             // (a new RollingShape would copy its tables)
             let mut shape = path.shape_at(q, ln_q);
-            let ratios = grid.at((a / b).ln(), ln_q);
+            let ratios = grid.at((a / b).ln_hot(), ln_q);
             (shape.kalker, shape.coupling) = skewed(&shape.kalker, ratios, cx, sx);
             L::creep(&input(&shape))
         }

@@ -299,6 +299,10 @@ impl<T: Real, const K: usize> Real for Dual<T, K> {
         self.chain(self.v.ln(), T::ONE / self.v)
     }
     #[inline(always)]
+    fn ln_hot(self) -> Self {
+        self.chain(self.v.ln_hot(), T::ONE / self.v)
+    }
+    #[inline(always)]
     fn exp(self) -> Self {
         let e = self.v.exp();
         self.chain(e, e)

@@ -81,21 +81,34 @@ const LN_NODES: [f64; NODES] = [
 const LN_NODES_F32: [[f32; NODES]; 1] = single(LN_NODES);
 
 /// Where x = ln(a/b) falls among `table`'s shapes: the interval i (0 … 5) and the fraction
-/// u ∈ [0, 1] (the end shapes outside [1/20, 20]), in the working precision.
+/// u ∈ [0, 1] (the end shapes outside [1/20, 20]; NaN: the first), in the working precision.
+///
+/// The shapes are symmetric in x (a/b and b/a), so the search runs on |x| over the half
+/// nodes 0, ln 2, ln 5, ln 20 (two comparisons) and mirrors: the same (i, u), bit for bit,
+/// as a search over all seven (x = 0 and x = −ln 2, −ln 5 end the interval below them, u = 1).
 pub(crate) fn between<T: Real>(x: T) -> (usize, T) {
     let node = |k: usize| at::<T>(&LN_NODES_F32, &LN_NODES, k);
-    let x = x.max(node(0)).min(node(NODES - 1));
-    let mut i = 0;
-    while i < NODES - 2 && x > node(i + 1) {
-        i += 1;
+    // |x| within [0, ln 20] (NaN: ln 20, then the mirrored side: i = 0, u = 0)
+    let ax = x.abs().min(node(NODES - 1));
+    let (n1, n2) = (node(HALF + 1), node(HALF + 2));
+    // x > 0: intervals above 0 include their upper node; x ≤ 0 (mirrored) their lower one
+    let k = if x > T::ZERO {
+        usize::from(ax > n1) + usize::from(ax > n2)
+    } else {
+        usize::from(ax >= n1) + usize::from(ax >= n2)
+    };
+    let (lo, hi) = (node(HALF + k), node(HALF + k + 1));
+    // lo ≤ |x| ≤ hi and rounding is monotone: both fractions lie in [0, 1] without a clamp
+    if x > T::ZERO {
+        (HALF + k, (ax - lo) / (hi - lo))
+    } else {
+        // x − node(i) = hi − |x| for i = HALF − 1 − k (the nodes are exact negatives)
+        (HALF - 1 - k, (hi - ax) / (hi - lo))
     }
-    (
-        i,
-        ((x - node(i)) / (node(i + 1) - node(i)))
-            .max(T::ZERO)
-            .min(T::ONE),
-    )
 }
+
+/// The index of the shape a/b = 1 (x = 0) among `table`'s seven.
+const HALF: usize = NODES / 2;
 
 /// [`blend_at`] between `table`'s shapes `i`, `i + 1` at the weight `u` ([`between`]).
 #[inline(always)]
@@ -118,6 +131,62 @@ mod tests {
         let shapes = [0.05, 0.2, 0.5, 1.0, 2.0, 5.0, 20.0];
         for (ln, aob) in LN_NODES.iter().zip(shapes) {
             assert!((ln - libm::log(aob)).abs() < 1e-15, "{ln} {aob}");
+        }
+    }
+
+    /// The search over all seven nodes that `between`'s mirrored search replaced.
+    fn between_by_search<T: Real>(x: T) -> (usize, T) {
+        let node = |k: usize| at::<T>(&LN_NODES_F32, &LN_NODES, k);
+        let x = x.max(node(0)).min(node(NODES - 1));
+        let mut i = 0;
+        while i < NODES - 2 && x > node(i + 1) {
+            i += 1;
+        }
+        (i, (x - node(i)) / (node(i + 1) - node(i)))
+    }
+
+    #[test]
+    fn between_is_the_full_search_bit_for_bit() {
+        let check = |x: f64| {
+            let (i, u) = between(x);
+            let (j, v) = between_by_search(x);
+            assert!(
+                i == j && u.to_bits() == v.to_bits(),
+                "f64 {x}: ({i}, {u}) against ({j}, {v})"
+            );
+            assert!((0.0..=1.0).contains(&u) && i <= NODES - 2, "{x}");
+            let xf = x as f32;
+            let (i, u) = between(xf);
+            let (j, v) = between_by_search(xf);
+            assert!(
+                i == j && u.to_bits() == v.to_bits(),
+                "f32 {xf}: ({i}, {u}) against ({j}, {v})"
+            );
+        };
+        // every node and its neighbours one ulp away (in both precisions), beyond the ends,
+        // NaN, ±0, and a fine sweep
+        for &n in &LN_NODES {
+            for x in [n, n.next_up(), n.next_down()] {
+                check(x);
+            }
+            let nf = n as f32;
+            for x in [nf, nf.next_up(), nf.next_down()] {
+                check(f64::from(x));
+            }
+        }
+        for x in [
+            -0.0,
+            0.0,
+            -10.0,
+            10.0,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            f64::NAN,
+        ] {
+            check(x);
+        }
+        for k in 0..=20_000 {
+            check(-3.5 + 7.0 * f64::from(k) / 20_000.0);
         }
     }
 

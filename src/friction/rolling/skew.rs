@@ -224,6 +224,20 @@ impl<T: Real, const N: usize, const S: usize> Nodes<T, N, S> {
         }
     }
 
+    /// x and a companion value clamped together: (x, `inside`) within [lo, hi], else the
+    /// nearer end and its value (`ends`; NaN: the low end's). One pair of comparisons where
+    /// [`Self::clamp`] and a separate clamp of the companion take two.
+    #[inline(always)]
+    pub(crate) fn clamp_with(&self, x: T, inside: impl FnOnce() -> T, ends: (T, T)) -> (T, T) {
+        if x >= self.lo && x <= self.hi {
+            (x, inside())
+        } else if x > self.hi {
+            (self.hi, ends.1)
+        } else {
+            (self.lo, ends.0)
+        }
+    }
+
     /// The functions at x, already clamped ([`Self::clamp`]). Total.
     #[inline(always)]
     pub(crate) fn at(&self, x: T) -> [T; N] {
@@ -235,17 +249,16 @@ impl<T: Real, const N: usize, const S: usize> Nodes<T, N, S> {
             self.first.get(s).copied().unwrap_or(0),
             self.intervals.get(s).copied().unwrap_or(1),
         );
-        let u = ((x - x0) * inv_h).max(T::ZERO);
+        // x ≥ x₀: x is clamped to [lo, hi] (not NaN) and past the cut that starts its segment
+        let u = (x - x0) * inv_h;
         let j = u.trunc_usize().min(usize::from(n).max(1) - 1);
-        let f = (u - T::from_usize(j)).min(T::ONE);
-        let i = usize::from(first) + j;
-        let zero = [T::ZERO; N];
-        let (y0, y1, m0, m1) = (
-            self.y.get(i).unwrap_or(&zero),
-            self.y.get(i + 1).unwrap_or(&zero),
-            self.m.get(i).unwrap_or(&zero),
-            self.m.get(i + 1).unwrap_or(&zero),
-        );
+        // f ∈ [0, 1): j = ⌊u⌋ but on the last interval, where u ≤ n but for rounding at hi
+        // (f = 1 + O(ε) there: the cubic a rounding beyond its end)
+        let f = u - T::from_usize(j);
+        // the interval's two slots, within the stored ones by `min` (no zero fallback to
+        // materialise, which costs more than the look-up; S ≥ 2 for every path)
+        let i = (usize::from(first) + j).min(S.saturating_sub(2));
+        let (y0, y1, m0, m1) = (&self.y[i], &self.y[i + 1], &self.m[i], &self.m[i + 1]);
         // cubic Hermite in f ∈ [0, 1]
         let f2 = f * f;
         let f3 = f2 * f;
@@ -253,7 +266,7 @@ impl<T: Real, const N: usize, const S: usize> Nodes<T, N, S> {
         let h00 = T::ONE - h01;
         let h10 = f3 - T::TWO * f2 + f;
         let h11 = f3 - f2;
-        let mut out = zero;
+        let mut out = [T::ZERO; N];
         for (o, (((y0, y1), m0), m1)) in out
             .iter_mut()
             .zip(y0.iter().zip(y1.iter()).zip(m0.iter()).zip(m1.iter()))
@@ -327,16 +340,6 @@ pub(crate) fn kalker_of<T>([c11, c22, c23, c33]: [T; 4]) -> Kalker<T> {
     Kalker { c11, c22, c23, c33 }
 }
 
-/// √q for the aligned ratio q, within [√(e^{lo}), √(e^{hi})] (`rho`; NaN: the low end).
-#[inline(always)]
-pub(crate) fn rho_within<T: Real>(q: T, rho: (T, T)) -> T {
-    if q >= T::ZERO {
-        q.sqrt().max(rho.0).min(rho.1)
-    } else {
-        rho.0
-    }
-}
-
 /// The aligned ellipse's ratio q = a_r/b_r = a_M b_m/(b_m² cos²θ + a_M² sin²θ) for a rolling
 /// direction (cx, sx) of unit length ([`aligned_ellipse`] without its normalisation and square
 /// root). Total for positive semi-axes (1 otherwise).
@@ -387,8 +390,9 @@ impl<T: Real> ShapePath<T> {
     /// for √q).
     #[inline]
     pub(crate) fn shape_at(&self, q: T, x: T) -> RollingShape<T> {
-        let x = self.nodes.clamp(x);
-        shape_of(x, rho_within(q, self.rho), kalker_of(self.nodes.at(x)))
+        // x within the path and √q with it (outside: the ends' √q)
+        let (x, rho) = self.nodes.clamp_with(x, || q.sqrt(), self.rho);
+        shape_of(x, rho, kalker_of(self.nodes.at(x)))
     }
 }
 

@@ -51,7 +51,7 @@
 use super::creep_matrix::{
     SKEW_NODES, aligned_f64, skew_column_f64, skew_in_t, skew_node_f64, skew_ratios_f64,
 };
-use super::skew::{Nodes, kalker_of, rho_within, shape_of};
+use super::skew::{Nodes, kalker_of, shape_of};
 use super::{Kalker, RollingShape};
 use crate::Real;
 
@@ -289,13 +289,14 @@ impl<T: Real> SkewPath<T> {
     /// `blend`'s and `table`'s per-shape data of q (as [`super::ShapePath`]). Total.
     #[inline]
     pub(crate) fn shape_at(&self, q: T, x: T, cx: T, sx: T) -> RollingShape<T> {
-        let x = self.nodes.clamp(x);
+        // x = ln q within the path and √q with it (outside: the ends' √q)
+        let (x, rho) = self.nodes.clamp_with(x, || q.sqrt(), self.rho);
         let [k11, k22, k23, k33, p12, p13] = self.nodes.at(x);
         // ∓|sinθ cosθ|: −cs when cs > 0 (the table's sign convention, as `skewed`)
         let s = -(cx * sx);
         RollingShape {
             coupling: (s * p12, s * p13),
-            ..shape_of(x, rho_within(q, self.rho), kalker_of([k11, k22, k23, k33]))
+            ..shape_of(x, rho, kalker_of([k11, k22, k23, k33]))
         }
     }
 }

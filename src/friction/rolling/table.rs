@@ -205,7 +205,7 @@ impl RollingLaw for Table {
         let r = T::ONE / lv;
         let (dx, dy, dp) = (lx * r, ly * r, lp * r);
         let inv_m = i.v * r;
-        let lnm = m.ln();
+        let lnm = m.ln_hot();
         let tb = &i.contact.table;
         // the symmetries: F_x odd in ξ, (F_y, M_z) odd in (η, φ) — d_x ≥ 0, d_φ ≥ 0
         let sy = T::ONE.copysign(dp);
