@@ -90,15 +90,20 @@
 //! # Cost
 //!
 //! Cortex-M4F, `f32`, `table`, 64 creep states (`bench-results/qemu.csv`, stage `rolling`):
-//! fixed contact, V along an axis **1,187** instructions (1,181 before each residual channel's own order between the direction families, 1,179 with five table shapes) (`RollingContact::wrench` alone: 1,037);
-//! V skewed 1,593 (1,587 before the channel orders, 1,585 with five table shapes, 1,708 with twelve curve views built per call, 1,809 with per-call shared-grid checks and `f32` nodes; the creep shape per call: one `ln`, the creep matrix from one Hermite
+//! fixed contact, V along an axis **1,167** instructions (1,187 with libm's `logf` for the law's
+//! ln m and before the look-up trims below; 1,181 before each residual channel's own order between the direction families, 1,179 with five table shapes) (`RollingContact::wrench` alone: 1,020; 1,037 with `logf`);
+//! V skewed **1,500** (the hot-path `ln` ([`crate::real::ln_f32_hot`]) for ln m and ln q −34, the
+//! creep matrix's Hermite reading its slots without zero fallbacks −36, the path and √q clamped
+//! together −15, the shapes' search on |x| −3, two redundant clamps −5: 1,593 before; 1,587 before the channel orders, 1,585 with five table shapes, 1,708 with twelve curve views built per call, 1,809 with per-call shared-grid checks and `f32` nodes; the creep shape per call: one `ln`, the creep matrix from one Hermite
 //! segment of its path, `blend`'s constants, and `table`'s curves built per call with no grid
 //! stored, each look-up computing the one it reads — ≈ 330 to build them and ≈ 135 more in the
 //! law than on a cached shape; 2,282 with the ln-coefficients' path, a bisection and five
 //! `exp`, and the skew ratios apart; 5,025 while every curve's grid and tails were built per
-//! call: 24 `exp`); varying contact 2,094 (2,088 before the channel orders, 2,080 with five table shapes, 2,192 with twelve curve views built per call, 2,292 with per-call shared-grid checks and `f32` nodes; 2,766 with the ln-coefficients' path; 5,301).
-//! Host (x86-64, criterion's fastest sample, per call, `bench-results/host-ns.csv`): 220 ns,
-//! 299 ns, 428 ns (`RollingContact` 164 ns in the same run; 377 ns, 1.26 µs, 1.55 µs and 338 ns
+//! call: 24 `exp`); varying contact **1,990** (2,094 before the hot-path `ln` and the look-up trims, 2,088 before the channel orders, 2,080 with five table shapes, 2,192 with twelve curve views built per call, 2,292 with per-call shared-grid checks and `f32` nodes; 2,766 with the ln-coefficients' path; 5,301).
+//! Host (x86-64, criterion's fastest sample, per call, `bench-results/host-ns.csv`): 176 ns,
+//! 240 ns, 311 ns (`RollingContact` 148 ns in the same run; 220, 299, 428 and 164 ns in the run
+//! before these changes, on another day's load — `blend` and `full-slip`, unchanged, were 21 %
+//! and 11 % slower there too; 377 ns, 1.26 µs, 1.55 µs and 338 ns
 //! by the mean before the curves read their nodes from flash and before the per-call curves). Per contact: two [`RollingShape`]s (264 bytes each in `f32` on x86-64; 528 while the tables held a view per curve) and the path of the
 //! skewed creep matrix (216 numbers) (fixed), a [`ShapePath`] (292 numbers) and a `SkewGrid`
 //! (378 numbers) (varying).

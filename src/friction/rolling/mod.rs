@@ -44,7 +44,7 @@
 //! - [`Table`] (default): [`Blend`] plus per-shape tables of its residual against the exact
 //!   reference over the normalised creepage and the direction of the creepages (12 creep curves
 //!   per shape, η and φ of both signs, the knee of the spin force refined), the limits kept:
-//!   exact at both limits, passive, fixed cost (1,037 M4F f32 instructions); on held-out points
+//!   exact at both limits, passive, fixed cost (1,020 M4F f32 instructions); on held-out points
 //!   of the creep curves 0.026 fN / 0.012 fNc from the exact theory at worst (`blend` 0.49 /
 //!   0.49 on the same points), 0.064 / 0.055 at random directions; over the whole domain
 //!   (patch shapes a/b 0.05–20, any skew and ν: `bench-results/rolling-heldout.md`) 0.148 /

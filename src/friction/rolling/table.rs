@@ -142,7 +142,7 @@
 //!
 //! `blend`'s call plus a square root, two divisions, one `ln` and 1 to 4 curve look-ups (1 to 3
 //! channels each). M4F, f32, the dimensional call (firmware stage `rolling`, 64 creep states on
-//! a spiral of directions): 1,037 instructions on average (`blend` 442; f64: 41,220 (also with five shapes); 1,030 before each channel's own order between the direction families; 1,020 while the tables held twelve curve views, 951 with
+//! a spiral of directions): 1,020 instructions on average (`blend` 442; f64: 41,220 (also with five shapes); 1,037 with libm's `logf` for ln m instead of [`crate::real::ln_f32_hot`]; 1,030 before each channel's own order between the direction families; 1,020 while the tables held twelve curve views, 951 with
 //! the nodes in `f32` — the `i16` nodes cost two conversions and a scaling per node read and
 //! save 13 KB of flash; 919 before the spin entered `blend`'s translational saturation and the
 //! couplings, 895 before a curve could be built per call without its grid; before the
