@@ -238,7 +238,7 @@ impl<T: Real, const N: usize, const S: usize> Nodes<T, N, S> {
         }
     }
 
-    /// The functions at x, already clamped ([`Self::clamp`]). Total.
+    /// The functions at x, already clamped ([`Self::clamp`], [`Self::clamp_with`]). Total.
     #[inline(always)]
     pub(crate) fn at(&self, x: T) -> [T; N] {
         // the segment: past the cuts (a cut not used is hi, never passed)
