@@ -92,9 +92,11 @@
 //! Cortex-M4F, `f32`, `table`, 64 creep states (`bench-results/qemu.csv`, stage `rolling`):
 //! fixed contact, V along an axis **1,167** instructions (1,187 with libm's `logf` for the law's
 //! ln m and before the look-up trims below; 1,181 before each residual channel's own order between the direction families, 1,179 with five table shapes) (`RollingContact::wrench` alone: 1,020; 1,037 with `logf`);
-//! V skewed **1,500** (the hot-path `ln` ([`crate::real::ln_f32_hot`]) for ln m and ln q −34, the
-//! creep matrix's Hermite reading its slots without zero fallbacks −36, the path and √q clamped
-//! together −15, the shapes' search on |x| −3, two redundant clamps −5: 1,593 before; 1,587 before the channel orders, 1,585 with five table shapes, 1,708 with twelve curve views built per call, 1,809 with per-call shared-grid checks and `f32` nodes; the creep shape per call: one `ln`, the creep matrix from one Hermite
+//! V skewed **1,500** (1,593 before the hot-path `ln` ([`crate::real::ln_f32_hot`]) for ln m
+//! and ln q — the two take 54 instructions where libm's `logf` took 93, 39 saved — and the
+//! creep shape's look-up trims — the Hermite path's reads without zero fallbacks, the path and
+//! √q clamped together, the shapes' search on |x|, two redundant clamps: 54 saved, measured
+//! together (`tools/profile_row.py`); 1,587 before the channel orders, 1,585 with five table shapes, 1,708 with twelve curve views built per call, 1,809 with per-call shared-grid checks and `f32` nodes; the creep shape per call: one `ln`, the creep matrix from one Hermite
 //! segment of its path, `blend`'s constants, and `table`'s curves built per call with no grid
 //! stored, each look-up computing the one it reads — ≈ 330 to build them and ≈ 135 more in the
 //! law than on a cached shape; 2,282 with the ln-coefficients' path, a bisection and five
