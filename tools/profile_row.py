@@ -38,7 +38,7 @@ def runner():
 
 
 def strip_generics(path):
-    """A path without its generic arguments and closures, its last `keep` parts."""
+    """A path's parts without its generic arguments and closures."""
     depth, plain = 0, ""
     for ch in path:
         depth += ch == "<"
